@@ -1,0 +1,64 @@
+#pragma once
+// The geodetic camera. State is kept in double precision; the GPU only receives directions and
+// camera-relative quantities (a float step at Earth radius is 0.5 m).
+#include <glm/glm.hpp>
+#include <optional>
+#include <string>
+
+#include "geo/Wgs84.hpp"
+
+namespace og::geo {
+
+/// The camera as a user states it.
+struct CameraPose {
+  Geodetic position{0.0, 0.0, 1.0e7};
+  double headingDeg = 0.0;      ///< clockwise from north, any finite value (mod 360)
+  double pitchDeg = -90.0;      ///< 0 = horizontal, -90 = straight down, +90 = straight up
+  double rollDeg = 0.0;         ///< clockwise about the view direction, [-180, 180]
+  double verticalFovDeg = 45.0; ///< (0.1, 170)
+};
+
+/// Why a pose cannot be used (a one-line message naming the field), or nullopt when valid.
+std::optional<std::string> validatePose(const CameraPose& pose);
+
+/// The lowest eye height above the ellipsoid the renderer uses; lower requests (0, negative)
+/// are lifted to it so the eye is never inside the planet.
+inline constexpr double kMinEyeHeightM = 0.1;
+
+/// Everything the renderer needs, derived from a pose in double precision.
+struct CameraView {
+  Geodetic position;        ///< the pose's position with the height clamped
+  glm::dvec3 positionEcef;  ///< eye, ECEF metres
+  EnuFrame enu;             ///< local frame under the eye
+  glm::dvec3 forward;       ///< unit view direction, ECEF axes
+  glm::dvec3 right;         ///< unit, ECEF axes
+  glm::dvec3 up;            ///< unit, ECEF axes (image up)
+  double verticalFovRad = 0.0;
+  double aspect = 1.0;      ///< width / height
+  double nearM = 0.05;      ///< near plane; there is no far plane (reversed-Z, infinite)
+
+  /// Rotation taking a camera-relative ECEF vector to view space (x right, y up, -z forward).
+  [[nodiscard]] glm::dmat3 viewRotation() const;
+  /// Reversed-Z infinite perspective for glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE):
+  /// depth = near / distance along the view axis, 1 at the near plane, -> 0 at infinity.
+  [[nodiscard]] glm::dmat4 projection() const;
+  /// projection * view for camera-relative ECEF positions (what vertex shaders get, as float).
+  [[nodiscard]] glm::dmat4 viewProjection() const;
+  /// Unit ray through normalised device coordinates (-1..1), ECEF axes.
+  [[nodiscard]] glm::dvec3 rayDirection(double ndcX, double ndcY) const;
+  /// Position relative to the eye: the only form in which positions reach the GPU.
+  [[nodiscard]] glm::dvec3 relative(const glm::dvec3& ecef) const { return ecef - positionEcef; }
+};
+
+/// Builds the view for an image of width x height pixels. The pose must be valid
+/// (validatePose); heading/pitch/roll are applied as rotations, so straight down at a pole or
+/// straight up are as well defined as any other orientation.
+CameraView makeCameraView(const CameraPose& pose, int widthPx, int heightPx);
+
+/// Exact near intersection of a ray from the eye with the ellipsoid raised by `heightM`,
+/// as a distance in metres, or nullopt when the ray misses. Computed in the ellipsoid's scaled
+/// space with the constant term taken in double, so it stays accurate at 1 m above the sea.
+std::optional<double> intersectEllipsoid(const glm::dvec3& eyeEcef, const glm::dvec3& dir,
+                                         double heightM = 0.0);
+
+}  // namespace og::geo
