@@ -1,0 +1,66 @@
+#!/bin/sh
+# Derives data/etopo20_relief.nc, the default relief embedded in oceanglobe, from the ETOPO20
+# grid in Debian's ferret-datasets package. Needs the nco and netcdf-bin packages.
+#
+# ETOPO20 stores relief as float metres; rounding to whole metres changes nothing visible at
+# 20' resolution (the grid is an average of 5' cells) and lets the field fit in int16, which
+# together with shuffle + deflate makes the embedded copy about five times smaller.
+#
+# Usage: scripts/derive_default_data.sh [SOURCE.cdf] [OUTPUT.nc]
+set -eu
+
+src=${1:-/usr/share/ferret-vis/data/etopo20.cdf}
+out=${2:-$(dirname "$0")/../data/etopo20_relief.nc}
+
+for tool in ncap2 ncatted ncks nccopy; do
+  command -v "$tool" >/dev/null 2>&1 || {
+    echo "derive_default_data.sh: '$tool' not found (apt-get install nco netcdf-bin)" >&2
+    exit 1
+  }
+done
+[ -r "$src" ] || {
+  echo "$src: not readable (apt-get install ferret-datasets)" >&2
+  exit 1
+}
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT INT TERM
+
+# 1. Drop the float fill attributes first: ncap2 would otherwise convert -1e34 to a short
+#    _FillValue of 0 and turn every sea-level cell into "missing". The source has no missing
+#    cells (checked below). Then round to whole metres (floor(x+0.5): this ncap2's round()
+#    hangs) and store as short.
+ncks -O -h -v ROSE "$src" "$tmp/float.nc"
+ncatted -O -h -a missing_value,ROSE,d,, -a _FillValue,ROSE,d,, "$tmp/float.nc"
+ncap2 -O -h -s 'lo=ROSE.min(); hi=ROSE.max();' "$tmp/float.nc" "$tmp/range.nc"
+lo=$(ncks -H -C -v lo "$tmp/range.nc" | sed -n 's/.*lo = *\([-0-9.e+]*\).*/\1/p')
+hi=$(ncks -H -C -v hi "$tmp/range.nc" | sed -n 's/.*hi = *\([-0-9.e+]*\).*/\1/p')
+awk -v lo="$lo" -v hi="$hi" 'BEGIN { exit !(lo != "" && hi != "" && lo >= -12000 && hi <= 9000) }' || {
+  echo "derive_default_data.sh: $src: ROSE range [$lo, $hi] is not plausible relief in metres" >&2
+  exit 1
+}
+ncap2 -O -h -s 'ROSE=short(floor(ROSE+0.5f));' "$tmp/float.nc" "$tmp/short.nc"
+
+# 2. Attributes: keep the axes' units (they are how readers find the axes), describe the field.
+history="scripts/derive_default_data.sh: ROSE from $(basename "$src") rounded to int16 metres; NetCDF-4, shuffle, deflate 9"
+ncatted -O -h \
+  -a history,ROSE,d,, \
+  -a units,ROSE,o,c,"m" \
+  -a long_name,ROSE,o,c,"relief of the surface of the Earth (topography and bathymetry)" \
+  -a standard_name,ROSE,o,c,"height_above_mean_sea_level" \
+  -a positive,ROSE,o,c,"up" \
+  -a standard_name,ETOPO20X1_1081,o,c,"longitude" \
+  -a standard_name,ETOPO20Y,o,c,"latitude" \
+  -a title,global,o,c,"ETOPO20 global relief, 20 arc-minute, whole metres" \
+  -a source,global,o,c,"ETOPO5 5-minute gridded elevation data (NOAA National Geophysical Data Center, 1988), averaged to 20' as ETOPO20 and distributed with the Ferret data sets (Debian package ferret-datasets, file etopo20.cdf)" \
+  -a license,global,o,c,"Public domain: ETOPO5 is a work of the U.S. Government (NOAA NGDC) and not subject to copyright" \
+  -a references,global,o,c,"Data Announcement 88-MGG-02, Digital relief of the Surface of the Earth. NOAA, National Geophysical Data Center, Boulder, Colorado, 1988" \
+  -a history,global,o,c,"$history" \
+  -a Conventions,global,o,c,"CF-1.8" \
+  "$tmp/short.nc"
+ncatted -O -h -a _FillValue,ROSE,c,s,-32768 "$tmp/short.nc"
+
+# 3. NetCDF-4 classic model, deflate level 9 with byte shuffle.
+nccopy -k nc7 -d 9 -s "$tmp/short.nc" "$tmp/out.nc"
+mv "$tmp/out.nc" "$out"
+echo "wrote $out ($(wc -c <"$out") bytes)"

@@ -1,0 +1,592 @@
+#include "data/NetcdfFile.hpp"
+
+#include <netcdf.h>
+#include <netcdf_mem.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <string>
+#include <system_error>
+#include <utility>
+
+#include "core/Error.hpp"
+#include "data/GridLayout.hpp"
+
+namespace og::data::detail {
+namespace fs = std::filesystem;
+
+// ---------------------------------------------------------------------------------------------
+// NetcdfFile
+
+namespace {
+void checkComplete(int id, const std::string& label, std::uintmax_t fileSize);
+
+std::mutex& libraryMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+}  // namespace
+
+NetcdfFile::NetcdfFile(int id, std::string label, std::vector<char> memory,
+                       std::unique_lock<std::mutex> lock)
+    : lock_(std::move(lock)), id_(id), label_(std::move(label)), memory_(std::move(memory)) {}
+
+NetcdfFile::NetcdfFile(NetcdfFile&& other) noexcept
+    : lock_(std::move(other.lock_)),
+      id_(std::exchange(other.id_, -1)),
+      label_(std::move(other.label_)),
+      memory_(std::move(other.memory_)) {}
+
+NetcdfFile::~NetcdfFile() {
+  if (id_ >= 0) nc_close(id_);
+}
+
+NetcdfFile NetcdfFile::open(const fs::path& file) {
+  const std::string label = file.string();
+  std::error_code ec;
+  if (!fs::exists(file, ec)) throw InputError(label + ": no such file");
+  if (!fs::is_regular_file(file, ec)) throw InputError(label + ": not a regular file");
+  std::unique_lock lock(libraryMutex());
+  int id = -1;
+  const int status = nc_open(file.c_str(), NC_NOWRITE, &id);
+  if (status != NC_NOERR)
+    throw InputError(label + ": not a readable NetCDF file (" + nc_strerror(status) + ")");
+  NetcdfFile opened(id, label, {}, std::move(lock));
+  const std::uintmax_t size = fs::file_size(file, ec);
+  if (ec) opened.fail("cannot determine the file size: " + ec.message());
+  checkComplete(id, label, size);
+  return opened;
+}
+
+NetcdfFile NetcdfFile::openMemory(std::string_view bytes, const std::string& label) {
+  if (bytes.empty()) throw InputError(label + ": empty NetCDF image");
+  // nc_open_mem wants a writable buffer that outlives the dataset; keep our own copy.
+  std::vector<char> memory(bytes.begin(), bytes.end());
+  std::unique_lock lock(libraryMutex());
+  int id = -1;
+  const int status = nc_open_mem(label.c_str(), NC_NOWRITE, memory.size(), memory.data(), &id);
+  if (status != NC_NOERR)
+    throw InputError(label + ": not a readable NetCDF image (" + nc_strerror(status) + ")");
+  const std::size_t size = memory.size();
+  NetcdfFile opened(id, label, std::move(memory), std::move(lock));
+  checkComplete(id, label, size);
+  return opened;
+}
+
+void NetcdfFile::fail(const std::string& problem) const {
+  throw InputError(label_ + ": " + problem);
+}
+
+void NetcdfFile::check(int status, const std::string& doing) const {
+  if (status != NC_NOERR) fail(doing + ": " + nc_strerror(status));
+}
+
+namespace {
+/// Attributes longer than this are not metadata we want; refuse to allocate for them.
+constexpr std::size_t kMaxAttributeLength = 65536;
+constexpr std::size_t kMaxNumericAttributeLength = 64;
+
+bool isNumericType(nc_type type) {
+  switch (type) {
+    case NC_BYTE:
+    case NC_UBYTE:
+    case NC_SHORT:
+    case NC_USHORT:
+    case NC_INT:
+    case NC_UINT:
+    case NC_INT64:
+    case NC_UINT64:
+    case NC_FLOAT:
+    case NC_DOUBLE:
+      return true;
+    default:
+      return false;
+  }
+}
+
+std::string trim(std::string text) {
+  const auto blank = [](char c) {
+    return c == '\0' || std::isspace(static_cast<unsigned char>(c));
+  };
+  while (!text.empty() && blank(text.back())) text.pop_back();
+  std::size_t start = 0;
+  while (start < text.size() && blank(text[start])) ++start;
+  return text.substr(start);
+}
+
+std::string lower(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+}  // namespace
+
+std::optional<std::string> NetcdfFile::textAttribute(int varid, const char* name) const {
+  nc_type type = NC_NAT;
+  std::size_t length = 0;
+  if (nc_inq_att(id_, varid, name, &type, &length) != NC_NOERR) return std::nullopt;
+  if (type == NC_CHAR) {
+    if (length > kMaxAttributeLength) return std::nullopt;
+    std::string text(length, '\0');
+    if (length > 0)
+      check(nc_get_att_text(id_, varid, name, text.data()),
+            std::string("cannot read attribute '") + name + "'");
+    return trim(std::move(text));
+  }
+  if (type == NC_STRING && length >= 1 && length <= kMaxNumericAttributeLength) {
+    std::vector<char*> strings(length, nullptr);
+    check(nc_get_att_string(id_, varid, name, strings.data()),
+          std::string("cannot read attribute '") + name + "'");
+    std::string text = strings[0] != nullptr ? strings[0] : "";
+    nc_free_string(length, strings.data());
+    return trim(std::move(text));
+  }
+  return std::nullopt;
+}
+
+std::optional<NetcdfFile::Numbers> NetcdfFile::numericAttribute(int varid, const char* name) const {
+  nc_type type = NC_NAT;
+  std::size_t length = 0;
+  if (nc_inq_att(id_, varid, name, &type, &length) != NC_NOERR) return std::nullopt;
+  if (!isNumericType(type) || length < 1 || length > kMaxNumericAttributeLength)
+    fail(std::string("attribute '") + name + "' must hold 1 to " +
+         std::to_string(kMaxNumericAttributeLength) + " numbers");
+  Numbers numbers;
+  numbers.type = type;
+  numbers.values.resize(length);
+  // netCDF reports NC_ERANGE for values that do not fit a double only in exotic cases.
+  check(nc_get_att_double(id_, varid, name, numbers.values.data()),
+        std::string("cannot read attribute '") + name + "'");
+  return numbers;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Truncation check for the classic formats. netCDF-C reads past the end of a truncated
+// classic file as zeros without an error, so we compute the smallest size the header's
+// contents require (the header as written without padding, then every variable's data) and
+// compare. HDF5-based files detect truncation themselves.
+
+namespace {
+
+std::uintmax_t padded4(std::uintmax_t n) { return (n + 3) / 4 * 4; }
+
+/// Sizes in bytes of the classic encoding, by format: CDF-1, CDF-2 (64-bit offset), CDF-5.
+struct ClassicEncoding {
+  std::uintmax_t count = 4;   ///< element counts, dimension lengths, vsize
+  std::uintmax_t offset = 4;  ///< a variable's `begin`
+};
+
+std::uintmax_t typeSize(int id, nc_type type) {
+  std::size_t size = 0;
+  return nc_inq_type(id, type, nullptr, &size) == NC_NOERR ? size : 0;
+}
+
+std::uintmax_t nameBytes(const ClassicEncoding& e, const char* name) {
+  return e.count + padded4(std::char_traits<char>::length(name));
+}
+
+std::uintmax_t attributeListBytes(int id, int varid, const ClassicEncoding& e) {
+  int natts = 0;
+  if (varid == NC_GLOBAL ? nc_inq_natts(id, &natts) != NC_NOERR
+                         : nc_inq_varnatts(id, varid, &natts) != NC_NOERR)
+    return 0;
+  std::uintmax_t bytes = 4 + e.count;  // tag (or ZERO) and element count
+  for (int a = 0; a < natts; ++a) {
+    std::array<char, NC_MAX_NAME + 1> name{};
+    nc_type type = NC_NAT;
+    std::size_t length = 0;
+    if (nc_inq_attname(id, varid, a, name.data()) != NC_NOERR ||
+        nc_inq_att(id, varid, name.data(), &type, &length) != NC_NOERR)
+      continue;
+    bytes += nameBytes(e, name.data()) + 4 + e.count + padded4(length * typeSize(id, type));
+  }
+  return bytes;
+}
+
+void checkComplete(int id, const std::string& label, std::uintmax_t fileSize) {
+  int format = 0;
+  if (nc_inq_format(id, &format) != NC_NOERR) return;
+  ClassicEncoding e;
+  if (format == NC_FORMAT_64BIT_OFFSET) {
+    e.offset = 8;
+  } else if (format == NC_FORMAT_CDF5) {
+    e.count = 8;
+    e.offset = 8;
+  } else if (format != NC_FORMAT_CLASSIC) {
+    return;
+  }
+  int ndims = 0;
+  int nvars = 0;
+  int unlimited = -1;
+  if (nc_inq(id, &ndims, &nvars, nullptr, &unlimited) != NC_NOERR) return;
+
+  std::uintmax_t header = 4 + e.count;  // magic, numrecs
+  header += 4 + e.count;                // dimension list tag and count
+  std::vector<std::uintmax_t> dimLength(static_cast<std::size_t>(std::max(ndims, 0)), 0);
+  for (int d = 0; d < ndims; ++d) {
+    std::array<char, NC_MAX_NAME + 1> name{};
+    std::size_t length = 0;
+    if (nc_inq_dim(id, d, name.data(), &length) != NC_NOERR) return;
+    dimLength[static_cast<std::size_t>(d)] = length;
+    header += nameBytes(e, name.data()) + e.count;
+  }
+  header += attributeListBytes(id, NC_GLOBAL, e);
+  header += 4 + e.count;  // variable list tag and count
+
+  // Data: fixed-size variables, then `numrecs` records of all record variables.
+  std::uintmax_t fixedData = 0;
+  std::uintmax_t recordSize = 0;
+  int recordVars = 0;
+  std::uintmax_t lastRecordVarSize = 0;
+  const std::uintmax_t numrecs =
+      unlimited >= 0 ? dimLength[static_cast<std::size_t>(unlimited)] : 0;
+  for (int v = 0; v < nvars; ++v) {
+    std::array<char, NC_MAX_NAME + 1> name{};
+    std::array<int, NC_MAX_VAR_DIMS> dims{};
+    nc_type type = NC_NAT;
+    int rank = 0;
+    if (nc_inq_var(id, v, name.data(), &type, &rank, dims.data(), nullptr) != NC_NOERR) return;
+    header += nameBytes(e, name.data()) + e.count + static_cast<std::uintmax_t>(rank) * e.count;
+    header += attributeListBytes(id, v, e) + 4 + e.count + e.offset;
+    const bool isRecord = rank > 0 && dims[0] == unlimited;
+    // Saturating product: a hostile header cannot wrap this around to a small number.
+    std::uintmax_t size = typeSize(id, type);
+    for (int d = isRecord ? 1 : 0; d < rank; ++d) {
+      const std::uintmax_t n =
+          dimLength[static_cast<std::size_t>(dims[static_cast<std::size_t>(d)])];
+      size = (n != 0 && size > UINTMAX_MAX / n) ? UINTMAX_MAX : size * n;
+    }
+    if (isRecord) {
+      ++recordVars;
+      lastRecordVarSize = size;
+      recordSize = std::min(UINTMAX_MAX - padded4(size), recordSize) + padded4(size);
+    } else {
+      fixedData = std::min(UINTMAX_MAX - padded4(size), fixedData) + padded4(size);
+    }
+  }
+  // A lone record variable's records are not padded.
+  if (recordVars == 1) recordSize = lastRecordVarSize;
+  std::uintmax_t required = header;
+  const auto add = [&](std::uintmax_t n) {
+    required = required > UINTMAX_MAX - n ? UINTMAX_MAX : required + n;
+  };
+  add(fixedData);
+  add(numrecs != 0 && recordSize > UINTMAX_MAX / numrecs ? UINTMAX_MAX : recordSize * numrecs);
+  // The last variable's padding may legitimately be missing from the file.
+  if (fileSize + 3 < required)
+    throw InputError(label + ": file is truncated (" + std::to_string(fileSize) +
+                     " bytes, the header describes at least " + std::to_string(required) + ")");
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Field reader
+
+namespace {
+
+struct Variable {
+  int id = -1;
+  std::string name;
+  nc_type type = NC_NAT;
+  std::vector<int> dims;
+};
+
+std::string typeName(const NetcdfFile& file, nc_type type) {
+  std::array<char, NC_MAX_NAME + 1> name{};
+  if (nc_inq_type(file.id(), type, name.data(), nullptr) != NC_NOERR) return "unknown";
+  return name.data();
+}
+
+std::string dimensionName(const NetcdfFile& file, int dim) {
+  std::array<char, NC_MAX_NAME + 1> name{};
+  file.check(nc_inq_dimname(file.id(), dim, name.data()), "cannot read a dimension name");
+  return name.data();
+}
+
+std::size_t dimensionLength(const NetcdfFile& file, int dim) {
+  std::size_t length = 0;
+  file.check(nc_inq_dimlen(file.id(), dim, &length), "cannot read a dimension length");
+  return length;
+}
+
+std::vector<Variable> listVariables(const NetcdfFile& file) {
+  int count = 0;
+  file.check(nc_inq_nvars(file.id(), &count), "cannot list variables");
+  std::vector<Variable> variables;
+  variables.reserve(static_cast<std::size_t>(std::max(count, 0)));
+  for (int v = 0; v < count; ++v) {
+    std::array<char, NC_MAX_NAME + 1> name{};
+    std::array<int, NC_MAX_VAR_DIMS> dims{};
+    Variable variable;
+    int ndims = 0;
+    file.check(nc_inq_var(file.id(), v, name.data(), &variable.type, &ndims, dims.data(), nullptr),
+               "cannot inspect variable " + std::to_string(v));
+    variable.id = v;
+    variable.name = name.data();
+    variable.dims.assign(dims.begin(), dims.begin() + ndims);
+    variables.push_back(std::move(variable));
+  }
+  return variables;
+}
+
+enum class AxisKind { None, Latitude, Longitude };
+
+/// CF: units degrees_north (and spellings) or standard_name latitude; same for longitude.
+AxisKind axisKind(const NetcdfFile& file, const Variable& variable) {
+  if (variable.dims.size() != 1) return AxisKind::None;
+  const std::string units = lower(file.textAttribute(variable.id, "units").value_or(""));
+  const std::string standard = lower(file.textAttribute(variable.id, "standard_name").value_or(""));
+  const auto oneOf = [](const std::string& s, std::initializer_list<const char*> options) {
+    return std::any_of(options.begin(), options.end(), [&](const char* o) { return s == o; });
+  };
+  if (oneOf(units,
+            {"degrees_north", "degree_north", "degrees_n", "degree_n", "degreesn", "degreen"}) ||
+      standard == "latitude")
+    return AxisKind::Latitude;
+  if (oneOf(units,
+            {"degrees_east", "degree_east", "degrees_e", "degree_e", "degreese", "degreee"}) ||
+      standard == "longitude")
+    return AxisKind::Longitude;
+  return AxisKind::None;
+}
+
+/// The axis variable on each dimension; a coordinate variable (named like its dimension) wins.
+using AxisByDimension = std::map<int, const Variable*>;
+
+void addAxis(const NetcdfFile& file, AxisByDimension& axes, const Variable& variable) {
+  const int dim = variable.dims[0];
+  auto [it, inserted] = axes.emplace(dim, &variable);
+  if (!inserted && variable.name == dimensionName(file, dim)) it->second = &variable;
+}
+
+std::vector<double> readAxis(const NetcdfFile& file, const Variable& axis) {
+  if (!isNumericType(axis.type))
+    file.fail("axis '" + axis.name + "' has type " + typeName(file, axis.type) +
+              ", expected numbers");
+  std::vector<double> values(dimensionLength(file, axis.dims[0]));
+  file.check(nc_get_var_double(file.id(), axis.id, values.data()),
+             "cannot read axis '" + axis.name + "'");
+  return values;
+}
+
+std::string joinNames(const std::vector<const Variable*>& variables) {
+  std::string text;
+  for (const Variable* v : variables) text += (text.empty() ? "" : ", ") + v->name;
+  return text;
+}
+
+/// netCDF's default fill for a type: what unwritten parts of a variable read as when it has
+/// no _FillValue. Bytes have none in practice (every byte value is used).
+std::optional<double> defaultFill(nc_type type) {
+  switch (type) {
+    case NC_SHORT:
+      return -32767.0;
+    case NC_USHORT:
+      return 65535.0;
+    case NC_INT:
+      return -2147483647.0;
+    case NC_UINT:
+      return 4294967295.0;
+    case NC_INT64:
+      return -9223372036854775806.0;
+    case NC_UINT64:
+      return 18446744073709551614.0;
+    case NC_FLOAT:
+      return static_cast<double>(9.9692099683868690e+36f);
+    case NC_DOUBLE:
+      return 9.9692099683868690e+36;
+    default:
+      return std::nullopt;
+  }
+}
+
+/// Values that mean "no data". Packed ones compare to the stored number; unpacked ones (a
+/// float missing_value on a packed integer field) compare to the unpacked value.
+struct FillValues {
+  std::vector<double> packed;
+  std::vector<double> unpacked;
+  double unpackedTolerance = 0.0;
+
+  [[nodiscard]] bool matches(double raw, double value) const {
+    for (double f : packed)
+      if (raw == f || std::abs(raw - f) <= 1e-6 * std::abs(f)) return true;
+    for (double f : unpacked)
+      if (std::abs(value - f) <= unpackedTolerance + 1e-6 * std::abs(f)) return true;
+    return false;
+  }
+};
+
+bool isIntegerType(nc_type type) {
+  return isNumericType(type) && type != NC_FLOAT && type != NC_DOUBLE;
+}
+bool isFloatType(nc_type type) { return type == NC_FLOAT || type == NC_DOUBLE; }
+
+const Variable& chooseVariable(const NetcdfFile& file, const std::vector<Variable>& variables,
+                               const AxisByDimension& latAxes, const AxisByDimension& lonAxes,
+                               const std::string& requested,
+                               const std::vector<std::string>& preferredNames) {
+  const auto onAxes = [&](const Variable& v, const AxisByDimension& first,
+                          const AxisByDimension& second) {
+    const std::size_t n = v.dims.size();
+    return n >= 2 && first.count(v.dims[n - 2]) != 0 && second.count(v.dims[n - 1]) != 0;
+  };
+  std::vector<const Variable*> candidates;
+  for (const Variable& v : variables)
+    if (onAxes(v, latAxes, lonAxes)) candidates.push_back(&v);
+
+  if (!requested.empty()) {
+    const auto found = std::find_if(variables.begin(), variables.end(),
+                                    [&](const Variable& v) { return v.name == requested; });
+    if (found == variables.end())
+      file.fail("no variable '" + requested + "'" +
+                (candidates.empty()
+                     ? std::string()
+                     : " (fields on latitude/longitude: " + joinNames(candidates) + ")"));
+    if (onAxes(*found, lonAxes, latAxes))
+      file.fail("variable '" + requested +
+                "' is stored as (longitude, latitude); only (latitude, longitude) is supported");
+    if (!onAxes(*found, latAxes, lonAxes))
+      file.fail("variable '" + requested + "' is not a field on (latitude, longitude) axes");
+    return *found;
+  }
+  if (candidates.size() == 1) return *candidates.front();
+  for (const std::string& preferred : preferredNames)
+    for (const Variable* v : candidates)
+      if (v->name == preferred) return *v;
+  if (candidates.empty()) {
+    for (const Variable& v : variables)
+      if (onAxes(v, lonAxes, latAxes))
+        file.fail("variable '" + v.name +
+                  "' is stored as (longitude, latitude); only (latitude, longitude) is supported");
+    file.fail("no field on (latitude, longitude) axes");
+  }
+  file.fail("several fields on latitude/longitude (" + joinNames(candidates) +
+            "); name the one to use");
+}
+
+}  // namespace
+
+LatLonGrid readLatLonGrid(const NetcdfFile& file, const std::string& variable,
+                          const std::vector<std::string>& preferredNames) {
+  const std::vector<Variable> variables = listVariables(file);
+  AxisByDimension latAxes;
+  AxisByDimension lonAxes;
+  for (const Variable& v : variables) {
+    const AxisKind kind = axisKind(file, v);
+    if (kind == AxisKind::Latitude) addAxis(file, latAxes, v);
+    if (kind == AxisKind::Longitude) addAxis(file, lonAxes, v);
+  }
+  if (latAxes.empty())
+    file.fail(
+        "no latitude axis (a 1-D variable with units degrees_north or standard_name "
+        "latitude)");
+  if (lonAxes.empty())
+    file.fail(
+        "no longitude axis (a 1-D variable with units degrees_east or standard_name "
+        "longitude)");
+
+  const Variable& field =
+      chooseVariable(file, variables, latAxes, lonAxes, variable, preferredNames);
+  const std::string quoted = "variable '" + field.name + "'";
+  if (!isNumericType(field.type))
+    file.fail(quoted + " has type " + typeName(file, field.type) + ", expected numbers");
+
+  // Leading dimensions (time, level, ...) must hold a single step.
+  const std::size_t rank = field.dims.size();
+  for (std::size_t d = 0; d + 2 < rank; ++d) {
+    const std::size_t length = dimensionLength(file, field.dims[d]);
+    if (length != 1)
+      file.fail(quoted + " has " + std::to_string(length) + " steps along '" +
+                dimensionName(file, field.dims[d]) + "'; only a single 2-D field is supported");
+  }
+
+  const Variable& latAxis = *latAxes.at(field.dims[rank - 2]);
+  const Variable& lonAxis = *lonAxes.at(field.dims[rank - 1]);
+  const std::size_t nLat = dimensionLength(file, field.dims[rank - 2]);
+  const std::size_t nLon = dimensionLength(file, field.dims[rank - 1]);
+  checkGridShape(file.label(), nLat, nLon);  // before reading anything sized by them
+  const std::vector<double> lat = readAxis(file, latAxis);
+  const std::vector<double> lon = readAxis(file, lonAxis);
+  const GridLayout layout =
+      planGridLayout(file.label(), lat, latAxis.name, latAxis.type == NC_FLOAT, lon, lonAxis.name,
+                     lonAxis.type == NC_FLOAT);
+
+  // Packing: value = raw * scale_factor + add_offset.
+  double scale = 1.0;
+  double offset = 0.0;
+  if (const auto a = file.numericAttribute(field.id, "scale_factor")) scale = a->values[0];
+  if (const auto a = file.numericAttribute(field.id, "add_offset")) offset = a->values[0];
+  if (!std::isfinite(scale) || !std::isfinite(offset) || scale == 0.0)
+    file.fail(quoted + " has an unusable scale_factor/add_offset");
+  const bool packed = scale != 1.0 || offset != 0.0;
+
+  FillValues fills;
+  fills.unpackedTolerance = 0.5 * std::abs(scale);
+  if (const auto a = file.numericAttribute(field.id, "_FillValue")) {
+    fills.packed.push_back(a->values[0]);
+  } else if (const auto d = defaultFill(field.type)) {
+    fills.packed.push_back(*d);
+  }
+  if (const auto a = file.numericAttribute(field.id, "missing_value")) {
+    // A float missing_value on a packed integer field is in unpacked units (common practice,
+    // though CF asks for packed units).
+    const bool unpackedUnits =
+        packed && isIntegerType(field.type) && isFloatType(static_cast<nc_type>(a->type));
+    for (double m : a->values) (unpackedUnits ? fills.unpacked : fills.packed).push_back(m);
+  }
+
+  LatLonGrid grid;
+  grid.name = field.name;
+  grid.units = file.textAttribute(field.id, "units").value_or("");
+  grid.width = layout.width;
+  grid.height = layout.height;
+  grid.lon0Deg = layout.lon0Deg;
+  grid.lat0Deg = layout.lat0Deg;
+  grid.dLonDeg = layout.dLonDeg;
+  grid.dLatDeg = layout.dLatDeg;
+  grid.wrapsLongitude = layout.wrapsLongitude;
+  const auto width = static_cast<std::size_t>(layout.width);
+  grid.values.assign(nLat * width, std::numeric_limits<float>::quiet_NaN());
+
+  // Read whole rows in blocks of about a million values: bounded extra memory, and doubles
+  // keep 32-bit integers and fill comparisons exact.
+  const std::size_t rowsPerBlock = std::max<std::size_t>(1, (std::size_t{1} << 20) / nLon);
+  std::vector<double> block(std::min(rowsPerBlock, nLat) * nLon);
+  std::vector<std::size_t> start(rank, 0);
+  std::vector<std::size_t> count(rank, 1);
+  std::size_t valid = 0;
+  constexpr double kFloatMax = static_cast<double>(std::numeric_limits<float>::max());
+  for (std::size_t row0 = 0; row0 < nLat; row0 += rowsPerBlock) {
+    const std::size_t rows = std::min(rowsPerBlock, nLat - row0);
+    start[rank - 2] = row0;
+    count[rank - 2] = rows;
+    count[rank - 1] = nLon;
+    file.check(nc_get_vara_double(file.id(), field.id, start.data(), count.data(), block.data()),
+               "cannot read " + quoted);
+    for (std::size_t r = 0; r < rows; ++r) {
+      float* out = grid.values.data() + layout.outputRow(row0 + r) * width;
+      const double* in = block.data() + r * nLon;
+      for (std::size_t c = 0; c < width; ++c) {
+        const double raw = in[layout.fileColumn(c, nLon)];
+        if (std::isnan(raw)) continue;
+        const double value = raw * scale + offset;
+        if (fills.matches(raw, value)) continue;
+        if (!std::isfinite(value) || std::abs(value) > kFloatMax)
+          file.fail(quoted + " has a non-finite or out-of-range value " + std::to_string(value) +
+                    " at latitude index " + std::to_string(row0 + r) + ", longitude index " +
+                    std::to_string(layout.fileColumn(c, nLon)));
+        out[c] = static_cast<float>(value);
+        ++valid;
+      }
+    }
+  }
+  if (valid == 0) file.fail(quoted + " holds no data (every value is fill/missing)");
+  return grid;
+}
+
+}  // namespace og::data::detail

@@ -1,0 +1,229 @@
+#include "io/Image.hpp"
+
+#include <Imath/half.h>
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <png.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <exception>
+#include <string>
+#include <system_error>
+
+#include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
+
+namespace og::io {
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Largest accepted side in pixels: far above any render target, small enough that a hostile
+/// header cannot make us allocate more than 32768² × 16 bytes.
+constexpr int kMaxSide = 32768;
+
+[[noreturn]] void fail(const fs::path& file, const std::string& problem) {
+  throw InputError(file.string() + ": " + problem);
+}
+
+/// Library messages may span lines; error messages are one line by policy.
+std::string oneLine(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  std::replace(text.begin(), text.end(), '\r', ' ');
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text.empty() ? std::string("unknown error") : text;
+}
+
+std::size_t pixelCount(int width, int height) {
+  return static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+}
+
+/// Throws unless the size is usable; `what` says which image (the target file).
+void checkSize(const fs::path& file, int width, int height) {
+  if (width <= 0 || height <= 0)
+    fail(file, "invalid image size " + std::to_string(width) + "x" + std::to_string(height));
+  if (width > kMaxSide || height > kMaxSide)
+    fail(file, "image size " + std::to_string(width) + "x" + std::to_string(height) +
+                   " exceeds the limit of " + std::to_string(kMaxSide) + " pixels per side");
+}
+
+template <typename Image>
+void checkImage(const fs::path& file, const Image& image) {
+  checkSize(file, image.width, image.height);
+  if (image.pixels.size() != 4 * pixelCount(image.width, image.height))
+    throw InternalError(file.string() + ": image buffer holds " +
+                        std::to_string(image.pixels.size()) + " values, expected " +
+                        std::to_string(4 * pixelCount(image.width, image.height)));
+}
+
+/// Requires an existing regular file, so "no such file" reads better than a codec's message.
+void checkReadable(const fs::path& file) {
+  std::error_code ec;
+  if (!fs::exists(file, ec)) fail(file, "no such file");
+  if (!fs::is_regular_file(file, ec)) fail(file, "not a regular file");
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// PNG: libpng's simplified API reports errors through png_image::message, no setjmp needed.
+
+void writePng(const fs::path& file, const ImageRgba8& image, bool keepAlpha) {
+  checkImage(file, image);
+  const int channels = keepAlpha ? 4 : 3;
+  std::vector<std::uint8_t> rgb;
+  const std::uint8_t* data = image.pixels.data();
+  if (!keepAlpha) {
+    // The simplified API reads the buffer in the output format, so strip alpha up front.
+    const std::size_t n = pixelCount(image.width, image.height);
+    rgb.resize(3 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+      rgb[3 * i + 0] = image.pixels[4 * i + 0];
+      rgb[3 * i + 1] = image.pixels[4 * i + 1];
+      rgb[3 * i + 2] = image.pixels[4 * i + 2];
+    }
+    data = rgb.data();
+  }
+  writeFileAtomically(file, [&](const fs::path& tmp) {
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    png.width = static_cast<png_uint_32>(image.width);
+    png.height = static_cast<png_uint_32>(image.height);
+    png.format = keepAlpha ? PNG_FORMAT_RGBA : PNG_FORMAT_RGB;
+    // Leaving PNG_IMAGE_FLAG_COLORSPACE_NOT_sRGB clear makes libpng write an sRGB chunk.
+    png.flags = 0;
+    const png_int_32 rowStride = image.width * channels;
+    if (png_image_write_to_file(&png, tmp.c_str(), 0, data, rowStride, nullptr) == 0) {
+      const std::string message = oneLine(png.message);
+      png_image_free(&png);
+      fail(file, "cannot write PNG: " + message);
+    }
+  });
+}
+
+ImageRgba8 readPng(const fs::path& file) {
+  checkReadable(file);
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  if (png_image_begin_read_from_file(&png, file.c_str()) == 0) {
+    const std::string message = oneLine(png.message);
+    png_image_free(&png);
+    fail(file, "not a readable PNG: " + message);
+  }
+  if (png.width == 0 || png.height == 0 || png.width > static_cast<png_uint_32>(kMaxSide) ||
+      png.height > static_cast<png_uint_32>(kMaxSide)) {
+    const std::string size = std::to_string(png.width) + "x" + std::to_string(png.height);
+    png_image_free(&png);
+    fail(file,
+         "PNG size " + size + " is outside 1.." + std::to_string(kMaxSide) + " pixels per side");
+  }
+  // Ask for 8-bit sRGB RGBA whatever the file holds (palette, grey, 16-bit, ...).
+  png.format = PNG_FORMAT_RGBA;
+  ImageRgba8 image;
+  image.width = static_cast<int>(png.width);
+  image.height = static_cast<int>(png.height);
+  image.pixels.resize(4 * pixelCount(image.width, image.height));
+  if (png_image_finish_read(&png, nullptr, image.pixels.data(), 0, nullptr) == 0) {
+    const std::string message = oneLine(png.message);
+    png_image_free(&png);
+    fail(file, "cannot decode PNG: " + message);
+  }
+  png_image_free(&png);  // already released by finish_read; harmless and keeps this obvious
+  return image;
+}
+
+// ---------------------------------------------------------------------------------------------
+// OpenEXR: one code path for half and float files; OpenEXR converts between the float frame
+// buffer and the channel type it stores (rounding to nearest for half).
+
+namespace {
+constexpr const char* kChannelNames[4] = {"R", "G", "B", "A"};
+constexpr std::size_t kFloatPixelBytes = 4 * sizeof(float);
+}  // namespace
+
+void writeExr(const fs::path& file, const ImageRgbaF& image, ExrPixelType type) {
+  checkImage(file, image);
+  // OpenEXR converts pixel types when reading but not when writing: the frame buffer must
+  // hold the channel type, so half output goes through a converted copy.
+  std::vector<half> halves;
+  if (type == ExrPixelType::Half) halves.assign(image.pixels.begin(), image.pixels.end());
+  writeFileAtomically(file, [&](const fs::path& tmp) {
+    try {
+      Imf::Header header(image.width, image.height);
+      header.compression() = Imf::ZIP_COMPRESSION;
+      const bool isHalf = type == ExrPixelType::Half;
+      const Imf::PixelType pixelType = isHalf ? Imf::HALF : Imf::FLOAT;
+      for (const char* name : kChannelNames)
+        header.channels().insert(name, Imf::Channel(pixelType));
+
+      // Slice takes a non-const pointer but only reads through it when writing.
+      const std::size_t valueBytes = isHalf ? sizeof(half) : sizeof(float);
+      const void* data = isHalf ? static_cast<const void*>(halves.data())
+                                : static_cast<const void*>(image.pixels.data());
+      char* base = const_cast<char*>(static_cast<const char*>(data));
+      const std::size_t pixelBytes = 4 * valueBytes;
+      const std::size_t rowBytes = pixelBytes * static_cast<std::size_t>(image.width);
+      Imf::FrameBuffer frame;
+      for (std::size_t c = 0; c < 4; ++c)
+        frame.insert(kChannelNames[c],
+                     Imf::Slice(pixelType, base + c * valueBytes, pixelBytes, rowBytes));
+
+      Imf::OutputFile out(tmp.c_str(), header);
+      out.setFrameBuffer(frame);
+      out.writePixels(image.height);
+    } catch (const std::exception& e) {
+      fail(file, "cannot write OpenEXR: " + oneLine(e.what()));
+    }
+  });
+}
+
+ImageRgbaF readExr(const fs::path& file) {
+  checkReadable(file);
+  try {
+    Imf::InputFile in(file.c_str());
+    const Imath::Box2i window = in.header().dataWindow();
+    // Compute in 64 bits: a hostile header can hold any int32 corners.
+    const long long w = static_cast<long long>(window.max.x) - window.min.x + 1;
+    const long long h = static_cast<long long>(window.max.y) - window.min.y + 1;
+    if (w <= 0 || h <= 0 || w > kMaxSide || h > kMaxSide)
+      fail(file, "OpenEXR data window " + std::to_string(w) + "x" + std::to_string(h) +
+                     " is outside 1.." + std::to_string(kMaxSide) + " pixels per side");
+    const Imf::ChannelList& channels = in.header().channels();
+    for (std::size_t c = 0; c < 3; ++c)
+      if (channels.findChannel(kChannelNames[c]) == nullptr)
+        fail(file, std::string("OpenEXR file has no '") + kChannelNames[c] + "' channel");
+    for (std::size_t c = 0; c < 4; ++c) {
+      const Imf::Channel* channel = channels.findChannel(kChannelNames[c]);
+      if (channel != nullptr && (channel->xSampling != 1 || channel->ySampling != 1))
+        fail(file, std::string("OpenEXR channel '") + kChannelNames[c] +
+                       "' is subsampled, which is not supported");
+    }
+    if (!in.isComplete()) fail(file, "OpenEXR file is incomplete (truncated?)");
+
+    ImageRgbaF image;
+    image.width = static_cast<int>(w);
+    image.height = static_cast<int>(h);
+    image.pixels.resize(4 * pixelCount(image.width, image.height));
+    Imf::FrameBuffer frame;
+    for (std::size_t c = 0; c < 4; ++c) {
+      // A missing alpha channel reads as the fill value 1 (opaque).
+      frame.insert(kChannelNames[c],
+                   Imf::Slice::Make(Imf::FLOAT, image.pixels.data() + c, window, kFloatPixelBytes,
+                                    kFloatPixelBytes * static_cast<std::size_t>(w), 1, 1,
+                                    c == 3 ? 1.0 : 0.0));
+    }
+    in.setFrameBuffer(frame);
+    in.readPixels(window.min.y, window.max.y);
+    return image;
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    fail(file, "not a readable OpenEXR file: " + oneLine(e.what()));
+  }
+}
+
+}  // namespace og::io

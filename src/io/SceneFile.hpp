@@ -1,0 +1,35 @@
+#pragma once
+// Scene settings shared by render (and later record/view), and their TOML file form.
+//
+//   [camera]  latitude_deg, longitude_deg, height_m, heading_deg, pitch_deg, roll_deg, fov_deg
+//   [sun]     time = "2024-06-20T12:00:00Z"  |  elevation_deg, azimuth_deg
+//   [image]   width, height, exposure
+//   [gl]      backend = "auto" | "egl" | "osmesa"
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "core/Time.hpp"
+#include "geo/Camera.hpp"
+
+namespace og::io {
+
+struct SceneSettings {
+  geo::CameraPose camera;
+  std::optional<UtcTime> time;            ///< Sun from the almanac at this instant, or
+  std::optional<double> sunElevationDeg;  ///< Sun elevation at the point under the camera
+  std::optional<double> sunAzimuthDeg;    ///< clockwise from north at that point
+  int width = 512;
+  int height = 512;
+  double exposure = 10.0;
+  std::string glBackend = "auto";
+};
+
+/// Reads a scene file over `base` (keys absent from the file keep base's values).
+/// Throws og::InputError "FILE:LINE: problem" for unknown keys, wrong types, bad values.
+SceneSettings readSceneFile(const std::filesystem::path& file, SceneSettings base);
+
+/// Throws og::InputError naming the first invalid setting (`origin` prefixes the message).
+void validateScene(const SceneSettings& scene, const std::string& origin);
+
+}  // namespace og::io
