@@ -1,0 +1,83 @@
+#include "gl/Context.hpp"
+
+#include <glad/gl.h>
+
+#include "core/Error.hpp"
+#include "core/Log.hpp"
+#include "gl/Loader.hpp"
+
+namespace og::gl {
+
+std::optional<Backend> parseBackend(std::string_view name) {
+  if (name == "auto") return Backend::Auto;
+  if (name == "egl") return Backend::Egl;
+  if (name == "osmesa") return Backend::OsMesa;
+  return std::nullopt;
+}
+
+const char* backendName(Backend b) {
+  switch (b) {
+    case Backend::Auto: return "auto";
+    case Backend::Egl: return "egl";
+    case Backend::OsMesa: return "osmesa";
+  }
+  return "?";
+}
+
+namespace {
+const Context* gLoadedBy = nullptr;  // whose entry points glad currently holds
+}  // namespace
+
+Context::~Context() {
+  if (gLoadedBy == this) gLoadedBy = nullptr;
+}
+
+void Context::makeCurrent() {
+  bind();
+  if (gLoadedBy != this && getProcAddress_ != nullptr) {
+    loadGlFunctions(getProcAddress_);
+    gLoadedBy = this;
+  }
+}
+
+void Context::finishInit(std::string backend, void* (*getProcAddress)(const char*)) {
+  getProcAddress_ = getProcAddress;
+  loadGlFunctions(getProcAddress);
+  gLoadedBy = this;
+  auto str = [](GLenum e) {
+    const auto* s = reinterpret_cast<const char*>(glGetString(e));
+    return std::string(s ? s : "");
+  };
+  info_.backend = std::move(backend);
+  info_.vendor = str(GL_VENDOR);
+  info_.renderer = str(GL_RENDERER);
+  info_.version = str(GL_VERSION);
+  const std::string& r = info_.renderer;
+  info_.software = r.find("llvmpipe") != std::string::npos ||
+                   r.find("softpipe") != std::string::npos ||
+                   r.find("swrast") != std::string::npos;
+  log::info("GL context: " + info_.backend + ", " + info_.renderer + ", " + info_.version);
+}
+
+std::unique_ptr<Context> createHeadlessContext(Backend backend) {
+  switch (backend) {
+    case Backend::Egl: return createEglContext();
+    case Backend::OsMesa: return createOsMesaContext();
+    case Backend::Auto: break;
+  }
+  std::string why;
+  try {
+    return createEglContext();
+  } catch (const InternalError& e) {
+    why = std::string("EGL: ") + e.what();
+    log::info(why + "; trying OSMesa");
+  }
+  try {
+    return createOsMesaContext();
+  } catch (const InternalError& e) {
+    throw InternalError("no OpenGL 4.5 context available (" + why + "; OSMesa: " + e.what() +
+                        ")");
+  }
+}
+
+}  // namespace og::gl

@@ -1,0 +1,79 @@
+#pragma once
+// RAII owners for OpenGL objects (DSA, GL 4.5). Move-only; deleting 0 is a no-op.
+#include <glad/gl.h>
+
+#include <utility>
+
+namespace og::gl {
+
+template <void (*Delete)(GLuint)>
+class Handle {
+ public:
+  Handle() = default;
+  explicit Handle(GLuint id) : id_(id) {}
+  ~Handle() { reset(); }
+  Handle(Handle&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
+  Handle& operator=(Handle&& o) noexcept {
+    if (this != &o) {
+      reset();
+      id_ = std::exchange(o.id_, 0);
+    }
+    return *this;
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+
+  [[nodiscard]] GLuint id() const { return id_; }
+  explicit operator bool() const { return id_ != 0; }
+  void reset() {
+    if (id_ != 0) Delete(id_);
+    id_ = 0;
+  }
+
+ private:
+  GLuint id_ = 0;
+};
+
+void deleteBuffer(GLuint id);
+void deleteVertexArray(GLuint id);
+void deleteTexture(GLuint id);
+void deleteFramebuffer(GLuint id);
+void deleteRenderbuffer(GLuint id);
+void deleteShader(GLuint id);
+void deleteProgram(GLuint id);
+void deleteQuery(GLuint id);
+
+using Buffer = Handle<deleteBuffer>;
+using VertexArray = Handle<deleteVertexArray>;
+using Texture = Handle<deleteTexture>;
+using Framebuffer = Handle<deleteFramebuffer>;
+using Renderbuffer = Handle<deleteRenderbuffer>;
+using ShaderObject = Handle<deleteShader>;
+using ProgramObject = Handle<deleteProgram>;
+using Query = Handle<deleteQuery>;
+
+Buffer createBuffer();
+VertexArray createVertexArray();
+Texture createTexture(GLenum target);
+Framebuffer createFramebuffer();
+Renderbuffer createRenderbuffer();
+Query createQuery(GLenum target);
+
+/// An off-screen render target: one colour texture and a 32-bit float depth texture
+/// (reversed-Z: clear to 0, GL_GREATER).
+struct RenderTarget {
+  Framebuffer fbo;
+  Texture color;
+  Texture depth;
+  int width = 0;
+  int height = 0;
+};
+
+/// colorFormat e.g. GL_RGBA32F (HDR radiance) or GL_RGBA8 (display). Throws
+/// og::InternalError if the framebuffer is incomplete.
+RenderTarget createRenderTarget(int width, int height, GLenum colorFormat, bool withDepth);
+
+/// Throws og::InternalError naming `where` if glGetError reports an error.
+void checkErrors(const char* where);
+
+}  // namespace og::gl
