@@ -1,0 +1,74 @@
+// oceanglobe render: one still image, 8-bit sRGB PNG or linear HDR OpenEXR.
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+
+#include "app/Commands.hpp"
+#include "app/SceneOptions.hpp"
+#include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
+#include "core/Log.hpp"
+#include "data/Elevation.hpp"
+#include "gl/Context.hpp"
+#include "io/Image.hpp"
+#include "render/GlobeRenderer.hpp"
+
+namespace og::app {
+namespace {
+
+enum class Format { Png, Exr };
+
+Format formatOf(const std::filesystem::path& out) {
+  std::string ext = out.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".png") return Format::Png;
+  if (ext == ".exr") return Format::Exr;
+  throw InputError(out.string() + ": unsupported output format '" + ext +
+                   "' (use .png for 8-bit sRGB or .exr for linear HDR)");
+}
+
+struct RenderOptions {
+  SceneOptions scene;
+  std::string output;
+  std::string exrType = "half";
+};
+
+}  // namespace
+
+Run addRenderCommand(CLI::App& parent) {
+  auto opts = std::make_shared<RenderOptions>();
+  CLI::App* cmd = parent.add_subcommand("render", "render one still image of the globe");
+  opts->scene.add(*cmd);
+  cmd->add_option("-o,--output", opts->output, "output file: .png (sRGB) or .exr (linear HDR)")
+      ->required();
+  cmd->add_option("--exr-type", opts->exrType, "EXR pixel type: half or float")
+      ->check(CLI::IsMember({"half", "float"}));
+  return [opts]() {
+    const io::SceneSettings scene = opts->scene.resolve();
+    const std::filesystem::path out = opts->output;
+    const Format format = formatOf(out);
+    checkOutputWritable(out);  // fail before the (long) render, not after
+
+    const auto backend = gl::parseBackend(scene.glBackend);
+    auto context = gl::createHeadlessContext(*backend);
+    log::info("rendering " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
+              " with " + context->info().backend + " (" + context->info().renderer + ")");
+    render::GlobeRenderer renderer(data::defaultElevation());
+    render::FrameInput frame;
+    frame.camera = scene.camera;
+    frame.sunDirectionEcef = sunDirectionOf(scene);
+    frame.exposure = scene.exposure;
+    frame.width = scene.width;
+    frame.height = scene.height;
+    renderer.render(frame);
+    if (format == Format::Png)
+      io::writePng(out, renderer.display());
+    else
+      io::writeExr(out, renderer.radiance(),
+                   opts->exrType == "float" ? io::ExrPixelType::Float : io::ExrPixelType::Half);
+    log::info("wrote " + out.string());
+    return static_cast<int>(kExitOk);
+  };
+}
+
+}  // namespace og::app

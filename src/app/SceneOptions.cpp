@@ -1,0 +1,69 @@
+#include "app/SceneOptions.hpp"
+
+#include "core/Error.hpp"
+#include "geo/Sun.hpp"
+
+namespace og::app {
+
+void SceneOptions::add(CLI::App& cmd) {
+  cmd_ = &cmd;
+  auto& c = flags_.camera;
+  cmd.add_option("--config", config_, "TOML scene file (flags given here override it)");
+  cmd.add_option("--lat", c.position.latitudeDeg, "camera latitude, degrees north [-90, 90]");
+  cmd.add_option("--lon", c.position.longitudeDeg, "camera longitude, degrees east");
+  cmd.add_option("--alt", c.position.heightM, "camera height above the WGS84 ellipsoid, metres");
+  cmd.add_option("--heading", c.headingDeg, "view heading, degrees clockwise from north");
+  cmd.add_option("--pitch", c.pitchDeg, "view pitch, degrees (0 horizon, -90 straight down)");
+  cmd.add_option("--roll", c.rollDeg, "roll, degrees clockwise [-180, 180]");
+  cmd.add_option("--fov", c.verticalFovDeg, "vertical field of view, degrees");
+  cmd.add_option("--width", flags_.width, "image width, pixels");
+  cmd.add_option("--height", flags_.height, "image height, pixels");
+  auto* time = cmd.add_option("--time", time_, "UTC time (ISO 8601) that places the Sun");
+  auto* el = cmd.add_option("--sun-elevation", sunElevation_,
+                            "Sun elevation at the point under the camera, degrees");
+  auto* az = cmd.add_option("--sun-azimuth", sunAzimuth_,
+                            "Sun azimuth there, degrees clockwise from north");
+  time->excludes(el)->excludes(az);
+  cmd.add_option("--exposure", flags_.exposure, "exposure multiplier before tone mapping");
+  cmd.add_option("--gl", flags_.glBackend, "OpenGL backend: auto, egl or osmesa");
+}
+
+io::SceneSettings SceneOptions::resolve() const {
+  io::SceneSettings s;
+  if (!config_.empty()) s = io::readSceneFile(config_, s);
+  auto given = [&](const char* flag) { return cmd_->count(flag) > 0; };
+  auto& c = s.camera;
+  const auto& f = flags_.camera;
+  if (given("--lat")) c.position.latitudeDeg = f.position.latitudeDeg;
+  if (given("--lon")) c.position.longitudeDeg = f.position.longitudeDeg;
+  if (given("--alt")) c.position.heightM = f.position.heightM;
+  if (given("--heading")) c.headingDeg = f.headingDeg;
+  if (given("--pitch")) c.pitchDeg = f.pitchDeg;
+  if (given("--roll")) c.rollDeg = f.rollDeg;
+  if (given("--fov")) c.verticalFovDeg = f.verticalFovDeg;
+  if (given("--width")) s.width = flags_.width;
+  if (given("--height")) s.height = flags_.height;
+  if (given("--exposure")) s.exposure = flags_.exposure;
+  if (given("--gl")) s.glBackend = flags_.glBackend;
+  if (given("--time")) {
+    s.time = UtcTime::parseIso8601(time_);
+    if (!s.time) throw InputError("--time: not an ISO-8601 UTC time: '" + time_ + "'");
+    s.sunElevationDeg.reset();
+    s.sunAzimuthDeg.reset();
+  }
+  if (given("--sun-elevation") || given("--sun-azimuth")) {
+    s.time.reset();
+    if (given("--sun-elevation")) s.sunElevationDeg = sunElevation_;
+    if (given("--sun-azimuth")) s.sunAzimuthDeg = sunAzimuth_;
+  }
+  validateScene(s, "");
+  return s;
+}
+
+glm::dvec3 sunDirectionOf(const io::SceneSettings& s) {
+  if (s.time) return geo::sunEphemeris(*s.time).directionEcef;
+  return geo::sunDirectionFromHorizontal(s.camera.position, s.sunElevationDeg.value_or(50.0),
+                                         s.sunAzimuthDeg.value_or(150.0));
+}
+
+}  // namespace og::app

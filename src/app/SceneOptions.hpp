@@ -1,0 +1,33 @@
+#pragma once
+// The scene flags shared by render/record/view: camera, Sun, image, GL backend, --config.
+#include <CLI/CLI.hpp>
+
+#include <glm/glm.hpp>
+#include <string>
+
+#include "io/SceneFile.hpp"
+
+namespace og::app {
+
+class SceneOptions {
+ public:
+  /// Registers --lat --lon --alt --heading --pitch --roll --fov --width --height --time
+  /// --sun-elevation --sun-azimuth --exposure --gl --config on `cmd`.
+  void add(CLI::App& cmd);
+  /// Defaults, then --config FILE, then the flags given. Throws og::InputError.
+  [[nodiscard]] io::SceneSettings resolve() const;
+
+ private:
+  CLI::App* cmd_ = nullptr;
+  io::SceneSettings flags_;
+  std::string time_;
+  double sunElevation_ = 0, sunAzimuth_ = 0;
+  std::string config_;
+};
+
+/// Direction to the Sun (ECEF, unit) for a scene: from the almanac at the scene's time, from
+/// the given elevation/azimuth at the point under the camera, or a default afternoon Sun
+/// (elevation 50°, azimuth 150° there) when neither is given.
+glm::dvec3 sunDirectionOf(const io::SceneSettings& scene);
+
+}  // namespace og::app

@@ -1,0 +1,113 @@
+#include "render/GlobeRenderer.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "core/Error.hpp"
+#include "gl/Readback.hpp"
+
+namespace og::render {
+namespace {
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+glm::vec3 toFloat(const glm::dvec3& v) { return glm::vec3(v); }
+}  // namespace
+
+GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation)
+    : globe_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
+              {GL_FRAGMENT_SHADER, "render/globe.frag"}}),
+      tonemap_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
+                {GL_FRAGMENT_SHADER, "render/tonemap.frag"}}),
+      emptyVao_(gl::createVertexArray()) {
+  if (elevation.width < 2 || elevation.height < 2)
+    throw InternalError("elevation layer '" + elevation.name + "' is too small to render");
+  // Missing values (NaN) read as sea.
+  std::vector<float> texels(elevation.values);
+  for (float& v : texels)
+    if (!std::isfinite(v)) v = -1.0f;
+  elevation_ = gl::createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(elevation_.id(), 1, GL_R32F, elevation.width, elevation.height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(elevation_.id(), 0, 0, 0, elevation.width, elevation.height, GL_RED,
+                      GL_FLOAT, texels.data());
+  glTextureParameteri(elevation_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(elevation_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(elevation_.id(), GL_TEXTURE_WRAP_S,
+                      elevation.wrapsLongitude ? GL_REPEAT : GL_CLAMP_TO_EDGE);
+  glTextureParameteri(elevation_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  elevationMap_ = glm::vec4(elevation.lon0Deg * kDeg, elevation.lat0Deg * kDeg,
+                            elevation.dLonDeg * kDeg, elevation.dLatDeg * kDeg);
+  elevationSize_ = glm::vec2(elevation.width, elevation.height);
+  elevationWraps_ = elevation.wrapsLongitude ? 1 : 0;
+  gl::checkErrors("GlobeRenderer setup");
+}
+
+void GlobeRenderer::ensureTargets(int width, int height) {
+  if (hdr_.width == width && hdr_.height == height) return;
+  hdr_ = gl::createRenderTarget(width, height, GL_RGBA32F, true);
+  ldr_ = gl::createRenderTarget(width, height, GL_RGBA8, false);
+}
+
+void GlobeRenderer::render(const FrameInput& f) {
+  ensureTargets(f.width, f.height);
+  const geo::CameraView view = geo::makeCameraView(f.camera, f.width, f.height);
+
+  // Eye in the ellipsoid's scaled space; C = |o|² - 1 in double (see geo/ellipsoid.glsl).
+  const glm::dvec3 o = view.positionEcef /
+                       glm::dvec3(geo::kWgs84SemiMajorM, geo::kWgs84SemiMajorM,
+                                  geo::kWgs84SemiMinorM);
+  const double c = glm::dot(o, o) - 1.0;
+  const double tanY = std::tan(0.5 * view.verticalFovRad);
+
+  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  glBindFramebuffer(GL_FRAMEBUFFER, hdr_.fbo.id());
+  glViewport(0, 0, f.width, f.height);
+  const float clearColor[] = {0, 0, 0, 0};
+  const float clearDepth = 0.0f;  // reversed-Z: 0 is infinitely far
+  glClearNamedFramebufferfv(hdr_.fbo.id(), GL_COLOR, 0, clearColor);
+  glClearNamedFramebufferfv(hdr_.fbo.id(), GL_DEPTH, 0, &clearDepth);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+
+  globe_.set("uRight", toFloat(view.right));
+  globe_.set("uUp", toFloat(view.up));
+  globe_.set("uForward", toFloat(view.forward));
+  globe_.set("uTanHalfFov", glm::vec2(static_cast<float>(tanY * view.aspect), static_cast<float>(tanY)));
+  globe_.set("uPixelNdc", glm::vec2(2.0f / static_cast<float>(f.width), 2.0f / static_cast<float>(f.height)));
+  globe_.set("uNear", static_cast<float>(view.nearM));
+  globe_.set("uSunDir", toFloat(glm::normalize(f.sunDirectionEcef)));
+  globe_.set("uEyeScaled", toFloat(o));
+  globe_.set("uEyeC", static_cast<float>(c));
+  globe_.set("uElevationMap", elevationMap_);
+  globe_.set("uElevationSize", elevationSize_);
+  globe_.set("uElevationWraps", elevationWraps_);
+  glBindTextureUnit(0, elevation_.id());
+  globe_.use();
+  glBindVertexArray(emptyVao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+
+  glDisable(GL_DEPTH_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, ldr_.fbo.id());
+  tonemap_.set("uExposure", static_cast<float>(f.exposure));
+  glBindTextureUnit(0, hdr_.color.id());
+  tonemap_.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  gl::checkErrors("GlobeRenderer::render");
+}
+
+io::ImageRgbaF GlobeRenderer::radiance() const {
+  return {hdr_.width, hdr_.height, gl::readRgbaF(hdr_.fbo.id(), hdr_.width, hdr_.height)};
+}
+
+io::ImageRgba8 GlobeRenderer::display() const {
+  return {ldr_.width, ldr_.height, gl::readRgba8(ldr_.fbo.id(), ldr_.width, ldr_.height)};
+}
+
+std::vector<float> GlobeRenderer::depth() const {
+  return gl::readDepth(hdr_.fbo.id(), hdr_.width, hdr_.height);
+}
+
+void GlobeRenderer::finish() { glFinish(); }
+
+}  // namespace og::render
