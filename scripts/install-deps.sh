@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs oceanglobe's build and test dependencies from Debian 12's packages.
+# Skips apt entirely when everything is already installed (fast, works offline).
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config python3-glad
+  libglfw3-dev libglm-dev libgeographiclib-dev libopenexr-dev
+  libegl-dev libgl-dev libosmesa6-dev libegl-mesa0 libgl1-mesa-dri
+  libnetcdf-dev libpng-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
+  libgtest-dev
+  # real data: ETOPO relief/bathymetry and monthly winds (used by tests when present)
+  ferret-datasets
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then
+  exit 0
+fi
+
+echo "oceanglobe: installing ${missing[*]}" >&2
+sudo=""
+if [[ $(id -u) -ne 0 ]]; then sudo="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,105 @@
+// GL tier: the globe pass on a headless context, checked against the CPU camera maths.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geo/Sun.hpp"
+#include "gl/Context.hpp"
+#include "render/GlobeRenderer.hpp"
+#include "support/ImageCompare.hpp"
+
+using namespace og;
+
+namespace {
+// A synthetic layer: land (1000 m) in the northern hemisphere east of 0°, sea elsewhere.
+data::LatLonGrid halfLand() {
+  data::LatLonGrid g;
+  g.name = "test";
+  g.width = 72;
+  g.height = 36;
+  g.lon0Deg = -177.5;
+  g.lat0Deg = -87.5;
+  g.dLonDeg = g.dLatDeg = 5.0;
+  g.wrapsLongitude = true;
+  for (int r = 0; r < g.height; ++r)
+    for (int c = 0; c < g.width; ++c)
+      g.values.push_back((r >= 18 && c >= 36) ? 1000.0f : -4000.0f);
+  return g;
+}
+
+render::FrameInput frame(double lat, double lon, double h, double pitch, int size = 64) {
+  render::FrameInput f;
+  f.camera.position = {lat, lon, h};
+  f.camera.pitchDeg = pitch;
+  f.width = f.height = size;
+  f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 60, 150);
+  return f;
+}
+
+const float* px(const io::ImageRgbaF& img, int x, int y) {
+  return &img.pixels[4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) +
+                          static_cast<std::size_t>(x))];
+}
+}  // namespace
+
+TEST(GlobeRender, GlobeInTheMiddleSpaceInTheCorners) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(halfLand());
+  r.render(frame(10, -30, 2.0e7, -90));
+  const io::ImageRgbaF img = r.radiance();
+  EXPECT_FLOAT_EQ(px(img, 32, 32)[3], 1.0f);
+  EXPECT_GT(px(img, 32, 32)[2], 0.0f);
+  for (auto [x, y] : {std::pair{0, 0}, {63, 0}, {0, 63}, {63, 63}}) {
+    EXPECT_EQ(px(img, x, y)[3], 0.0f);
+    EXPECT_EQ(px(img, x, y)[0] + px(img, x, y)[1] + px(img, x, y)[2], 0.0f);
+  }
+  for (float v : img.pixels) ASSERT_TRUE(std::isfinite(v));
+}
+
+TEST(GlobeRender, DepthIsNearOverDistanceAtEveryScale) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(halfLand());
+  for (double h : {1.0, 1000.0, 2.0e7}) {
+    const render::FrameInput f = frame(-20, 100, h, -90);
+    r.render(f);
+    const geo::CameraView v = geo::makeCameraView(f.camera, f.width, f.height);
+    const std::vector<float> depth = r.depth();
+    // The pixel centre next to the image centre is 1/2 pixel off axis: distance ~ h.
+    const double d = static_cast<double>(depth[32 * 64 + 32]);
+    EXPECT_NEAR(v.nearM / d, h, h * 1e-4) << "height " << h;
+  }
+}
+
+// From 2 m above the sea, the horizon must appear on the row the CPU ellipsoid maths puts it.
+TEST(GlobeRender, HorizonRowMatchesCpuAtTwoMetres) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(halfLand());
+  render::FrameInput f = frame(40, -20, 2.0, 0, 128);
+  f.camera.verticalFovDeg = 2.0;  // ~0.016° per pixel: the horizon dip (0.045°) spans rows
+  r.render(f);
+  const io::ImageRgbaF img = r.radiance();
+  const geo::CameraView v = geo::makeCameraView(f.camera, f.width, f.height);
+  int gpuRow = -1, cpuRow = -1;
+  for (int y = 0; y < 128; ++y) {
+    const double ndcY = 1.0 - 2.0 * (y + 0.5) / 128.0;
+    const bool hitCpu = geo::intersectEllipsoid(v.positionEcef, v.rayDirection(0.0, ndcY)).has_value();
+    if (cpuRow < 0 && hitCpu) cpuRow = y;
+    if (gpuRow < 0 && px(img, 64, y)[3] > 0.5f) gpuRow = y;
+  }
+  ASSERT_GE(cpuRow, 0);
+  EXPECT_GT(cpuRow, 64);  // the sea horizon dips below eye level
+  EXPECT_NEAR(gpuRow, cpuRow, 1);
+}
+
+TEST(GlobeRender, EglAndOsMesaAgree) {
+  io::ImageRgba8 images[2];
+  int i = 0;
+  for (gl::Backend b : {gl::Backend::Egl, gl::Backend::OsMesa}) {
+    auto ctx = gl::createHeadlessContext(b);
+    render::GlobeRenderer r(halfLand());
+    r.render(frame(10, -30, 2.0e7, -90, 96));
+    images[i++] = r.display();
+  }
+  const test::Comparison c = test::compareRgb(images[0], images[1], 1);
+  EXPECT_LE(c.maxDiff, 1) << c.describe();
+}

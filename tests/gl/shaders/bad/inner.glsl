@@ -1,0 +1,4 @@
+// Test fixture for shader error reporting.
+float inner() {
+  return undefined_symbol_here;
+}
