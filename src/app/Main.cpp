@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <exception>
 #include <new>
+#include <utility>
 
 #include "app/Commands.hpp"
 #include "core/Error.hpp"
@@ -20,8 +21,11 @@ int main(int argc, char** argv) {
   app.add_flag("-v,--verbose", verbose, "print progress and diagnostics");
   app.add_flag("-q,--quiet", quiet, "print errors only");
 
-  const app::Run render = app::addRenderCommand(app);
-  const app::Run bench = app::addBenchCommand(app);
+  // One line per sub-command: its name and the function that runs it once parsed.
+  const std::pair<const char*, app::Run> commands[] = {
+      {"render", app::addRenderCommand(app)},
+      {"bench", app::addBenchCommand(app)},
+  };
 
   try {
     app.parse(argc, argv);
@@ -38,10 +42,9 @@ int main(int argc, char** argv) {
   log::setLevel(verbose ? log::Level::Info : quiet ? log::Level::Error : log::Level::Warn);
 
   try {
-    for (const CLI::App* sub : app.get_subcommands()) {
-      if (sub->get_name() == "render") return render();
-      if (sub->get_name() == "bench") return bench();
-    }
+    for (const CLI::App* sub : app.get_subcommands())
+      for (const auto& [name, run] : commands)
+        if (sub->get_name() == name) return run();
     return kExitBadInput;
   } catch (const InputError& e) {
     std::fprintf(stderr, "oceanglobe: %s\n", e.what());
