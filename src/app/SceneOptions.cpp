@@ -1,9 +1,21 @@
 #include "app/SceneOptions.hpp"
 
+#include <cstdlib>
+#include <optional>
+
 #include "core/Error.hpp"
 #include "geo/Sun.hpp"
 
 namespace og::app {
+namespace {
+// The whole string must be one number.
+std::optional<double> parseNumber(const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size()) return std::nullopt;
+  return v;
+}
+}  // namespace
 
 void SceneOptions::add(CLI::App& cmd) {
   cmd_ = &cmd;
@@ -26,6 +38,15 @@ void SceneOptions::add(CLI::App& cmd) {
   time->excludes(el)->excludes(az);
   cmd.add_option("--exposure", flags_.exposure, "exposure multiplier before tone mapping");
   cmd.add_option("--gl", flags_.glBackend, "OpenGL backend: auto, egl or osmesa");
+  cmd.add_option("--ocean", flags_.oceanModel, "ocean model: bruneton (filtered) or classic");
+  cmd.add_option("--wind", wind_,
+                 "wind where no layer covers: SPEED[,DIR] in m/s and degrees clockwise from north "
+                 "(the direction it blows towards)");
+  cmd.add_option("--wind-layer", flags_.windLayers,
+                 "wind field FILE[:U,V] (NetCDF or GRIB2); repeat to stack a regional layer over "
+                 "a global one");
+  cmd.add_option("--elevation-layer", flags_.elevationLayer,
+                 "relief/bathymetry FILE[:VAR] in metres (default: embedded ETOPO20)");
 }
 
 io::SceneSettings SceneOptions::resolve() const {
@@ -45,6 +66,18 @@ io::SceneSettings SceneOptions::resolve() const {
   if (given("--height")) s.height = flags_.height;
   if (given("--exposure")) s.exposure = flags_.exposure;
   if (given("--gl")) s.glBackend = flags_.glBackend;
+  if (given("--ocean")) s.oceanModel = flags_.oceanModel;
+  if (given("--wind-layer")) s.windLayers = flags_.windLayers;
+  if (given("--elevation-layer")) s.elevationLayer = flags_.elevationLayer;
+  if (given("--wind")) {
+    const std::size_t comma = wind_.find(',');
+    const auto speed = parseNumber(wind_.substr(0, comma));
+    const auto dir = comma == std::string::npos ? std::optional(s.windDirectionDeg)
+                                                : parseNumber(wind_.substr(comma + 1));
+    if (!speed || !dir) throw InputError("--wind: expected SPEED[,DIRECTION], got '" + wind_ + "'");
+    s.windSpeedMs = *speed;
+    s.windDirectionDeg = *dir;
+  }
   if (given("--time")) {
     s.time = UtcTime::parseIso8601(time_);
     if (!s.time) throw InputError("--time: not an ISO-8601 UTC time: '" + time_ + "'");

@@ -12,7 +12,8 @@ namespace og::app {
 class SceneOptions {
  public:
   /// Registers --lat --lon --alt --heading --pitch --roll --fov --width --height --time
-  /// --sun-elevation --sun-azimuth --exposure --gl --config on `cmd`.
+  /// --sun-elevation --sun-azimuth --exposure --gl --ocean --wind --wind-layer
+  /// --elevation-layer --config on `cmd`.
   void add(CLI::App& cmd);
   /// Defaults, then --config FILE, then the flags given. Throws og::InputError.
   [[nodiscard]] io::SceneSettings resolve() const;
@@ -23,6 +24,7 @@ class SceneOptions {
   std::string time_;
   double sunElevation_ = 0, sunAzimuth_ = 0;
   std::string config_;
+  std::string wind_;
 };
 
 /// Direction to the Sun (ECEF, unit) for a scene: from the almanac at the scene's time, from

@@ -79,6 +79,22 @@ SceneSettings readSceneFile(const std::filesystem::path& file, SceneSettings s) 
        {{"width", [&](const toml::node& n, const std::string& k) { s.width = integer(file, n, k); }},
         {"height", [&](const toml::node& n, const std::string& k) { s.height = integer(file, n, k); }},
         {"exposure", num(s.exposure)}}},
+      {"ocean",
+       {{"model",
+         [&](const toml::node& n, const std::string& k) { s.oceanModel = text(file, n, k); }},
+        {"wind_speed_ms", num(s.windSpeedMs)},
+        {"wind_direction_deg", num(s.windDirectionDeg)}}},
+      {"layers",
+       {{"wind",
+         [&](const toml::node& n, const std::string& k) {
+           const toml::array* list = n.as_array();
+           if (list == nullptr)
+             throw InputError(where(file, n.source()) + "'" + k + "' must be an array of strings");
+           s.windLayers.clear();
+           for (const toml::node& item : *list) s.windLayers.push_back(text(file, item, k));
+         }},
+        {"elevation",
+         [&](const toml::node& n, const std::string& k) { s.elevationLayer = text(file, n, k); }}}},
       {"gl",
        {{"backend",
          [&](const toml::node& n, const std::string& k) { s.glBackend = text(file, n, k); }}}},
@@ -116,6 +132,12 @@ void validateScene(const SceneSettings& s, const std::string& origin) {
     throw InputError(prefix + "Sun elevation must be within [-90, 90] degrees");
   if (s.sunAzimuthDeg && (!std::isfinite(*s.sunAzimuthDeg) || std::abs(*s.sunAzimuthDeg) > 720.0))
     throw InputError(prefix + "Sun azimuth must be a finite number of degrees within [-720, 720]");
+  if (s.oceanModel != "bruneton" && s.oceanModel != "classic")
+    throw InputError(prefix + "ocean model must be bruneton or classic, not '" + s.oceanModel + "'");
+  if (!std::isfinite(s.windSpeedMs) || s.windSpeedMs < 0.0 || s.windSpeedMs > 50.0)
+    throw InputError(prefix + "wind speed must be within [0, 50] m/s");
+  if (!std::isfinite(s.windDirectionDeg) || std::abs(s.windDirectionDeg) > 720.0)
+    throw InputError(prefix + "wind direction must be a finite number of degrees within [-720, 720]");
   if (s.glBackend != "auto" && s.glBackend != "egl" && s.glBackend != "osmesa")
     throw InputError(prefix + "GL backend must be auto, egl or osmesa, not '" + s.glBackend + "'");
 }

@@ -4,10 +4,13 @@
 //   [camera]  latitude_deg, longitude_deg, height_m, heading_deg, pitch_deg, roll_deg, fov_deg
 //   [sun]     time = "2024-06-20T12:00:00Z"  |  elevation_deg, azimuth_deg
 //   [image]   width, height, exposure
+//   [ocean]   model = "bruneton" | "classic", wind_speed_ms, wind_direction_deg
+//   [layers]  wind = ["FILE[:U,V]", ...] (first is the bottom of the stack), elevation = "FILE[:VAR]"
 //   [gl]      backend = "auto" | "egl" | "osmesa"
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/Time.hpp"
 #include "geo/Camera.hpp"
@@ -23,6 +26,11 @@ struct SceneSettings {
   int height = 512;
   double exposure = 10.0;
   std::string glBackend = "auto";
+  std::string oceanModel = "bruneton";    ///< "bruneton" (filtered, default) or "classic"
+  double windSpeedMs = 7.0;               ///< 10 m wind where no wind layer covers, [0, 50]
+  double windDirectionDeg = 90.0;         ///< direction the wind blows towards, clockwise from north
+  std::vector<std::string> windLayers;    ///< "FILE[:U,V]" specs, bottom of the stack first
+  std::string elevationLayer;             ///< "FILE[:VAR]", empty = embedded default
 };
 
 /// Reads a scene file over `base` (keys absent from the file keep base's values).

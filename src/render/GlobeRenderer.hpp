@@ -19,6 +19,7 @@ struct FrameInput {
   double exposure = 10.0;  ///< multiplies radiance (Sun-irradiance units) before tone mapping
   int width = 256;
   int height = 256;
+  double simulationTimeS = 0.0;  ///< seconds since the start of the sequence (wave animation)
 };
 
 class GlobeRenderer {
@@ -33,6 +34,9 @@ class GlobeRenderer {
   [[nodiscard]] io::ImageRgbaF radiance() const;
   [[nodiscard]] io::ImageRgba8 display() const;
   [[nodiscard]] std::vector<float> depth() const;
+
+  /// The tone-mapped display target of the last render() (for blitting to a window).
+  [[nodiscard]] GLuint displayFramebuffer() const { return ldr_.fbo.id(); }
 
   /// Blocks until the GPU has finished the last frame (for timing).
   static void finish();
