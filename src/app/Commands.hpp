@@ -11,5 +11,6 @@ using Run = std::function<int()>;
 
 Run addRenderCommand(CLI::App& parent);
 Run addBenchCommand(CLI::App& parent);
+Run addSpectrumCommand(CLI::App& parent);
 
 }  // namespace og::app

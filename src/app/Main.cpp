@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   const std::pair<const char*, app::Run> commands[] = {
       {"render", app::addRenderCommand(app)},
       {"bench", app::addBenchCommand(app)},
+      {"spectrum", app::addSpectrumCommand(app)},
   };
 
   try {

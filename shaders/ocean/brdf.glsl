@@ -1,0 +1,85 @@
+// Sea-surface reflectance of Bruneton, Neyret & Holzschuch 2010 (seed 000, §4-5): the Ross et
+// al. BRDF for a Gaussian distribution of unresolved slopes, its Smith masking term, and the
+// effective Fresnel factor for sky light filtered over the slope distribution.
+//
+// Shared by GLSL and C++ (src/ocean/Brdf.cpp compiles it with Number = double and GLM vectors),
+// so CPU tests check the shaders' own code. Common subset only: Number, Vec2, Vec3, exp, sqrt,
+// pow, max, min, clamp, dot, normalize.
+//
+// Conventions: all vectors unit, in one frame; n is the mean (resolved) surface normal; tx, ty
+// the unit tangents along and across the wind; sigma2 = (sigma_x², sigma_y²) the unresolved
+// slope variances along tx, ty (dimensionless, > 0).
+
+const Number BRDF_PI = 3.14159265358979;
+const Number BRDF_R0 = 0.02;  // water's Fresnel reflectance at normal incidence
+
+// Schlick's Fresnel approximation F(x) = R + (1 - R)(1 - x)^5 (Eq. 6 context).
+Number fresnelSchlick(Number cosTheta) {
+  Number x = 1.0 - clamp(cosTheta, 0.0, 1.0);
+  return BRDF_R0 + (1.0 - BRDF_R0) * x * x * x * x * x;
+}
+
+// erfc by a rational approximation (abs. error < 2e-3), enough for the masking term.
+Number brdfErfc(Number x) {
+  return 2.0 * exp(-x * x) / (2.319 * x + sqrt(4.0 + 1.52 * x * x));
+}
+
+// Smith's Lambda for a Gaussian slope distribution (Eq. 5):
+// Lambda(a) = (exp(-a²) - a sqrt(pi) erfc(a)) / (2 a sqrt(pi)), a = 1 / (sqrt(2 sigma_phi²) tan(theta)),
+// sigma_phi² the slope variance in the azimuth of the direction.
+Number smithLambda(Number cosTheta, Number sigmaPhi2) {
+  Number c = clamp(cosTheta, 1e-4, 0.99999);
+  Number a = c / sqrt(2.0 * sigmaPhi2 * (1.0 - c * c));
+  return max(0.0, (exp(-a * a) - a * sqrt(BRDF_PI) * brdfErfc(a)) / (2.0 * a * sqrt(BRDF_PI)));
+}
+
+// Slope variance in the azimuth of direction d: sigma_phi² = sx² cos²phi + sy² sin²phi.
+Number azimuthVariance(Vec3 d, Vec3 tx, Vec3 ty, Vec2 sigma2) {
+  Number x = dot(d, tx), y = dot(d, ty);
+  Number r2 = max(x * x + y * y, 1e-12);
+  return (sigma2.x * x * x + sigma2.y * y * y) / r2;
+}
+
+// Gaussian slope density p(zeta) = exp(-1/2 (zx²/sx² + zy²/sy²)) / (2 pi sx sy) (Eq. 3 context).
+Number slopeDensity(Vec2 zeta, Vec2 sigma2) {
+  Number e = 0.5 * (zeta.x * zeta.x / sigma2.x + zeta.y * zeta.y / sigma2.y);
+  return exp(-e) / (2.0 * BRDF_PI * sqrt(sigma2.x * sigma2.y));
+}
+
+// Ross BRDF times cos(theta_l) for the Sun (Eq. 6 with the Sun's solid angle folded into the
+// irradiance): radiance = sunIrradiance * rossSun(...).
+// I = p(zeta_h) F(v.h) / (4 (h.n)^4 cos(theta_v) (1 + Lambda(a_v) + Lambda(a_l))).
+Number rossSun(Vec3 v, Vec3 l, Vec3 n, Vec3 tx, Vec3 ty, Vec2 sigma2) {
+  Number cosV = dot(v, n);
+  Number cosL = dot(l, n);
+  if (cosL <= 0.0 || cosV <= 0.0) return 0.0;
+  Vec3 h = normalize(v + l);
+  Number hn = max(dot(h, n), 1e-4);
+  Vec2 zeta = Vec2(-dot(h, tx) / hn, -dot(h, ty) / hn);  // slope of the facet normal h
+  Number masking = 1.0 + smithLambda(cosV, azimuthVariance(v, tx, ty, sigma2)) +
+                   smithLambda(cosL, azimuthVariance(l, tx, ty, sigma2));
+  Number hn2 = hn * hn;
+  return slopeDensity(zeta, sigma2) * fresnelSchlick(dot(v, h)) / (4.0 * hn2 * hn2 * cosV * masking);
+}
+
+// Effective Fresnel for light from the whole sky (Eq. 10, fitted in the paper):
+// F_bar = R + (1 - R) (1 - cos theta_v)^(5 exp(-2.69 sigma_v)) / (1 + 22.7 sigma_v^1.5),
+// sigma_v = sqrt(sigma_phi²) in the azimuth of v.
+Number effectiveFresnel(Number cosV, Number sigmaV) {
+  Number x = 1.0 - clamp(cosV, 0.0, 1.0);
+  return BRDF_R0 + (1.0 - BRDF_R0) * pow(x, 5.0 * exp(-2.69 * sigmaV)) /
+                       (1.0 + 22.7 * pow(sigmaV, 1.5));
+}
+
+// Reflected direction for the facet of slope zeta (used for the filtered sky lookup, §5.2):
+// f = normalize(-zeta_x tx - zeta_y ty + n), r = 2 (f.v) f - v.
+Vec3 reflectedBySlope(Vec3 v, Vec3 n, Vec3 tx, Vec3 ty, Vec2 zeta) {
+  Vec3 f = normalize(n - zeta.x * tx - zeta.y * ty);
+  return 2.0 * dot(f, v) * f - v;
+}
+
+// Stereographic projection used by the sky maps: u = [rx, ry] / (1 + rz) in the local frame
+// (x east, y north, z up): zenith at 0, horizon on the unit circle.
+Vec2 stereographic(Vec3 r) {
+  return Vec2(r.x, r.y) / (1.0 + max(r.z, -0.999));
+}

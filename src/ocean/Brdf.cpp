@@ -1,0 +1,35 @@
+#include "ocean/Brdf.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace og::ocean::brdf {
+namespace glsl {
+using Number = double;
+using Vec2 = glm::dvec2;
+using Vec3 = glm::dvec3;
+using glm::clamp;
+using glm::dot;
+using glm::normalize;
+using std::exp;
+using std::max;
+using std::pow;
+using std::sqrt;
+#include "ocean/brdf.glsl"
+}  // namespace glsl
+
+double fresnelSchlick(double c) { return glsl::fresnelSchlick(c); }
+double smithLambda(double c, double s) { return glsl::smithLambda(c, s); }
+double slopeDensity(const glm::dvec2& z, const glm::dvec2& s) { return glsl::slopeDensity(z, s); }
+double rossSun(const glm::dvec3& v, const glm::dvec3& l, const glm::dvec3& n, const glm::dvec3& tx,
+               const glm::dvec3& ty, const glm::dvec2& s) {
+  return glsl::rossSun(v, l, n, tx, ty, s);
+}
+double effectiveFresnel(double c, double s) { return glsl::effectiveFresnel(c, s); }
+glm::dvec3 reflectedBySlope(const glm::dvec3& v, const glm::dvec3& n, const glm::dvec3& tx,
+                            const glm::dvec3& ty, const glm::dvec2& z) {
+  return glsl::reflectedBySlope(v, n, tx, ty, z);
+}
+glm::dvec2 stereographic(const glm::dvec3& r) { return glsl::stereographic(r); }
+
+}  // namespace og::ocean::brdf
