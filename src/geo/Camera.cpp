@@ -40,7 +40,7 @@ CameraView makeCameraView(const CameraPose& pose, int widthPx, int heightPx) {
   v.aspect = static_cast<double>(std::max(widthPx, 1)) / static_cast<double>(std::max(heightPx, 1));
   // Near plane shrinks with height so the camera can sit 0.1 m above the waves; reversed-Z
   // float depth keeps ~7 significant digits at every distance, so no far plane is needed.
-  v.nearM = std::clamp(0.25 * v.position.heightM, 0.01, 1.0);
+  v.nearM = std::clamp(0.05 * v.position.heightM, 0.01, 1.0);
 
   // Start looking north along the horizon, then heading about up, pitch about right, roll
   // about forward. Rotations, not lookAt: no orientation is singular.

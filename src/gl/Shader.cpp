@@ -150,6 +150,9 @@ Program::Program(const std::vector<std::pair<GLenum, std::string>>& stages,
 GLint Program::location(const char* name) const { return glGetUniformLocation(id(), name); }
 void Program::set(const char* n, float v) const { glProgramUniform1f(id(), location(n), v); }
 void Program::set(const char* n, int v) const { glProgramUniform1i(id(), location(n), v); }
+void Program::set(const char* n, const glm::ivec2& v) const {
+  glProgramUniform2iv(id(), location(n), 1, glm::value_ptr(v));
+}
 void Program::set(const char* n, const glm::vec2& v) const {
   glProgramUniform2fv(id(), location(n), 1, glm::value_ptr(v));
 }

@@ -45,6 +45,7 @@ class Program {
   [[nodiscard]] GLint location(const char* name) const;
   void set(const char* name, float v) const;
   void set(const char* name, int v) const;
+  void set(const char* name, const glm::ivec2& v) const;
   void set(const char* name, const glm::vec2& v) const;
   void set(const char* name, const glm::vec3& v) const;
   void set(const char* name, const glm::vec4& v) const;

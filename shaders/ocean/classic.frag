@@ -1,0 +1,49 @@
+#version 450 core
+// Classic ocean shading (seed 002): two bump maps scrolling across each other (the second with
+// u and v swapped), a mirror reflection of the sky per pixel, a 1D Fresnel ramp indexed by N.V
+// that tints towards green looking down and blue at grazing angles, and sparkles where the
+// reflection meets the Sun. No filtering beyond the bump maps' mipmaps: the baseline the
+// filtered model is measured against (it aliases and flickers in the distance).
+#include "common/types.glsl"
+#include "ocean/brdf.glsl"
+
+in vec2 vOceanXY;
+in vec3 vRelative;
+in vec2 vSlope;
+out vec4 fragRadiance;
+
+layout(binding = 1) uniform sampler2D uBumpMap;     // tangent-space normals, RG = xy * 0.5 + 0.5
+layout(binding = 2) uniform sampler1D uFresnelRamp; // RGB water colour, A = Fresnel, by N.V
+uniform mat3 uEcefToOcean;
+uniform vec2 uFieldOffset;
+uniform float uTime;
+uniform vec3 uSunDirOcean;
+uniform vec3 uSunIrradiance;
+uniform vec3 uSkyIrradiance;
+uniform vec3 uSkyZenith;
+uniform vec3 uSkyHorizon;
+
+const float BUMP_TILE_M = 8.0;                            // bump-map repeat on the sea, m
+const vec4 BUMP_SPEED = vec4(0.031, 0.04, -0.03, 0.02);   // tiles per second, two maps
+
+vec3 classicSky(vec3 r) {
+  return mix(uSkyHorizon, uSkyZenith, sqrt(clamp(r.z, 0.0, 1.0)));
+}
+
+void main() {
+  vec2 uv = (vOceanXY + uFieldOffset) / BUMP_TILE_M;
+  vec2 uv0 = uv + uTime * BUMP_SPEED.xy;
+  vec2 uv1 = uv.yx * 1.25 + uTime * BUMP_SPEED.zw;  // swapped so the maps never align
+  vec2 b = (texture(uBumpMap, uv0).rg * 2.0 - 1.0 + texture(uBumpMap, uv1).rg * 2.0 - 1.0) * 0.25;
+  vec3 n = normalize(vec3(-vSlope + b, 1.0));
+  vec3 v = -normalize(uEcefToOcean * vRelative);
+  if (dot(n, v) < 0.0) n = normalize(n - 2.0 * dot(n, v) * v);
+  vec3 r = reflect(-v, n);
+  r.z = abs(r.z);
+  vec4 ramp = texture(uFresnelRamp, clamp(dot(n, v), 0.0, 1.0));
+  vec3 sky = classicSky(r);
+  // Sparkles: the Sun seen in the mirror direction, a narrow Phong lobe.
+  float sparkle = pow(max(dot(r, uSunDirOcean), 0.0), 800.0) * 60.0;
+  vec3 water = ramp.rgb * (uSunIrradiance * max(uSunDirOcean.z, 0.0) + uSkyIrradiance);
+  fragRadiance = vec4(mix(water, sky, ramp.a) + uSunIrradiance * sparkle * ramp.a, 1.0);
+}

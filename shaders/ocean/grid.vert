@@ -1,0 +1,53 @@
+#version 450 core
+// Screen-space projected grid (Bruneton 2010 §4.2, after Hinsinger et al.): a regular grid of
+// vertices every few pixels, each cast onto the WGS84 ellipsoid (not a plane) along its pixel's
+// ray and displaced by the filtered wave sum. Vertices whose rays miss the sea are pulled down
+// onto the horizon so no triangle spans the sky. Positions stay camera- or frame-relative.
+#include "common/types.glsl"
+#include "geo/ellipsoid.glsl"
+#include "ocean/waves.glsl"
+
+uniform ivec2 uGridSize;      // vertices per row, rows
+uniform vec4 uGridMarginNdc;  // overshoot (left, right, bottom, top) so displaced edges stay covered
+uniform vec3 uRight;          // camera basis, ECEF axes
+uniform vec3 uUp;
+uniform vec3 uForward;
+uniform vec2 uTanHalfFov;
+uniform mat4 uViewProjection; // camera-relative ECEF -> clip (reversed-Z)
+uniform mat3 uEcefToOcean;    // rows: ocean frame east, north, up in ECEF
+uniform float uEyeHeight;     // eye height above the ellipsoid, m
+uniform float uCellAngle;     // angular size of a grid cell, radians
+
+out vec2 vOceanXY;            // undisplaced position in the ocean frame, m
+out vec3 vRelative;           // displaced position relative to the eye, ECEF axes, m
+
+void main() {
+  int ix = gl_VertexID % uGridSize.x;
+  int iy = gl_VertexID / uGridSize.x;
+  vec2 lo = -1.0 - uGridMarginNdc.xz, hi = 1.0 + uGridMarginNdc.yw;
+  vec2 ndc = mix(lo, hi, vec2(ix, iy) / vec2(uGridSize - 1));
+  vec3 dir = normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp);
+  float t = intersectEllipsoid(dir);
+  if (t < 0.0) {
+    // Above the horizon: lower the ray in its vertical plane until it grazes the sea.
+    vec3 up = transpose(uEcefToOcean)[2];
+    float r = WGS84_A;  // the dip angle hardly depends on which radius is used
+    float dip = acos(clamp(r / (r + uEyeHeight), 0.0, 1.0)) + 1e-5;
+    vec3 horizontal = normalize(dir - dot(dir, up) * up);
+    dir = normalize(horizontal * cos(dip) - up * sin(dip));
+    t = intersectEllipsoid(dir);
+    if (t < 0.0) t = sqrt(uEyeHeight * (2.0 * r + uEyeHeight));
+  }
+  vec3 rel = t * dir;
+  vec3 local = uEcefToOcean * rel + vec3(0.0, 0.0, uEyeHeight);
+  // Projected size of a cell: along the view it is stretched by 1/cos(incidence).
+  vec3 n = uEcefToOcean * ellipsoidNormal(dir, t);
+  float cosIncidence = max(abs(dot(uEcefToOcean * dir, n)), 0.02);
+  float cell = t * uCellAngle / cosIncidence;
+  vec3 d = oceanDisplacement(local.xy, cell);
+  // Displacement along the frame's axes; near the camera (where waves are resolved at all)
+  // they coincide with the local tangent frame.
+  vRelative = rel + transpose(uEcefToOcean) * d;
+  vOceanXY = local.xy;
+  gl_Position = uViewProjection * vec4(vRelative, 1.0);
+}

@@ -1,0 +1,192 @@
+#include "render/OceanRenderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace og::render {
+namespace {
+glm::vec3 toFloat(const glm::dvec3& v) { return glm::vec3(v); }
+
+// The classic model's textures (seed 002): a tileable ripple normal map (sum of sines with
+// integer frequencies over the tile, so it repeats seamlessly) and the 1D Fresnel ramp.
+gl::Texture makeBumpMap() {
+  constexpr int kSize = 256;
+  std::vector<std::uint8_t> texels(static_cast<std::size_t>(kSize * kSize * 2));
+  const int freqs[6][2] = {{3, 1}, {-2, 4}, {5, -3}, {7, 2}, {-4, -6}, {9, 5}};
+  const double amps[6] = {1.0, 0.8, 0.6, 0.45, 0.35, 0.25};
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      double dx = 0, dy = 0;
+      for (int i = 0; i < 6; ++i) {
+        const double ph = 2 * 3.14159265358979 * (freqs[i][0] * x + freqs[i][1] * y) / kSize + i;
+        const double c = amps[i] * std::cos(ph) * 0.12;
+        dx += c * freqs[i][0] / 4.0;
+        dy += c * freqs[i][1] / 4.0;
+      }
+      const auto idx = static_cast<std::size_t>(2 * (y * kSize + x));
+      texels[idx] = static_cast<std::uint8_t>(std::clamp(127.5 + 127.5 * dx, 0.0, 255.0));
+      texels[idx + 1] = static_cast<std::uint8_t>(std::clamp(127.5 + 127.5 * dy, 0.0, 255.0));
+    }
+  gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(t.id(), 9, GL_RG8, kSize, kSize);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(t.id(), 0, 0, 0, kSize, kSize, GL_RG, GL_UNSIGNED_BYTE, texels.data());
+  glGenerateTextureMipmap(t.id());
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+  return t;
+}
+
+gl::Texture makeFresnelRamp() {
+  constexpr int kSize = 64;
+  std::vector<float> texels;
+  for (int i = 0; i < kSize; ++i) {
+    const double cosV = (i + 0.5) / kSize;
+    const double f = 0.02 + 0.98 * std::pow(1.0 - cosV, 5.0);
+    // Greenish looking down, bluish at grazing angles (the paper's ramp), per unit irradiance.
+    const glm::dvec3 down{0.004, 0.010, 0.008}, edge{0.002, 0.005, 0.010};
+    const glm::dvec3 c = glm::mix(edge, down, cosV);
+    texels.insert(texels.end(), {static_cast<float>(c.x), static_cast<float>(c.y),
+                                 static_cast<float>(c.z), static_cast<float>(f)});
+  }
+  gl::Texture t = gl::createTexture(GL_TEXTURE_1D);
+  glTextureStorage1D(t.id(), 1, GL_RGBA16F, kSize);
+  glTextureSubImage1D(t.id(), 0, 0, kSize, GL_RGBA, GL_FLOAT, texels.data());
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  return t;
+}
+}  // namespace
+
+OceanRenderer::OceanRenderer()
+    : program_({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}}),
+      classic_({{GL_VERTEX_SHADER, "ocean/classic.vert"}, {GL_FRAGMENT_SHADER, "ocean/classic.frag"}}),
+      bumpMap_(makeBumpMap()),
+      fresnelRamp_(makeFresnelRamp()),
+      vao_(gl::createVertexArray()),
+      indices_(gl::createBuffer()),
+      waveBuffer_(gl::createBuffer()) {}
+
+void OceanRenderer::ensureGrid(int columns, int rows) {
+  if (columns == gridColumns_ && rows == gridRows_) return;
+  std::vector<GLuint> idx;
+  idx.reserve(static_cast<std::size_t>(6 * (columns - 1) * (rows - 1)));
+  for (int y = 0; y + 1 < rows; ++y)
+    for (int x = 0; x + 1 < columns; ++x) {
+      const auto i = static_cast<GLuint>(y * columns + x);
+      const auto c = static_cast<GLuint>(columns);
+      idx.insert(idx.end(), {i, i + 1, i + c, i + 1, i + c + 1, i + c});
+    }
+  indices_ = gl::createBuffer();
+  glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(idx.size() * sizeof(GLuint)), idx.data(), 0);
+  glVertexArrayElementBuffer(vao_.id(), indices_.id());
+  gridColumns_ = columns;
+  gridRows_ = rows;
+  indexCount_ = static_cast<int>(idx.size());
+}
+
+void OceanRenderer::setCommon(const gl::Program& p, const geo::CameraView& view, int height,
+                              const ocean::OceanFrame& frame, const OceanLighting& lighting) const {
+  const geo::EnuFrame& axes = frame.axes();
+  // Rows east, north, up: ECEF vector -> ocean frame components.
+  const glm::mat3 ecefToOcean = glm::transpose(
+      glm::mat3(glm::vec3(axes.east), glm::vec3(axes.north), glm::vec3(axes.up)));
+  // The eye's height above the frame's tangent plane (the frame sits under the eye).
+  const double eyeHeight = glm::dot(view.positionEcef - frame.originEcef(), axes.up);
+  const glm::dvec3 o = view.positionEcef / glm::dvec3(geo::kWgs84SemiMajorM, geo::kWgs84SemiMajorM,
+                                                     geo::kWgs84SemiMinorM);
+  const double tanY = std::tan(0.5 * view.verticalFovRad);
+  p.set("uGridSize", glm::ivec2(gridColumns_, gridRows_));
+  p.set("uRight", toFloat(view.right));
+  p.set("uUp", toFloat(view.up));
+  p.set("uForward", toFloat(view.forward));
+  p.set("uTanHalfFov", glm::vec2(static_cast<float>(tanY * view.aspect), static_cast<float>(tanY)));
+  p.set("uViewProjection", glm::mat4(view.viewProjection()));
+  p.set("uEcefToOcean", ecefToOcean);
+  p.set("uEyeHeight", static_cast<float>(eyeHeight));
+  p.set("uCellAngle", static_cast<float>(2.0 * tanY / height * cellPixels_));
+  p.set("uEyeScaled", toFloat(o));
+  p.set("uEyeC", static_cast<float>(glm::dot(o, o) - 1.0));
+  p.set("uSunDirOcean", ecefToOcean * toFloat(glm::normalize(lighting.sunDirectionEcef)));
+  p.set("uSunIrradiance", lighting.sunIrradiance);
+  p.set("uSkyIrradiance", lighting.skyIrradiance);
+  p.set("uSeaColor", lighting.seaColor);
+  p.set("uSkyZenith", lighting.skyZenith);
+  p.set("uSkyHorizon", lighting.skyHorizon);
+}
+
+void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
+                         const ocean::WaveSet& waves, const ocean::OceanFrame& frame, double timeS,
+                         const OceanLighting& lighting, double amplitudeScale, OceanModel model) {
+  // The grid overshoots the screen (NDC) so displaced edges stay covered: waves displace
+  // vertices by up to their summed amplitude, which is a large angle seen from a few metres.
+  double amplitudeSum = 0.0;
+  for (const auto& w : waves.waves) amplitudeSum += w.amplitudeM;
+  if (model == OceanModel::Classic) amplitudeSum = 0.76;  // the four sines' heights
+  const double eyeAbove = std::max(view.position.heightM, 0.1);
+  const double side = std::clamp(amplitudeScale * amplitudeSum / eyeAbove, 0.1, 1.0);
+  const double bottom = std::clamp(3.0 * amplitudeScale * amplitudeSum / eyeAbove, 0.1, 3.0);
+  const glm::vec4 margin(static_cast<float>(side), static_cast<float>(side),
+                         static_cast<float>(bottom), 0.1f);  // left, right, bottom, top
+  ensureGrid(std::max(2, static_cast<int>(std::ceil(width * (1 + side) / cellPixels_)) + 1),
+             std::max(2, static_cast<int>(std::ceil(height * (1 + 0.5 * (bottom + 0.1)) / cellPixels_)) + 1));
+
+  if (model == OceanModel::Classic) {
+    const gl::Program& p = classic_;
+    setCommon(p, view, height, frame, lighting);
+    p.set("uGridMarginNdc", margin);
+    // The classic pattern repeats every 800 m (see classic.vert/.frag): fold the offset there.
+    const glm::dvec2 off = frame.fieldOffsetM();
+    p.set("uFieldOffset", glm::vec2(static_cast<float>(std::fmod(off.x, 800.0)),
+                                    static_cast<float>(std::fmod(off.y, 800.0))));
+    p.set("uTime", static_cast<float>(std::fmod(timeS, 1000.0)));
+    glBindTextureUnit(1, bumpMap_.id());
+    glBindTextureUnit(2, fresnelRamp_.id());
+    p.use();
+  } else {
+    // Wave data for this frame: phases folded in double on the CPU (OceanFrame::phases).
+    const ocean::OceanFrame::WavePhases phases = frame.phases(waves, timeS);
+    const double windRad = waves.params.windDirectionDeg * 3.14159265358979323846 / 180.0;
+    const double rot = frame.fieldRotationRad();
+    const glm::dvec2 wind0{std::sin(windRad), std::cos(windRad)};  // east, north
+    const glm::dvec2 wind{std::cos(rot) * wind0.x - std::sin(rot) * wind0.y,
+                          std::sin(rot) * wind0.x + std::cos(rot) * wind0.y};
+    std::vector<glm::vec4> data;
+    data.reserve(2 * waves.waves.size());
+    for (std::size_t i = 0; i < waves.waves.size(); ++i) {
+      const glm::dvec2 k = phases.k[i];
+      const double kl = glm::length(k);
+      const double up = glm::dot(k, wind) / kl;
+      const double cross = (k.x * wind.y - k.y * wind.x) / kl;
+      data.emplace_back(static_cast<float>(k.x), static_cast<float>(k.y),
+                        static_cast<float>(waves.waves[i].amplitudeM),
+                        static_cast<float>(phases.phaseRad[i]));
+      data.emplace_back(static_cast<float>(waves.waves[i].wavelengthM), static_cast<float>(kl),
+                        static_cast<float>(up * up), static_cast<float>(cross * cross));
+    }
+    waveBuffer_ = gl::createBuffer();
+    glNamedBufferStorage(waveBuffer_.id(), static_cast<GLsizeiptr>(data.size() * sizeof(glm::vec4)),
+                         data.data(), 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, waveBuffer_.id());
+    const gl::Program& p = program_;
+    setCommon(p, view, height, frame, lighting);
+    p.set("uGridMarginNdc", margin);
+    p.set("uWaveCount", static_cast<int>(waves.waves.size()));
+    p.set("uWaveLambdaMax", static_cast<float>(waves.waves.front().wavelengthM));
+    p.set("uWaveLogRatio", static_cast<float>(std::log(waves.wavelengthRatio)));
+    p.set("uWaveAmplitude", static_cast<float>(amplitudeScale));
+    p.set("uWindTx", glm::vec3(static_cast<float>(wind.x), static_cast<float>(wind.y), 0.0f));
+    p.set("uTotalVariance",
+          glm::vec2(static_cast<float>(waves.total.up), static_cast<float>(waves.total.cross)));
+    p.use();
+  }
+  glBindVertexArray(vao_.id());
+  glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+  gl::checkErrors("OceanRenderer::draw");
+}
+
+}  // namespace og::render

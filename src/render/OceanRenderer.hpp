@@ -1,0 +1,61 @@
+#pragma once
+// The near ocean (below 20 km): the projected grid displaced by the wave set and shaded per
+// pixel with the filtered BRDF (Bruneton 2010). Draws into the caller's HDR target with the
+// reversed-Z depth test, over the globe pass.
+#include <glm/glm.hpp>
+
+#include "geo/Camera.hpp"
+#include "gl/Objects.hpp"
+#include "gl/Shader.hpp"
+#include "ocean/OceanFrame.hpp"
+#include "ocean/WaveSet.hpp"
+
+namespace og::render {
+
+struct OceanLighting {
+  glm::dvec3 sunDirectionEcef{0, 0, 1};
+  glm::vec3 sunIrradiance{1.0f};         ///< at sea level, Sun-irradiance units
+  glm::vec3 skyIrradiance{0.15f};
+  glm::vec3 skyZenith{0.02f, 0.045f, 0.11f};
+  glm::vec3 skyHorizon{0.07f, 0.09f, 0.12f};
+  glm::vec3 seaColor{0.0015f, 0.004f, 0.007f};  ///< upwelling radiance per unit irradiance
+};
+
+enum class OceanModel {
+  Bruneton,  ///< filtered waves + BRDF, Bruneton et al. 2010 (the default)
+  Classic,   ///< four sines + scrolling bump maps + Fresnel ramp (ShaderX), the baseline
+};
+
+class OceanRenderer {
+ public:
+  /// Needs a current GL 4.5 context.
+  OceanRenderer();
+
+  /// Grid cell size in pixels (the paper's ~8 px); smaller = finer geometry, slower.
+  void setCellPixels(int pixels) { cellPixels_ = pixels; }
+
+  /// Draws the sea into the bound framebuffer (width x height), depth-tested.
+  /// `amplitudeScale` in [0, 1] fades the resolved waves (1 = as the spectrum says).
+  void draw(const geo::CameraView& view, int width, int height, const ocean::WaveSet& waves,
+            const ocean::OceanFrame& frame, double timeS, const OceanLighting& lighting,
+            double amplitudeScale, OceanModel model = OceanModel::Bruneton);
+
+ private:
+  void ensureGrid(int columns, int rows);
+
+  void setCommon(const gl::Program& p, const geo::CameraView& view, int height,
+                 const ocean::OceanFrame& frame, const OceanLighting& lighting) const;
+
+  gl::Program program_;
+  gl::Program classic_;
+  gl::Texture bumpMap_;      ///< classic: tileable ripple normals, mip-mapped
+  gl::Texture fresnelRamp_;  ///< classic: water colour and Fresnel by N.V
+  gl::VertexArray vao_;
+  gl::Buffer indices_;
+  gl::Buffer waveBuffer_;
+  int gridColumns_ = 0, gridRows_ = 0;
+  int indexCount_ = 0;
+  int cellPixels_ = 8;
+};
+
+}  // namespace og::render
