@@ -100,7 +100,7 @@ TEST_F(OceanFixture, MillimetreMovesDoNotJitterAnywhereOnEarth) {
     const std::vector<float> b = render(s, frame);
     double mean = 0.0, meanLevel = 0.0;
     mean = meanAbsDiff(a, b, s.width, 0, s.height);
-    for (std::size_t i = 0; i < a.size(); i += 4) meanLevel += a[i] + a[i + 1] + a[i + 2];
+    for (std::size_t i = 0; i < a.size(); i += 4) meanLevel += double(a[i]) + double(a[i + 1]) + double(a[i + 2]);
     meanLevel /= double(a.size() / 4 * 3);
     EXPECT_LT(mean, 0.02 * meanLevel) << "at " << where.latitudeDeg << ", " << where.longitudeDeg;
   }
@@ -133,7 +133,7 @@ TEST_F(OceanFixture, FarFieldFlickersFarLessThanClassic) {
       s.timeS = 10.0 + f / 30.0;
       const std::vector<float> img = render(s, frame);
       for (int y = top; y < bottom; ++y)
-        for (int x = 0; x < s.width; ++x) level += img[static_cast<std::size_t>(4 * (y * s.width + x) + 2)];
+        for (int x = 0; x < s.width; ++x) level += double(img[static_cast<std::size_t>(4 * (y * s.width + x) + 2)]);
       if (!previous.empty()) diff += meanAbsDiff(img, previous, s.width, top, bottom);
       previous = img;
     }
