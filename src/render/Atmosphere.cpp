@@ -1,0 +1,413 @@
+#include "render/Atmosphere.hpp"
+
+#include <chrono>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
+#include "core/Log.hpp"
+
+namespace og::render {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+constexpr char kMagic[8] = {'O', 'G', 'A', 'T', 'M', '0', '0', '1'};
+
+// Pass numbers of shaders/atmosphere/precompute.comp.
+enum Pass : int {
+  kTransmittance = 1,
+  kDirectIrradiance = 2,
+  kSingleScattering = 3,
+  kScatteringDensity = 4,
+  kIndirectIrradiance = 5,
+  kMultipleScattering = 6,
+  kSkyMaps = 7,
+  kSkyIrradiance = 8,
+};
+
+gl::Program passProgram(int pass) {
+  return gl::Program({{GL_COMPUTE_SHADER, "atmosphere/precompute.comp"}},
+                     {"PASS " + std::to_string(pass)});
+}
+
+gl::Texture texture2D(int w, int h, GLenum format = GL_RGBA32F) {
+  gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(t.id(), 1, format, w, h);
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+gl::Texture texture3D(const atmosphere::TableSizes& s) {
+  gl::Texture t = gl::createTexture(GL_TEXTURE_3D);
+  glTextureStorage3D(t.id(), 1, GL_RGBA32F, s.scatteringNu * s.scatteringMuS, s.scatteringMu,
+                     s.scatteringR);
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+void clear(const gl::Texture& t) {
+  const float zero[4] = {0, 0, 0, 0};
+  glClearTexImage(t.id(), 0, GL_RGBA, GL_FLOAT, zero);
+}
+
+GLuint groups(int n) { return static_cast<GLuint>((n + 7) / 8); }
+
+void dispatch(const gl::Program& p, int w, int h, int d) {
+  p.use();
+  glUniform3i(p.location("uSize"), w, h, d);
+  glDispatchCompute(groups(w), groups(h), static_cast<GLuint>(d));
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                  GL_TEXTURE_UPDATE_BARRIER_BIT);
+}
+
+void bindImage(GLuint unit, const gl::Texture& t, GLenum access, GLenum format = GL_RGBA32F) {
+  glBindImageTexture(unit, t.id(), 0, GL_TRUE, 0, access, format);
+}
+
+std::vector<float> download(const gl::Texture& t, std::size_t texels) {
+  std::vector<float> v(texels * 4);
+  glGetTextureImage(t.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(v.size() * sizeof(float)),
+                    v.data());
+  return v;
+}
+
+std::uint64_t fnv(const void* data, std::size_t n, std::uint64_t h = 14695981039346656037ull) {
+  const auto* b = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < n; ++i) {
+    h ^= b[i];
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+// The text of the code that computes the tables: part of the cache key.
+std::string tableCodeSalt() {
+  return gl::readShaderFile("atmosphere/functions.glsl") +
+         gl::readShaderFile("atmosphere/precompute.comp");
+}
+
+std::string hex(std::uint64_t v) {
+  std::ostringstream s;
+  s << std::hex << v;
+  return s.str();
+}
+
+}  // namespace
+
+std::filesystem::path Atmosphere::defaultCacheDirectory() {
+  if (const char* d = std::getenv("OCEANGLOBE_CACHE_DIR"); d && *d) return d;
+  if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d)
+    return std::filesystem::path(d) / "oceanglobe";
+  if (const char* d = std::getenv("HOME"); d && *d)
+    return std::filesystem::path(d) / ".cache" / "oceanglobe";
+  return std::filesystem::temp_directory_path() / "oceanglobe-cache";
+}
+
+Atmosphere::Atmosphere(const atmosphere::Parameters& parameters, const AtmosphereOptions& options)
+    : parameters_(parameters) {
+  if (auto problem = atmosphere::validate(parameters_))
+    throw InputError("atmosphere: " + *problem);
+  const auto t0 = Clock::now();
+  allocate();
+  std::filesystem::path file;
+  if (options.useCache) {
+    const std::filesystem::path dir =
+        options.cacheDirectory.empty() ? defaultCacheDirectory() : options.cacheDirectory;
+    file = dir / ("atmosphere-" + hex(atmosphere::cacheKey(parameters_, tableCodeSalt())) + ".bin");
+    timing_.fromCache = loadCache(file);
+  }
+  if (!timing_.fromCache) {
+    precompute();
+    if (!file.empty()) {
+      try {
+        std::filesystem::create_directories(file.parent_path());
+        saveCache(file);
+      } catch (const std::exception& e) {
+        log::warn(std::string("atmosphere: tables not cached: ") + e.what());
+        file.clear();
+      }
+    }
+  }
+  glFinish();
+  timing_.tablesMs = msSince(t0);
+  timing_.cacheFile = file;
+  const auto t1 = Clock::now();
+  computeSkyMaps();
+  glFinish();
+  timing_.skyMapsMs = msSince(t1);
+  gl::checkErrors("Atmosphere");
+  log::debug("atmosphere: tables " + std::to_string(timing_.tablesMs) + " ms" +
+             (timing_.fromCache ? " (cached)" : "") + ", sky maps " +
+             std::to_string(timing_.skyMapsMs) + " ms");
+}
+
+void Atmosphere::allocate() {
+  const atmosphere::TableSizes& s = parameters_.tables;
+  transmittance_ = texture2D(s.transmittanceWidth, s.transmittanceHeight);
+  irradiance_ = texture2D(s.irradianceWidth, s.irradianceHeight);
+  scattering_ = texture3D(s);
+  singleMie_ = texture3D(s);
+}
+
+void Atmosphere::setParameters(const gl::Program& g, const atmosphere::Parameters& p) {
+  auto v3 = [](const glm::dvec3& v) { return glm::vec3(v); };
+  auto f = [](double v) { return static_cast<float>(v); };
+  g.set("uAtmosphere.solarIrradiance", v3(p.solarIrradiance));
+  g.set("uAtmosphere.sunAngularRadius", f(p.sunAngularRadiusRad));
+  g.set("uAtmosphere.bottomRadius", f(p.bottomRadiusM));
+  g.set("uAtmosphere.topRadius", f(p.topRadiusM()));
+  g.set("uAtmosphere.rayleighScattering", v3(p.rayleighScattering));
+  g.set("uAtmosphere.rayleighScaleHeight", f(p.rayleighScaleHeightM));
+  g.set("uAtmosphere.mieScattering", v3(p.mieScattering));
+  g.set("uAtmosphere.mieExtinction", v3(p.mieExtinction));
+  g.set("uAtmosphere.mieScaleHeight", f(p.mieScaleHeightM));
+  g.set("uAtmosphere.miePhaseG", f(p.miePhaseG));
+  g.set("uAtmosphere.ozoneAbsorption", v3(p.ozoneAbsorption));
+  g.set("uAtmosphere.ozoneCenterAltitude", f(p.ozoneCenterAltitudeM));
+  g.set("uAtmosphere.ozoneHalfWidth", f(p.ozoneHalfWidthM));
+  g.set("uAtmosphere.groundAlbedo", v3(p.groundAlbedo));
+  g.set("uAtmosphere.muSMin", f(p.muSMin));
+  const atmosphere::TableSizes& t = p.tables;
+  g.set("uAtmosphere.transmittanceWidth", t.transmittanceWidth);
+  g.set("uAtmosphere.transmittanceHeight", t.transmittanceHeight);
+  g.set("uAtmosphere.irradianceWidth", t.irradianceWidth);
+  g.set("uAtmosphere.irradianceHeight", t.irradianceHeight);
+  g.set("uAtmosphere.scatteringR", t.scatteringR);
+  g.set("uAtmosphere.scatteringMu", t.scatteringMu);
+  g.set("uAtmosphere.scatteringMuS", t.scatteringMuS);
+  g.set("uAtmosphere.scatteringNu", t.scatteringNu);
+  g.set("uAtmosphere.sphereSamples", t.sphereSamples);
+}
+
+void Atmosphere::precompute() {
+  const atmosphere::TableSizes& s = parameters_.tables;
+  const int sw = s.scatteringNu * s.scatteringMuS, sh = s.scatteringMu, sd = s.scatteringR;
+  gl::Texture deltaIrradiance = texture2D(s.irradianceWidth, s.irradianceHeight);
+  gl::Texture deltaRayleigh = texture3D(s), deltaMie = texture3D(s), deltaMultiple = texture3D(s),
+              deltaDensity = texture3D(s);
+  clear(irradiance_);
+  clear(deltaMultiple);
+
+  // Transmittance (Eq. 5).
+  gl::Program transmittance = passProgram(kTransmittance);
+  setParameters(transmittance, parameters_);
+  bindImage(0, transmittance_, GL_WRITE_ONLY);
+  dispatch(transmittance, s.transmittanceWidth, s.transmittanceHeight, 1);
+  glBindTextureUnit(0, transmittance_.id());
+
+  // Direct irradiance E[L0] (kept in the delta table only: rendering adds it analytically).
+  gl::Program direct = passProgram(kDirectIrradiance);
+  setParameters(direct, parameters_);
+  bindImage(0, deltaIrradiance, GL_WRITE_ONLY);
+  dispatch(direct, s.irradianceWidth, s.irradianceHeight, 1);
+
+  // Single scattering.
+  gl::Program single = passProgram(kSingleScattering);
+  setParameters(single, parameters_);
+  bindImage(2, deltaRayleigh, GL_WRITE_ONLY);
+  bindImage(3, deltaMie, GL_WRITE_ONLY);
+  dispatch(single, sw, sh, sd);
+  glCopyImageSubData(deltaRayleigh.id(), GL_TEXTURE_3D, 0, 0, 0, 0, scattering_.id(), GL_TEXTURE_3D,
+                     0, 0, 0, 0, sw, sh, sd);
+  glCopyImageSubData(deltaMie.id(), GL_TEXTURE_3D, 0, 0, 0, 0, singleMie_.id(), GL_TEXTURE_3D, 0, 0,
+                     0, 0, sw, sh, sd);
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+
+  if (parameters_.scatteringOrders >= 2) {
+    gl::Program density = passProgram(kScatteringDensity);
+    gl::Program indirect = passProgram(kIndirectIrradiance);
+    gl::Program multiple = passProgram(kMultipleScattering);
+    for (const gl::Program* p : {&density, &indirect, &multiple}) setParameters(*p, parameters_);
+    glBindTextureUnit(1, deltaRayleigh.id());
+    glBindTextureUnit(2, deltaMie.id());
+    for (int order = 2; order <= parameters_.scatteringOrders; ++order) {
+      // Scattering density J of this order, from L_{order-1} and E_{order-2}.
+      density.set("uOrder", order);
+      glBindTextureUnit(3, deltaMultiple.id());
+      glBindTextureUnit(4, deltaIrradiance.id());
+      bindImage(2, deltaDensity, GL_WRITE_ONLY);
+      dispatch(density, sw, sh, sd);
+      // Indirect irradiance E_{order-1}, accumulated into the final table.
+      indirect.set("uOrder", order - 1);
+      bindImage(0, deltaIrradiance, GL_WRITE_ONLY);
+      bindImage(1, irradiance_, GL_READ_WRITE);
+      dispatch(indirect, s.irradianceWidth, s.irradianceHeight, 1);
+      // Multiple scattering L_order from J, accumulated into the final table.
+      glBindTextureUnit(3, deltaDensity.id());
+      bindImage(2, deltaMultiple, GL_WRITE_ONLY);
+      bindImage(4, scattering_, GL_READ_WRITE);
+      dispatch(multiple, sw, sh, sd);
+      glFinish();  // bounds the driver's queue on llvmpipe; each pass is long anyway
+    }
+  }
+  for (GLuint unit = 0; unit < 5; ++unit) glBindTextureUnit(unit, 0);
+  gl::checkErrors("Atmosphere::precompute");
+}
+
+void Atmosphere::computeSkyMaps() {
+  const atmosphere::TableSizes& s = parameters_.tables;
+  int levels = 1;
+  while ((s.skyMapSize >> levels) > 0) ++levels;
+  skyMaps_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
+  glTextureStorage3D(skyMaps_.id(), levels, GL_RGBA16F, s.skyMapSize, s.skyMapSize, s.skyMapLayers);
+  glTextureParameteri(skyMaps_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(skyMaps_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(skyMaps_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(skyMaps_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  // Anisotropy stays 1: on llvmpipe anisotropic filtering is ~20x slower and wrong
+  // (docs/atmosphere.md); textureGrad still selects the mip level from the gradients.
+  skyIrradiance_ = gl::createTexture(GL_TEXTURE_1D_ARRAY);
+  glTextureStorage2D(skyIrradiance_.id(), 1, GL_RGBA32F, s.skyIrradianceEntries, 2);
+  glTextureParameteri(skyIrradiance_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(skyIrradiance_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(skyIrradiance_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+
+  glBindTextureUnit(0, transmittance_.id());
+  glBindTextureUnit(5, scattering_.id());
+  glBindTextureUnit(2, singleMie_.id());
+  glBindTextureUnit(6, irradiance_.id());
+  gl::Program maps = passProgram(kSkyMaps);
+  setParameters(maps, parameters_);
+  bindImage(5, skyMaps_, GL_WRITE_ONLY, GL_RGBA16F);
+  dispatch(maps, s.skyMapSize, s.skyMapSize, s.skyMapLayers);
+  glGenerateTextureMipmap(skyMaps_.id());
+  gl::Program irr = passProgram(kSkyIrradiance);
+  setParameters(irr, parameters_);
+  bindImage(6, skyIrradiance_, GL_WRITE_ONLY);
+  dispatch(irr, s.skyIrradianceEntries, 1, 1);
+  for (GLuint unit : {0u, 2u, 5u, 6u}) glBindTextureUnit(unit, 0);
+  gl::checkErrors("Atmosphere::computeSkyMaps");
+}
+
+void Atmosphere::bind(const gl::Program& program) const {
+  setParameters(program, parameters_);
+  glBindTextureUnit(2, transmittance_.id());
+  glBindTextureUnit(3, scattering_.id());
+  glBindTextureUnit(4, singleMie_.id());
+  glBindTextureUnit(5, irradiance_.id());
+}
+
+void Atmosphere::bindSkyMaps() const {
+  glBindTextureUnit(6, skyMaps_.id());
+  glBindTextureUnit(7, skyIrradiance_.id());
+}
+
+// Cache file: magic, key, sizes, the four tables as float32 RGBA, FNV-1a of the payload.
+void Atmosphere::saveCache(const std::filesystem::path& file) const {
+  const atmosphere::TableSizes& s = parameters_.tables;
+  const std::size_t n3 = static_cast<std::size_t>(s.scatteringNu * s.scatteringMuS *
+                                                  s.scatteringMu * s.scatteringR);
+  std::vector<float> payload;
+  for (auto [tex, n] : {std::pair{&transmittance_, static_cast<std::size_t>(s.transmittanceWidth * s.transmittanceHeight)},
+                        std::pair{&irradiance_, static_cast<std::size_t>(s.irradianceWidth * s.irradianceHeight)},
+                        std::pair{&scattering_, n3}, std::pair{&singleMie_, n3}}) {
+    const std::vector<float> v = download(*tex, n);
+    payload.insert(payload.end(), v.begin(), v.end());
+  }
+  const std::uint64_t key = atmosphere::cacheKey(parameters_, tableCodeSalt());
+  const std::uint64_t sum = fnv(payload.data(), payload.size() * sizeof(float));
+  const std::uint64_t count = payload.size();
+  writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out.write(kMagic, sizeof kMagic);
+    out.write(reinterpret_cast<const char*>(&key), sizeof key);
+    out.write(reinterpret_cast<const char*>(&count), sizeof count);
+    out.write(reinterpret_cast<const char*>(payload.data()),
+              static_cast<std::streamsize>(payload.size() * sizeof(float)));
+    out.write(reinterpret_cast<const char*>(&sum), sizeof sum);
+    if (!out) throw InternalError(tmp.string() + ": write failed");
+  });
+}
+
+bool Atmosphere::loadCache(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return false;
+  const atmosphere::TableSizes& s = parameters_.tables;
+  const std::size_t nT = static_cast<std::size_t>(s.transmittanceWidth * s.transmittanceHeight);
+  const std::size_t nI = static_cast<std::size_t>(s.irradianceWidth * s.irradianceHeight);
+  const std::size_t n3 = static_cast<std::size_t>(s.scatteringNu * s.scatteringMuS *
+                                                  s.scatteringMu * s.scatteringR);
+  const std::uint64_t expectedCount = 4 * (nT + nI + 2 * n3);
+  char magic[sizeof kMagic] = {};
+  std::uint64_t key = 0, count = 0, sum = 0;
+  in.read(magic, sizeof magic);
+  in.read(reinterpret_cast<char*>(&key), sizeof key);
+  in.read(reinterpret_cast<char*>(&count), sizeof count);
+  auto reject = [&](const std::string& why) {
+    log::warn("atmosphere: ignoring cache " + file.string() + " (" + why + "); recomputing");
+    return false;
+  };
+  if (!in || std::memcmp(magic, kMagic, sizeof kMagic) != 0) return reject("not a table file");
+  if (key != atmosphere::cacheKey(parameters_, tableCodeSalt())) return reject("other parameters");
+  if (count != expectedCount) return reject("wrong size");
+  std::vector<float> payload(count);
+  in.read(reinterpret_cast<char*>(payload.data()), static_cast<std::streamsize>(count * sizeof(float)));
+  in.read(reinterpret_cast<char*>(&sum), sizeof sum);
+  if (!in) return reject("truncated");
+  if (in.peek() != std::char_traits<char>::eof()) return reject("trailing bytes");
+  if (sum != fnv(payload.data(), payload.size() * sizeof(float))) return reject("checksum mismatch");
+  for (float v : payload)
+    if (!std::isfinite(v) || v < 0.0f) return reject("invalid values");
+  const float* p = payload.data();
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage2D(transmittance_.id(), 0, 0, 0, s.transmittanceWidth, s.transmittanceHeight,
+                      GL_RGBA, GL_FLOAT, p);
+  p += 4 * nT;
+  glTextureSubImage2D(irradiance_.id(), 0, 0, 0, s.irradianceWidth, s.irradianceHeight, GL_RGBA,
+                      GL_FLOAT, p);
+  p += 4 * nI;
+  const int sw = s.scatteringNu * s.scatteringMuS;
+  glTextureSubImage3D(scattering_.id(), 0, 0, 0, 0, sw, s.scatteringMu, s.scatteringR, GL_RGBA,
+                      GL_FLOAT, p);
+  p += 4 * n3;
+  glTextureSubImage3D(singleMie_.id(), 0, 0, 0, 0, sw, s.scatteringMu, s.scatteringR, GL_RGBA,
+                      GL_FLOAT, p);
+  gl::checkErrors("Atmosphere::loadCache");
+  return true;
+}
+
+atmosphere::ReferenceTables Atmosphere::readTables() const {
+  const atmosphere::TableSizes& s = parameters_.tables;
+  auto to2D = [](const gl::Texture& t, int w, int h) {
+    const std::vector<float> v = download(t, static_cast<std::size_t>(w * h));
+    atmosphere::Table2D out{w, h, {}};
+    for (std::size_t i = 0; i < v.size(); i += 4) out.texels.emplace_back(v[i], v[i + 1], v[i + 2], v[i + 3]);
+    return out;
+  };
+  auto to3D = [&](const gl::Texture& t) {
+    const int w = s.scatteringNu * s.scatteringMuS, h = s.scatteringMu, d = s.scatteringR;
+    const std::vector<float> v = download(t, static_cast<std::size_t>(w * h * d));
+    atmosphere::Table3D out{w, h, d, {}};
+    for (std::size_t i = 0; i < v.size(); i += 4) out.texels.emplace_back(v[i], v[i + 1], v[i + 2], v[i + 3]);
+    return out;
+  };
+  return {to2D(transmittance_, s.transmittanceWidth, s.transmittanceHeight),
+          to2D(irradiance_, s.irradianceWidth, s.irradianceHeight), to3D(scattering_),
+          to3D(singleMie_)};
+}
+
+std::vector<float> Atmosphere::readSkyMap(int layer) const {
+  const int n = parameters_.tables.skyMapSize;
+  std::vector<float> v(static_cast<std::size_t>(n * n * 4));
+  glGetTextureSubImage(skyMaps_.id(), 0, 0, 0, layer, n, n, 1, GL_RGBA, GL_FLOAT,
+                       static_cast<GLsizei>(v.size() * sizeof(float)), v.data());
+  return v;
+}
+
+}  // namespace og::render

@@ -1,0 +1,72 @@
+#pragma once
+// The precomputed atmosphere on the GPU (Bruneton & Neyret 2008): computes the transmittance,
+// irradiance and 4D scattering tables on the current GL context at start-up (or loads them from
+// the on-disk cache), then the sea-level sky maps for the ocean and the sea-level irradiance
+// table. Rendering passes include shaders/atmosphere/model.glsl (tables) and
+// shaders/atmosphere/skymap.glsl (sky maps) and call bind() / bindSkyMaps().
+#include <filesystem>
+#include <string>
+
+#include "atmosphere/Parameters.hpp"
+#include "atmosphere/Reference.hpp"
+#include "gl/Objects.hpp"
+#include "gl/Shader.hpp"
+
+namespace og::render {
+
+struct AtmosphereOptions {
+  bool useCache = true;
+  /// Empty: Atmosphere::defaultCacheDirectory().
+  std::filesystem::path cacheDirectory;
+};
+
+class Atmosphere {
+ public:
+  /// What start-up cost and where the tables came from.
+  struct Timing {
+    double tablesMs = 0.0;   ///< precomputation, or loading and uploading the cached tables
+    double skyMapsMs = 0.0;  ///< sky maps and the sea-level irradiance table
+    bool fromCache = false;
+    std::filesystem::path cacheFile;  ///< empty when caching is off or failed
+  };
+
+  /// Needs a current GL 4.5 context. Throws og::InputError for invalid parameters.
+  explicit Atmosphere(const atmosphere::Parameters& parameters, const AtmosphereOptions& options = {});
+
+  /// $OCEANGLOBE_CACHE_DIR, else $XDG_CACHE_HOME/oceanglobe, else ~/.cache/oceanglobe.
+  static std::filesystem::path defaultCacheDirectory();
+
+  /// Sets `program`'s uAtmosphere uniforms and binds the tables to units 2-5 (model.glsl).
+  void bind(const gl::Program& program) const;
+  /// Binds the sky maps (unit 6) and the sea-level irradiance table (unit 7) (skymap.glsl).
+  void bindSkyMaps() const;
+
+  [[nodiscard]] const atmosphere::Parameters& parameters() const { return parameters_; }
+  [[nodiscard]] const Timing& timing() const { return timing_; }
+
+  /// The tables read back from the GPU, as the CPU reference lays them out (for tests).
+  [[nodiscard]] atmosphere::ReferenceTables readTables() const;
+  /// Level-0 texels of sky map `layer` (rgba, rows from v = 0), for tests and pictures.
+  [[nodiscard]] std::vector<float> readSkyMap(int layer) const;
+
+  /// Sets uAtmosphere.* of `program` (also used by the precomputation passes).
+  static void setParameters(const gl::Program& program, const atmosphere::Parameters& p);
+
+ private:
+  void allocate();
+  void precompute();
+  bool loadCache(const std::filesystem::path& file);
+  void saveCache(const std::filesystem::path& file) const;
+  void computeSkyMaps();
+
+  atmosphere::Parameters parameters_;
+  Timing timing_;
+  gl::Texture transmittance_;
+  gl::Texture irradiance_;
+  gl::Texture scattering_;
+  gl::Texture singleMie_;
+  gl::Texture skyMaps_;
+  gl::Texture skyIrradiance_;
+};
+
+}  // namespace og::render

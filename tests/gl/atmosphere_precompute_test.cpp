@@ -1,0 +1,148 @@
+// GL tier: the atmosphere tables computed on the GL device against the double-precision CPU
+// reference (the same shaders/atmosphere/functions.glsl compiled as C++), and the table cache.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <filesystem>
+#include <fstream>
+
+#include "atmosphere/Reference.hpp"
+#include "gl/Context.hpp"
+#include "render/Atmosphere.hpp"
+
+using namespace og;
+namespace fs = std::filesystem;
+
+namespace {
+
+atmosphere::Parameters smallEarth(int orders = 3) {
+  atmosphere::Parameters p = atmosphere::earth();
+  p.tables = atmosphere::TableSizes::small();
+  p.scatteringOrders = orders;
+  return p;
+}
+
+render::AtmosphereOptions noCache() {
+  render::AtmosphereOptions o;
+  o.useCache = false;
+  return o;
+}
+
+fs::path freshDir(const std::string& name) {
+  const fs::path d = fs::path(OG_TEST_OUT_DIR) / name;
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+// Peak signal-to-noise ratio of `test` against `ref`, the peak being ref's largest value.
+double psnr(const std::vector<double>& ref, const std::vector<double>& test) {
+  double peak = 0.0, se = 0.0;
+  for (std::size_t i = 0; i < ref.size(); ++i) {
+    peak = std::max(peak, ref[i]);
+    se += (ref[i] - test[i]) * (ref[i] - test[i]);
+  }
+  const double mse = se / static_cast<double>(ref.size());
+  return mse == 0.0 ? 200.0 : 10.0 * std::log10(peak * peak / mse);
+}
+
+}  // namespace
+
+// The sky maps are the GPU's sky images from sea level (stereographic, one per Sun zenith);
+// the CPU renders the same directions from its own double-precision tables.
+TEST(AtmospherePrecompute, GpuSkyImageMatchesCpuReference) {
+  auto ctx = gl::createHeadlessContext();
+  const atmosphere::Parameters p = smallEarth();
+  render::Atmosphere gpu(p, noCache());
+  std::printf("GPU tables: %.0f ms, sky maps %.0f ms\n", gpu.timing().tablesMs,
+              gpu.timing().skyMapsMs);
+  const auto t0 = std::chrono::steady_clock::now();
+  const atmosphere::ReferenceTables cpu = atmosphere::precomputeReference(p);
+  std::printf("CPU reference tables: %.0f ms\n",
+              std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+
+  // Transmittance tables agree closely (same integral, float vs double).
+  const atmosphere::ReferenceTables gpuTables = gpu.readTables();
+  double worst = 0.0;
+  for (std::size_t i = 0; i < cpu.transmittance.texels.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      worst = std::max(worst, std::abs(cpu.transmittance.texels[i][c] - gpuTables.transmittance.texels[i][c]));
+  EXPECT_LT(worst, 2e-3);
+
+  const int n = p.tables.skyMapSize;
+  const double extent = 1.1, maxZenith = 105.0 * std::numbers::pi / 180.0;
+  for (int layer : {0, 8, 11}) {
+    const double sunZenith = layer / double(p.tables.skyMapLayers - 1) * maxZenith;
+    const glm::dvec3 sun(std::sin(sunZenith), 0.0, std::cos(sunZenith));
+    const std::vector<float> image = gpu.readSkyMap(layer);
+    std::vector<double> ref, test;
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        const glm::dvec2 u = (glm::dvec2(x + 0.5, y + 0.5) / double(n) * 2.0 - 1.0) * extent;
+        const double s = glm::dot(u, u);
+        if (s >= 1.0) continue;  // above the horizon only
+        const glm::dvec3 dir(2.0 * u.x / (1 + s), 2.0 * u.y / (1 + s), (1 - s) / (1 + s));
+        const glm::dvec3 l = atmosphere::referenceSkyRadiance(p, cpu, p.bottomRadiusM, dir.z,
+                                                              sun.z, glm::dot(dir, sun));
+        for (int c = 0; c < 3; ++c) {
+          ref.push_back(l[c]);
+          test.push_back(image[4 * static_cast<std::size_t>(y * n + x) + static_cast<std::size_t>(c)]);
+        }
+      }
+    const double db = psnr(ref, test);
+    std::printf("sky map layer %d (Sun zenith %.1f deg): PSNR %.1f dB\n", layer,
+                sunZenith * 180 / std::numbers::pi, db);
+    EXPECT_GT(db, 40.0) << "layer " << layer;
+  }
+}
+
+// Second construction with the same parameters loads the tables; a corrupt or foreign file is
+// ignored, recomputed and replaced, never trusted.
+TEST(AtmospherePrecompute, CacheIsHitAndCorruptCacheIsRebuilt) {
+  auto ctx = gl::createHeadlessContext();
+  atmosphere::Parameters p = smallEarth(2);
+  render::AtmosphereOptions o;
+  o.cacheDirectory = freshDir("atmosphere-cache");
+  render::Atmosphere first(p, o);
+  EXPECT_FALSE(first.timing().fromCache);
+  const fs::path file = first.timing().cacheFile;
+  ASSERT_TRUE(fs::exists(file)) << file;
+  const atmosphere::ReferenceTables reference = first.readTables();
+
+  render::Atmosphere second(p, o);
+  EXPECT_TRUE(second.timing().fromCache);
+  EXPECT_EQ(second.timing().cacheFile, file);
+  const atmosphere::ReferenceTables loaded = second.readTables();
+  EXPECT_EQ(loaded.scattering.texels, reference.scattering.texels);
+  EXPECT_EQ(loaded.transmittance.texels, reference.transmittance.texels);
+
+  // Flip bytes in the middle of the payload: the checksum rejects it.
+  const auto size = fs::file_size(file);
+  {
+    std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(static_cast<std::streamoff>(size / 2));
+    const char junk[8] = {'\x7f', 'j', 'u', 'n', 'k', '!', '\x01', '\x02'};
+    f.write(junk, sizeof junk);
+  }
+  render::Atmosphere third(p, o);
+  EXPECT_FALSE(third.timing().fromCache);
+  EXPECT_EQ(third.readTables().scattering.texels, reference.scattering.texels);
+  render::Atmosphere fourth(p, o);  // the rebuilt file is good again
+  EXPECT_TRUE(fourth.timing().fromCache);
+
+  // Truncated and empty files are rebuilt as well.
+  fs::resize_file(file, size / 3);
+  EXPECT_FALSE(render::Atmosphere(p, o).timing().fromCache);
+  std::ofstream(file, std::ios::trunc).close();
+  EXPECT_FALSE(render::Atmosphere(p, o).timing().fromCache);
+  EXPECT_EQ(fs::file_size(file), size);
+
+  // Other parameters use another file.
+  p.groundAlbedo = glm::dvec3(0.3);
+  render::Atmosphere other(p, o);
+  EXPECT_FALSE(other.timing().fromCache);
+  EXPECT_NE(other.timing().cacheFile, file);
+}

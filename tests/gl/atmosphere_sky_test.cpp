@@ -1,0 +1,121 @@
+// GL tier: the "done when" checks on small renders of the globe pass with the default
+// atmosphere (tables cached under the test output directory after the first run).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "data/Elevation.hpp"
+#include "geo/Sun.hpp"
+#include "gl/Context.hpp"
+#include "render/GlobeRenderer.hpp"
+
+using namespace og;
+
+namespace {
+
+struct Shot {
+  io::ImageRgbaF image;
+  [[nodiscard]] glm::vec4 at(int x, int y) const {
+    const float* p = &image.pixels[4 * static_cast<std::size_t>(y * image.width + x)];
+    return {p[0], p[1], p[2], p[3]};
+  }
+  // Mean rgb over rows [y0, y1) and columns [x0, x1), sky pixels only (alpha 0).
+  [[nodiscard]] glm::dvec3 meanSky(int x0, int x1, int y0, int y1) const {
+    glm::dvec3 sum(0.0);
+    int n = 0;
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x)
+        if (at(x, y).a == 0.0f) {
+          sum += glm::dvec3(at(x, y));
+          ++n;
+        }
+    return n ? sum / double(n) : sum;
+  }
+};
+
+class AtmosphereSky : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    context_ = gl::createHeadlessContext();
+    renderer_ = std::make_unique<render::GlobeRenderer>(data::defaultElevation());
+  }
+  static void TearDownTestSuite() {
+    renderer_.reset();
+    context_.reset();
+  }
+  static Shot shoot(double lat, double lon, double h, double heading, double pitch, double fov,
+                    double sunElevation, double sunAzimuth, int w = 64, int ht = 48) {
+    render::FrameInput f;
+    f.camera.position = {lat, lon, h};
+    f.camera.headingDeg = heading;
+    f.camera.pitchDeg = pitch;
+    f.camera.verticalFovDeg = fov;
+    f.width = w;
+    f.height = ht;
+    f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, sunElevation, sunAzimuth);
+    renderer_->render(f);
+    return {renderer_->radiance()};
+  }
+  static inline std::unique_ptr<gl::Context> context_;
+  static inline std::unique_ptr<render::GlobeRenderer> renderer_;
+};
+
+}  // namespace
+
+TEST_F(AtmosphereSky, HighSunSkyFromSeaLevelIsBlue) {
+  // Sun 60° high in the south; looking north, 50° up.
+  const Shot s = shoot(0, -140, 2.0, 0, 50, 60, 60, 180);
+  const glm::dvec3 sky = s.meanSky(0, 64, 0, 48);
+  EXPECT_GT(sky.b, sky.g);
+  EXPECT_GT(sky.b, 1.3 * sky.r);
+  EXPECT_GT(sky.b, 0.01);  // daylight, not night
+}
+
+TEST_F(AtmosphereSky, SunsetIsRedNearTheSunAndDarkerOpposite) {
+  // The Sun on the horizon in the west; a band just above the horizon around it.
+  const Shot west = shoot(0, -140, 2.0, 270, 5, 30, 0.0, 270);
+  const Shot east = shoot(0, -140, 2.0, 90, 5, 30, 0.0, 270);
+  // The horizon sits ~5° below the centre: rows 24..31 of 48 are the lowest sky.
+  const glm::dvec3 nearSun = west.meanSky(16, 48, 20, 31);
+  const glm::dvec3 opposite = east.meanSky(16, 48, 20, 31);
+  EXPECT_GT(nearSun.r, nearSun.g);
+  EXPECT_GT(nearSun.r, nearSun.b);
+  EXPECT_GT(nearSun.r + nearSun.g + nearSun.b, 2.0 * (opposite.r + opposite.g + opposite.b));
+}
+
+TEST_F(AtmosphereSky, SunTwentyDegreesBelowHorizonIsDark) {
+  const Shot s = shoot(0, -140, 2.0, 270, 20, 90, -20.0, 270);
+  double maxValue = 0.0, sum = 0.0;
+  for (std::size_t i = 0; i < s.image.pixels.size(); i += 4)
+    for (std::size_t c = 0; c < 3; ++c) {
+      maxValue = std::max(maxValue, double(s.image.pixels[i + c]));
+      sum += double(s.image.pixels[i + c]);
+    }
+  // With the default exposure 10 these stay within the lowest few 8-bit levels.
+  EXPECT_LT(maxValue, 2e-3);
+  EXPECT_LT(sum / double(s.image.pixels.size() * 3 / 4), 5e-4);
+  // Daylight for comparison is > 0.01 (HighSunSkyFromSeaLevelIsBlue).
+}
+
+TEST_F(AtmosphereSky, LimbFrom400kmIsAThinBrightBandBelowBlackSpace) {
+  // Horizon dip at 400 km: acos(R / (R + h)) ~ 19.8°. Look at the lit limb towards the Sun.
+  const Shot s = shoot(20, -40, 4.0e5, 250, -19.6, 8, 20, 250, 48, 64);
+  const int x = 24;
+  int firstGlobe = -1;
+  for (int y = 0; y < 64 && firstGlobe < 0; ++y)
+    if (s.at(x, y).a > 0.5f) firstGlobe = y;
+  ASSERT_GT(firstGlobe, 8) << "the limb should be in the lower part of the view";
+  auto lum = [&](int y) {
+    const glm::dvec4 p(s.at(x, y));
+    return 0.2126 * p.r + 0.7152 * p.g + 0.0722 * p.b;
+  };
+  double band = 0.0;
+  for (int y = 0; y < firstGlobe; ++y) band = std::max(band, lum(y));
+  EXPECT_GT(band, 0.01) << "a bright atmosphere band above the limb";
+  int bright = 0;
+  for (int y = 0; y < firstGlobe; ++y) bright += lum(y) > 0.1 * band ? 1 : 0;
+  EXPECT_LE(bright, 12) << "the band is thin (about 1° of the 8° view)";
+  EXPECT_GE(bright, 1);
+  for (int y = 0; y < 4; ++y) EXPECT_LT(lum(y), 1e-4) << "black space above, row " << y;
+}
