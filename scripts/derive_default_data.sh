@@ -1,6 +1,7 @@
 #!/bin/sh
-# Derives data/etopo20_relief.nc, the default relief embedded in oceanglobe, from the ETOPO20
-# grid in Debian's ferret-datasets package. Needs the nco and netcdf-bin packages.
+# Derives the default data embedded in oceanglobe: data/etopo20_relief.nc (relief) from the ETOPO20
+# grid, and data/navy_winds_199201.nc (wind) from the monthly navy winds, both in Debian's
+# ferret-datasets package. Needs the nco and netcdf-bin packages.
 #
 # ETOPO20 stores relief as float metres; rounding to whole metres changes nothing visible at
 # 20' resolution (the grid is an average of 5' cells) and lets the field fit in int16, which
@@ -64,3 +65,45 @@ ncatted -O -h -a _FillValue,ROSE,c,s,-32768 "$tmp/short.nc"
 nccopy -k nc7 -d 9 -s "$tmp/short.nc" "$tmp/out.nc"
 mv "$tmp/out.nc" "$out"
 echo "wrote $out ($(wc -c <"$out") bytes)"
+
+# ---------------------------------------------------------------------------------------------
+# data/navy_winds_199201.nc: the default wind field, January 1992 from the FNOC monthly winds.
+# Same treatment: fill attributes dropped (this month has no missing cells, checked), components
+# rounded to 0.01 m/s and packed as int16 with scale_factor 0.01, NetCDF-4 + deflate.
+wsrc=${WIND_SOURCE:-/usr/share/ferret-vis/data/monthly_navy_winds.cdf}
+wout=${WIND_OUTPUT:-$(dirname "$0")/../data/navy_winds_199201.nc}
+[ -r "$wsrc" ] || {
+  echo "$wsrc: not readable (apt-get install ferret-datasets)" >&2
+  exit 1
+}
+# Time step 120 is 1992-01-17 (hours since 1980-01-14 14:00), the last January in the file.
+ncks -O -h -d TIME,120 -v UWND,VWND "$wsrc" "$tmp/wind.nc"
+ncap2 -O -h -s 'nu=(UWND==-99.9f).total(); nv=(VWND==-99.9f).total();' "$tmp/wind.nc" "$tmp/wmiss.nc"
+missing=$(ncks -H -C -v nu,nv "$tmp/wmiss.nc" | sed -n 's/.*n[uv] = *\([-0-9.e+_]*\).*/\1/p' | tr '\n' ' ')
+for m in $missing; do
+  case $m in 0|_) ;; *) echo "derive_default_data.sh: $wsrc: $m missing wind cells in step 120" >&2; exit 1 ;; esac
+done
+ncatted -O -h -a missing_value,UWND,d,, -a _FillValue,UWND,d,, \
+  -a missing_value,VWND,d,, -a _FillValue,VWND,d,, "$tmp/wind.nc"
+ncap2 -O -h -s 'UWND=short(floor(UWND*100.0f+0.5f)); VWND=short(floor(VWND*100.0f+0.5f));' \
+  "$tmp/wind.nc" "$tmp/wshort.nc"
+whistory="scripts/derive_default_data.sh: UWND, VWND time step 120 from $(basename "$wsrc"), packed int16 0.01 m/s; NetCDF-4, shuffle, deflate 9"
+ncatted -O -h \
+  -a history,UWND,d,, -a history,VWND,d,, \
+  -a scale_factor,UWND,o,f,0.01 -a scale_factor,VWND,o,f,0.01 \
+  -a units,UWND,o,c,"m s-1" -a units,VWND,o,c,"m s-1" \
+  -a standard_name,UWND,o,c,"eastward_wind" -a standard_name,VWND,o,c,"northward_wind" \
+  -a long_name,UWND,o,c,"monthly mean zonal wind (FNOC)" \
+  -a long_name,VWND,o,c,"monthly mean meridional wind (FNOC)" \
+  -a standard_name,FNOCX,o,c,"longitude" -a standard_name,FNOCY,o,c,"latitude" \
+  -a standard_name,TIME,o,c,"time" -a calendar,TIME,o,c,"standard" \
+  -a title,global,o,c,"FNOC monthly mean surface winds, January 1992, 2.5 degrees" \
+  -a source,global,o,c,"Fleet Numerical Oceanography Center (US Navy) monthly winds as distributed with the Ferret data sets (Debian package ferret-datasets, file monthly_navy_winds.cdf)" \
+  -a license,global,o,c,"Public domain: a work of the U.S. Government (US Navy FNOC; distributed by NOAA PMEL under the Ferret License Agreement, which places it in the public domain)" \
+  -a history,global,o,c,"$whistory" \
+  -a Conventions,global,o,c,"CF-1.8" \
+  "$tmp/wshort.nc"
+ncatted -O -h -a _FillValue,UWND,c,s,-32768 -a _FillValue,VWND,c,s,-32768 "$tmp/wshort.nc"
+nccopy -k nc7 -d 9 -s "$tmp/wshort.nc" "$tmp/wout.nc"
+mv "$tmp/wout.nc" "$wout"
+echo "wrote $wout ($(wc -c <"$wout") bytes)"

@@ -4,12 +4,15 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "data/LatLonGrid.hpp"
 
 namespace og::data {
 
-/// Reads an elevation grid from a NetCDF file (classic, 64-bit offset or NetCDF-4).
+/// Reads an elevation grid (metres above mean sea level, negative below) from a NetCDF file
+/// (classic, 64-bit offset or NetCDF-4) or a GRIB file. Units m, km or ft are converted to
+/// metres; no units is taken as metres; other units are refused.
 /// The latitude/longitude axes are found by CF units (degrees_north / degrees_east) or
 /// standard_name, not by name. `variable` names the field; when empty the only 2-D field on
 /// those axes is used (or one called ROSE / z / elevation / topo / altitude / height).
@@ -19,6 +22,13 @@ LatLonGrid readElevationFile(const std::filesystem::path& file, const std::strin
 /// Same, from a NetCDF image in memory; `label` names it in error messages.
 LatLonGrid readElevationMemory(std::string_view bytes, const std::string& label,
                                const std::string& variable = {});
+
+/// An `--elevation-layer` spec "FILE[:VAR]": the embedded default when `spec` is empty.
+LatLonGrid loadElevationLayer(const std::string& spec);
+
+/// Names elevation fields go by (ROSE, z, elevation, topo, ...), tried in order when a file
+/// holds several fields and none is named.
+const std::vector<std::string>& elevationVariableNames();
 
 /// The default relief embedded in the binary (derived from ETOPO20, see data/README.md).
 const LatLonGrid& defaultElevation();

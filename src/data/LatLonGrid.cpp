@@ -12,6 +12,12 @@ namespace {
 constexpr double kPoleSlackCells = 1e-3;
 }  // namespace
 
+bool LatLonGrid::coversPoles() const {
+  const double topDeg = lat0Deg + static_cast<double>(height - 1) * dLatDeg;
+  return lat0Deg - dLatDeg * (1.0 + kPoleSlackCells) <= -90.0 &&
+         topDeg + dLatDeg * (1.0 + kPoleSlackCells) >= 90.0;
+}
+
 float LatLonGrid::sample(double latitudeDeg, double longitudeDeg) const {
   constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
   if (width <= 0 || height <= 0 || !(dLonDeg > 0.0) || !(dLatDeg > 0.0) ||
@@ -22,9 +28,7 @@ float LatLonGrid::sample(double latitudeDeg, double longitudeDeg) const {
   // Rows: cell centres sit at integer row coordinates.
   const double lastRow = static_cast<double>(height - 1);
   double y = (latitudeDeg - lat0Deg) / dLatDeg;
-  const double topDeg = lat0Deg + lastRow * dLatDeg;
-  const bool global = lat0Deg - dLatDeg * (1.0 + kPoleSlackCells) <= -90.0 &&
-                      topDeg + dLatDeg * (1.0 + kPoleSlackCells) >= 90.0;
+  const bool global = coversPoles();
   // A regional grid's cells reach half a cell beyond its outer centres; a global grid has no
   // centres nearer the poles than its first/last row, so it holds those rows' values.
   if (!global && (y < -0.5 || y > lastRow + 0.5)) return kNaN;

@@ -25,6 +25,10 @@ struct LatLonGrid {
                   static_cast<std::size_t>(column)];
   }
 
+  /// True when the first and last rows lie within about one cell of the poles: sampling then
+  /// holds the polar rows' values up to the poles instead of ending half a cell beyond them.
+  [[nodiscard]] bool coversPoles() const;
+
   /// Bilinear sample at a geodetic position (degrees). Longitude is taken modulo 360.
   /// Outside a regional grid, or where a neighbour is NaN, returns NaN.
   [[nodiscard]] float sample(double latitudeDeg, double longitudeDeg) const;

@@ -8,14 +8,19 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <functional>
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
 #include <system_error>
 #include <utility>
 
 #include "core/Error.hpp"
 #include "data/GridLayout.hpp"
+#include "data/TimeAxis.hpp"
 
 namespace og::data::detail {
 namespace fs = std::filesystem;
@@ -25,6 +30,89 @@ namespace fs = std::filesystem;
 
 namespace {
 void checkComplete(int id, const std::string& label, std::uintmax_t fileSize);
+
+/// netCDF-C's classic header parser allocates names and attribute values from header counts
+/// before checking them against the file, so a 100-byte file can ask for gigabytes (found by
+/// fuzzing). This walks the classic header first and refuses any count the bytes left cannot
+/// hold. `read(offset, n, out)` returns false past the end. NetCDF-4/HDF5 is not affected.
+void checkClassicHeader(const std::string& label, std::uint64_t size,
+                        const std::function<bool(std::uint64_t, std::size_t, unsigned char*)>& read) {
+  std::array<unsigned char, 4> magic{};
+  if (!read(0, 4, magic.data()) || magic[0] != 'C' || magic[1] != 'D' || magic[2] != 'F') return;
+  const int version = magic[3];
+  if (version != 1 && version != 2 && version != 5) return;  // netCDF-C names the problem
+  const std::size_t countBytes = version == 5 ? 8 : 4;
+  const std::size_t offsetBytes = version == 1 ? 4 : 8;
+  std::uint64_t pos = 4;
+  const auto bad = [&](const std::string& what) {
+    throw InputError(label + ": malformed NetCDF header (" + what + " at byte " +
+                     std::to_string(pos) + ")");
+  };
+  const auto number = [&](std::size_t bytes) {
+    std::array<unsigned char, 8> b{};
+    if (!read(pos, bytes, b.data())) bad("header runs past the end of the file");
+    pos += bytes;
+    std::uint64_t v = 0;
+    for (std::size_t i = 0; i < bytes; ++i) v = (v << 8) | b[i];
+    return v;
+  };
+  const auto left = [&] { return size > pos ? size - pos : 0; };
+  const auto skip = [&](std::uint64_t bytes, const char* what) {
+    if (bytes > left()) bad(std::string(what) + " longer than the file");
+    pos += (bytes + 3) / 4 * 4;
+  };
+  const auto name = [&] {
+    const std::uint64_t n = number(countBytes);
+    if (n > NC_MAX_NAME) bad("name of " + std::to_string(n) + " bytes");
+    skip(n, "name");
+  };
+  const auto typeSize = [&](std::uint64_t type) -> std::uint64_t {
+    switch (type) {
+      case 1: case 2: case 7: return 1;
+      case 3: case 8: return 2;
+      case 4: case 5: case 9: return 4;
+      case 6: case 10: case 11: return 8;
+      default:
+        bad("unknown type " + std::to_string(type));
+        return 1;  // not reached: bad() throws
+    }
+  };
+  const auto list = [&](std::uint64_t expectedTag, std::uint64_t minElementBytes,
+                        const std::function<void()>& element) {
+    const std::uint64_t tag = number(4);
+    const std::uint64_t n = number(countBytes);
+    if (tag == 0 && n == 0) return;
+    if (tag != expectedTag) bad("unexpected tag " + std::to_string(tag));
+    if (n > left() / minElementBytes) bad("list of " + std::to_string(n) + " entries");
+    for (std::uint64_t i = 0; i < n; ++i) element();
+  };
+  const auto attributes = [&] {
+    list(0x0C, 12, [&] {
+      name();
+      const std::uint64_t size1 = typeSize(number(4));
+      const std::uint64_t n = number(countBytes);
+      if (n > left() / size1) bad("attribute of " + std::to_string(n) + " values");
+      skip(n * size1, "attribute");
+    });
+  };
+  (void)number(countBytes);  // numrecs
+  list(0x0A, 8, [&] {
+    name();
+    (void)number(countBytes);
+  });
+  attributes();
+  list(0x0B, 16, [&] {
+    name();
+    const std::uint64_t rank = number(countBytes);
+    if (rank > NC_MAX_VAR_DIMS || rank > left() / countBytes)
+      bad("variable of " + std::to_string(rank) + " dimensions");
+    pos += rank * countBytes;
+    attributes();
+    (void)typeSize(number(4));
+    (void)number(countBytes);  // vsize
+    (void)number(offsetBytes);  // begin
+  });
+}
 
 std::mutex& libraryMutex() {
   static std::mutex mutex;
@@ -51,11 +139,22 @@ NetcdfFile NetcdfFile::open(const fs::path& file) {
   std::error_code ec;
   if (!fs::exists(file, ec)) throw InputError(label + ": no such file");
   if (!fs::is_regular_file(file, ec)) throw InputError(label + ": not a regular file");
+  {
+    const std::uintmax_t size = fs::file_size(file, ec);
+    std::ifstream in(file, std::ios::binary);
+    checkClassicHeader(label, ec ? 0 : size,
+                       [&](std::uint64_t offset, std::size_t n, unsigned char* out) {
+                         if (ec || offset > size || n > size - offset) return false;
+                         in.seekg(static_cast<std::streamoff>(offset));
+                         in.read(reinterpret_cast<char*>(out), static_cast<std::streamsize>(n));
+                         return static_cast<std::size_t>(in.gcount()) == n;
+                       });
+  }
   std::unique_lock lock(libraryMutex());
   int id = -1;
   const int status = nc_open(file.c_str(), NC_NOWRITE, &id);
   if (status != NC_NOERR)
-    throw InputError(label + ": not a readable NetCDF file (" + nc_strerror(status) + ")");
+    throw InputError(label + ": not a readable NetCDF or GRIB file (" + nc_strerror(status) + ")");
   NetcdfFile opened(id, label, {}, std::move(lock));
   const std::uintmax_t size = fs::file_size(file, ec);
   if (ec) opened.fail("cannot determine the file size: " + ec.message());
@@ -65,6 +164,11 @@ NetcdfFile NetcdfFile::open(const fs::path& file) {
 
 NetcdfFile NetcdfFile::openMemory(std::string_view bytes, const std::string& label) {
   if (bytes.empty()) throw InputError(label + ": empty NetCDF image");
+  checkClassicHeader(label, bytes.size(), [&](std::uint64_t offset, std::size_t n, unsigned char* out) {
+    if (offset > bytes.size() || n > bytes.size() - offset) return false;
+    std::memcpy(out, bytes.data() + offset, n);
+    return true;
+  });
   // nc_open_mem wants a writable buffer that outlives the dataset; keep our own copy.
   std::vector<char> memory(bytes.begin(), bytes.end());
   std::unique_lock lock(libraryMutex());
@@ -426,139 +530,254 @@ bool isIntegerType(nc_type type) {
 }
 bool isFloatType(nc_type type) { return type == NC_FLOAT || type == NC_DOUBLE; }
 
-const Variable& chooseVariable(const NetcdfFile& file, const std::vector<Variable>& variables,
-                               const AxisByDimension& latAxes, const AxisByDimension& lonAxes,
-                               const std::string& requested,
-                               const std::vector<std::string>& preferredNames) {
-  const auto onAxes = [&](const Variable& v, const AxisByDimension& first,
-                          const AxisByDimension& second) {
-    const std::size_t n = v.dims.size();
-    return n >= 2 && first.count(v.dims[n - 2]) != 0 && second.count(v.dims[n - 1]) != 0;
-  };
-  std::vector<const Variable*> candidates;
-  for (const Variable& v : variables)
-    if (onAxes(v, latAxes, lonAxes)) candidates.push_back(&v);
-
-  if (!requested.empty()) {
-    const auto found = std::find_if(variables.begin(), variables.end(),
-                                    [&](const Variable& v) { return v.name == requested; });
-    if (found == variables.end())
-      file.fail("no variable '" + requested + "'" +
-                (candidates.empty()
-                     ? std::string()
-                     : " (fields on latitude/longitude: " + joinNames(candidates) + ")"));
-    if (onAxes(*found, lonAxes, latAxes))
-      file.fail("variable '" + requested +
-                "' is stored as (longitude, latitude); only (latitude, longitude) is supported");
-    if (!onAxes(*found, latAxes, lonAxes))
-      file.fail("variable '" + requested + "' is not a field on (latitude, longitude) axes");
-    return *found;
-  }
-  if (candidates.size() == 1) return *candidates.front();
-  for (const std::string& preferred : preferredNames)
-    for (const Variable* v : candidates)
-      if (v->name == preferred) return *v;
-  if (candidates.empty()) {
-    for (const Variable& v : variables)
-      if (onAxes(v, lonAxes, latAxes))
-        file.fail("variable '" + v.name +
-                  "' is stored as (longitude, latitude); only (latitude, longitude) is supported");
-    file.fail("no field on (latitude, longitude) axes");
-  }
-  file.fail("several fields on latitude/longitude (" + joinNames(candidates) +
-            "); name the one to use");
+bool onAxes(const Variable& v, const AxisByDimension& first, const AxisByDimension& second) {
+  const std::size_t n = v.dims.size();
+  return n >= 2 && first.count(v.dims[n - 2]) != 0 && second.count(v.dims[n - 1]) != 0;
 }
 
-}  // namespace
+/// Axes found at most this long are refused before reading them (time steps).
+constexpr std::size_t kMaxTimeSteps = 1'000'000;
 
-LatLonGrid readLatLonGrid(const NetcdfFile& file, const std::string& variable,
-                          const std::vector<std::string>& preferredNames) {
-  const std::vector<Variable> variables = listVariables(file);
-  AxisByDimension latAxes;
-  AxisByDimension lonAxes;
-  for (const Variable& v : variables) {
-    const AxisKind kind = axisKind(file, v);
-    if (kind == AxisKind::Latitude) addAxis(file, latAxes, v);
-    if (kind == AxisKind::Longitude) addAxis(file, lonAxes, v);
-  }
-  if (latAxes.empty())
-    file.fail(
-        "no latitude axis (a 1-D variable with units degrees_north or standard_name "
-        "latitude)");
-  if (lonAxes.empty())
-    file.fail(
-        "no longitude axis (a 1-D variable with units degrees_east or standard_name "
-        "longitude)");
-
-  const Variable& field =
-      chooseVariable(file, variables, latAxes, lonAxes, variable, preferredNames);
-  const std::string quoted = "variable '" + field.name + "'";
-  if (!isNumericType(field.type))
-    file.fail(quoted + " has type " + typeName(file, field.type) + ", expected numbers");
-
-  // Leading dimensions (time, level, ...) must hold a single step.
-  const std::size_t rank = field.dims.size();
-  for (std::size_t d = 0; d + 2 < rank; ++d) {
-    const std::size_t length = dimensionLength(file, field.dims[d]);
-    if (length != 1)
-      file.fail(quoted + " has " + std::to_string(length) + " steps along '" +
-                dimensionName(file, field.dims[d]) + "'; only a single 2-D field is supported");
-  }
-
-  const Variable& latAxis = *latAxes.at(field.dims[rank - 2]);
-  const Variable& lonAxis = *lonAxes.at(field.dims[rank - 1]);
-  const std::size_t nLat = dimensionLength(file, field.dims[rank - 2]);
-  const std::size_t nLon = dimensionLength(file, field.dims[rank - 1]);
-  checkGridShape(file.label(), nLat, nLon);  // before reading anything sized by them
-  const std::vector<double> lat = readAxis(file, latAxis);
-  const std::vector<double> lon = readAxis(file, lonAxis);
-  const GridLayout layout =
-      planGridLayout(file.label(), lat, latAxis.name, latAxis.type == NC_FLOAT, lon, lonAxis.name,
-                     lonAxis.type == NC_FLOAT);
-
-  // Packing: value = raw * scale_factor + add_offset.
+/// Everything needed to read one field, validated.
+struct FieldPlan {
+  const Variable* field = nullptr;
+  FieldDescription description;
+  GridLayout layout;
+  std::size_t nLat = 0;
+  std::size_t nLon = 0;
+  int timeDim = -1;  ///< index into field->dims of the time dimension, -1 if none
   double scale = 1.0;
   double offset = 0.0;
-  if (const auto a = file.numericAttribute(field.id, "scale_factor")) scale = a->values[0];
-  if (const auto a = file.numericAttribute(field.id, "add_offset")) offset = a->values[0];
-  if (!std::isfinite(scale) || !std::isfinite(offset) || scale == 0.0)
-    file.fail(quoted + " has an unusable scale_factor/add_offset");
-  const bool packed = scale != 1.0 || offset != 0.0;
-
   FillValues fills;
-  fills.unpackedTolerance = 0.5 * std::abs(scale);
-  if (const auto a = file.numericAttribute(field.id, "_FillValue")) {
-    fills.packed.push_back(a->values[0]);
-  } else if (const auto d = defaultFill(field.type)) {
-    fills.packed.push_back(*d);
+};
+
+/// A NetCDF dataset as a GridFile.
+class NetcdfGridFile final : public GridFile {
+ public:
+  explicit NetcdfGridFile(NetcdfFile file) : nc_(std::move(file)), variables_(listVariables(nc_)) {
+    for (const Variable& v : variables_) {
+      const AxisKind kind = axisKind(nc_, v);
+      if (kind == AxisKind::Latitude) addAxis(nc_, latAxes_, v);
+      if (kind == AxisKind::Longitude) addAxis(nc_, lonAxes_, v);
+    }
   }
-  if (const auto a = file.numericAttribute(field.id, "missing_value")) {
+
+  [[nodiscard]] const std::string& label() const override { return nc_.label(); }
+
+  [[nodiscard]] std::string format() const override {
+    int format = 0;
+    if (nc_inq_format(nc_.id(), &format) != NC_NOERR) return "NetCDF";
+    switch (format) {
+      case NC_FORMAT_CLASSIC:
+        return "NetCDF classic";
+      case NC_FORMAT_64BIT_OFFSET:
+        return "NetCDF 64-bit offset";
+      case NC_FORMAT_CDF5:
+        return "NetCDF CDF5";
+      case NC_FORMAT_NETCDF4_CLASSIC:
+        return "NetCDF-4 classic model";
+      default:
+        return "NetCDF-4";
+    }
+  }
+
+  [[nodiscard]] std::vector<FieldSummary> fields() const override {
+    requireAxes();
+    std::vector<FieldSummary> out;
+    for (const Variable& v : variables_)
+      if (onAxes(v, latAxes_, lonAxes_)) out.push_back(summarise(v));
+    if (out.empty()) {
+      for (const Variable& v : variables_)
+        if (onAxes(v, lonAxes_, latAxes_))
+          nc_.fail("variable '" + v.name +
+                   "' is stored as (longitude, latitude); only (latitude, longitude) is supported");
+      nc_.fail("no field on (latitude, longitude) axes");
+    }
+    return out;
+  }
+
+  [[nodiscard]] FieldDescription describe(const std::string& name) const override {
+    return plan(name).description;
+  }
+
+  [[nodiscard]] LatLonGrid read(const std::string& name, std::size_t step) const override;
+
+ private:
+  void requireAxes() const {
+    if (latAxes_.empty())
+      nc_.fail(
+          "no latitude axis (a 1-D variable with units degrees_north or standard_name "
+          "latitude)");
+    if (lonAxes_.empty())
+      nc_.fail(
+          "no longitude axis (a 1-D variable with units degrees_east or standard_name "
+          "longitude)");
+  }
+
+  [[nodiscard]] FieldSummary summarise(const Variable& v) const {
+    FieldSummary s;
+    s.name = v.name;
+    s.standardName = nc_.textAttribute(v.id, "standard_name").value_or("");
+    s.longName = nc_.textAttribute(v.id, "long_name").value_or("");
+    s.units = nc_.textAttribute(v.id, "units").value_or("");
+    return s;
+  }
+
+  [[nodiscard]] const Variable* coordinateOf(int dim) const {
+    const std::string name = dimensionName(nc_, dim);
+    for (const Variable& v : variables_)
+      if (v.name == name && v.dims.size() == 1 && v.dims[0] == dim) return &v;
+    return nullptr;
+  }
+
+  /// Finds the time dimension among the leading ones; others must hold one step.
+  void planLeadingDimensions(FieldPlan& p) const;
+  [[nodiscard]] FieldPlan plan(const std::string& name) const;
+
+  NetcdfFile nc_;
+  std::vector<Variable> variables_;  // never resized after construction: the maps point into it
+  AxisByDimension latAxes_;
+  AxisByDimension lonAxes_;
+};
+
+void NetcdfGridFile::planLeadingDimensions(FieldPlan& p) const {
+  const Variable& field = *p.field;
+  const std::string quoted = "variable '" + field.name + "'";
+  const std::size_t rank = field.dims.size();
+  for (std::size_t d = 0; d + 2 < rank; ++d) {
+    const int dim = field.dims[d];
+    const std::size_t length = dimensionLength(nc_, dim);
+    const std::string dimName = dimensionName(nc_, dim);
+    const Variable* coordinate = coordinateOf(dim);
+    std::optional<TimeUnits> units;
+    std::string calendar;
+    std::string unitsText;
+    if (coordinate != nullptr && isNumericType(coordinate->type)) {
+      unitsText = nc_.textAttribute(coordinate->id, "units").value_or("");
+      units = parseTimeUnits(unitsText);
+      calendar = nc_.textAttribute(coordinate->id, "calendar").value_or("");
+    }
+    const bool looksLikeTime = units.has_value() || lower(dimName).find("time") != std::string::npos;
+    if (length == 0) nc_.fail(quoted + " has no steps along '" + dimName + "'");
+    if (length == 1 && !units) continue;  // a single level/ensemble member/untimed step
+    if (length > 1 && !looksLikeTime)
+      nc_.fail(quoted + " has " + std::to_string(length) + " steps along '" + dimName +
+               "'; only one 2-D field per time step is supported");
+    if (p.timeDim >= 0)
+      nc_.fail(quoted + " has two time axes ('" + dimensionName(nc_, field.dims[static_cast<std::size_t>(p.timeDim)]) +
+               "' and '" + dimName + "')");
+    if (length > 1 && coordinate == nullptr)
+      nc_.fail(quoted + " has " + std::to_string(length) + " steps along '" + dimName +
+               "' but no time coordinate variable '" + dimName + "' to tell them apart");
+    if (!units)
+      nc_.fail("time axis '" + dimName + "' has units '" + unitsText +
+               "' that are not understood (expected e.g. 'hours since 1900-01-01 00:00:00')");
+    if (!isRealCalendar(calendar))
+      nc_.fail("time axis '" + dimName + "' uses calendar '" + calendar +
+               "'; only standard, gregorian and proleptic_gregorian dates are supported");
+    if (length > kMaxTimeSteps)
+      nc_.fail("time axis '" + dimName + "' has " + std::to_string(length) + " steps (limit " +
+               std::to_string(kMaxTimeSteps) + ")");
+    std::vector<double> values(length);
+    nc_.check(nc_get_var_double(nc_.id(), coordinate->id, values.data()),
+              "cannot read time axis '" + dimName + "'");
+    p.timeDim = static_cast<int>(d);
+    p.description.timeAxisName = dimName;
+    p.description.times = toInstants(nc_.label(), dimName, values, *units);
+  }
+}
+
+FieldPlan NetcdfGridFile::plan(const std::string& name) const {
+  requireAxes();
+  const auto found = std::find_if(variables_.begin(), variables_.end(),
+                                  [&](const Variable& v) { return v.name == name; });
+  if (found == variables_.end()) {
+    std::vector<const Variable*> candidates;
+    for (const Variable& v : variables_)
+      if (onAxes(v, latAxes_, lonAxes_)) candidates.push_back(&v);
+    nc_.fail("no variable '" + name + "'" +
+             (candidates.empty()
+                  ? std::string()
+                  : " (fields on latitude/longitude: " + joinNames(candidates) + ")"));
+  }
+  const Variable& field = *found;
+  const std::string quoted = "variable '" + field.name + "'";
+  if (onAxes(field, lonAxes_, latAxes_) && !onAxes(field, latAxes_, lonAxes_))
+    nc_.fail(quoted + " is stored as (longitude, latitude); only (latitude, longitude) is supported");
+  if (!onAxes(field, latAxes_, lonAxes_))
+    nc_.fail(quoted + " is not a field on (latitude, longitude) axes");
+  if (!isNumericType(field.type))
+    nc_.fail(quoted + " has type " + typeName(nc_, field.type) + ", expected numbers");
+
+  FieldPlan p;
+  p.field = &field;
+  p.description.summary = summarise(field);
+  planLeadingDimensions(p);
+
+  const std::size_t rank = field.dims.size();
+  const Variable& latAxis = *latAxes_.at(field.dims[rank - 2]);
+  const Variable& lonAxis = *lonAxes_.at(field.dims[rank - 1]);
+  p.nLat = dimensionLength(nc_, field.dims[rank - 2]);
+  p.nLon = dimensionLength(nc_, field.dims[rank - 1]);
+  checkGridShape(nc_.label(), p.nLat, p.nLon);  // before reading anything sized by them
+  const std::vector<double> lat = readAxis(nc_, latAxis);
+  const std::vector<double> lon = readAxis(nc_, lonAxis);
+  p.layout = planGridLayout(nc_.label(), lat, latAxis.name, latAxis.type == NC_FLOAT, lon,
+                            lonAxis.name, lonAxis.type == NC_FLOAT);
+
+  // Packing: value = raw * scale_factor + add_offset.
+  if (const auto a = nc_.numericAttribute(field.id, "scale_factor")) p.scale = a->values[0];
+  if (const auto a = nc_.numericAttribute(field.id, "add_offset")) p.offset = a->values[0];
+  if (!std::isfinite(p.scale) || !std::isfinite(p.offset) || p.scale == 0.0)
+    nc_.fail(quoted + " has an unusable scale_factor/add_offset");
+  const bool packed = p.scale != 1.0 || p.offset != 0.0;
+
+  p.fills.unpackedTolerance = 0.5 * std::abs(p.scale);
+  if (const auto a = nc_.numericAttribute(field.id, "_FillValue")) {
+    p.fills.packed.push_back(a->values[0]);
+  } else if (const auto d = defaultFill(field.type)) {
+    p.fills.packed.push_back(*d);
+  }
+  if (const auto a = nc_.numericAttribute(field.id, "missing_value")) {
     // A float missing_value on a packed integer field is in unpacked units (common practice,
     // though CF asks for packed units).
     const bool unpackedUnits =
         packed && isIntegerType(field.type) && isFloatType(static_cast<nc_type>(a->type));
-    for (double m : a->values) (unpackedUnits ? fills.unpacked : fills.packed).push_back(m);
+    for (double m : a->values) (unpackedUnits ? p.fills.unpacked : p.fills.packed).push_back(m);
   }
 
-  LatLonGrid grid;
-  grid.name = field.name;
-  grid.units = file.textAttribute(field.id, "units").value_or("");
-  grid.width = layout.width;
-  grid.height = layout.height;
-  grid.lon0Deg = layout.lon0Deg;
-  grid.lat0Deg = layout.lat0Deg;
-  grid.dLonDeg = layout.dLonDeg;
-  grid.dLatDeg = layout.dLatDeg;
-  grid.wrapsLongitude = layout.wrapsLongitude;
-  const auto width = static_cast<std::size_t>(layout.width);
+  LatLonGrid& g = p.description.geometry;
+  g.name = field.name;
+  g.units = p.description.summary.units;
+  g.width = p.layout.width;
+  g.height = p.layout.height;
+  g.lon0Deg = p.layout.lon0Deg;
+  g.lat0Deg = p.layout.lat0Deg;
+  g.dLonDeg = p.layout.dLonDeg;
+  g.dLatDeg = p.layout.dLatDeg;
+  g.wrapsLongitude = p.layout.wrapsLongitude;
+  return p;
+}
+
+LatLonGrid NetcdfGridFile::read(const std::string& name, std::size_t step) const {
+  const FieldPlan p = plan(name);
+  const std::string quoted = "variable '" + p.field->name + "'";
+  if (step >= p.description.steps())
+    nc_.fail(quoted + " has no time step " + std::to_string(step));
+  LatLonGrid grid = p.description.geometry;
+  const std::size_t nLat = p.nLat;
+  const std::size_t nLon = p.nLon;
+  const auto width = static_cast<std::size_t>(p.layout.width);
   grid.values.assign(nLat * width, std::numeric_limits<float>::quiet_NaN());
 
   // Read whole rows in blocks of about a million values: bounded extra memory, and doubles
   // keep 32-bit integers and fill comparisons exact.
+  const std::size_t rank = p.field->dims.size();
   const std::size_t rowsPerBlock = std::max<std::size_t>(1, (std::size_t{1} << 20) / nLon);
   std::vector<double> block(std::min(rowsPerBlock, nLat) * nLon);
   std::vector<std::size_t> start(rank, 0);
   std::vector<std::size_t> count(rank, 1);
+  if (p.timeDim >= 0) start[static_cast<std::size_t>(p.timeDim)] = step;
   std::size_t valid = 0;
   constexpr double kFloatMax = static_cast<double>(std::numeric_limits<float>::max());
   for (std::size_t row0 = 0; row0 < nLat; row0 += rowsPerBlock) {
@@ -566,27 +785,36 @@ LatLonGrid readLatLonGrid(const NetcdfFile& file, const std::string& variable,
     start[rank - 2] = row0;
     count[rank - 2] = rows;
     count[rank - 1] = nLon;
-    file.check(nc_get_vara_double(file.id(), field.id, start.data(), count.data(), block.data()),
-               "cannot read " + quoted);
+    nc_.check(nc_get_vara_double(nc_.id(), p.field->id, start.data(), count.data(), block.data()),
+              "cannot read " + quoted);
     for (std::size_t r = 0; r < rows; ++r) {
-      float* out = grid.values.data() + layout.outputRow(row0 + r) * width;
+      float* out = grid.values.data() + p.layout.outputRow(row0 + r) * width;
       const double* in = block.data() + r * nLon;
       for (std::size_t c = 0; c < width; ++c) {
-        const double raw = in[layout.fileColumn(c, nLon)];
+        const double raw = in[p.layout.fileColumn(c, nLon)];
         if (std::isnan(raw)) continue;
-        const double value = raw * scale + offset;
-        if (fills.matches(raw, value)) continue;
+        const double value = raw * p.scale + p.offset;
+        if (p.fills.matches(raw, value)) continue;
         if (!std::isfinite(value) || std::abs(value) > kFloatMax)
-          file.fail(quoted + " has a non-finite or out-of-range value " + std::to_string(value) +
-                    " at latitude index " + std::to_string(row0 + r) + ", longitude index " +
-                    std::to_string(layout.fileColumn(c, nLon)));
+          nc_.fail(quoted + " has a non-finite or out-of-range value " + std::to_string(value) +
+                   " at latitude index " + std::to_string(row0 + r) + ", longitude index " +
+                   std::to_string(p.layout.fileColumn(c, nLon)));
         out[c] = static_cast<float>(value);
         ++valid;
       }
     }
   }
-  if (valid == 0) file.fail(quoted + " holds no data (every value is fill/missing)");
+  if (valid == 0)
+    nc_.fail(quoted + " holds no data" +
+             (p.description.times.size() > 1 ? " at time step " + std::to_string(step) : "") +
+             " (every value is fill/missing)");
   return grid;
+}
+
+}  // namespace
+
+std::unique_ptr<GridFile> openNetcdf(NetcdfFile file) {
+  return std::make_unique<NetcdfGridFile>(std::move(file));
 }
 
 }  // namespace og::data::detail

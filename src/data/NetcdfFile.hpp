@@ -1,15 +1,16 @@
 #pragma once
 // Internal to og_data: a NetCDF file opened read-only through netCDF-C (from disk or from
-// memory), and the reader that turns one of its fields into a normalised LatLonGrid.
+// memory), and its view as a GridFile.
 // Every failure is an og::InputError "LABEL: problem".
 #include <filesystem>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "data/LatLonGrid.hpp"
+#include "data/GridFile.hpp"
 
 namespace og::data::detail {
 
@@ -56,11 +57,7 @@ class NetcdfFile {
   std::vector<char> memory_;  // backs an in-memory dataset for as long as it is open
 };
 
-/// Reads one field on regular latitude/longitude axes and normalises it (see LatLonGrid).
-/// Axes are found by CF units or standard_name. `variable` picks the field; when empty, the
-/// only field on the axes is used, or else the first of `preferredNames` that exists.
-/// Scale/offset are applied; _FillValue, missing_value and NaN become NaN.
-LatLonGrid readLatLonGrid(const NetcdfFile& file, const std::string& variable,
-                          const std::vector<std::string>& preferredNames);
+/// The dataset as a GridFile (fields on CF latitude/longitude axes, with a time axis).
+std::unique_ptr<GridFile> openNetcdf(NetcdfFile file);
 
 }  // namespace og::data::detail

@@ -404,7 +404,7 @@ TEST(DataElevation, NonNetcdfAndMissingFilesAreRejected) {
     std::ofstream out(text);
     out << "netcdf? no, just text\n";
   }
-  expectInputError(text.string(), "not a readable NetCDF file",
+  expectInputError(text.string(), "not a readable NetCDF or GRIB file",
                    [&] { (void)og::data::readElevationFile(text); });
   const fs::path missing = outDir() / "absent.nc";
   expectInputError(missing.string(), "no such file",

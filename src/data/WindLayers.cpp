@@ -1,0 +1,166 @@
+#include "data/WindLayers.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "core/Error.hpp"
+
+namespace og::data {
+
+namespace {
+
+double smoothstep(double edge0, double edge1, double x) {
+  const double t = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+/// Distance in cells (8-neighbour chamfer, diagonals √2) from each cell to the nearest cell
+/// without data or, where the grid does not continue, to the nearest cell beyond its edge;
+/// capped at `cap`. Cells without data get 0, their neighbours and edge cells 1.
+std::vector<double> coverageDistance(const std::vector<bool>& valid, int width, int height,
+                                     bool wrapColumns, bool openRows, double cap) {
+  const auto at = [width](int c, int r) {
+    return static_cast<std::size_t>(r) * static_cast<std::size_t>(width) +
+           static_cast<std::size_t>(c);
+  };
+  std::vector<double> d(valid.size());
+  for (std::size_t i = 0; i < d.size(); ++i) d[i] = valid[i] ? cap : 0.0;
+  const double diagonal = std::numbers::sqrt2;
+  // Relaxation sweeps, alternating direction; distances are capped, so a few suffice.
+  const int sweeps = 2 * (static_cast<int>(std::ceil(cap)) + 1);
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
+    const bool forward = sweep % 2 == 0;
+    for (int k = 0; k < height; ++k) {
+      const int r = forward ? k : height - 1 - k;
+      for (int j = 0; j < width; ++j) {
+        const int c = forward ? j : width - 1 - j;
+        double& here = d[at(c, r)];
+        if (here == 0.0) continue;
+        for (int dr = -1; dr <= 1; ++dr)
+          for (int dc = -1; dc <= 1; ++dc) {
+            if (dr == 0 && dc == 0) continue;
+            const double cost = (dr != 0 && dc != 0) ? diagonal : 1.0;
+            int nr = r + dr;
+            int nc = c + dc;
+            if (nr < 0 || nr >= height) {
+              if (openRows) {
+                here = std::min(here, cost);
+              }
+              continue;  // rows reaching the poles: nothing beyond, no edge
+            }
+            if (nc < 0 || nc >= width) {
+              if (!wrapColumns) {
+                here = std::min(here, cost);
+                continue;
+              }
+              nc = (nc + width) % width;
+            }
+            here = std::min(here, d[at(nc, nr)] + cost);
+          }
+      }
+    }
+  }
+  return d;
+}
+
+}  // namespace
+
+WindVector windFromSpeedDirection(double speedMs, double towardsDeg) {
+  const double a = towardsDeg * std::numbers::pi / 180.0;
+  return {speedMs * std::sin(a), speedMs * std::cos(a)};
+}
+
+WindLayers::WindLayers(WindVector fallback) : fallback_(fallback) {}
+
+WindLayers WindLayers::load(const std::vector<std::string>& specs, WindVector fallback,
+                            std::optional<UtcTime> time) {
+  WindLayers layers(fallback);
+  // "default" names the embedded month of global winds (data/README.md).
+  for (const std::string& spec : specs)
+    layers.push(spec == "default" ? defaultWind() : readWindLayer(spec, time));
+  return layers;
+}
+
+void WindLayers::push(WindGrid layer) {
+  LatLonGrid& u = layer.u;
+  LatLonGrid& v = layer.v;
+  const std::size_t cells = static_cast<std::size_t>(std::max(u.width, 0)) *
+                            static_cast<std::size_t>(std::max(u.height, 0));
+  if (u.width < 2 || u.height < 2 || u.values.size() != cells || v.width != u.width ||
+      v.height != u.height || v.values.size() != cells || v.lon0Deg != u.lon0Deg ||
+      v.lat0Deg != u.lat0Deg || v.dLonDeg != u.dLonDeg || v.dLatDeg != u.dLatDeg ||
+      v.wrapsLongitude != u.wrapsLongitude)
+    throw InputError(layer.label + ": wind components must share one grid of at least 2 x 2");
+
+  std::vector<bool> valid(cells);
+  for (std::size_t i = 0; i < cells; ++i)
+    valid[i] = std::isfinite(u.values[i]) && std::isfinite(v.values[i]);
+  const std::vector<double> distance = coverageDistance(
+      valid, u.width, u.height, u.wrapsLongitude, !u.coversPoles(), kBlendCells + 1.0);
+  // Blend over at most kBlendCells, less when the coverage is narrower, so every layer reaches
+  // full weight somewhere. Edge cells (distance 1) get weight 0.
+  double deepest = 0.0;
+  for (double d : distance) deepest = std::max(deepest, d - 1.0);
+  if (deepest <= 0.0)
+    throw InputError(layer.label +
+                     ": the wind field has no cell with data at least one cell inside the edge "
+                     "of its coverage (too small or too sparse to use)");
+  const double blend = std::min(kBlendCells, deepest);
+
+  Layer out;
+  out.weight = u;
+  out.weight.name = std::string("weight");  // (a literal trips GCC 12's false -Wrestrict)
+  out.weight.units = std::string("1");
+  for (std::size_t i = 0; i < cells; ++i) {
+    out.weight.values[i] = static_cast<float>(smoothstep(0.0, blend, distance[i] - 1.0));
+    if (!valid[i]) {
+      u.values[i] = 0.0f;  // weight 0 here: the value only keeps bilinear sums finite
+      v.values[i] = 0.0f;
+    }
+  }
+  out.grid = std::move(layer);
+  layers_.push_back(std::move(out));
+}
+
+WindVector WindLayers::sample(double latDeg, double lonDeg) const {
+  WindVector w = fallback_;
+  for (const Layer& layer : layers_) {
+    const float weight = layer.weight.sample(latDeg, lonDeg);
+    if (!(weight > 0.0f)) continue;  // outside the grid (NaN) or at/after its edge
+    const float u = layer.grid.u.sample(latDeg, lonDeg);
+    const float v = layer.grid.v.sample(latDeg, lonDeg);
+    if (!std::isfinite(u) || !std::isfinite(v)) continue;
+    const double a = std::min(static_cast<double>(weight), 1.0);
+    w.uMs += a * (static_cast<double>(u) - w.uMs);
+    w.vMs += a * (static_cast<double>(v) - w.vMs);
+  }
+  return w;
+}
+
+WindRaster WindLayers::rasterize(int width, int height) const {
+  constexpr int kMaxSize = 16384;
+  if (width < 1 || height < 1 || width > kMaxSize || height > kMaxSize)
+    throw InputError("wind raster size " + std::to_string(width) + " x " +
+                     std::to_string(height) + " is outside 1..16384");
+  WindRaster raster;
+  raster.width = width;
+  raster.height = height;
+  raster.uv.resize(2 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  for (int r = 0; r < height; ++r) {
+    const double lat = -90.0 + (r + 0.5) * 180.0 / height;
+    for (int c = 0; c < width; ++c) {
+      const double lon = -180.0 + (c + 0.5) * 360.0 / width;
+      const WindVector w = sample(lat, lon);
+      const std::size_t i =
+          2 * (static_cast<std::size_t>(r) * static_cast<std::size_t>(width) +
+               static_cast<std::size_t>(c));
+      raster.uv[i] = static_cast<float>(w.uMs);
+      raster.uv[i + 1] = static_cast<float>(w.vMs);
+    }
+  }
+  return raster;
+}
+
+}  // namespace og::data

@@ -1,0 +1,1 @@
+netcdf? no, just text
