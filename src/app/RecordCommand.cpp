@@ -1,0 +1,410 @@
+// oceanglobe record: a camera path file -> H.264 MP4 or a numbered PNG/EXR sequence.
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <tuple>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include "app/Commands.hpp"
+#include "app/Recording.hpp"
+#include "app/SceneOptions.hpp"
+#include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
+#include "core/Log.hpp"
+#include "core/Progress.hpp"
+#include "data/Elevation.hpp"
+#include "data/WindLayers.hpp"
+#include "geo/Sun.hpp"
+#include "gl/Context.hpp"
+#include "io/Image.hpp"
+#include "io/Video.hpp"
+#include "ocean/OceanFrame.hpp"
+#include "render/GlobeRenderer.hpp"
+
+namespace og::app {
+namespace fs = std::filesystem;
+namespace {
+
+enum class Sink { None, Mp4, Png, Exr };  // None: render only (bench)
+
+std::string lowerExtension(const fs::path& p) {
+  std::string ext = p.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+/// An image-sequence name with one printf-style frame number: %d, %5d or %05d ("%%" is a
+/// literal percent sign). Parsed here rather than handed to printf so a user's pattern can
+/// never be a format-string hole.
+class FramePattern {
+ public:
+  explicit FramePattern(const std::string& pattern) {
+    bool found = false;
+    for (std::size_t i = 0; i < pattern.size(); ++i) {
+      if (pattern[i] != '%') {
+        (found ? suffix_ : prefix_) += pattern[i];
+        continue;
+      }
+      if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
+        (found ? suffix_ : prefix_) += '%';
+        ++i;
+        continue;
+      }
+      std::size_t j = i + 1;
+      if (j < pattern.size() && pattern[j] == '0') {
+        zeroPad_ = true;
+        ++j;
+      }
+      std::size_t digits = 0;
+      while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) && digits < 2)
+        width_ = width_ * 10 + (pattern[j++] - '0'), ++digits;
+      if (found || j >= pattern.size() || pattern[j] != 'd')
+        throw InputError(pattern + ": a frame pattern takes exactly one %d, %5d or %05d");
+      found = true;
+      i = j;
+    }
+    if (!found)
+      throw InputError(pattern + ": image sequences need a frame-number pattern, e.g. "
+                                 "frames/frame_%05d.png");
+  }
+
+  [[nodiscard]] fs::path at(std::int64_t frame) const {
+    std::string number = std::to_string(frame);
+    if (number.size() < static_cast<std::size_t>(width_))
+      number.insert(0, static_cast<std::size_t>(width_) - number.size(), zeroPad_ ? '0' : ' ');
+    return prefix_ + number + suffix_;
+  }
+
+ private:
+  std::string prefix_, suffix_;
+  int width_ = 0;
+  bool zeroPad_ = false;
+};
+
+constexpr const char* kCameraFlags[] = {"--lat", "--lon", "--alt", "--heading", "--pitch", "--roll", "--fov"};
+
+struct RecordOptions {
+  SceneOptions scene;
+  std::string pathFile;
+  std::string output;
+  std::optional<double> fps;
+  std::optional<int> crf;
+  std::string preset = "veryfast";
+  std::string frames;
+  bool resume = false;
+  bool countFrames = false;
+  std::string exrType = "half";
+};
+
+/// "A:B" (B exclusive), "A:" or ":B" against `total` frames. B is clamped to total so a fixed
+/// chunk size works for the last chunk of a split render.
+std::pair<std::int64_t, std::int64_t> parseRange(const std::string& text, std::int64_t total) {
+  const std::size_t colon = text.find(':');
+  auto part = [&](const std::string& s, std::int64_t fallback) -> std::int64_t {
+    if (s.empty()) return fallback;
+    std::size_t used = 0;
+    long long v = -1;
+    try {
+      v = std::stoll(s, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != s.size() || v < 0)
+      throw InputError("--frames: expected A:B with frame numbers >= 0, got '" + text + "'");
+    return v;
+  };
+  if (colon == std::string::npos)
+    throw InputError("--frames: expected A:B (frames A to B-1), got '" + text + "'");
+  const std::int64_t a = part(text.substr(0, colon), 0);
+  const std::int64_t b = std::min(part(text.substr(colon + 1), total), total);
+  if (a >= total)
+    throw InputError("--frames " + text + ": the path has only " + std::to_string(total) +
+                     " frames (0:" + std::to_string(total) + ")");
+  if (b <= a) throw InputError("--frames " + text + ": empty range");
+  return {a, b};
+}
+
+}  // namespace
+
+std::int64_t frameCount(double durationS, double fps) {
+  // The tolerance keeps 20 s at 30 fps at 601 frames despite rounding in the product.
+  return static_cast<std::int64_t>(std::floor(durationS * fps + 1e-6)) + 1;
+}
+
+RecordResult runRecording(const RecordJob& job) {
+  using Clock = std::chrono::steady_clock;
+  const geo::FlightPath flight(job.path.keyframes);
+  const io::SceneSettings& scene = job.scene;
+  const std::int64_t total = frameCount(flight.durationS(), job.fps);
+  const std::int64_t first = job.first, end = job.end < 0 ? total : job.end;
+
+  const std::string ext = lowerExtension(job.output);
+  const Sink sink = job.output.empty() ? Sink::None : ext == ".mp4" ? Sink::Mp4 : ext == ".png" ? Sink::Png : ext == ".exr" ? Sink::Exr
+      : throw InputError(job.output + ": unsupported output '" + ext +
+                         "' (use .mp4, or an image pattern like frames/frame_%05d.png or .exr)");
+  std::optional<FramePattern> pattern;
+  io::VideoOptions video;
+  if (sink == Sink::Mp4) {
+    if (job.resume)
+      throw InputError("--resume works with image sequences (frames/frame_%05d.png); an MP4 is "
+                       "re-recorded whole");
+    video.width = scene.width;
+    video.height = scene.height;
+    video.fps = job.fps;
+    video.crf = job.crf;
+    video.preset = job.preset;
+    io::validateVideoOptions(video);
+    checkOutputWritable(job.output);
+  } else if (sink != Sink::None) {
+    pattern.emplace(job.output);
+    checkOutputWritable(pattern->at(first));  // fail before the (long) render, not after
+  }
+
+  // Frames still to do. A frame file exists only once complete (written under a temporary
+  // name, then renamed), so existence is the whole resume test.
+  std::vector<std::int64_t> todo;
+  RecordResult result;
+  for (std::int64_t i = first; i < end; i += job.stride) {
+    std::error_code ec;
+    if (job.resume && pattern && fs::is_regular_file(pattern->at(i), ec) && fs::file_size(pattern->at(i), ec) > 0)
+      ++result.skipped;
+    else
+      todo.push_back(i);
+  }
+
+  // Data layers before the GL context (as `render` does): a bad file exits 2 at once.
+  const data::LatLonGrid elevation = data::loadElevationLayer(scene.elevationLayer);
+  std::shared_ptr<const data::WindLayers> wind;
+  if (!scene.windLayers.empty())
+    wind = std::make_shared<const data::WindLayers>(data::WindLayers::load(
+        scene.windLayers, data::windFromSpeedDirection(scene.windSpeedMs, scene.windDirectionDeg),
+        scene.time));
+
+  auto context = gl::createHeadlessContext(*gl::parseBackend(scene.glBackend));
+  result.glRenderer = context->info().renderer;
+  log::info("recording " + std::to_string(todo.size()) + " frames at " + std::to_string(scene.width) +
+            "x" + std::to_string(scene.height) + " with " + context->info().backend + " (" +
+            context->info().renderer + ")");
+  render::GlobeRenderer renderer(elevation, scene.atmosphere);
+  renderer.setWindLayers(wind);
+
+  // With Sun angles, they hold at the last keyframe (usually the close-up, where a low Sun
+  // matters); the direction is then fixed in ECEF for the whole flight.
+  io::SceneSettings sunScene = scene;
+  sunScene.camera = job.path.keyframes.back().pose;
+  const glm::dvec3 fixedSun = sunDirectionOf(sunScene);
+
+  // The ocean frame carries the waves across frames so they stay fixed to the Earth while the
+  // camera flies (ocean::OceanFrame). It is a pure function of the frame index: rebuilt from
+  // the last frame at or before i where the camera was above the grid's ceiling (no waves
+  // drawn, so a fresh frame there is invisible) or from frame 0, by moving it through every
+  // frame in between. Consecutive frames continue the same sequence of moves, so a frame is
+  // bit-identical alone, in a chunk or in the whole run.
+  ocean::OceanFrame oceanFrame;
+  std::int64_t oceanFrameAt = -1;
+  auto poseAt = [&](std::int64_t j) { return flight.at(flight.startS() + static_cast<double>(j) / job.fps); };
+  auto advanceOceanFrame = [&](std::int64_t i) {
+    if (oceanFrameAt < 0 || i < oceanFrameAt || i > oceanFrameAt + 1) {
+      std::int64_t j = i;
+      while (j > 0 && poseAt(j).position.heightM < render::kOceanGridMaxHeightM) --j;
+      oceanFrame.reset(poseAt(j).position);
+      for (std::int64_t k = j + 1; k < i; ++k) oceanFrame.moveTo(poseAt(k).position);
+      oceanFrameAt = i - 1;
+    }
+    const geo::CameraPose pose = poseAt(i);
+    if (pose.position.heightM >= render::kOceanGridMaxHeightM)
+      oceanFrame.reset(pose.position);
+    else if (i == 0 && oceanFrameAt < 0)
+      oceanFrame.reset(pose.position);
+    else
+      oceanFrame.moveTo(pose.position);
+    oceanFrameAt = i;
+  };
+
+  // Frame i: the path at startS + i / fps and the same simulation clock for the waves and,
+  // with a UTC time, for the Sun.
+  auto renderFrame = [&](std::int64_t i) {
+    const double t = static_cast<double>(i) / job.fps;
+    advanceOceanFrame(i);
+    render::FrameInput frame;
+    frame.camera = poseAt(i);
+    frame.oceanFrame = &oceanFrame;
+    frame.oceanModel = scene.oceanModel == "classic" ? render::OceanModel::Classic
+                                                     : render::OceanModel::Bruneton;
+    frame.windSpeedMs = scene.windSpeedMs;
+    frame.windDirectionDeg = scene.windDirectionDeg;
+    frame.sunDirectionEcef =
+        scene.time ? geo::sunEphemeris(UtcTime{scene.time->unixSeconds + t}).directionEcef : fixedSun;
+    frame.exposure = scene.exposure;
+    frame.width = scene.width;
+    frame.height = scene.height;
+    frame.simulationTimeS = t;
+    renderer.render(frame);
+  };
+
+  installStopHandlers();
+  Progress progress("record", static_cast<std::int64_t>(todo.size()),
+                    job.progress && log::level() <= log::Level::Warn);
+  const auto start = Clock::now();
+  auto loop = [&](const std::function<void(std::int64_t)>& write) {
+    for (const std::int64_t i : todo) {
+      if (stopRequested()) {
+        result.interrupted = true;
+        break;
+      }
+      const auto s = Clock::now();
+      renderFrame(i);
+      write(i);
+      result.renderS += std::chrono::duration<double>(Clock::now() - s).count();
+      ++result.rendered;
+      progress.advance();
+    }
+  };
+
+  if (sink == Sink::Mp4) {
+    writeFileAtomically(job.output, [&](const fs::path& tmp) {
+      io::VideoWriter writer(tmp, video);
+      loop([&](std::int64_t) { writer.push(renderer.display()); });
+      writer.finish();  // also after an interrupt: the MP4 plays up to the last frame
+    });
+  } else if (sink == Sink::None) {
+    loop([&](std::int64_t) { (void)renderer.display(); });  // read back, as a real sink would
+  } else {
+    loop([&](std::int64_t i) {
+      if (sink == Sink::Png)
+        io::writePng(pattern->at(i), renderer.display());
+      else
+        io::writeExr(pattern->at(i), renderer.radiance(),
+                     job.exrFloat ? io::ExrPixelType::Float : io::ExrPixelType::Half);
+    });
+  }
+  result.wallS = std::chrono::duration<double>(Clock::now() - start).count();
+  progress.finish();
+  return result;
+}
+
+int benchRecord(const std::string& pathFile, const std::vector<std::pair<int, int>>& sizes,
+                int frames, const std::string& glBackend, bool json) {
+  RecordJob job;
+  job.path = io::readCameraPath(pathFile);
+  job.scene = job.path.scene;
+  job.scene.glBackend = glBackend;
+  job.fps = job.path.fps.value_or(30.0);
+  job.crf = job.path.crf.value_or(20);
+  job.progress = false;
+  // Sample the whole flight evenly: orbit frames and sea-level frames cost differently.
+  const geo::FlightPath flight(job.path.keyframes);
+  const std::int64_t total = frameCount(flight.durationS(), job.fps);
+  job.stride = std::max<std::int64_t>(1, total / std::max(frames, 1));
+  const fs::path dir = fs::temp_directory_path();
+  const fs::path mp4 = dir / ("oceanglobe-bench-" + std::to_string(::getpid()) + ".mp4");
+
+  nlohmann::json report;
+  if (!json)
+    std::printf("oceanglobe bench --record %s (every %lld. of %lld frames, preset %s, crf %d)\n"
+                "%10s %7s %14s %16s %10s\n",
+                pathFile.c_str(), static_cast<long long>(job.stride), static_cast<long long>(total),
+                job.preset.c_str(), job.crf, "size", "frames", "render fps", "render+mp4 fps",
+                "ratio");
+  for (const auto& [w, h] : sizes) {
+    job.scene.width = w;
+    job.scene.height = h;
+    job.output.clear();
+    const RecordResult renderOnly = runRecording(job);
+    job.output = mp4.string();
+    RecordResult withVideo;
+    try {
+      withVideo = runRecording(job);
+    } catch (...) {
+      std::error_code ignored;
+      fs::remove(mp4, ignored);
+      throw;
+    }
+    std::error_code ignored;
+    fs::remove(mp4, ignored);
+    const double n = static_cast<double>(withVideo.rendered);
+    const double renderFps = n / renderOnly.wallS, videoFps = n / withVideo.wallS;
+    // ratio 100 %: encoding entirely hidden behind rendering (it runs on its own thread).
+    const std::string size = std::to_string(w) + "x" + std::to_string(h);
+    report["record"].push_back({{"path", pathFile}, {"size", size}, {"frames", withVideo.rendered},
+                                {"render_fps", renderFps}, {"render_encode_fps", videoFps},
+                                {"renderer", withVideo.glRenderer}});
+    if (!json)
+      std::printf("%10s %7lld %14.2f %16.2f %9.0f%%\n", size.c_str(),
+                  static_cast<long long>(withVideo.rendered), renderFps, videoFps,
+                  100.0 * videoFps / renderFps);
+  }
+  if (json) std::printf("%s\n", report.dump(2).c_str());
+  return static_cast<int>(kExitOk);
+}
+
+Run addRecordCommand(CLI::App& parent) {
+  auto o = std::make_shared<RecordOptions>();
+  CLI::App* cmd = parent.add_subcommand(
+      "record", "render a camera path (TOML/JSON) to an H.264 MP4 or a PNG/EXR frame sequence");
+  cmd->add_option("path", o->pathFile, "camera path file (.toml or .json), see docs/recording.md")
+      ->required();
+  cmd->add_option("-o,--output", o->output,
+                  "OUT.mp4, or a frame pattern such as frames/frame_%05d.png or .exr (required)");
+  cmd->add_flag("--count-frames", o->countFrames,
+                "print the number of frames at the chosen fps and exit (for splitting a render)");
+  o->scene.add(*cmd);
+  // The camera comes from the path: hide the still-image camera flags (SceneOptions still
+  // looks them up) and refuse them below.
+  for (const char* flag : kCameraFlags) cmd->get_option(flag)->group("");
+  cmd->add_option("--fps", o->fps, "frames per second (default: the path's [video] fps, or 30)")
+      ->check(CLI::Range(0.001, 240.0));
+  cmd->add_option("--crf", o->crf, "H.264 quality, 0 (lossless) to 51 (default: the path's, or 20)")
+      ->check(CLI::Range(0, 51));
+  cmd->add_option("--preset", o->preset, "x264 speed preset (ultrafast ... veryslow)");
+  cmd->add_option("--frames", o->frames,
+                  "render frames A to B-1 only ('A:B', 'A:' or ':B'), e.g. one chunk of a split render");
+  cmd->add_flag("--resume", o->resume,
+                "image sequences: skip frames whose files already exist (they are complete)");
+  cmd->add_option("--exr-type", o->exrType, "EXR pixel type: half or float")
+      ->check(CLI::IsMember({"half", "float"}));
+  return [o, cmd]() {
+    for (const char* flag : kCameraFlags)
+      if (cmd->count(flag) > 0)
+        throw InputError(std::string(flag) + ": record takes the camera from the path file");
+    RecordJob job;
+    job.path = io::readCameraPath(o->pathFile);
+    job.scene = o->scene.resolve(job.path.scene);
+    job.fps = o->fps.value_or(job.path.fps.value_or(30.0));
+    job.crf = o->crf.value_or(job.path.crf.value_or(20));
+    job.preset = o->preset;
+    job.output = o->output;
+    job.resume = o->resume;
+    job.exrFloat = o->exrType == "float";
+    if (o->countFrames) {
+      std::printf("%lld\n", static_cast<long long>(
+                                 frameCount(geo::FlightPath(job.path.keyframes).durationS(), job.fps)));
+      return static_cast<int>(kExitOk);
+    }
+    if (job.output.empty()) throw InputError("record: -o/--output is required");
+    if (!o->frames.empty()) {
+      const geo::FlightPath flight(job.path.keyframes);
+      std::tie(job.first, job.end) = parseRange(o->frames, frameCount(flight.durationS(), job.fps));
+    }
+    const RecordResult r = runRecording(job);
+    if (r.interrupted) {
+      log::error("interrupted after " + std::to_string(r.rendered) + " frames; " + job.output +
+                 (lowerExtension(job.output) == ".mp4" ? " was closed and plays up to there"
+                                                       : ": re-run with --resume to continue"));
+      return static_cast<int>(kExitInterrupted);
+    }
+    log::info("wrote " + std::to_string(r.rendered) + " frames (" + std::to_string(r.skipped) +
+              " already complete) to " + job.output);
+    return static_cast<int>(kExitOk);
+  };
+}
+
+}  // namespace og::app

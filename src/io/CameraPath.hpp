@@ -1,0 +1,70 @@
+#pragma once
+// Camera path files for `oceanglobe record`: keyframes plus the scene they fly through.
+//
+//   [scene]           all optional; flags on the command line override them
+//   time = "2024-06-20T18:30:00Z"        # UTC of the first frame (the Sun moves with the clock), or
+//   sun_elevation_deg = 8                # the Sun's angles at the LAST keyframe's ground point
+//   sun_azimuth_deg = 270
+//   width = 1280                         # pixels, [1, 16384]
+//   height = 720
+//   exposure = 10
+//   ocean_model = "bruneton"             # or "classic"
+//   wind_speed_ms = 7                    # [0, 50]
+//   wind_direction_deg = 90              # towards, clockwise from north
+//   wind_layers = ["winds.nc:UWND,VWND"]
+//   elevation_layer = "relief.nc:ROSE"
+//
+//   [video]
+//   fps = 30                             # frames per second, (0, 240]
+//   crf = 20                             # H.264 constant rate factor, [0, 51]
+//
+//   [[keyframe]]                         # one table per keyframe, in time order
+//   latitude_deg = 36.0                  # required on the first keyframe; later ones inherit
+//   longitude_deg = -9.0                 #   any pose key they omit from the keyframe before
+//   height_m = 400000                    # above the WGS84 ellipsoid, >= -500
+//   heading_deg = 90                     # clockwise from north
+//   pitch_deg = -90                      # 0 horizon, -90 straight down
+//   roll_deg = 0
+//   fov_deg = 45                         # vertical
+//   time_s = 0                           # seconds from the start, or
+//   duration_s = 5                       #   seconds since the previous keyframe (not both)
+//   easing = "smooth"                    # segment to the next keyframe: smooth | ease-in |
+//                                        #   ease-out | ease-in-out (see geo/FlightPath.hpp)
+//
+// The same structure in JSON (.json: {"scene": {...}, "video": {...}, "keyframe": [{...}]})
+// is read and written too. Heights are only checked against -500 m here: the check against
+// the terrain under the path needs the elevation layer and is left to the renderer.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geo/FlightPath.hpp"
+#include "io/SceneFile.hpp"
+
+namespace og::io {
+
+/// The lowest camera height a path file may ask for, metres above the ellipsoid.
+inline constexpr double kLowestPathHeightM = -500.0;
+
+struct CameraPath {
+  std::vector<geo::Keyframe> keyframes;  ///< at least one, times strictly increasing
+  SceneSettings scene;                   ///< camera = the first keyframe's pose
+  std::optional<double> fps;             ///< [video] fps when given
+  std::optional<int> crf;                ///< [video] crf when given
+};
+
+/// Reads a TOML (or, by extension, JSON) path file. Throws og::InputError "FILE:LINE: problem"
+/// for syntax errors, unknown sections or keys, wrong types, non-finite numbers, keyframes out
+/// of time order, heights below kLowestPathHeightM and invalid poses or scene settings.
+/// JSON carries no line numbers; its messages name the keyframe and key instead.
+CameraPath readCameraPath(const std::filesystem::path& file);
+
+/// Writes a path as JSON (all keys explicit, keyframe times as time_s), atomically.
+void writeCameraPathJson(const std::filesystem::path& file, const CameraPath& path);
+
+/// Writes a path as TOML in the form readCameraPath reads (all keys explicit, keyframe times
+/// as time_s, numbers in their shortest exact decimal form), atomically.
+void writeCameraPathToml(const std::filesystem::path& file, const CameraPath& path);
+
+}  // namespace og::io
