@@ -7,8 +7,12 @@ packages=(
   build-essential cmake pkg-config python3-glad
   libglfw3-dev libglm-dev libgeographiclib-dev libopenexr-dev
   libegl-dev libgl-dev libosmesa6-dev libegl-mesa0 libgl1-mesa-dri
-  libnetcdf-dev libpng-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
+  libnetcdf-dev libeccodes-dev libpng-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev
+  # video output for `record`; ffmpeg/ffprobe for the tests and the Slurm encode step
+  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg
+  # the viewer's test: a private X server and synthetic key presses
+  xvfb xdotool
   # real data: ETOPO relief/bathymetry and monthly winds (used by tests when present)
   ferret-datasets
 )

@@ -5,32 +5,34 @@
 // reflection meets the Sun. No filtering beyond the bump maps' mipmaps: the baseline the
 // filtered model is measured against (it aliases and flickers in the distance).
 #include "common/types.glsl"
+#include "geo/ellipsoid.glsl"
 #include "ocean/brdf.glsl"
+#include "ocean/lighting.glsl"
+#include "render/elevation.glsl"
 
 in vec2 vOceanXY;
 in vec3 vRelative;
 in vec2 vSlope;
 out vec4 fragRadiance;
 
-layout(binding = 1) uniform sampler2D uBumpMap;     // tangent-space normals, RG = xy * 0.5 + 0.5
-layout(binding = 2) uniform sampler1D uFresnelRamp; // RGB water colour, A = Fresnel, by N.V
+layout(binding = 8) uniform sampler2D uBumpMap;     // tangent-space normals, RG = xy * 0.5 + 0.5
+layout(binding = 9) uniform sampler1D uFresnelRamp; // RGB water colour, A = Fresnel, by N.V
 uniform mat3 uEcefToOcean;
 uniform vec2 uFieldOffset;
 uniform float uTime;
 uniform vec3 uSunDirOcean;
-uniform vec3 uSunIrradiance;
-uniform vec3 uSkyIrradiance;
-uniform vec3 uSkyZenith;
-uniform vec3 uSkyHorizon;
+uniform vec3 uSunDirEcef;
 
 const float BUMP_TILE_M = 8.0;                            // bump-map repeat on the sea, m
 const vec4 BUMP_SPEED = vec4(0.031, 0.04, -0.03, 0.02);   // tiles per second, two maps
 
-vec3 classicSky(vec3 r) {
-  return mix(uSkyHorizon, uSkyZenith, sqrt(clamp(r.z, 0.0, 1.0)));
-}
+vec3 oceanSurfaceRadiance(vec3 relative, vec3 radiance);  // aerial perspective (the pass)
 
 void main() {
+  if (uElevationSize.x > 0.0) {
+    float t = length(vRelative);
+    if (elevationAt(latLonOfNormal(ellipsoidNormal(vRelative / t, t))) > 0.0) discard;
+  }
   vec2 uv = (vOceanXY + uFieldOffset) / BUMP_TILE_M;
   vec2 uv0 = uv + uTime * BUMP_SPEED.xy;
   vec2 uv1 = uv.yx * 1.25 + uTime * BUMP_SPEED.zw;  // swapped so the maps never align
@@ -41,9 +43,25 @@ void main() {
   vec3 r = reflect(-v, n);
   r.z = abs(r.z);
   vec4 ramp = texture(uFresnelRamp, clamp(dot(n, v), 0.0, 1.0));
-  vec3 sky = classicSky(r);
+  // The ocean frame stands in for the local frame (the classic model is planar anyway); the sky
+  // is point-sampled in the mirror direction, no filtering.
+  float sunZenith = acos(clamp(uSunDirOcean.z, -1.0, 1.0));
+  float sunAzimuth = atan(uSunDirOcean.y, uSunDirOcean.x);
+  vec3 sky = skyMapRadianceStereo(stereographic(r), sunZenith, sunAzimuth, vec2(0.0), vec2(0.0));
+  vec3 eSun = sunIrradiance(sunZenith);
   // Sparkles: the Sun seen in the mirror direction, a narrow Phong lobe.
   float sparkle = pow(max(dot(r, uSunDirOcean), 0.0), 800.0) * 60.0;
-  vec3 water = ramp.rgb * (uSunIrradiance * max(uSunDirOcean.z, 0.0) + uSkyIrradiance);
-  fragRadiance = vec4(mix(water, sky, ramp.a) + uSunIrradiance * sparkle * ramp.a, 1.0);
+  vec3 water = ramp.rgb * (eSun * max(uSunDirOcean.z, 0.0) + skyIrradiance(sunZenith));
+  vec3 radiance = mix(water, sky, ramp.a) + eSun * sparkle * ramp.a;
+  fragRadiance = vec4(oceanSurfaceRadiance(vRelative, radiance), 1.0);
 }
+
+#ifdef OCEAN_SIMPLE_SKY
+vec3 oceanSurfaceRadiance(vec3 relative, vec3 radiance) { return radiance; }
+#else
+#include "render/aerial.glsl"
+vec3 oceanSurfaceRadiance(vec3 relative, vec3 radiance) {
+  float t = length(relative);
+  return withAerialPerspective(radiance, relative / t, t, uSunDirEcef);
+}
+#endif

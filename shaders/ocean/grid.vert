@@ -5,6 +5,7 @@
 // onto the horizon so no triangle spans the sky. Positions stay camera- or frame-relative.
 #include "common/types.glsl"
 #include "geo/ellipsoid.glsl"
+#include "ocean/wind.glsl"
 #include "ocean/waves.glsl"
 
 uniform ivec2 uGridSize;      // vertices per row, rows
@@ -44,7 +45,8 @@ void main() {
   vec3 n = uEcefToOcean * ellipsoidNormal(dir, t);
   float cosIncidence = max(abs(dot(uEcefToOcean * dir, n)), 0.02);
   float cell = t * uCellAngle / cosIncidence;
-  vec3 d = oceanDisplacement(local.xy, cell);
+  float windSpeed = localWind(latLonOfNormal(ellipsoidNormal(dir, t))).x;
+  vec3 d = oceanDisplacement(local.xy, cell, windSpeed);
   // Displacement along the frame's axes; near the camera (where waves are resolved at all)
   // they coincide with the local tangent frame.
   vRelative = rel + transpose(uEcefToOcean) * d;

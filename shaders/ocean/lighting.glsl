@@ -1,24 +1,58 @@
-// Light arriving at the sea and its reflection (Algorithm 5.1, Bruneton 2010). Everything in
-// the ocean frame (x east, y north, z up); radiance in units of the Sun's irradiance.
+// Light arriving at the sea and its reflection: Algorithm 5.1 of Bruneton et al. 2010. Shared by
+// the projected grid (below 20 km) and the globe's sea (above), so the two agree exactly when
+// the grid's waves have faded out.
 //
-// The sky is read from a stereographic sky map with textureGrad, the lookup footprint set by
-// the unresolved slopes (§5.2): U(zeta) maps a facet slope to the sky map coordinate of its
-// mirror direction, and the gradients 2 sigma dU/dzeta make the GPU's mip selection integrate
-// the sky over the slope distribution.
+// Inputs are in ECEF axes; the lighting is evaluated in the point's own local frame (x east,
+// y north, z up along `upE`), where the Sun-zenith-indexed sky maps are defined (§6): each point
+// uses the layer of its local Sun zenith, rotated to its local Sun azimuth. Radiance is in units
+// of the Sun's irradiance at the top of the atmosphere; aerial perspective is the caller's.
+//
+// The sky comes from shaders/atmosphere/skymap.glsl (skyMapRadianceStereo, skyIrradiance,
+// sunIrradiance); define OCEAN_SIMPLE_SKY before including this file to use a small analytic
+// sky instead (tests of the ocean alone).
 
-uniform vec3 uSunDirOcean;     // unit, towards the Sun
-uniform vec3 uSunIrradiance;   // Sun irradiance at sea level, after the atmosphere
-uniform vec3 uSkyIrradiance;   // sky irradiance on a horizontal sea
-uniform vec3 uSeaColor;        // upwelling radiance per unit irradiance (sr^-1)
+#ifdef OCEAN_SIMPLE_SKY
+uniform vec3 uSkyZenith;   // radiance at the zenith
+uniform vec3 uSkyHorizon;  // radiance at the horizon
+vec3 skyMapRadianceStereo(vec2 u, float sunZenith, float sunAzimuth, vec2 dUdx, vec2 dUdy) {
+  float q = dot(u, u);
+  float z = (1.0 - q) / (1.0 + q);  // inverse stereographic: cos(zenith angle)
+  return mix(uSkyHorizon, uSkyZenith, sqrt(clamp(z, 0.0, 1.0))) * clamp(cos(sunZenith) * 4.0, 0.0, 1.0);
+}
+vec3 skyIrradiance(float sunZenith) { return vec3(0.1, 0.13, 0.18) * clamp(cos(sunZenith) * 2.0, 0.0, 1.0); }
+vec3 sunIrradiance(float sunZenith) { return vec3(1.0) * step(0.0, cos(sunZenith)); }
+#else
+#include "atmosphere/skymap.glsl"
+#endif
+
+uniform vec3 uSeaColor;  // upwelling radiance per unit irradiance (sr^-1)
+#include "terrain/shallow.glsl"  // shallow water: the sea floor seen through the water
 const float SUN_SIGMA2_MIN = 2e-5;  // slope variance of the Sun's disc (radius 0.27°)
 
-vec3 oceanSkyMap(vec2 u, vec2 dudx, vec2 dudy);  // provided by the pass (sky maps)
+// Unit local frame at a point with vertical upE: columns east, north, up (ECEF axes).
+mat3 localFrame(vec3 upE) {
+  vec3 east = cross(vec3(0.0, 0.0, 1.0), upE);
+  east = dot(east, east) > 1e-12 ? normalize(east) : vec3(0.0, 1.0, 0.0);  // at the poles
+  return mat3(east, cross(upE, east), upE);
+}
 
-vec3 oceanRadiance(vec3 v, vec3 n, vec3 tx, vec3 ty, vec2 sigma2, vec3 relOcean) {
-  vec3 l = uSunDirOcean;
-  // Sun: Ross BRDF, variance clamped so a flat sea still shows the Sun's disc.
-  vec3 sun = uSunIrradiance * rossSun(v, l, n, tx, ty, max(sigma2, vec2(SUN_SIGMA2_MIN)));
-  // Sky: filtered reflection (Eqs. 9-10).
+// vE: to the eye; nE: mean (resolved) normal; windE: the wind's direction (any vector with a
+// horizontal component along it); sigma2: unresolved slope variances along/across the wind;
+// upE: the ellipsoid normal at the point; sunE: towards the Sun. All unit, ECEF axes.
+vec3 seaRadiance(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE) {
+  mat3 toLocal = transpose(localFrame(upE));
+  vec3 v = toLocal * vE, n = toLocal * nE, l = toLocal * sunE;
+  vec3 w = toLocal * windE;
+  vec3 tx = normalize(w - dot(w, n) * n + vec3(1e-6, 0.0, 0.0));
+  vec3 ty = cross(n, tx);
+  float sunZenith = acos(clamp(l.z, -1.0, 1.0));
+  float sunAzimuth = atan(l.y, l.x);
+  vec3 eSun = sunIrradiance(sunZenith);
+  vec3 eSky = skyIrradiance(sunZenith);
+  // Sun: Ross BRDF, variance clamped so a flat sea still shows the Sun's disc (Eq. 6).
+  vec3 sun = eSun * rossSun(v, l, n, tx, ty, max(sigma2, vec2(SUN_SIGMA2_MIN)));
+  // Sky: filtered reflection (Eqs. 9-10): the gradient lookup integrates the sky map over the
+  // unresolved slopes' footprint, U(zeta) the stereographic coordinate of a facet's mirror ray.
   float sigmaV = sqrt(azimuthVariance(v, tx, ty, sigma2));
   float fbar = effectiveFresnel(dot(v, n), sigmaV);
   const float eps = 1e-3;
@@ -26,8 +60,9 @@ vec3 oceanRadiance(vec3 v, vec3 n, vec3 tx, vec3 ty, vec2 sigma2, vec3 relOcean)
   vec2 ux = stereographic(reflectedBySlope(v, n, tx, ty, vec2(eps, 0.0)));
   vec2 uy = stereographic(reflectedBySlope(v, n, tx, ty, vec2(0.0, eps)));
   vec2 sigma = sqrt(sigma2);
-  vec3 sky = fbar * oceanSkyMap(u0, 2.0 * sigma.x * (ux - u0) / eps, 2.0 * sigma.y * (uy - u0) / eps);
+  vec3 sky = fbar * skyMapRadianceStereo(u0, sunZenith, sunAzimuth,
+                                         2.0 * sigma.x * (ux - u0) / eps, 2.0 * sigma.y * (uy - u0) / eps);
   // Refracted light from below: L_sea (1 - F̄) (§5.3).
-  vec3 sea = uSeaColor * (uSunIrradiance * max(l.z, 0.0) + uSkyIrradiance) * (1.0 - fbar);
+  vec3 sea = shallowSeaColor(uSeaColor, seaFloorDepthM(upE)) * (eSun * max(l.z, 0.0) + eSky) * (1.0 - fbar);
   return sun + sky + sea;
 }

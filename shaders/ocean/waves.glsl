@@ -31,16 +31,22 @@ int oceanWaveCountFor(float footprint) {
   return int(clamp(n, 0.0, float(uWaveCount)));
 }
 
+// Amplitude of wave i where the local wind speed is `speed` (m/s): the wave set's own amplitude
+// under a uniform wind, else the table's, which scales each wave by the local spectrum.
+float oceanWaveAmplitude(int i, float speed) {
+  return uLocalWind == 1 ? waveAmplitudeAt(i, speed) : uWaves[i].kPhase.z;
+}
+
 // Displacement of the sea surface at xy (Eq. 2): sum of w_p,i t_i with the trochoid
 // t_i = [k̂ h sin(theta); h cos(theta)], theta = phase - k.x.
-vec3 oceanDisplacement(vec2 xy, float cellFootprint) {
+vec3 oceanDisplacement(vec2 xy, float cellFootprint, float windSpeed) {
   vec3 d = vec3(0.0);
   int n = oceanWaveCountFor(cellFootprint);
   for (int i = 0; i < n; ++i) {
     OceanWave w = uWaves[i];
     float weight = oceanFilterWeight(w.extra.x / cellFootprint) * uWaveAmplitude;
     float theta = w.kPhase.w - dot(w.kPhase.xy, xy);
-    float h = w.kPhase.z * weight;
+    float h = oceanWaveAmplitude(i, windSpeed) * weight;
     d += vec3(w.kPhase.xy / w.extra.y * (h * sin(theta)), h * cos(theta));
   }
   return d;
@@ -52,7 +58,7 @@ struct OceanNormal {
   vec3 normal;
   vec2 resolvedVariance;
 };
-OceanNormal oceanNormal(vec2 xy, float pixelFootprint) {
+OceanNormal oceanNormal(vec2 xy, float pixelFootprint, float windSpeed) {
   vec3 dpdx = vec3(1.0, 0.0, 0.0);
   vec3 dpdy = vec3(0.0, 1.0, 0.0);
   vec2 resolved = vec2(0.0);
@@ -61,7 +67,7 @@ OceanNormal oceanNormal(vec2 xy, float pixelFootprint) {
     OceanWave w = uWaves[i];
     float weight = oceanFilterWeight(w.extra.x / pixelFootprint) * uWaveAmplitude;
     float theta = w.kPhase.w - dot(w.kPhase.xy, xy);
-    float h = w.kPhase.z * weight;
+    float h = oceanWaveAmplitude(i, windSpeed) * weight;
     vec2 khat = w.kPhase.xy / w.extra.y;
     float c = cos(theta), s = sin(theta);
     // d theta / dx = -k_x: derivatives of [k̂ h sin; h cos].

@@ -1,11 +1,35 @@
 #version 450 core
-// The globe as the WGS84 ellipsoid, ray-cast per pixel in the eye-relative frame, lit by the
-// Sun, land and sea from the elevation layer. A stand-in surface model until the atmosphere,
-// ocean and terrain passes replace it; it fixes the conventions they share: radiance in units
-// of the Sun's irradiance (a white Lambertian plate facing the Sun has radiance 1/pi), alpha =
-// coverage, reversed-Z depth = near / view distance.
+// The globe as the WGS84 ellipsoid, ray-cast per pixel in the eye-relative frame, seen through
+// the precomputed atmosphere (Bruneton & Neyret 2008; shaders/atmosphere/): the sky behind the
+// globe from any altitude (with the Sun's disc), aerial perspective on the surface, and the
+// surface lit by the attenuated Sun plus the sky's irradiance. Land and sea from the elevation
+// layer with stand-in materials (the ocean and terrain passes replace them). Conventions shared
+// with those passes: radiance in units of the Sun's irradiance (a white Lambertian plate facing
+// the unattenuated Sun has radiance 1/pi), alpha = globe coverage, reversed-Z depth =
+// near / view distance (0 for the sky).
+//
+// Atmosphere geometry. The tables are for a spherical shell of radius R = bottomRadius. Every
+// shaded point is looked up at r = R + its exact altitude above the ellipsoid: the camera at
+// R + uCamAltitude (from the CPU, in double), points on the globe at R. View rays use a sphere
+// of radius R under the camera, oriented by the geodetic normal there (uCamUp):
+//  * a ray that hits the ellipsoid at distance t keeps t: its zenith cosine is replaced by the
+//    one for which a ray of length t joins the camera's altitude to altitude 0 in the sphere,
+//    mu' = -(h (2R + h) + t^2) / (2 r t) (t clamped to the sphere's horizon distance). The
+//    aerial perspective thus spans exactly the camera-to-surface path, and the horizon (where
+//    the globe's coverage ends) stays where the ellipsoid puts it;
+//  * a ray that misses the ellipsoid keeps its zenith cosine, raised to just above the
+//    sphere's horizon where the sphere would still hit (the two horizons differ by well under
+//    a pixel at any altitude for Earth's flattening).
 #include "common/constants.glsl"
 #include "geo/ellipsoid.glsl"
+#include "atmosphere/model.glsl"
+#include "atmosphere/skymap.glsl"
+#include "common/types.glsl"
+#include "ocean/brdf.glsl"
+#include "ocean/lighting.glsl"
+#include "ocean/wind.glsl"
+#include "render/elevation.glsl"
+#include "render/aerial.glsl"
 
 in vec2 vNdc;
 out vec4 fragRadiance;
@@ -18,19 +42,7 @@ uniform vec2 uPixelNdc;    // size of one pixel in NDC
 uniform float uNear;       // near plane, m
 uniform vec3 uSunDir;      // unit, ECEF axes
 
-layout(binding = 0) uniform sampler2D uElevation;  // metres, rows south to north
-uniform vec4 uElevationMap;  // (lon0, lat0, dLon, dLat) in radians, cell centres
-uniform vec2 uElevationSize; // (columns, rows)
-uniform int uElevationWraps; // 1 when the columns cover 360 degrees
-
-float elevationAt(vec2 latLon) {
-  vec2 cell = vec2((latLon.y - uElevationMap.x) / uElevationMap.z,
-                   (latLon.x - uElevationMap.y) / uElevationMap.w);
-  if (uElevationWraps == 1) cell.x = mod(cell.x, uElevationSize.x);
-  vec2 uv = (cell + 0.5) / uElevationSize;
-  if (uElevationWraps == 0 && (uv.x < 0.0 || uv.x > 1.0)) return -1.0;
-  return texture(uElevation, uv).r;
-}
+uniform int uSeaByGrid;      // 1 below 20 km: the projected-grid pass draws the sea
 
 vec3 landAlbedo(float elevation, float latitude) {
   // Stand-in ramp until imagery/material layers exist: lowland green, upland brown, snow.
@@ -42,53 +54,120 @@ vec3 landAlbedo(float elevation, float latitude) {
   return mix(c, snow, smoothstep(snowLine - 300.0, snowLine + 300.0, elevation));
 }
 
-// Smith's masking term for a Gaussian slope distribution of total mean-square slope sigma2
-// (Eq. 5 of Bruneton 2010 with sigma_phi^2 = sigma2 / 2), erfc by a rational approximation.
-float smithLambda(float cosTheta, float sigma2) {
-  float c = clamp(cosTheta, 1e-4, 0.9999);
-  float a = c / (sqrt(sigma2 * (1.0 - c * c)));  // 1 / (sqrt(2 sigma_phi^2) tan(theta))
-  float erfcA = 2.0 * exp(-a * a) / (2.319 * a + sqrt(4.0 + 1.52 * a * a));
-  return max(0.0, (exp(-a * a) - a * sqrt(PI) * erfcA) / (2.0 * a * sqrt(PI)));
+// Land: Lambertian, lit by the attenuated Sun (irradiance sunIrr on a surface facing it) and
+// the sky (irradiance skyIrr on the horizontal surface).
+vec3 shadeLand(vec3 albedo, float muS, vec3 sunIrr, vec3 skyIrr) {
+  return albedo / PI * (sunIrr * max(muS, 0.0) + skyIrr);
 }
 
-vec3 shade(vec3 dir, float t) {
+// Sea seen from afar (above 20 km, and wherever the grid is not drawn): the ellipsoid with the
+// Ross BRDF over the whole slope distribution of the local wind (Bruneton 2010 §6), the same lighting
+// code as the projected grid (ocean/lighting.glsl), so the switch between the two is invisible.
+vec3 shadeSea(vec3 v, vec3 n) {
+  vec3 east = cross(vec3(0.0, 0.0, 1.0), n);
+  east = dot(east, east) > 1e-12 ? normalize(east) : vec3(0.0, 1.0, 0.0);
+  vec3 north = cross(n, east);
+  vec2 w = localWind(latLonOfNormal(n));  // speed, azimuth
+  vec3 wind = sin(w.y) * east + cos(w.y) * north;
+  return seaRadiance(v, n, wind, windSlopeVariance(w.x), n, uSunDir);
+}
+
+// Light leaving the globe's surface at distance t along dir, towards the viewer.
+vec3 surfaceRadiance(vec3 dir, float t) {
   vec3 n = ellipsoidNormal(dir, t);
   vec2 latLon = latLonOfNormal(n);
-  float h = elevationAt(latLon);
-  float muS = dot(n, uSunDir);
-  float lit = max(muS, 0.0);
-  if (h > 0.0) return landAlbedo(h, latLon.x) / PI * lit;
-  // Sea: dark diffuse body plus the Sun's glint through an isotropic Ross/Smith BRDF of
-  // fixed roughness (Cox-Munk mean-square slope at ~7 m/s). The ocean issue replaces this with
-  // the wind-driven, filtered Bruneton 2010 model.
-  const float sigma2 = 0.04;
-  vec3 v = -dir;
-  vec3 hv = normalize(v + uSunDir);
-  float nh = max(dot(n, hv), 1e-4), nv = max(dot(n, v), 1e-4);
-  float tan2 = (1.0 - nh * nh) / (nh * nh);
-  float p = exp(-tan2 / sigma2) / (PI * sigma2);  // slope pdf, isotropic
-  float fresnel = 0.02 + 0.98 * pow(1.0 - max(dot(v, hv), 0.0), 5.0);
-  float shadowing = 1.0 + smithLambda(nv, sigma2) + smithLambda(muS, sigma2);
-  float glint = muS > 0.0 ? fresnel * p / (4.0 * nh * nh * nh * nh * nv * shadowing) : 0.0;
-  return vec3(0.004, 0.016, 0.035) * lit + vec3(glint);  // glint already holds cos(theta_l)
+  float elevation = elevationAt(latLon);
+  float muSP = dot(n, uSunDir);
+  vec3 skyIrr;
+  vec3 sunIrr = sunAndSkyIrradiance(uAtmosphere, uAtmTransmittance, uAtmIrradiance,
+                                    uAtmosphere.bottomRadius, muSP, skyIrr);
+  return elevation > 0.0 ? shadeLand(landAlbedo(elevation, latLon.x), muSP, sunIrr, skyIrr)
+                         : shadeSea(-dir, n);
 }
 
 void main() {
-  // 4 rotated-grid samples per pixel: an anti-aliased limb and coastline.
+  // 4 rotated-grid samples per pixel: an anti-aliased limb, horizon and coastline. The surface
+  // is shaded per sample; the atmosphere, smooth across a pixel, once per pixel for the
+  // samples on the globe (at their mean distance) and once for those in the sky. Loops run
+  // only as many times as needed: llvmpipe skips a loop's remaining trips for a whole quad
+  // but evaluates both sides of a divergent if.
   const vec2 offsets[4] = vec2[4](vec2(-0.125, -0.375), vec2(0.375, -0.125),
                                   vec2(0.125, 0.375), vec2(-0.375, 0.125));
-  vec3 radiance = vec3(0.0);
-  float coverage = 0.0;
+  vec3 dirs[4];
+  float ts[4];
+  int hits[4];
+  vec3 hitDir = vec3(0.0), skyDir = vec3(0.0);
+  float hitT = 0.0;
+  int nHit = 0;
   float nearestT = 1e30;
+  float sunDisc = 0.0;
+  float seaHoles = 0.0;
+  vec3 seaHoleDir = vec3(0.0);
+  float seaHoleT = 0.0;
+  float cosSun = cos(uAtmosphere.sunAngularRadius);
   for (int i = 0; i < 4; ++i) {
     vec2 ndc = vNdc + offsets[i] * uPixelNdc;
-    vec3 dir = normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp);
-    float t = intersectEllipsoid(dir);
-    if (t < 0.0) continue;
-    radiance += shade(dir, t);
-    coverage += 1.0;
-    nearestT = min(nearestT, t * dot(dir, uForward));
+    dirs[i] = normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp);
+    ts[i] = intersectEllipsoid(dirs[i]);
+    // Below 20 km the grid pass draws the sea: leave sea samples to it (no colour, no depth).
+    if (ts[i] >= 0.0 && uSeaByGrid == 1 &&
+        elevationAt(latLonOfNormal(ellipsoidNormal(dirs[i], ts[i]))) <= 0.0) {
+      seaHoles += 1.0;
+      seaHoleDir = dirs[i];
+      seaHoleT = ts[i];
+      continue;
+    }
+    if (ts[i] < 0.0) {
+      skyDir += dirs[i];
+      sunDisc += dot(dirs[i], uSunDir) > cosSun ? 1.0 : 0.0;
+    } else {
+      hits[nHit++] = i;
+      hitDir += dirs[i];
+      hitT += ts[i];
+      nearestT = min(nearestT, ts[i] * dot(dirs[i], uForward));
+    }
   }
-  fragRadiance = vec4(radiance * 0.25, coverage * 0.25);
-  gl_FragDepth = coverage > 0.0 ? clamp(uNear / nearestT, 0.0, 1.0) : 0.0;
+  vec3 surface = vec3(0.0);
+  for (int k = 0; k < nHit; ++k) surface += surfaceRadiance(dirs[hits[k]], ts[hits[k]]);
+
+  float coverage = float(nHit);
+  float R = uAtmosphere.bottomRadius;
+  float h = uCamAltitude;
+  float r = R + h;
+  float rho2 = h * (2.0 * R + h);
+  float muS = dot(uSunDir, uCamUp);
+  float skyCount = 4.0 - coverage - seaHoles;
+  int passes = (nHit > 0 ? 1 : 0) + (skyCount > 0.0 ? 1 : 0);
+  vec3 radiance = vec3(0.0);
+  for (int k = 0; k < passes; ++k) {
+    bool globe = k == 0 && nHit > 0;
+    vec3 dir = normalize(globe ? hitDir : skyDir);
+    float mu, d;
+    if (globe) {
+      // Aerial perspective over the camera-to-surface path (see the header).
+      d = min(hitT / coverage, sqrt(rho2));
+      mu = -(rho2 + d * d) / (2.0 * r * max(d, 1e-3));
+    } else {
+      // The sky: past the top of the atmosphere, above the sphere's horizon.
+      d = 1e9;
+      mu = max(dot(dir, uCamUp), -sqrt(rho2) / r + 1e-5);
+    }
+    vec3 transmittance;
+    vec3 inscatter = skyRadianceToPoint(uAtmosphere, uAtmTransmittance, uAtmScattering,
+                                        uAtmSingleMie, r, mu, muS, dot(dir, uSunDir), d,
+                                        transmittance);
+    if (globe)
+      radiance += surface * transmittance + inscatter * coverage;
+    else
+      radiance += inscatter * skyCount +
+                  sunDisc * transmittance * sunDiscRadiance(uAtmosphere);
+  }
+  // Sea holes: the grid pass paints over them; where it leaves a gap (between its horizon
+  // vertices, where the chord falls short of the curved horizon) this far-field sea shows,
+  // which is what the grid converges to there anyway. Shaded once per pixel, no depth.
+  if (seaHoles > 0.0)
+    radiance += seaHoles * withAerialPerspective(shadeSea(-seaHoleDir, ellipsoidNormal(seaHoleDir, seaHoleT)),
+                                                 seaHoleDir, seaHoleT, uSunDir);
+  fragRadiance = vec4(radiance * 0.25, (coverage + seaHoles) * 0.25);
+  gl_FragDepth = nHit > 0 ? clamp(uNear / nearestT, 0.0, 1.0) : 0.0;
 }

@@ -11,6 +11,9 @@ using Run = std::function<int()>;
 
 Run addRenderCommand(CLI::App& parent);
 Run addBenchCommand(CLI::App& parent);
+Run addInfoCommand(CLI::App& parent);
+Run addRecordCommand(CLI::App& parent);
 Run addSpectrumCommand(CLI::App& parent);
+Run addViewCommand(CLI::App& parent);
 
 }  // namespace og::app

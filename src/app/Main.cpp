@@ -25,7 +25,10 @@ int main(int argc, char** argv) {
   const std::pair<const char*, app::Run> commands[] = {
       {"render", app::addRenderCommand(app)},
       {"bench", app::addBenchCommand(app)},
+      {"info", app::addInfoCommand(app)},
+      {"record", app::addRecordCommand(app)},
       {"spectrum", app::addSpectrumCommand(app)},
+      {"view", app::addViewCommand(app)},
   };
 
   try {

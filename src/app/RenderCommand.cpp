@@ -9,6 +9,7 @@
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "data/Elevation.hpp"
+#include "data/WindLayers.hpp"
 #include "gl/Context.hpp"
 #include "io/Image.hpp"
 #include "render/GlobeRenderer.hpp"
@@ -48,18 +49,30 @@ Run addRenderCommand(CLI::App& parent) {
     const std::filesystem::path out = opts->output;
     const Format format = formatOf(out);
     checkOutputWritable(out);  // fail before the (long) render, not after
+    // Data layers before the GL context: a bad file exits 2 without rendering anything.
+    const data::LatLonGrid elevation = data::loadElevationLayer(scene.elevationLayer);
+    std::shared_ptr<const data::WindLayers> wind;
+    if (!scene.windLayers.empty())
+      wind = std::make_shared<const data::WindLayers>(data::WindLayers::load(
+          scene.windLayers, data::windFromSpeedDirection(scene.windSpeedMs, scene.windDirectionDeg),
+          scene.time));
 
     const auto backend = gl::parseBackend(scene.glBackend);
     auto context = gl::createHeadlessContext(*backend);
     log::info("rendering " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
               " with " + context->info().backend + " (" + context->info().renderer + ")");
-    render::GlobeRenderer renderer(data::defaultElevation());
+    render::GlobeRenderer renderer(elevation, scene.atmosphere);
+    renderer.setWindLayers(wind);
     render::FrameInput frame;
     frame.camera = scene.camera;
     frame.sunDirectionEcef = sunDirectionOf(scene);
     frame.exposure = scene.exposure;
     frame.width = scene.width;
     frame.height = scene.height;
+    frame.oceanModel = scene.oceanModel == "classic" ? render::OceanModel::Classic
+                                                     : render::OceanModel::Bruneton;
+    frame.windSpeedMs = scene.windSpeedMs;
+    frame.windDirectionDeg = scene.windDirectionDeg;
     renderer.render(frame);
     if (format == Format::Png)
       io::writePng(out, renderer.display());

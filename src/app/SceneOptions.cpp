@@ -49,8 +49,7 @@ void SceneOptions::add(CLI::App& cmd) {
                  "relief/bathymetry FILE[:VAR] in metres (default: embedded ETOPO20)");
 }
 
-io::SceneSettings SceneOptions::resolve() const {
-  io::SceneSettings s;
+io::SceneSettings SceneOptions::resolve(io::SceneSettings s) const {
   if (!config_.empty()) s = io::readSceneFile(config_, s);
   auto given = [&](const char* flag) { return cmd_->count(flag) > 0; };
   auto& c = s.camera;

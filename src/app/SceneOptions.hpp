@@ -15,8 +15,9 @@ class SceneOptions {
   /// --sun-elevation --sun-azimuth --exposure --gl --ocean --wind --wind-layer
   /// --elevation-layer --config on `cmd`.
   void add(CLI::App& cmd);
-  /// Defaults, then --config FILE, then the flags given. Throws og::InputError.
-  [[nodiscard]] io::SceneSettings resolve() const;
+  /// `base` (defaults, or e.g. a camera path's scene), then --config FILE, then the flags
+  /// given. Throws og::InputError.
+  [[nodiscard]] io::SceneSettings resolve(io::SceneSettings base = {}) const;
 
  private:
   CLI::App* cmd_ = nullptr;

@@ -38,7 +38,7 @@ void expandInto(const std::string& path, ExpandedSource& out, std::set<std::stri
   std::istringstream in(text);
   std::string line;
   int lineNo = 0;
-  static const std::regex includeRe(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
+  static const std::regex includeRe(R"(^\s*#\s*include\s+"([^"]+)\"\s*(//.*)?$)");
   std::smatch m;
   while (std::getline(in, line)) {
     ++lineNo;

@@ -33,6 +33,15 @@ int integer(const std::filesystem::path& file, const toml::node& n, const std::s
   throw InputError(where(file, n.source()) + "'" + key + "' must be an integer");
 }
 
+glm::dvec3 triple(const std::filesystem::path& file, const toml::node& n, const std::string& key) {
+  const toml::array* a = n.as_array();
+  if (a == nullptr || a->size() != 3)
+    throw InputError(where(file, n.source()) + "'" + key + "' must be an array of 3 numbers");
+  glm::dvec3 v;
+  for (int i = 0; i < 3; ++i) v[i] = number(file, *a->get(static_cast<std::size_t>(i)), key);
+  return v;
+}
+
 std::string text(const std::filesystem::path& file, const toml::node& n, const std::string& key) {
   if (auto v = n.value<std::string>(); v && n.is_string()) return *v;
   throw InputError(where(file, n.source()) + "'" + key + "' must be a string");
@@ -53,6 +62,10 @@ SceneSettings readSceneFile(const std::filesystem::path& file, SceneSettings s) 
   auto num = [&](double& out) -> Setter {
     return [&](const toml::node& n, const std::string& k) { out = number(file, n, k); };
   };
+  auto rgb = [&](glm::dvec3& out) -> Setter {
+    return [&](const toml::node& n, const std::string& k) { out = triple(file, n, k); };
+  };
+  atmosphere::Parameters& atm = s.atmosphere;
   const std::map<std::string, std::map<std::string, Setter>> schema = {
       {"camera",
        {{"latitude_deg", num(s.camera.position.latitudeDeg)},
@@ -95,6 +108,27 @@ SceneSettings readSceneFile(const std::filesystem::path& file, SceneSettings s) 
          }},
         {"elevation",
          [&](const toml::node& n, const std::string& k) { s.elevationLayer = text(file, n, k); }}}},
+      {"atmosphere",
+       {{"solar_irradiance", rgb(atm.solarIrradiance)},
+        {"rayleigh_scattering", rgb(atm.rayleighScattering)},
+        {"rayleigh_scale_height_m", num(atm.rayleighScaleHeightM)},
+        {"mie_scattering", rgb(atm.mieScattering)},
+        {"mie_extinction", rgb(atm.mieExtinction)},
+        {"mie_scale_height_m", num(atm.mieScaleHeightM)},
+        {"mie_phase_g", num(atm.miePhaseG)},
+        {"ozone_absorption", rgb(atm.ozoneAbsorption)},
+        {"ozone_center_altitude_m", num(atm.ozoneCenterAltitudeM)},
+        {"ozone_half_width_m", num(atm.ozoneHalfWidthM)},
+        {"ground_albedo", rgb(atm.groundAlbedo)},
+        {"sun_angular_radius_deg",
+         [&](const toml::node& n, const std::string& k) {
+           atm.sunAngularRadiusRad = number(file, n, k) * 3.14159265358979323846 / 180.0;
+         }},
+        {"bottom_radius_m", num(atm.bottomRadiusM)},
+        {"thickness_m", num(atm.thicknessM)},
+        {"mu_s_min", num(atm.muSMin)},
+        {"scattering_orders",
+         [&](const toml::node& n, const std::string& k) { atm.scatteringOrders = integer(file, n, k); }}}},
       {"gl",
        {{"backend",
          [&](const toml::node& n, const std::string& k) { s.glBackend = text(file, n, k); }}}},
@@ -138,6 +172,8 @@ void validateScene(const SceneSettings& s, const std::string& origin) {
     throw InputError(prefix + "wind speed must be within [0, 50] m/s");
   if (!std::isfinite(s.windDirectionDeg) || std::abs(s.windDirectionDeg) > 720.0)
     throw InputError(prefix + "wind direction must be a finite number of degrees within [-720, 720]");
+  if (auto problem = atmosphere::validate(s.atmosphere))
+    throw InputError(prefix + "[atmosphere]: " + *problem);
   if (s.glBackend != "auto" && s.glBackend != "egl" && s.glBackend != "osmesa")
     throw InputError(prefix + "GL backend must be auto, egl or osmesa, not '" + s.glBackend + "'");
 }

@@ -7,11 +7,17 @@
 //   [ocean]   model = "bruneton" | "classic", wind_speed_ms, wind_direction_deg
 //   [layers]  wind = ["FILE[:U,V]", ...] (first is the bottom of the stack), elevation = "FILE[:VAR]"
 //   [gl]      backend = "auto" | "egl" | "osmesa"
+//   [atmosphere] solar_irradiance, rayleigh_scattering, mie_scattering, mie_extinction,
+//             ozone_absorption, ground_albedo ([r, g, b]); rayleigh_scale_height_m,
+//             mie_scale_height_m, mie_phase_g, ozone_center_altitude_m, ozone_half_width_m,
+//             sun_angular_radius_deg, bottom_radius_m, thickness_m, mu_s_min,
+//             scattering_orders (docs/atmosphere.md; Earth defaults)
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "atmosphere/Parameters.hpp"
 #include "core/Time.hpp"
 #include "geo/Camera.hpp"
 
@@ -31,6 +37,7 @@ struct SceneSettings {
   double windDirectionDeg = 90.0;         ///< direction the wind blows towards, clockwise from north
   std::vector<std::string> windLayers;    ///< "FILE[:U,V]" specs, bottom of the stack first
   std::string elevationLayer;             ///< "FILE[:VAR]", empty = embedded default
+  atmosphere::Parameters atmosphere;      ///< [atmosphere]: Earth defaults
 };
 
 /// Reads a scene file over `base` (keys absent from the file keep base's values).

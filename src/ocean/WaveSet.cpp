@@ -49,6 +49,31 @@ double bandVariance(double k0, double k1, double u10) {
 }
 }  // namespace
 
+double waveAmplitudeAt(const WaveSet& set, std::size_t i, double windSpeedMs) {
+  const double u = std::clamp(windSpeedMs, 0.1, 50.0);
+  const double k = set.waves.at(i).k();
+  const std::size_t n = set.waves.size();
+  const double halfBand = n > 1 ? std::sqrt(set.wavelengthRatio) : 0.5;
+  const double h = std::sqrt(2.0 * bandVariance(k * halfBand, k / halfBand, u));
+  return std::min(h, 0.44 / k);
+}
+
+WindTables makeWindTables(const WaveSet& set, int count, double speedStepMs) {
+  WindTables t;
+  t.speedStepMs = speedStepMs;
+  for (int s = 0; s < count; ++s) {
+    const double u = s * speedStepMs;
+    WaveSetParams p = set.params;
+    p.windSpeedMs = std::clamp(u, 0.0, 50.0);
+    p.lambdaMaxM = set.params.lambdaMaxM;  // the same waves, another wind
+    t.total.push_back(makeWaveSet(p).total);
+    std::vector<double> amps;
+    for (std::size_t i = 0; i < set.waves.size(); ++i) amps.push_back(waveAmplitudeAt(set, i, u));
+    t.amplitudeM.push_back(std::move(amps));
+  }
+  return t;
+}
+
 double trochoidSlopeVariance(const Wave& w, double dx, double dy, double weight) {
   const double k2 = w.kEast * w.kEast + w.kNorth * w.kNorth;
   const double kd = w.kEast * dx + w.kNorth * dy;

@@ -44,6 +44,20 @@ struct WaveSet {
 /// Throws og::InputError for out-of-range parameters.
 WaveSet makeWaveSet(const WaveSetParams& params);
 
+/// Amplitude (m) wave `i` of `set` would have under a local wind of `windSpeedMs`: the same
+/// spectral band and steepness cap as makeWaveSet, at another wind. Used to scale each wave's
+/// amplitude point by point where the wind varies (the paper's §6 remark, made real).
+double waveAmplitudeAt(const WaveSet& set, std::size_t i, double windSpeedMs);
+
+/// Per-wind tables for the shaders, for wind speeds 0, step, 2 step ... (count entries):
+/// the total slope variance (up, cross) and every wave's amplitude at that wind.
+struct WindTables {
+  double speedStepMs = 1.0;
+  std::vector<SlopeVariance> total;              ///< [speed]
+  std::vector<std::vector<double>> amplitudeM;   ///< [speed][wave]
+};
+WindTables makeWindTables(const WaveSet& set, int count = 41, double speedStepMs = 1.0);
+
 /// Slope variance of one trochoid along unit direction (dx, dy), Eq. 4 of Bruneton 2010 with
 /// weight w: (k.d)²/|k|² (1 - sqrt(1 - |k|² w² h²)).
 double trochoidSlopeVariance(const Wave& wave, double dx, double dy, double weight = 1.0);

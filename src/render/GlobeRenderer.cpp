@@ -1,7 +1,9 @@
 #include "render/GlobeRenderer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "core/Error.hpp"
 #include "gl/Readback.hpp"
@@ -13,12 +15,20 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 glm::vec3 toFloat(const glm::dvec3& v) { return glm::vec3(v); }
 }  // namespace
 
-GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation)
-    : globe_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
+GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
+                             const atmosphere::Parameters& atmosphere)
+    : GlobeRenderer(elevation, std::make_shared<const Atmosphere>(atmosphere)) {}
+
+GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
+                             std::shared_ptr<const Atmosphere> atmosphere)
+    : atmosphere_(std::move(atmosphere)),
+      globe_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
               {GL_FRAGMENT_SHADER, "render/globe.frag"}}),
       tonemap_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
                 {GL_FRAGMENT_SHADER, "render/tonemap.frag"}}),
-      emptyVao_(gl::createVertexArray()) {
+      emptyVao_(gl::createVertexArray()),
+      ocean_(std::make_unique<OceanRenderer>(atmosphere_.get())),
+      wind_(std::make_unique<WindTextures>()) {
   if (elevation.width < 2 || elevation.height < 2)
     throw InternalError("elevation layer '" + elevation.name + "' is too small to render");
   // Missing values (NaN) read as sea.
@@ -39,6 +49,8 @@ GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation)
                             elevation.dLonDeg * kDeg, elevation.dLatDeg * kDeg);
   elevationSize_ = glm::vec2(elevation.width, elevation.height);
   elevationWraps_ = elevation.wrapsLongitude ? 1 : 0;
+  ocean_->setElevationLayer(elevationMap_, elevationSize_, elevationWraps_);
+  terrain_ = std::make_unique<TerrainRenderer>(elevation, atmosphere_.get());
   gl::checkErrors("GlobeRenderer setup");
 }
 
@@ -46,6 +58,17 @@ void GlobeRenderer::ensureTargets(int width, int height) {
   if (hdr_.width == width && hdr_.height == height) return;
   hdr_ = gl::createRenderTarget(width, height, GL_RGBA32F, true);
   ldr_ = gl::createRenderTarget(width, height, GL_RGBA8, false);
+}
+
+const ocean::WaveSet& GlobeRenderer::waveSetFor(double windSpeedMs, double windDirectionDeg) {
+  if (waves_.waves.empty() || waves_.params.windSpeedMs != windSpeedMs ||
+      waves_.params.windDirectionDeg != windDirectionDeg) {
+    ocean::WaveSetParams p;
+    p.windSpeedMs = windSpeedMs;
+    p.windDirectionDeg = windDirectionDeg;
+    waves_ = ocean::makeWaveSet(p);
+  }
+  return waves_;
 }
 
 void GlobeRenderer::render(const FrameInput& f) {
@@ -78,13 +101,54 @@ void GlobeRenderer::render(const FrameInput& f) {
   globe_.set("uSunDir", toFloat(glm::normalize(f.sunDirectionEcef)));
   globe_.set("uEyeScaled", toFloat(o));
   globe_.set("uEyeC", static_cast<float>(c));
+  globe_.set("uCamUp", toFloat(view.enu.up));
+  globe_.set("uCamAltitude", static_cast<float>(view.position.heightM));
+  // The wave set is built for the wind under the camera; elsewhere the shaders rescale it to
+  // the local wind (WindTextures' tables).
+  double windSpeed = f.windSpeedMs, windDirection = f.windDirectionDeg;
+  if (const data::WindLayers* layers = wind_->layers()) {
+    const data::WindVector w = layers->sample(view.position.latitudeDeg, view.position.longitudeDeg);
+    windSpeed = std::min(std::hypot(w.uMs, w.vMs), 50.0);
+    windDirection = std::atan2(w.uMs, w.vMs) / kDeg;
+  }
+  const ocean::WaveSet& waves = waveSetFor(windSpeed, windDirection);
+  wind_->setWaveSet(waves);
+  wind_->bind(globe_, windSpeed, windDirection);
+  const bool grid = view.position.heightM < kOceanGridMaxHeightM;
+  globe_.set("uSeaByGrid", grid ? 1 : 0);
+  globe_.set("uSeaColor", OceanLighting{}.seaColor);
   globe_.set("uElevationMap", elevationMap_);
   globe_.set("uElevationSize", elevationSize_);
   globe_.set("uElevationWraps", elevationWraps_);
   glBindTextureUnit(0, elevation_.id());
+  atmosphere_->bind(globe_);
+  atmosphere_->bindSkyMaps();
   globe_.use();
   glBindVertexArray(emptyVao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+
+  // Terrain over the globe's land (its far fallback), depth-tested; the ocean below is then
+  // depth-tested against it, so the shoreline is where sea surface and ground meet.
+  terrain_->draw(view, f.width, f.height, f.sunDirectionEcef);
+  glBindTextureUnit(0, elevation_.id());
+  glBindVertexArray(emptyVao_.id());
+
+  if (grid) {
+    // The near sea: the projected grid over the globe's sea holes, depth-tested against land.
+    ocean::OceanFrame fresh;
+    if (f.oceanFrame == nullptr) fresh.reset(view.position);
+    const ocean::OceanFrame& frame = f.oceanFrame ? *f.oceanFrame : fresh;
+    OceanLighting lighting;
+    lighting.sunDirectionEcef = f.sunDirectionEcef;
+    // Waves fade out on the way up so the grid meets the orbit model at the switch.
+    const double h = view.position.heightM;
+    const double x = std::clamp((h - kOceanFadeStartM) / (kOceanGridMaxHeightM - kOceanFadeStartM), 0.0, 1.0);
+    const double amplitude = 1.0 - x * x * (3.0 - 2.0 * x);
+    glDepthFunc(GL_GREATER);
+    ocean_->setCellPixels(f.oceanCellPixels);
+    ocean_->draw(view, f.width, f.height, waves, frame, f.simulationTimeS, lighting, amplitude,
+                 f.oceanModel, *wind_);
+  }
 
   glDisable(GL_DEPTH_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, ldr_.fbo.id());

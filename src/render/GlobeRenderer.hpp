@@ -3,29 +3,66 @@
 // float, alpha = coverage, reversed-Z depth) and a display target (tone-mapped sRGB, 8-bit).
 #include <glm/glm.hpp>
 
+#include <memory>
 #include <vector>
 
+#include "atmosphere/Parameters.hpp"
 #include "data/LatLonGrid.hpp"
 #include "geo/Camera.hpp"
 #include "gl/Objects.hpp"
 #include "gl/Shader.hpp"
 #include "io/Image.hpp"
+#include "ocean/OceanFrame.hpp"
+#include "ocean/WaveSet.hpp"
+#include "render/Atmosphere.hpp"
+#include "render/OceanRenderer.hpp"
+#include "render/TerrainRenderer.hpp"
+#include "render/WindTextures.hpp"
 
 namespace og::render {
 
 struct FrameInput {
   geo::CameraPose camera;
   glm::dvec3 sunDirectionEcef{1.0, 0.0, 0.0};  ///< unit, towards the Sun
-  double exposure = 10.0;  ///< multiplies radiance (Sun-irradiance units) before tone mapping
+  /// Multiplies radiance (Sun-irradiance units) before tone mapping. The default is a fixed,
+  /// physically based exposure for sunlit scenes (docs/atmosphere.md): daylight at sea level
+  /// and the day side seen from orbit share it, as both are lit by the same Sun.
+  double exposure = 10.0;
   int width = 256;
   int height = 256;
   double simulationTimeS = 0.0;  ///< seconds since the start of the sequence (wave animation)
+  OceanModel oceanModel = OceanModel::Bruneton;
+  /// The 10 m wind, [0, 50] m/s, and the direction it blows towards (clockwise from north),
+  /// everywhere unless GlobeRenderer::setWindLayers gave local winds.
+  double windSpeedMs = 7.0;
+  double windDirectionDeg = 90.0;
+  /// The ocean frame carried from earlier frames (waves fixed to the Earth while the camera
+  /// moves); nullptr starts a fresh frame under the camera.
+  const ocean::OceanFrame* oceanFrame = nullptr;
+  int oceanCellPixels = 8;         ///< projected-grid cell size, pixels
 };
+
+/// Below this camera height the sea is the projected grid with waves; above, the ellipsoid with
+/// the BRDF of the whole slope distribution. The grid's waves fade out towards it
+/// (kOceanFadeStartM), so the two agree at the switch.
+inline constexpr double kOceanGridMaxHeightM = 20000.0;
+inline constexpr double kOceanFadeStartM = 12000.0;
 
 class GlobeRenderer {
  public:
-  /// Needs a current GL 4.5 context. Uploads the elevation layer once.
-  explicit GlobeRenderer(const data::LatLonGrid& elevation);
+  /// Needs a current GL 4.5 context. Uploads the elevation layer once and prepares the
+  /// atmosphere (precomputed tables, from the on-disk cache when available).
+  explicit GlobeRenderer(const data::LatLonGrid& elevation,
+                         const atmosphere::Parameters& atmosphere = atmosphere::earth());
+  /// Shares an atmosphere already prepared on the current context.
+  GlobeRenderer(const data::LatLonGrid& elevation, std::shared_ptr<const Atmosphere> atmosphere);
+
+  [[nodiscard]] const Atmosphere& atmosphere() const { return *atmosphere_; }
+  [[nodiscard]] std::shared_ptr<const Atmosphere> sharedAtmosphere() const { return atmosphere_; }
+
+  /// Local winds from data layers for every following frame (nullptr: each frame's constant
+  /// wind everywhere). The sea's slopes, glint and waves then follow the wind point by point.
+  void setWindLayers(std::shared_ptr<const data::WindLayers> layers) { wind_->setLayers(std::move(layers)); }
 
   /// Draws a frame into the internal targets (resized as needed).
   void render(const FrameInput& frame);
@@ -41,9 +78,14 @@ class GlobeRenderer {
   /// Blocks until the GPU has finished the last frame (for timing).
   static void finish();
 
+  /// The terrain pass (tile counts and memory of the last frame).
+  [[nodiscard]] const TerrainRenderer& terrain() const { return *terrain_; }
+
  private:
   void ensureTargets(int width, int height);
+  const ocean::WaveSet& waveSetFor(double windSpeedMs, double windDirectionDeg);
 
+  std::shared_ptr<const Atmosphere> atmosphere_;
   gl::Program globe_;
   gl::Program tonemap_;
   gl::VertexArray emptyVao_;
@@ -51,6 +93,10 @@ class GlobeRenderer {
   glm::vec4 elevationMap_{};
   glm::vec2 elevationSize_{};
   int elevationWraps_ = 0;
+  std::unique_ptr<OceanRenderer> ocean_;
+  std::unique_ptr<TerrainRenderer> terrain_;
+  std::unique_ptr<WindTextures> wind_;
+  ocean::WaveSet waves_;
   gl::RenderTarget hdr_;
   gl::RenderTarget ldr_;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace og::render {
@@ -60,11 +61,18 @@ gl::Texture makeFresnelRamp() {
   glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   return t;
 }
+
+std::vector<std::string> skyDefines(const Atmosphere* atmosphere) {
+  return atmosphere ? std::vector<std::string>{} : std::vector<std::string>{"OCEAN_SIMPLE_SKY"};
+}
 }  // namespace
 
-OceanRenderer::OceanRenderer()
-    : program_({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}}),
-      classic_({{GL_VERTEX_SHADER, "ocean/classic.vert"}, {GL_FRAGMENT_SHADER, "ocean/classic.frag"}}),
+OceanRenderer::OceanRenderer(const Atmosphere* atmosphere)
+    : atmosphere_(atmosphere),
+      program_({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}},
+               skyDefines(atmosphere)),
+      classic_({{GL_VERTEX_SHADER, "ocean/classic.vert"}, {GL_FRAGMENT_SHADER, "ocean/classic.frag"}},
+               skyDefines(atmosphere)),
       bumpMap_(makeBumpMap()),
       fresnelRamp_(makeFresnelRamp()),
       vao_(gl::createVertexArray()),
@@ -112,16 +120,26 @@ void OceanRenderer::setCommon(const gl::Program& p, const geo::CameraView& view,
   p.set("uEyeScaled", toFloat(o));
   p.set("uEyeC", static_cast<float>(glm::dot(o, o) - 1.0));
   p.set("uSunDirOcean", ecefToOcean * toFloat(glm::normalize(lighting.sunDirectionEcef)));
-  p.set("uSunIrradiance", lighting.sunIrradiance);
-  p.set("uSkyIrradiance", lighting.skyIrradiance);
+  p.set("uSunDirEcef", toFloat(glm::normalize(lighting.sunDirectionEcef)));
   p.set("uSeaColor", lighting.seaColor);
-  p.set("uSkyZenith", lighting.skyZenith);
-  p.set("uSkyHorizon", lighting.skyHorizon);
+  p.set("uElevationMap", elevationMap_);
+  p.set("uElevationSize", elevationSize_);
+  p.set("uElevationWraps", elevationWraps_);
+  p.set("uCamUp", toFloat(view.enu.up));
+  p.set("uCamAltitude", static_cast<float>(view.position.heightM));
+  if (atmosphere_ != nullptr) {
+    atmosphere_->bind(p);
+    atmosphere_->bindSkyMaps();
+  } else {
+    p.set("uSkyZenith", lighting.skyZenith);
+    p.set("uSkyHorizon", lighting.skyHorizon);
+  }
 }
 
 void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
                          const ocean::WaveSet& waves, const ocean::OceanFrame& frame, double timeS,
-                         const OceanLighting& lighting, double amplitudeScale, OceanModel model) {
+                         const OceanLighting& lighting, double amplitudeScale, OceanModel model,
+                         const WindTextures& wind) {
   // The grid overshoots the screen (NDC) so displaced edges stay covered: waves displace
   // vertices by up to their summed amplitude, which is a large angle seen from a few metres.
   double amplitudeSum = 0.0;
@@ -144,8 +162,8 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     p.set("uFieldOffset", glm::vec2(static_cast<float>(std::fmod(off.x, 800.0)),
                                     static_cast<float>(std::fmod(off.y, 800.0))));
     p.set("uTime", static_cast<float>(std::fmod(timeS, 1000.0)));
-    glBindTextureUnit(1, bumpMap_.id());
-    glBindTextureUnit(2, fresnelRamp_.id());
+    glBindTextureUnit(8, bumpMap_.id());
+    glBindTextureUnit(9, fresnelRamp_.id());
     p.use();
   } else {
     // Wave data for this frame: phases folded in double on the CPU (OceanFrame::phases).
@@ -153,15 +171,15 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     const double windRad = waves.params.windDirectionDeg * 3.14159265358979323846 / 180.0;
     const double rot = frame.fieldRotationRad();
     const glm::dvec2 wind0{std::sin(windRad), std::cos(windRad)};  // east, north
-    const glm::dvec2 wind{std::cos(rot) * wind0.x - std::sin(rot) * wind0.y,
-                          std::sin(rot) * wind0.x + std::cos(rot) * wind0.y};
+    const glm::dvec2 windDir{std::cos(rot) * wind0.x - std::sin(rot) * wind0.y,
+                             std::sin(rot) * wind0.x + std::cos(rot) * wind0.y};
     std::vector<glm::vec4> data;
     data.reserve(2 * waves.waves.size());
     for (std::size_t i = 0; i < waves.waves.size(); ++i) {
       const glm::dvec2 k = phases.k[i];
       const double kl = glm::length(k);
-      const double up = glm::dot(k, wind) / kl;
-      const double cross = (k.x * wind.y - k.y * wind.x) / kl;
+      const double up = glm::dot(k, windDir) / kl;
+      const double cross = (k.x * windDir.y - k.y * windDir.x) / kl;
       data.emplace_back(static_cast<float>(k.x), static_cast<float>(k.y),
                         static_cast<float>(waves.waves[i].amplitudeM),
                         static_cast<float>(phases.phaseRad[i]));
@@ -179,9 +197,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     p.set("uWaveLambdaMax", static_cast<float>(waves.waves.front().wavelengthM));
     p.set("uWaveLogRatio", static_cast<float>(std::log(waves.wavelengthRatio)));
     p.set("uWaveAmplitude", static_cast<float>(amplitudeScale));
-    p.set("uWindTx", glm::vec3(static_cast<float>(wind.x), static_cast<float>(wind.y), 0.0f));
-    p.set("uTotalVariance",
-          glm::vec2(static_cast<float>(waves.total.up), static_cast<float>(waves.total.cross)));
+    wind.bind(p, waves.params.windSpeedMs, waves.params.windDirectionDeg);
     p.use();
   }
   glBindVertexArray(vao_.id());

@@ -9,16 +9,17 @@
 #include "gl/Shader.hpp"
 #include "ocean/OceanFrame.hpp"
 #include "ocean/WaveSet.hpp"
+#include "render/Atmosphere.hpp"
+#include "render/WindTextures.hpp"
 
 namespace og::render {
 
 struct OceanLighting {
   glm::dvec3 sunDirectionEcef{0, 0, 1};
-  glm::vec3 sunIrradiance{1.0f};         ///< at sea level, Sun-irradiance units
-  glm::vec3 skyIrradiance{0.15f};
+  glm::vec3 seaColor{0.0015f, 0.004f, 0.007f};  ///< upwelling radiance per unit irradiance
+  // Used without an atmosphere only (tests of the ocean alone): a simple analytic sky.
   glm::vec3 skyZenith{0.02f, 0.045f, 0.11f};
   glm::vec3 skyHorizon{0.07f, 0.09f, 0.12f};
-  glm::vec3 seaColor{0.0015f, 0.004f, 0.007f};  ///< upwelling radiance per unit irradiance
 };
 
 enum class OceanModel {
@@ -28,8 +29,17 @@ enum class OceanModel {
 
 class OceanRenderer {
  public:
-  /// Needs a current GL 4.5 context.
-  OceanRenderer();
+  /// Needs a current GL 4.5 context. With an atmosphere the sea reflects its sky maps and gets
+  /// its aerial perspective; without (nullptr) a simple analytic sky lights it.
+  explicit OceanRenderer(const Atmosphere* atmosphere = nullptr);
+
+  /// The elevation layer's mapping (see render/elevation.glsl); its texture must be bound to
+  /// unit 0 when drawing. Without it the sea is drawn everywhere.
+  void setElevationLayer(const glm::vec4& map, const glm::vec2& size, int wraps) {
+    elevationMap_ = map;
+    elevationSize_ = size;
+    elevationWraps_ = wraps;
+  }
 
   /// Grid cell size in pixels (the paper's ~8 px); smaller = finer geometry, slower.
   void setCellPixels(int pixels) { cellPixels_ = pixels; }
@@ -38,7 +48,7 @@ class OceanRenderer {
   /// `amplitudeScale` in [0, 1] fades the resolved waves (1 = as the spectrum says).
   void draw(const geo::CameraView& view, int width, int height, const ocean::WaveSet& waves,
             const ocean::OceanFrame& frame, double timeS, const OceanLighting& lighting,
-            double amplitudeScale, OceanModel model = OceanModel::Bruneton);
+            double amplitudeScale, OceanModel model, const WindTextures& wind);
 
  private:
   void ensureGrid(int columns, int rows);
@@ -46,6 +56,7 @@ class OceanRenderer {
   void setCommon(const gl::Program& p, const geo::CameraView& view, int height,
                  const ocean::OceanFrame& frame, const OceanLighting& lighting) const;
 
+  const Atmosphere* atmosphere_;
   gl::Program program_;
   gl::Program classic_;
   gl::Texture bumpMap_;      ///< classic: tileable ripple normals, mip-mapped
@@ -56,6 +67,9 @@ class OceanRenderer {
   int gridColumns_ = 0, gridRows_ = 0;
   int indexCount_ = 0;
   int cellPixels_ = 8;
+  glm::vec4 elevationMap_{0.0f};
+  glm::vec2 elevationSize_{0.0f};
+  int elevationWraps_ = 0;
 };
 
 }  // namespace og::render

@@ -28,6 +28,7 @@ class OceanFixture : public ::testing::Test {
   void SetUp() override {
     ctx_ = gl::createHeadlessContext();
     ocean_ = std::make_unique<render::OceanRenderer>();
+    wind_ = std::make_unique<render::WindTextures>();
     ocean::WaveSetParams p;
     p.windSpeedMs = 8.0;
     p.windDirectionDeg = 250.0;
@@ -49,7 +50,8 @@ class OceanFixture : public ::testing::Test {
     glClearNamedFramebufferfv(target.fbo.id(), GL_DEPTH, 0, &zero);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
-    ocean_->draw(view, s.width, s.height, waves_, frame, s.timeS, light, 1.0, s.model);
+    wind_->setWaveSet(waves_);
+    ocean_->draw(view, s.width, s.height, waves_, frame, s.timeS, light, 1.0, s.model, *wind_);
     return gl::readRgbaF(target.fbo.id(), s.width, s.height);
   }
 
@@ -69,6 +71,7 @@ class OceanFixture : public ::testing::Test {
 
   std::unique_ptr<gl::Context> ctx_;
   std::unique_ptr<render::OceanRenderer> ocean_;
+  std::unique_ptr<render::WindTextures> wind_;
   ocean::WaveSet waves_;
 };
 

@@ -60,7 +60,7 @@ TEST(GlobeRender, DepthIsNearOverDistanceAtEveryScale) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(halfLand());
   for (double h : {1.0, 1000.0, 2.0e7}) {
-    const render::FrameInput f = frame(-20, 100, h, -90);
+    const render::FrameInput f = frame(20, 100, h, -90);  // land: the globe pass itself
     r.render(f);
     const geo::CameraView v = geo::makeCameraView(f.camera, f.width, f.height);
     const std::vector<float> depth = r.depth();

@@ -93,3 +93,18 @@ TEST(OceanSpectrum, RejectsBadParameters) {
   p.count = 0;
   EXPECT_THROW(makeWaveSet(p), og::InputError);
 }
+
+TEST(OceanSpectrum, WindTablesMatchTheWaveSetAtItsOwnWind) {
+  WaveSetParams p;
+  p.windSpeedMs = 8.0;
+  const WaveSet set = makeWaveSet(p);
+  const WindTables t = makeWindTables(set, 41, 1.0);
+  ASSERT_EQ(t.total.size(), 41u);
+  for (std::size_t i = 0; i < set.waves.size(); ++i)
+    EXPECT_NEAR(t.amplitudeM[8][i], set.waves[i].amplitudeM, 1e-12) << i;
+  EXPECT_NEAR(t.total[8].total(), set.total.total(), 0.05 * set.total.total());
+  // Calmer: smaller waves and slopes; windier: larger.
+  EXPECT_LT(t.total[3].total(), t.total[8].total());
+  EXPECT_GT(t.total[15].total(), t.total[8].total());
+  EXPECT_LT(t.amplitudeM[3][0], t.amplitudeM[8][0]);
+}

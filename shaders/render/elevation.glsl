@@ -1,0 +1,16 @@
+// The elevation layer (relief and bathymetry, metres) as a lat/lon texture: shared by the globe
+// pass (land/sea, land colours) and the ocean passes (no sea over land).
+layout(binding = 0) uniform sampler2D uElevation;  // metres, rows south to north
+uniform vec4 uElevationMap;  // (lon0, lat0, dLon, dLat) in radians, cell centres
+uniform vec2 uElevationSize; // (columns, rows)
+uniform int uElevationWraps; // 1 when the columns cover 360 degrees
+
+// Elevation at (latitude, longitude) in radians; outside a regional layer: -1 (sea).
+float elevationAt(vec2 latLon) {
+  vec2 cell = vec2((latLon.y - uElevationMap.x) / uElevationMap.z,
+                   (latLon.x - uElevationMap.y) / uElevationMap.w);
+  if (uElevationWraps == 1) cell.x = mod(cell.x, uElevationSize.x);
+  vec2 uv = (cell + 0.5) / uElevationSize;
+  if (uElevationWraps == 0 && (uv.x < 0.0 || uv.x > 1.0)) return -1.0;
+  return texture(uElevation, uv).r;
+}

@@ -1,0 +1,57 @@
+#pragma once
+// The terrain pass: the tiles chosen for the view (terrain/Selection), drawn into the caller's
+// HDR target with the reversed-Z depth test after the globe pass and before the ocean, which is
+// then depth-tested against it (the shoreline is where sea surface and ground meet). Tiles are
+// mirrored on the GPU as one vertex buffer each, dropped when the CPU cache evicts them.
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+
+#include "data/LatLonGrid.hpp"
+#include "geo/Camera.hpp"
+#include "gl/Objects.hpp"
+#include "gl/Shader.hpp"
+#include "render/Atmosphere.hpp"
+#include "terrain/Selection.hpp"
+#include "terrain/TileCache.hpp"
+
+namespace og::render {
+
+struct TerrainStats {
+  int tiles = 0;                ///< drawn in the last frame
+  int finestLevel = 0;
+  std::size_t cpuBytes = 0;     ///< tile cache (CPU), bytes
+  std::size_t gpuBytes = 0;     ///< vertex buffers, bytes
+};
+
+class TerrainRenderer {
+ public:
+  /// Needs a current GL 4.5 context. Keeps a copy of the elevation layer.
+  TerrainRenderer(const data::LatLonGrid& elevation, const Atmosphere* atmosphere);
+
+  /// Draws into the bound framebuffer (width x height) with GL_GREATER depth test and writes.
+  void draw(const geo::CameraView& view, int width, int height, const glm::dvec3& sunDirectionEcef);
+
+  [[nodiscard]] const TerrainStats& stats() const { return stats_; }
+  terrain::SelectionParams& selection() { return params_; }
+
+ private:
+  struct GpuTile {
+    gl::Buffer vertices;
+  };
+
+  const Atmosphere* atmosphere_;
+  terrain::TileCache cache_;
+  terrain::SelectionParams params_;
+  gl::Program program_;
+  gl::VertexArray vao_;
+  gl::Buffer indices_;
+  int indexCount_ = 0;
+  std::unordered_map<std::uint64_t, GpuTile> gpu_;
+  TerrainStats stats_;
+};
+
+}  // namespace og::render

@@ -1,0 +1,46 @@
+#pragma once
+// View-dependent choice of tiles: a tile is split while its vertex spacing, seen from the
+// camera, exceeds a pixel threshold; tiles outside the view frustum or wholly below the
+// horizon are dropped. Everything in double precision.
+#include <cstddef>
+#include <vector>
+
+#include "geo/Camera.hpp"
+#include "terrain/TileCache.hpp"
+
+namespace og::terrain {
+
+struct SelectionParams {
+  int widthPx = 640;
+  int heightPx = 360;
+  /// Largest allowed screen-space error: a tile's vertex spacing in pixels at its nearest point.
+  double maxSpacingPx = 12.0;
+  int minLevel = 2;        ///< always split down to this level (45° tiles keep the shape round)
+  int maxLevel = kMaxLevel;
+};
+
+struct SelectionStats {
+  int visited = 0;
+  int culledFrustum = 0;
+  int culledHorizon = 0;
+  int finestLevel = 0;
+};
+
+/// Whether a sphere (ECEF centre, radius m) can be seen over the planet from `eyeEcef`: false
+/// only when it lies wholly behind the horizon of an ellipsoid inside all terrain (the WGS84
+/// one shrunk by 11.5 km). Exact for the occluder, conservative for the sphere.
+bool aboveHorizon(const glm::dvec3& eyeEcef, const glm::dvec3& centreEcef, double radiusM);
+
+/// Whether a sphere intersects the view frustum's four side planes (no far plane).
+bool inFrustum(const geo::CameraView& view, int widthPx, int heightPx,
+               const glm::dvec3& centreEcef, double radiusM);
+
+/// Screen-space error of a tile: its vertex spacing in pixels at its bounding sphere's
+/// nearest distance. Tiles wholly under 50 m of water count a quarter (the sea covers them).
+double tileErrorPx(const geo::CameraView& view, int heightPx, const Tile& tile);
+
+/// The tiles to draw, coarse-to-fine order not guaranteed; builds missing tiles in `cache`.
+std::vector<const Tile*> selectTiles(TileCache& cache, const geo::CameraView& view,
+                                     const SelectionParams& params, SelectionStats* stats = nullptr);
+
+}  // namespace og::terrain

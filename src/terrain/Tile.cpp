@@ -1,0 +1,148 @@
+#include "terrain/Tile.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "geo/Wgs84.hpp"
+
+namespace og::terrain {
+namespace {
+constexpr double kDeg = std::numbers::pi / 180.0;
+// Finest grid: kTileQuads << kMaxLevel steps over 180° (a power of two, so the step is exact).
+constexpr double kFineStepDeg = 180.0 / static_cast<double>(static_cast<std::int64_t>(kTileQuads) << kMaxLevel);
+}  // namespace
+
+double TileKey::sizeDeg() const { return 180.0 / static_cast<double>(1 << level); }
+double TileKey::southDeg() const { return -90.0 + y * sizeDeg(); }
+double TileKey::westDeg() const { return -180.0 + x * sizeDeg(); }
+
+void tileVertexLatLon(const TileKey& key, int i, int j, double& latDeg, double& lonDeg) {
+  const std::int64_t step = std::int64_t{1} << (kMaxLevel - key.level);
+  const std::int64_t u = (static_cast<std::int64_t>(key.x) * kTileQuads + i) * step;
+  const std::int64_t v = (static_cast<std::int64_t>(key.y) * kTileQuads + j) * step;
+  latDeg = static_cast<double>(v) * kFineStepDeg - 90.0;
+  lonDeg = static_cast<double>(u) * kFineStepDeg - 180.0;
+}
+
+glm::dvec3 geodeticToEcefFast(double latDeg, double lonDeg, double heightM) {
+  const double a = geo::kWgs84SemiMajorM;
+  const double b = geo::kWgs84SemiMinorM;
+  const double e2 = 1.0 - (b * b) / (a * a);
+  const double lat = latDeg * kDeg, lon = lonDeg * kDeg;
+  const double s = std::sin(lat), c = std::cos(lat);
+  const double n = a / std::sqrt(1.0 - e2 * s * s);
+  return {(n + heightM) * c * std::cos(lon), (n + heightM) * c * std::sin(lon),
+          (n * (1.0 - e2) + heightM) * s};
+}
+
+Tile buildTile(const Heightfield& heights, const TileKey& key) {
+  constexpr int n = kTileQuads + 1;
+  Tile t;
+  t.key = key;
+  t.spacingM = key.sizeDeg() / kTileQuads * kDeg * geo::kWgs84SemiMajorM;
+  const double midLat = key.southDeg() + 0.5 * key.sizeDeg();
+  const double midLon = key.westDeg() + 0.5 * key.sizeDeg();
+  t.centreEcef = geodeticToEcefFast(midLat, midLon, 0.0);
+
+  std::vector<double> h(static_cast<std::size_t>(n * n));
+  std::vector<glm::dvec3> ecef(static_cast<std::size_t>(n * n));
+  std::vector<double> lats(static_cast<std::size_t>(n * n)), lons(static_cast<std::size_t>(n * n));
+  t.minHeightM = 1e30;
+  t.maxHeightM = -1e30;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const auto k = static_cast<std::size_t>(j * n + i);
+      tileVertexLatLon(key, i, j, lats[k], lons[k]);
+      h[k] = heights.heightM(lats[k], lons[k]);
+      ecef[k] = geodeticToEcefFast(lats[k], lons[k], h[k]);
+      t.minHeightM = std::min(t.minHeightM, h[k]);
+      t.maxHeightM = std::max(t.maxHeightM, h[k]);
+    }
+
+  // Normals from the height function at half a spacing either way: the same detail the mesh
+  // resolves, no more (finer normals would alias from afar).
+  const double dDeg = 0.5 * key.sizeDeg() / kTileQuads;
+  auto normalAt = [&](double lat, double lon, const glm::dvec3& up) {
+    const double latN = std::min(lat + dDeg, 90.0), latS = std::max(lat - dDeg, -90.0);
+    const glm::dvec3 pn = geodeticToEcefFast(latN, lon, heights.heightM(latN, lon));
+    const glm::dvec3 ps = geodeticToEcefFast(latS, lon, heights.heightM(latS, lon));
+    const glm::dvec3 pe = geodeticToEcefFast(lat, lon + dDeg, heights.heightM(lat, lon + dDeg));
+    const glm::dvec3 pw = geodeticToEcefFast(lat, lon - dDeg, heights.heightM(lat, lon - dDeg));
+    const glm::dvec3 c = glm::cross(pe - pw, pn - ps);
+    const double len = glm::length(c);
+    // At the poles the east-west difference vanishes: use the vertical there.
+    const double ns = glm::length(pn - ps);
+    return len > 1e-6 * ns * ns ? c / len : up;
+  };
+
+  // Skirt depth: hides the gaps at T-junctions with coarser neighbours, which are at most the
+  // height differences across a cell of this tile.
+  const double skirt = std::clamp(0.5 * (t.maxHeightM - t.minHeightM) + 0.1 * t.spacingM, 20.0, 20000.0);
+
+  t.positions.reserve(kTileVertices);
+  t.vertices.reserve(kTileVertices);
+  auto push = [&](std::size_t k, double depth, const glm::dvec3& normal) {
+    const double lat = lats[k] * kDeg, lon = lons[k] * kDeg;
+    const glm::dvec3 up{std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
+    const glm::dvec3 p = ecef[k] - depth * up - t.centreEcef;
+    t.positions.push_back(p);
+    t.vertices.push_back({glm::vec3(p), glm::vec3(normal), static_cast<float>(h[k] - depth),
+                          static_cast<float>(lat), static_cast<float>(lon),
+                          static_cast<float>(1.0 - std::clamp(glm::dot(normal, up), 0.0, 1.0))});
+  };
+  std::vector<glm::dvec3> normals(static_cast<std::size_t>(n * n));
+  for (std::size_t k = 0; k < normals.size(); ++k) {
+    const double lat = lats[k] * kDeg, lon = lons[k] * kDeg;
+    const glm::dvec3 up{std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
+    normals[k] = normalAt(lats[k], lons[k], up);
+    push(k, 0.0, normals[k]);
+  }
+  // Skirts: south edge, east edge, north edge, west edge, each kTileQuads + 1 vertices.
+  for (int e = 0; e < 4; ++e)
+    for (int s = 0; s < n; ++s) {
+      const int i = e == 0 ? s : e == 1 ? n - 1 : e == 2 ? s : 0;
+      const int j = e == 0 ? 0 : e == 1 ? s : e == 2 ? n - 1 : s;
+      const auto k = static_cast<std::size_t>(j * n + i);
+      push(k, skirt, normals[k]);
+    }
+
+  // Bounding sphere about the tile's middle vertex: the mesh lies in the vertices' hull.
+  t.boundCentreEcef = t.centreEcef + t.positions[static_cast<std::size_t>((n / 2) * n + n / 2)];
+  double r2 = 0.0;
+  for (const auto& p : t.positions) {
+    const glm::dvec3 d = p + t.centreEcef - t.boundCentreEcef;
+    r2 = std::max(r2, glm::dot(d, d));
+  }
+  t.boundRadiusM = std::sqrt(r2) * 1.0001 + 1.0;
+  return t;
+}
+
+const std::vector<std::uint32_t>& tileIndices() {
+  static const std::vector<std::uint32_t> indices = [] {
+    constexpr std::uint32_t n = kTileQuads + 1;
+    std::vector<std::uint32_t> v;
+    v.reserve(6 * kTileQuads * kTileQuads + 4 * 6 * kTileQuads);
+    for (std::uint32_t j = 0; j < kTileQuads; ++j)
+      for (std::uint32_t i = 0; i < kTileQuads; ++i) {
+        const std::uint32_t a = j * n + i, b = a + 1, c = a + n, d = c + 1;
+        v.insert(v.end(), {a, b, d, a, d, c});
+      }
+    // Skirt strips: edge vertex k of edge e (grid index g(k)) joined to its lowered copy.
+    auto grid = [&](std::uint32_t e, std::uint32_t s) {
+      const std::uint32_t i = e == 0 ? s : e == 1 ? n - 1 : e == 2 ? s : 0;
+      const std::uint32_t j = e == 0 ? 0 : e == 1 ? s : e == 2 ? n - 1 : s;
+      return j * n + i;
+    };
+    for (std::uint32_t e = 0; e < 4; ++e)
+      for (std::uint32_t s = 0; s < kTileQuads; ++s) {
+        const std::uint32_t top0 = grid(e, s), top1 = grid(e, s + 1);
+        const std::uint32_t low0 = n * n + e * n + s, low1 = low0 + 1;
+        v.insert(v.end(), {top0, top1, low1, top0, low1, low0});
+      }
+    return v;
+  }();
+  return indices;
+}
+
+}  // namespace og::terrain

@@ -1,0 +1,81 @@
+#pragma once
+// Terrain tiles: a geographic quadtree. Level 0 has two tiles (west and east hemispheres, each
+// 180° x 180°); each level halves a tile's extent in latitude and longitude. A tile is a
+// (kTileQuads + 1)² grid of vertices at regular latitudes/longitudes plus a skirt along its
+// four edges. Vertex latitudes/longitudes come from integer positions on the finest grid, so a
+// vertex shared by tiles of any levels has bit-identical coordinates, height and position.
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "terrain/Heightfield.hpp"
+
+namespace og::terrain {
+
+inline constexpr int kTileQuads = 32;                    ///< quads along a tile edge
+inline constexpr int kTileGridVertices = (kTileQuads + 1) * (kTileQuads + 1);
+inline constexpr int kTileVertices = kTileGridVertices + 4 * (kTileQuads + 1);  ///< with skirts
+inline constexpr int kMaxLevel = 16;                     ///< finest level (~20 m spacing)
+
+struct TileKey {
+  int level = 0;  ///< 0 .. kMaxLevel
+  int x = 0;      ///< column from longitude -180, 0 .. 2^(level+1) - 1
+  int y = 0;      ///< row from latitude -90, 0 .. 2^level - 1
+  [[nodiscard]] std::uint64_t packed() const {
+    return (static_cast<std::uint64_t>(level) << 56) | (static_cast<std::uint64_t>(x) << 28) |
+           static_cast<std::uint64_t>(y);
+  }
+  [[nodiscard]] TileKey child(int i) const { return {level + 1, 2 * x + (i & 1), 2 * y + (i >> 1)}; }
+  [[nodiscard]] double sizeDeg() const;      ///< extent in latitude and longitude, degrees
+  [[nodiscard]] double southDeg() const;
+  [[nodiscard]] double westDeg() const;
+  friend bool operator==(const TileKey&, const TileKey&) = default;
+};
+
+/// Latitude and longitude (degrees) of grid vertex (i, j) (i east, j north, 0..kTileQuads) of a
+/// tile, computed from its position on the finest grid so neighbours agree exactly.
+void tileVertexLatLon(const TileKey& key, int i, int j, double& latDeg, double& lonDeg);
+
+/// Per-vertex data as uploaded (float, 10 per vertex).
+struct TileVertex {
+  glm::vec3 position;  ///< relative to the tile centre, m (ECEF axes)
+  glm::vec3 normal;    ///< unit, ECEF axes
+  float heightM;       ///< above sea level, m
+  float latitudeRad;
+  float longitudeRad;
+  float slope;         ///< 1 - cos(angle between the normal and the vertical)
+};
+static_assert(sizeof(TileVertex) == 40);
+
+struct Tile {
+  TileKey key;
+  glm::dvec3 centreEcef{0.0};            ///< ECEF, m: the origin of the vertex positions
+  std::vector<glm::dvec3> positions;     ///< relative to centreEcef, m (double, CPU side)
+  std::vector<TileVertex> vertices;      ///< the same as uploaded (float)
+  glm::dvec3 boundCentreEcef{0.0};       ///< bounding sphere of every vertex (skirts included)
+  double boundRadiusM = 0.0;
+  double minHeightM = 0.0, maxHeightM = 0.0;
+  double spacingM = 0.0;                 ///< vertex spacing north-south, m
+  std::uint64_t lastUsedFrame = 0;
+
+  /// Memory held by the tile's CPU arrays, bytes.
+  [[nodiscard]] std::size_t bytes() const {
+    return sizeof(Tile) + positions.capacity() * sizeof(glm::dvec3) +
+           vertices.capacity() * sizeof(TileVertex);
+  }
+};
+
+/// Builds a tile from the height function. Deterministic.
+Tile buildTile(const Heightfield& heights, const TileKey& key);
+
+/// Triangle indices shared by every tile (the grid, then the skirts), counter-clockwise seen
+/// from above.
+const std::vector<std::uint32_t>& tileIndices();
+
+/// Closed-form geodetic -> ECEF (m): the same arithmetic for every caller, so shared vertices
+/// match bit for bit.
+glm::dvec3 geodeticToEcefFast(double latDeg, double lonDeg, double heightM);
+
+}  // namespace og::terrain
