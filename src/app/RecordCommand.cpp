@@ -182,11 +182,7 @@ RecordResult runRecording(const RecordJob& job) {
 
   // Data layers before the GL context (as `render` does): a bad file exits 2 at once.
   const data::LatLonGrid elevation = data::loadElevationLayer(scene.elevationLayer);
-  std::shared_ptr<const data::WindLayers> wind;
-  if (!scene.windLayers.empty())
-    wind = std::make_shared<const data::WindLayers>(data::WindLayers::load(
-        scene.windLayers, data::windFromSpeedDirection(scene.windSpeedMs, scene.windDirectionDeg),
-        scene.time));
+  const std::shared_ptr<const data::WindLayers> wind = loadWindLayers(scene);
 
   auto context = gl::createHeadlessContext(*gl::parseBackend(scene.glBackend));
   result.glRenderer = context->info().renderer;
@@ -237,8 +233,7 @@ RecordResult runRecording(const RecordJob& job) {
     render::FrameInput frame;
     frame.camera = poseAt(i);
     frame.oceanFrame = &oceanFrame;
-    frame.oceanModel = scene.oceanModel == "classic" ? render::OceanModel::Classic
-                                                     : render::OceanModel::Bruneton;
+    frame.oceanModel = oceanModelOf(scene);
     frame.windSpeedMs = scene.windSpeedMs;
     frame.windDirectionDeg = scene.windDirectionDeg;
     frame.sunDirectionEcef =

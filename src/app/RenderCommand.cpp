@@ -51,11 +51,7 @@ Run addRenderCommand(CLI::App& parent) {
     checkOutputWritable(out);  // fail before the (long) render, not after
     // Data layers before the GL context: a bad file exits 2 without rendering anything.
     const data::LatLonGrid elevation = data::loadElevationLayer(scene.elevationLayer);
-    std::shared_ptr<const data::WindLayers> wind;
-    if (!scene.windLayers.empty())
-      wind = std::make_shared<const data::WindLayers>(data::WindLayers::load(
-          scene.windLayers, data::windFromSpeedDirection(scene.windSpeedMs, scene.windDirectionDeg),
-          scene.time));
+    const std::shared_ptr<const data::WindLayers> wind = loadWindLayers(scene);
 
     const auto backend = gl::parseBackend(scene.glBackend);
     auto context = gl::createHeadlessContext(*backend);
@@ -69,8 +65,7 @@ Run addRenderCommand(CLI::App& parent) {
     frame.exposure = scene.exposure;
     frame.width = scene.width;
     frame.height = scene.height;
-    frame.oceanModel = scene.oceanModel == "classic" ? render::OceanModel::Classic
-                                                     : render::OceanModel::Bruneton;
+    frame.oceanModel = oceanModelOf(scene);
     frame.windSpeedMs = scene.windSpeedMs;
     frame.windDirectionDeg = scene.windDirectionDeg;
     renderer.render(frame);

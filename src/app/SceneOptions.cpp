@@ -98,4 +98,14 @@ glm::dvec3 sunDirectionOf(const io::SceneSettings& s) {
                                          s.sunAzimuthDeg.value_or(150.0));
 }
 
+std::shared_ptr<const data::WindLayers> loadWindLayers(const io::SceneSettings& s) {
+  if (s.windLayers.empty()) return nullptr;
+  return std::make_shared<const data::WindLayers>(data::WindLayers::load(
+      s.windLayers, data::windFromSpeedDirection(s.windSpeedMs, s.windDirectionDeg), s.time));
+}
+
+render::OceanModel oceanModelOf(const io::SceneSettings& s) {
+  return s.oceanModel == "classic" ? render::OceanModel::Classic : render::OceanModel::Bruneton;
+}
+
 }  // namespace og::app

@@ -3,9 +3,12 @@
 #include <CLI/CLI.hpp>
 
 #include <glm/glm.hpp>
+#include <memory>
 #include <string>
 
+#include "data/WindLayers.hpp"
 #include "io/SceneFile.hpp"
+#include "render/OceanRenderer.hpp"
 
 namespace og::app {
 
@@ -32,5 +35,12 @@ class SceneOptions {
 /// the given elevation/azimuth at the point under the camera, or a default afternoon Sun
 /// (elevation 50°, azimuth 150° there) when neither is given.
 glm::dvec3 sunDirectionOf(const io::SceneSettings& scene);
+
+/// The scene's wind layers, loaded and validated (og::InputError for a bad file), or nullptr
+/// when it names none: then the constant wind holds everywhere.
+std::shared_ptr<const data::WindLayers> loadWindLayers(const io::SceneSettings& scene);
+
+/// The scene's ocean model ("bruneton" or "classic", validated by io::validateScene).
+render::OceanModel oceanModelOf(const io::SceneSettings& scene);
 
 }  // namespace og::app

@@ -95,8 +95,7 @@ class Viewer {
     io::SceneSettings sunScene = scene_;
     if (flight_) sunScene.camera = flight_->keyframes().back().pose;
     fixedSun_ = sunDirectionOf(sunScene);
-    oceanModel_ = scene_.oceanModel == "classic" ? render::OceanModel::Classic
-                                                 : render::OceanModel::Bruneton;
+    oceanModel_ = oceanModelOf(scene_);
     layersOn_ = wind_.size() > 0;
     showOverlay_ = !options_.noOverlay;
   }
@@ -117,6 +116,9 @@ class Viewer {
     glfwSwapInterval(1);
 
     renderer_ = std::make_unique<render::GlobeRenderer>(elevation_, scene_.atmosphere);
+    // The renderer reads the layers point by point (wind texture); L switches them off.
+    if (wind_.size() > 0) windShared_ = std::make_shared<const data::WindLayers>(wind_);
+    renderer_->setWindLayers(layersOn_ ? windShared_ : nullptr);
     overlay_ = std::make_unique<viewer::TextOverlay>();
     oceanFrame_.reset(controller_.pose().position);
 
@@ -200,6 +202,7 @@ class Viewer {
           say("no wind layers (--wind-layer FILE)");
         } else {
           layersOn_ = !layersOn_;
+          renderer_->setWindLayers(layersOn_ ? windShared_ : nullptr);
           say(layersOn_ ? "wind layers on" : "wind layers off: constant wind");
         }
         break;
@@ -459,6 +462,7 @@ class Viewer {
   io::SceneSettings scene_;
   data::LatLonGrid elevation_;
   data::WindLayers wind_;
+  std::shared_ptr<const data::WindLayers> windShared_;  // the same, for the renderer
   viewer::FlightController controller_;
   geo::CameraPose start_;
   std::optional<geo::FlightPath> flight_;

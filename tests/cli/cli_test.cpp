@@ -12,49 +12,18 @@
 
 #include "io/Image.hpp"
 #include "support/ImageCompare.hpp"
+#include "support/RunBinary.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct RunResult {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
+using og::test::RunResult;
+using og::test::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
+fs::path scratch() { return og::test::scratchDir("cli"); }
 
-// A fresh, empty directory per test.
-fs::path scratch() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(OG_TEST_OUT_DIR) / "cli" / info->name();
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-RunResult run(const std::string& args) {
-  // CTest runs tests in parallel processes: capture files are per test.
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(OG_TEST_OUT_DIR) / "cli" / "logs";
-  fs::create_directories(dir);
-  const fs::path out = dir / (std::string(info->name()) + ".stdout");
-  const fs::path err = dir / (std::string(info->name()) + ".stderr");
-  const std::string cmd = std::string(OG_BINARY) + " " + args + " >" + out.string() + " 2>" +
-                          err.string() + " </dev/null";
-  const int status = std::system(cmd.c_str());
-  RunResult r;
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
+RunResult run(const std::string& args) { return og::test::runOceanglobe(args, "cli"); }
 
 std::size_t lines(const std::string& s) {
   std::size_t n = 0;

@@ -12,44 +12,17 @@
 #include <string>
 
 #include "support/DataFixtures.hpp"
+#include "support/RunBinary.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
+using Result = og::test::RunResult;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
+fs::path scratch() { return og::test::scratchDir("cli_info"); }
 
-fs::path scratch() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(OG_TEST_OUT_DIR) / "cli_info" / info->name();
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-Result run(const fs::path& dir, const std::string& args) {
-  const fs::path out = dir / "stdout";
-  const fs::path err = dir / "stderr";
-  const std::string cmd = std::string(OG_BINARY) + " " + args + " >" + out.string() + " 2>" +
-                          err.string() + " </dev/null";
-  const int status = std::system(cmd.c_str());
-  Result r;
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
+Result run(const std::string& args) { return og::test::runOceanglobe(args, "cli_info"); }
 
 std::size_t lines(const std::string& s) {
   std::size_t n = 0;
@@ -68,7 +41,7 @@ TEST(CliInfo, Era5StyleNetcdfTextAndJson) {
   const fs::path dir = scratch();
   const fs::path file = dir / "era5.nc";
   og::test::writeEra5Wind(file);
-  Result r = run(dir, "info " + file.string());
+  Result r = run("info " + file.string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(contains(r.out, "wind: u = u10, v = v10")) << r.out;
   EXPECT_TRUE(contains(r.out, "12 x 7 cells")) << r.out;
@@ -76,7 +49,7 @@ TEST(CliInfo, Era5StyleNetcdfTextAndJson) {
       << r.out;
   EXPECT_TRUE(contains(r.out, "3 of 252 values missing")) << r.out;
 
-  r = run(dir, "info --json " + file.string());
+  r = run("info --json " + file.string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["kind"], "wind");
@@ -95,16 +68,16 @@ TEST(CliInfo, GfsStyleGrib2AndNamedVariables) {
   const fs::path dir = scratch();
   const fs::path file = dir / "gfs.grib2";
   og::test::writeGfsWind(file);
-  Result r = run(dir, "info --json " + file.string());
+  Result r = run("info --json " + file.string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["format"], "GRIB2");
   EXPECT_EQ(j["variables"][0]["name"], "10u");
   EXPECT_EQ(j["time"]["steps"], 2);
-  r = run(dir, "info " + file.string() + ":10v");
+  r = run("info " + file.string() + ":10v");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(contains(r.out, "field       10v")) << r.out;
-  r = run(dir, "info " + file.string() + ":10v,10x");
+  r = run("info " + file.string() + ":10v,10x");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_EQ(lines(r.err), 1u) << r.err;
   EXPECT_TRUE(contains(r.err, file.string() + ": no variable '10x'")) << r.err;
@@ -113,12 +86,12 @@ TEST(CliInfo, GfsStyleGrib2AndNamedVariables) {
 TEST(CliInfo, FerretDatasets) {
   if (!fs::exists(kNavy) || !fs::exists(kEtopo5)) GTEST_SKIP() << "ferret-datasets not installed";
   const fs::path dir = scratch();
-  Result r = run(dir, std::string("info ") + kNavy);
+  Result r = run(std::string("info ") + kNavy);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(contains(r.out, "wind: u = UWND, v = VWND")) << r.out;
   EXPECT_TRUE(contains(r.out, "144 x 73 cells, 2.5 x 2.5 deg, global in longitude")) << r.out;
   EXPECT_TRUE(contains(r.out, "132 steps on 'TIME'")) << r.out;
-  r = run(dir, std::string("info --json ") + kEtopo5);
+  r = run(std::string("info --json ") + kEtopo5);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["variables"][0]["name"], "ROSE");
@@ -132,7 +105,7 @@ TEST(CliInfo, BadFilesExit2WithOneLine) {
   for (const char* name : {"bad_garbage.grib2", "bad_truncated_classic.nc", "bad_nonmonotonic.nc",
                            "bad_huge_dims.nc", "bad_all_fill.nc"}) {
     SCOPED_TRACE(name);
-    const Result r = run(dir, "info " + (corpus / name).string());
+    const Result r = run("info " + (corpus / name).string());
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(lines(r.err), 1u) << r.err;
     EXPECT_TRUE(contains(r.err, (corpus / name).string() + ": ")) << r.err;
@@ -151,7 +124,7 @@ TEST(CliInfo, RenderRefusesBadLayersBeforeRendering) {
         "--elevation-layer " + (corpus / "bad_nonmonotonic.nc").string(),
         "--elevation-layer " + (dir / "absent.nc").string()}) {
     SCOPED_TRACE(layer);
-    const Result r = run(dir, base + " " + layer);
+    const Result r = run(base + " " + layer);
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(lines(r.err), 1u) << r.err;
     EXPECT_FALSE(fs::exists(dir / "out.png"));
@@ -166,7 +139,7 @@ TEST(CliInfo, RenderWithGoodLayers) {
                      "2024-06-20T03:00Z --wind-layer " +
                      era5.string() + " -o " + (dir / "out.png").string();
   if (fs::exists(kEtopo5)) args += std::string(" --elevation-layer ") + kEtopo5 + ":ROSE";
-  const Result r = run(dir, args);
+  const Result r = run(args);
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(fs::exists(dir / "out.png"));
 }

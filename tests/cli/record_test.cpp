@@ -16,48 +16,23 @@
 #include <thread>
 
 #include "io/Image.hpp"
+#include "support/RunBinary.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct RunResult {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
+using og::test::RunResult;
+using og::test::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-fs::path scratch() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(OG_TEST_OUT_DIR) / "record" / info->name();
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path scratch() { return og::test::scratchDir("record"); }
 
 RunResult runCommand(const std::string& cmd, const std::string& tag) {
-  const fs::path dir = fs::path(OG_TEST_OUT_DIR) / "record" / "logs";
-  fs::create_directories(dir);
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path out = dir / (std::string(info->name()) + tag + ".stdout");
-  const fs::path err = dir / (std::string(info->name()) + tag + ".stderr");
-  const int status = std::system((cmd + " >" + out.string() + " 2>" + err.string() + " </dev/null").c_str());
-  RunResult r;
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
+  return og::test::runCommand(cmd, "record", tag);
 }
 
 RunResult run(const std::string& args, const std::string& tag = "") {
-  return runCommand(std::string(OG_BINARY) + " " + args, tag);
+  return og::test::runOceanglobe(args, "record", tag);
 }
 
 // A short path: 1 s at 8 fps = 9 frames, orbit to 1 km.
