@@ -28,4 +28,4 @@ vec3 ellipsoidNormal(vec3 dir, float t) {
 }
 
 // Geodetic latitude and longitude (radians) of a geodetic normal.
-vec2 latLonOfNormal(vec3 n) { return vec2(asin(clamp(n.z, -1.0, 1.0)), atan(n.y, n.x)); }
+vec2 latLonOfNormal(vec3 n) { return vec2(asin(clamp(n.z, -1.0, 1.0)), atan2Safe(n.y, n.x)); }

@@ -4,6 +4,7 @@
 // that tints towards green looking down and blue at grazing angles, and sparkles where the
 // reflection meets the Sun. No filtering beyond the bump maps' mipmaps: the baseline the
 // filtered model is measured against (it aliases and flickers in the distance).
+#include "common/constants.glsl"
 #include "common/types.glsl"
 #include "geo/ellipsoid.glsl"
 #include "ocean/brdf.glsl"
@@ -46,7 +47,7 @@ void main() {
   // The ocean frame stands in for the local frame (the classic model is planar anyway); the sky
   // is point-sampled in the mirror direction, no filtering.
   float sunZenith = acos(clamp(uSunDirOcean.z, -1.0, 1.0));
-  float sunAzimuth = atan(uSunDirOcean.y, uSunDirOcean.x);
+  float sunAzimuth = atan2Safe(uSunDirOcean.y, uSunDirOcean.x);
   vec3 sky = skyMapRadianceStereo(stereographic(r), sunZenith, sunAzimuth, vec2(0.0), vec2(0.0));
   vec3 eSun = sunIrradiance(sunZenith);
   // Sparkles: the Sun seen in the mirror direction, a narrow Phong lobe.

@@ -11,6 +11,8 @@
 // sunIrradiance); define OCEAN_SIMPLE_SKY before including this file to use a small analytic
 // sky instead (tests of the ocean alone).
 
+#include "common/constants.glsl"
+
 #ifdef OCEAN_SIMPLE_SKY
 uniform vec3 uSkyZenith;   // radiance at the zenith
 uniform vec3 uSkyHorizon;  // radiance at the horizon
@@ -46,7 +48,7 @@ vec3 seaRadiance(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE)
   vec3 tx = normalize(w - dot(w, n) * n + vec3(1e-6, 0.0, 0.0));
   vec3 ty = cross(n, tx);
   float sunZenith = acos(clamp(l.z, -1.0, 1.0));
-  float sunAzimuth = atan(l.y, l.x);
+  float sunAzimuth = atan2Safe(l.y, l.x);
   vec3 eSun = sunIrradiance(sunZenith);
   vec3 eSky = skyIrradiance(sunZenith);
   // Sun: Ross BRDF, variance clamped so a flat sea still shows the Sun's disc (Eq. 6).
@@ -66,3 +68,29 @@ vec3 seaRadiance(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE)
   vec3 sea = shallowSeaColor(uSeaColor, seaFloorDepthM(upE)) * (eSun * max(l.z, 0.0) + eSky) * (1.0 - fbar);
   return sun + sky + sea;
 }
+
+#ifdef OCEAN_VALIDATION_REFERENCE
+// The brute-force reference of the validation (paper §7.2, docs/validation.md): each sample is a
+// perfect mirror with its exact facet normal n (every wave), the pixel's average coming from
+// supersampling, not from a slope distribution. Sky: a point lookup in the mirror direction with
+// the exact per-facet Fresnel F(v.n) (no F̄ fit, Eq. 10). The Sun: the Ross lobe of sigma2, the
+// spectrum's tail below the shortest wave, which no wave carries; it also lets a few dozen
+// samples per pixel find the Sun's 0.27° disc.
+vec3 seaRadianceMirror(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE) {
+  mat3 toLocal = transpose(localFrame(upE));
+  vec3 v = toLocal * vE, n = toLocal * nE, l = toLocal * sunE;
+  vec3 w = toLocal * windE;
+  vec3 tx = normalize(w - dot(w, n) * n + vec3(1e-6, 0.0, 0.0));
+  vec3 ty = cross(n, tx);
+  float sunZenith = acos(clamp(l.z, -1.0, 1.0));
+  float sunAzimuth = atan2Safe(l.y, l.x);
+  vec3 eSun = sunIrradiance(sunZenith);
+  vec3 eSky = skyIrradiance(sunZenith);
+  vec3 sun = eSun * rossSun(v, l, n, tx, ty, max(sigma2, vec2(SUN_SIGMA2_MIN)));
+  float f = fresnelSchlick(dot(v, n));
+  vec3 sky = f * skyMapRadianceStereo(stereographic(reflect(-v, n)), sunZenith, sunAzimuth,
+                                      vec2(0.0), vec2(0.0));
+  vec3 sea = shallowSeaColor(uSeaColor, seaFloorDepthM(upE)) * (eSun * max(l.z, 0.0) + eSky) * (1.0 - f);
+  return sun + sky + sea;
+}
+#endif

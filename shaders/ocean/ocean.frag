@@ -28,6 +28,11 @@ void main() {
   // Pixel footprint from the screen-space derivatives of the undisplaced position (taken
   // before any discard, while the whole quad is alive).
   float footprint = max(length(dFdx(vOceanXY)), length(dFdy(vOceanXY)));
+#ifdef OCEAN_VALIDATION_REFERENCE
+  // Validation reference: the rasterised triangle's plane, the geometry the sample already has.
+  vec3 nGeometry = normalize(cross(dFdx(vRelative), dFdy(vRelative)));
+  if (dot(nGeometry, v) < 0.0) nGeometry = -nGeometry;
+#endif
   vec3 frameUp = oceanToEcef[2];
   vec3 up = ellipsoidNormal(dir, dist);
   vec2 latLon = latLonOfNormal(up);
@@ -39,6 +44,14 @@ void main() {
   // so that with the waves faded out the normal is exactly the ellipsoid's (as in orbit).
   vec3 nFrame = oceanToEcef * on.normal;
   vec3 n = normalize(nFrame + (up - frameUp) * dot(nFrame, frameUp));
+#ifdef OCEAN_VALIDATION_REFERENCE
+  // Sub-triangle facets are sampled uniformly over the triangle, but a facet's share of the
+  // pixel is its area projected towards the eye: weight (v.n) / ((v.n_g)(n.n_g)), whose mean
+  // over the slopes is 1; facets facing away are hidden (weight 0). Masking by neighbouring
+  // facets is not modelled (docs/validation.md).
+  float sampleWeight = max(dot(n, v), 0.0) /
+                       (max(dot(v, nGeometry), 1e-3) * max(dot(n, nGeometry), 1e-3));
+#endif
   // Back-facing normals seen at grazing angles: reflect about the view plane (§5.1).
   float nv = dot(n, v);
   if (nv < 0.0) n = normalize(n - 2.0 * nv * v);
@@ -47,7 +60,15 @@ void main() {
   vec2 sigma2 = max(windSlopeVariance(wind.x) - on.resolvedVariance, vec2(2e-5));
   mat3 local = localFrame(up);
   vec3 windDir = sin(wind.y) * local[0] + cos(wind.y) * local[1];
+#ifdef OCEAN_VALIDATION_REFERENCE
+  // Validation reference: a mirror per sample; sigma2 is only the tail below the shortest wave.
+  vec3 radiance = seaRadianceMirror(v, n, windDir, sigma2, up, uSunDirEcef);
+  // Weighted sample: premultiplied radiance, weight in alpha (never 0, alpha also marks sea).
+  fragRadiance = vec4(oceanSurfaceRadiance(vRelative, radiance) * sampleWeight, max(sampleWeight, 1e-6));
+  return;
+#else
   vec3 radiance = seaRadiance(v, n, windDir, sigma2, up, uSunDirEcef);
+#endif
   fragRadiance = vec4(oceanSurfaceRadiance(vRelative, radiance), 1.0);
 }
 

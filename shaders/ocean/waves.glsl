@@ -19,6 +19,11 @@ const float OCEAN_NMIN = 1.0;   // filter: weight 0 below N_min footprints per w
 const float OCEAN_NMAX = 2.5;   // weight 1 above N_max
 
 // w(a, b, x) = 3x̄² - 2x̄³ with x̄ = clamp((x - a)/(b - a), 0, 1) (§4.1).
+// Validation variants (`oceanglobe validate`, docs/validation.md; default: neither defined):
+// OCEAN_VALIDATION_REFERENCE takes every wave into the normal whatever the footprint (the
+// brute-force reference supersamples instead of filtering; see oceanNormal);
+// OCEAN_VALIDATION_CONSTANT resolves no wave at all (flat sea, the whole slope variance in the
+// BRDF: the "BRDF only" model).
 float oceanFilterWeight(float lambdaOverFootprint) {
   float x = clamp((lambdaOverFootprint - OCEAN_NMIN) / (OCEAN_NMAX - OCEAN_NMIN), 0.0, 1.0);
   return x * x * (3.0 - 2.0 * x);
@@ -26,6 +31,9 @@ float oceanFilterWeight(float lambdaOverFootprint) {
 
 // Number of leading waves with lambda > N_min * footprint.
 int oceanWaveCountFor(float footprint) {
+#ifdef OCEAN_VALIDATION_CONSTANT
+  return 0;
+#endif
   float f = max(footprint * OCEAN_NMIN, 1e-6);
   float n = floor(log(f / uWaveLambdaMax) / uWaveLogRatio) + 1.0;
   return int(clamp(n, 0.0, float(uWaveCount)));
@@ -62,10 +70,18 @@ OceanNormal oceanNormal(vec2 xy, float pixelFootprint, float windSpeed) {
   vec3 dpdx = vec3(1.0, 0.0, 0.0);
   vec3 dpdy = vec3(0.0, 1.0, 0.0);
   vec2 resolved = vec2(0.0);
+#ifdef OCEAN_VALIDATION_REFERENCE
+  int n = uWaveCount;  // reference: all waves, weights 1 (its geometry stays filtered by its fine grid)
+#else
   int n = oceanWaveCountFor(pixelFootprint);
+#endif
   for (int i = 0; i < n; ++i) {
     OceanWave w = uWaves[i];
+#ifdef OCEAN_VALIDATION_REFERENCE
+    float weight = uWaveAmplitude;
+#else
     float weight = oceanFilterWeight(w.extra.x / pixelFootprint) * uWaveAmplitude;
+#endif
     float theta = w.kPhase.w - dot(w.kPhase.xy, xy);
     float h = oceanWaveAmplitude(i, windSpeed) * weight;
     vec2 khat = w.kPhase.xy / w.extra.y;

@@ -4,6 +4,7 @@
 //   m/s; columns from -180°, rows from -90°, cell centres), repeating in longitude.
 //   uOceanTable: column s = wind speed s * uOceanTableStep m/s; row 0 = total slope variance
 //   (up, cross) at that wind; row 1 + i = amplitude of wave i (m) at that wind.
+#include "common/constants.glsl"
 layout(binding = 1) uniform sampler2D uWind;
 layout(binding = 10) uniform sampler2D uOceanTable;
 uniform int uLocalWind;          // 1: read the wind from uWind; 0: the constant uniforms below
@@ -16,7 +17,7 @@ vec2 localWind(vec2 latLon) {
   if (uLocalWind == 0) return uConstantWind;
   vec2 uv = vec2(latLon.y / (2.0 * 3.14159265358979) + 0.5, latLon.x / 3.14159265358979 + 0.5);
   vec2 w = texture(uWind, uv).rg;
-  return vec2(length(w), atan(w.x, w.y));
+  return vec2(length(w), atan2Safe(w.x, w.y));
 }
 
 // Continuous column coordinate of a wind speed in uOceanTable.

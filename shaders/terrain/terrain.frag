@@ -32,14 +32,21 @@ vec3 aerialToAltitude(vec3 surface, vec3 dir, float t, float hP) {
 }
 
 void main() {
+  // Triangles of a tile's row at a pole collapse onto the pole; llvmpipe can still emit a
+  // fragment for them with undefined (NaN) attributes. They cover nothing: drop them.
+  if (any(isnan(vInfo)) || any(isnan(vRelative)) || any(isnan(vNormal))) discard;
   float heightM = vInfo.x;
   float lat = vInfo.y, lon = vInfo.z;
   vec3 up = vec3(cos(lat) * cos(lon), cos(lat) * sin(lon), sin(lat));
-  vec3 n = normalize(vNormal);
+  // Triangles that collapse at a pole give no normal (zero or NaN): the vertical stands in.
+  vec3 n = dot(vNormal, vNormal) > 1e-20 ? normalize(vNormal) : up;
   float t = length(vRelative);
   vec3 dir = vRelative / t;
   // Seen from below (a skirt or a back face at a grazing angle): light it like its surroundings.
-  if (dot(n, dir) > 0.0) n = normalize(n - 2.0 * dot(n, dir) * dir * 0.5);
+  if (dot(n, dir) > 0.0) {
+    vec3 m = n - dot(n, dir) * dir;  // zero when the face looks straight away from the eye
+    n = dot(m, m) > 1e-12 ? normalize(m) : up;
+  }
   float hP = max(heightM, 0.0);
   vec3 skyIrr;
   vec3 sunIrr = sunAndSkyIrradiance(uAtmosphere, uAtmTransmittance, uAtmIrradiance,

@@ -7,6 +7,8 @@
 #include <memory>
 #include <numeric>
 #include <string>
+#include <system_error>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -16,6 +18,8 @@
 #include "app/SceneOptions.hpp"
 #include "core/Error.hpp"
 #include "data/Elevation.hpp"
+#include "data/SyntheticWind.hpp"
+#include "data/WindLayers.hpp"
 #include "geo/Sun.hpp"
 #include "gl/Context.hpp"
 #include "render/Atmosphere.hpp"
@@ -60,6 +64,65 @@ struct BenchOptions {
 
 bool parseSize(const std::string& s, int& w, int& h) {
   return std::sscanf(s.c_str(), "%dx%d", &w, &h) == 2 && w > 0 && h > 0 && w <= 8192 && h <= 8192;
+}
+
+/// Load time of a global 0.25° two-variable wind field (1440 x 721, ERA5's layout) in two
+/// containers, written once to a temporary directory: WindLayers::load (open, validate, unpack,
+/// blend weights) and the rasterisation to the renderer's 720 x 360 wind texture (CPU part of
+/// WindTextures::setLayers). Median of 3 runs each.
+void benchWindData(nlohmann::json& report, bool json) {
+  using Clock = std::chrono::steady_clock;
+  auto msSince = [](Clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+  };
+  auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+  };
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() /
+      ("oceanglobe-bench-data-" + std::to_string(Clock::now().time_since_epoch().count()));
+  std::filesystem::create_directories(dir);
+  struct Remover {
+    std::filesystem::path dir;
+    ~Remover() {
+      std::error_code ignored;
+      std::filesystem::remove_all(dir, ignored);
+    }
+  } remover{dir};
+  constexpr int kColumns = 1440, kRows = 721, kTextureW = 720, kTextureH = 360;
+  const std::pair<data::SyntheticFormat, const char*> formats[] = {
+      {data::SyntheticFormat::kClassic64, "netcdf3-64bit"},
+      {data::SyntheticFormat::kNetcdf4Deflate, "netcdf4-zlib"}};
+  for (const auto& [format, name] : formats) {
+    const std::filesystem::path file = dir / (std::string("era5_025_") + name + ".nc");
+    const auto w0 = Clock::now();
+    data::writeSyntheticEra5Wind(file, format, kColumns, kRows);
+    const double writeMs = msSince(w0);
+    std::vector<double> loadMs, rasterMs;
+    for (int i = 0; i < 3; ++i) {
+      const auto l0 = Clock::now();
+      const data::WindLayers layers = data::WindLayers::load({file.string()}, {}, std::nullopt);
+      loadMs.push_back(msSince(l0));
+      const auto r0 = Clock::now();
+      const data::WindRaster raster = layers.rasterize(kTextureW, kTextureH);
+      rasterMs.push_back(msSince(r0));
+      if (raster.uv.empty()) throw InternalError("bench: empty wind raster");
+    }
+    const auto bytes = std::filesystem::file_size(file);
+    report["wind_data"].push_back(
+        {{"format", name}, {"grid", std::to_string(kColumns) + "x" + std::to_string(kRows)},
+         {"variables", "u10,v10"}, {"file_bytes", bytes}, {"write_ms", writeMs},
+         {"load_ms", median(loadMs)}, {"load_min_ms", *std::min_element(loadMs.begin(), loadMs.end())},
+         {"rasterize_ms", median(rasterMs)},
+         {"texture", std::to_string(kTextureW) + "x" + std::to_string(kTextureH)}});
+    if (!json)
+      std::printf("wind layer 0.25° %dx%d u10/v10 %-14s %5.1f MiB: load %.1f ms (min %.1f), "
+                  "rasterize to %dx%d %.1f ms\n",
+                  kColumns, kRows, name, static_cast<double>(bytes) / 1048576.0, median(loadMs),
+                  *std::min_element(loadMs.begin(), loadMs.end()), kTextureW, kTextureH,
+                  median(rasterMs));
+  }
 }
 
 }  // namespace
@@ -158,6 +221,7 @@ Run addBenchCommand(CLI::App& parent) {
                       static_cast<double>(ts.gpuBytes) / 1048576.0);
       }
     }
+    benchWindData(report, o->json);
     if (o->json) std::printf("%s\n", report.dump(2).c_str());
     return static_cast<int>(kExitOk);
   };

@@ -15,5 +15,6 @@ Run addInfoCommand(CLI::App& parent);
 Run addRecordCommand(CLI::App& parent);
 Run addSpectrumCommand(CLI::App& parent);
 Run addViewCommand(CLI::App& parent);
+Run addValidateCommand(CLI::App& parent);
 
 }  // namespace og::app

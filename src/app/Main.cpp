@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
       {"record", app::addRecordCommand(app)},
       {"spectrum", app::addSpectrumCommand(app)},
       {"view", app::addViewCommand(app)},
+      {"validate", app::addValidateCommand(app)},
   };
 
   try {

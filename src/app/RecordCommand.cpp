@@ -235,13 +235,14 @@ RecordResult runRecording(const RecordJob& job) {
     frame.oceanFrame = &oceanFrame;
     frame.oceanModel = oceanModelOf(scene);
     frame.windSpeedMs = scene.windSpeedMs;
-    frame.windDirectionDeg = scene.windDirectionDeg;
+    frame.windDirectionDeg = windTowardsDeg(scene);
     frame.sunDirectionEcef =
         scene.time ? geo::sunEphemeris(UtcTime{scene.time->unixSeconds + t}).directionEcef : fixedSun;
     frame.exposure = scene.exposure;
     frame.width = scene.width;
     frame.height = scene.height;
-    frame.simulationTimeS = t;
+    frame.simulationTimeS = scene.simulationTimeS + t;
+    frame.waveSeed = scene.waveSeed;
     renderer.render(frame);
   };
 

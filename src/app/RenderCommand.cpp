@@ -67,7 +67,9 @@ Run addRenderCommand(CLI::App& parent) {
     frame.height = scene.height;
     frame.oceanModel = oceanModelOf(scene);
     frame.windSpeedMs = scene.windSpeedMs;
-    frame.windDirectionDeg = scene.windDirectionDeg;
+    frame.windDirectionDeg = windTowardsDeg(scene);
+    frame.simulationTimeS = scene.simulationTimeS;
+    frame.waveSeed = scene.waveSeed;
     renderer.render(frame);
     if (format == Format::Png)
       io::writePng(out, renderer.display());

@@ -1,5 +1,6 @@
 #include "app/SceneOptions.hpp"
 
+#include <cmath>
 #include <cstdlib>
 #include <optional>
 
@@ -39,9 +40,11 @@ void SceneOptions::add(CLI::App& cmd) {
   cmd.add_option("--exposure", flags_.exposure, "exposure multiplier before tone mapping");
   cmd.add_option("--gl", flags_.glBackend, "OpenGL backend: auto, egl or osmesa");
   cmd.add_option("--ocean", flags_.oceanModel, "ocean model: bruneton (filtered) or classic");
+  cmd.add_option("--t", flags_.simulationTimeS, "simulation time of the waves, seconds");
+  cmd.add_option("--seed", flags_.waveSeed, "seed of the wave directions and phases");
   cmd.add_option("--wind", wind_,
-                 "wind where no layer covers: SPEED[,DIR] in m/s and degrees clockwise from north "
-                 "(the direction it blows towards)");
+                 "wind where no layer covers: SPEED[,FROM] in m/s and the direction it comes from, "
+                 "degrees clockwise from north (meteorological; default 7,270)");
   cmd.add_option("--wind-layer", flags_.windLayers,
                  "wind field FILE[:U,V] (NetCDF or GRIB2); repeat to stack a regional layer over "
                  "a global one");
@@ -66,16 +69,18 @@ io::SceneSettings SceneOptions::resolve(io::SceneSettings s) const {
   if (given("--exposure")) s.exposure = flags_.exposure;
   if (given("--gl")) s.glBackend = flags_.glBackend;
   if (given("--ocean")) s.oceanModel = flags_.oceanModel;
+  if (given("--t")) s.simulationTimeS = flags_.simulationTimeS;
+  if (given("--seed")) s.waveSeed = flags_.waveSeed;
   if (given("--wind-layer")) s.windLayers = flags_.windLayers;
   if (given("--elevation-layer")) s.elevationLayer = flags_.elevationLayer;
   if (given("--wind")) {
     const std::size_t comma = wind_.find(',');
     const auto speed = parseNumber(wind_.substr(0, comma));
-    const auto dir = comma == std::string::npos ? std::optional(s.windDirectionDeg)
+    const auto dir = comma == std::string::npos ? std::optional(s.windFromDeg)
                                                 : parseNumber(wind_.substr(comma + 1));
     if (!speed || !dir) throw InputError("--wind: expected SPEED[,DIRECTION], got '" + wind_ + "'");
     s.windSpeedMs = *speed;
-    s.windDirectionDeg = *dir;
+    s.windFromDeg = *dir;
   }
   if (given("--time")) {
     s.time = UtcTime::parseIso8601(time_);
@@ -101,8 +106,10 @@ glm::dvec3 sunDirectionOf(const io::SceneSettings& s) {
 std::shared_ptr<const data::WindLayers> loadWindLayers(const io::SceneSettings& s) {
   if (s.windLayers.empty()) return nullptr;
   return std::make_shared<const data::WindLayers>(data::WindLayers::load(
-      s.windLayers, data::windFromSpeedDirection(s.windSpeedMs, s.windDirectionDeg), s.time));
+      s.windLayers, data::windFromSpeedDirection(s.windSpeedMs, windTowardsDeg(s)), s.time));
 }
+
+double windTowardsDeg(const io::SceneSettings& s) { return std::fmod(s.windFromDeg + 180.0, 360.0); }
 
 render::OceanModel oceanModelOf(const io::SceneSettings& s) {
   return s.oceanModel == "classic" ? render::OceanModel::Classic : render::OceanModel::Bruneton;

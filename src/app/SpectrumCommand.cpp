@@ -1,4 +1,5 @@
 // oceanglobe spectrum: the wave set and slope statistics for a wind, as text or JSON.
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -32,7 +33,8 @@ Run addSpectrumCommand(CLI::App& parent) {
   auto o = std::make_shared<SpectrumOptions>();
   CLI::App* cmd = parent.add_subcommand("spectrum", "print the wave set and slope variances for a wind");
   cmd->add_option("--wind", o->wind,
-                  "SPEED[,DIR]: 10 m wind in m/s, direction it blows towards in degrees from north");
+                  "SPEED[,FROM]: 10 m wind in m/s and where it comes from, degrees clockwise from "
+                  "north (meteorological)");
   cmd->add_option("--waves", o->waves, "number of waves")->check(CLI::Range(1, 256));
   cmd->add_option("--seed", o->seed, "seed for directions and phases");
   cmd->add_flag("--json", o->json, "print JSON");
@@ -40,7 +42,9 @@ Run addSpectrumCommand(CLI::App& parent) {
     ocean::WaveSetParams p;
     const std::size_t comma = o->wind.find(',');
     p.windSpeedMs = parseNumber(o->wind.substr(0, comma), "speed");
-    if (comma != std::string::npos) p.windDirectionDeg = parseNumber(o->wind.substr(comma + 1), "direction");
+    double fromDeg = 270.0;
+    if (comma != std::string::npos) fromDeg = parseNumber(o->wind.substr(comma + 1), "direction");
+    p.windDirectionDeg = std::fmod(fromDeg + 180.0, 360.0);  // the waves run downwind
     p.count = o->waves;
     p.seed = o->seed;
     const ocean::WaveSet set = ocean::makeWaveSet(p);
@@ -48,7 +52,8 @@ Run addSpectrumCommand(CLI::App& parent) {
     if (o->json) {
       nlohmann::json j;
       j["wind_speed_ms"] = p.windSpeedMs;
-      j["wind_direction_deg"] = p.windDirectionDeg;
+      j["wind_from_deg"] = fromDeg;
+      j["wind_towards_deg"] = p.windDirectionDeg;
       j["mss"] = set.total.total();
       j["sigma_up2"] = set.total.up;
       j["sigma_cross2"] = set.total.cross;
@@ -64,8 +69,8 @@ Run addSpectrumCommand(CLI::App& parent) {
                               {"phase_rad", w.phaseRad}});
       std::printf("%s\n", j.dump(2).c_str());
     } else {
-      std::printf("wind %.2f m/s towards %.1f deg; %zu waves, %.3f m .. %.3f m\n", p.windSpeedMs,
-                  p.windDirectionDeg, set.waves.size(), set.waves.back().wavelengthM,
+      std::printf("wind %.2f m/s from %.1f deg; %zu waves, %.3f m .. %.3f m\n", p.windSpeedMs,
+                  fromDeg, set.waves.size(), set.waves.back().wavelengthM,
                   set.waves.front().wavelengthM);
       std::printf("mean-square slope %.5f (up %.5f, cross %.5f); Cox-Munk clean %.5f (%.5f, %.5f)\n",
                   set.total.total(), set.total.up, set.total.cross, cm.total(), cm.up, cm.cross);

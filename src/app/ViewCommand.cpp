@@ -82,7 +82,7 @@ class Viewer {
         elevation_(data::loadElevationLayer(scene_.elevationLayer)),
         wind_(data::WindLayers::load(
             scene_.windLayers,
-            data::windFromSpeedDirection(scene_.windSpeedMs, scene_.windDirectionDeg), scene_.time)),
+            data::windFromSpeedDirection(scene_.windSpeedMs, windTowardsDeg(scene_)), scene_.time)),
         controller_(scene_.camera, [this](double lat, double lon) {
           // The sea is at the ellipsoid; land lifts the floor to its elevation.
           return std::max(0.0, static_cast<double>(elevation_.sample(lat, lon)));

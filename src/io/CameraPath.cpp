@@ -102,7 +102,7 @@ void readScene(const fs::path& file, const toml::table& t, SceneSettings& s) {
       {"exposure", num(s.exposure)},
       {"ocean_model", [&](const toml::node& n, const std::string& k) { s.oceanModel = text(file, n, k); }},
       {"wind_speed_ms", num(s.windSpeedMs)},
-      {"wind_direction_deg", num(s.windDirectionDeg)},
+      {"wind_direction_deg", num(s.windFromDeg)},
       {"wind_layers",
        [&](const toml::node& n, const std::string& k) {
          const toml::array* list = n.as_array();
@@ -311,7 +311,7 @@ void writeCameraPathJson(const fs::path& file, const CameraPath& path) {
                           {"exposure", s.exposure},
                           {"ocean_model", s.oceanModel},
                           {"wind_speed_ms", s.windSpeedMs},
-                          {"wind_direction_deg", s.windDirectionDeg},
+                          {"wind_direction_deg", s.windFromDeg},
                           {"wind_layers", s.windLayers}};
   if (s.time) scene["time"] = s.time->toIso8601();
   if (s.sunElevationDeg) scene["sun_elevation_deg"] = *s.sunElevationDeg;
@@ -377,7 +377,7 @@ void writeCameraPathToml(const fs::path& file, const CameraPath& path) {
   t << "exposure = " << tomlNumber(s.exposure) << "\n";
   t << "ocean_model = " << tomlString(s.oceanModel) << "\n";
   t << "wind_speed_ms = " << tomlNumber(s.windSpeedMs) << "\n";
-  t << "wind_direction_deg = " << tomlNumber(s.windDirectionDeg) << "\n";
+  t << "wind_direction_deg = " << tomlNumber(s.windFromDeg) << "\n";
   t << "wind_layers = [";
   for (std::size_t i = 0; i < s.windLayers.size(); ++i)
     t << (i ? ", " : "") << tomlString(s.windLayers[i]);

@@ -10,7 +10,7 @@
 //   exposure = 10
 //   ocean_model = "bruneton"             # or "classic"
 //   wind_speed_ms = 7                    # [0, 50]
-//   wind_direction_deg = 90              # towards, clockwise from north
+//   wind_direction_deg = 270             # from (meteorological), clockwise from north
 //   wind_layers = ["winds.nc:UWND,VWND"]
 //   elevation_layer = "relief.nc:ROSE"
 //

@@ -96,7 +96,15 @@ SceneSettings readSceneFile(const std::filesystem::path& file, SceneSettings s) 
        {{"model",
          [&](const toml::node& n, const std::string& k) { s.oceanModel = text(file, n, k); }},
         {"wind_speed_ms", num(s.windSpeedMs)},
-        {"wind_direction_deg", num(s.windDirectionDeg)}}},
+        {"wind_direction_deg", num(s.windFromDeg)},
+        {"time_s", num(s.simulationTimeS)},
+        {"seed",
+         [&](const toml::node& n, const std::string& k) {
+           const auto v = n.value<std::int64_t>();
+           if (!n.is_integer() || !v || *v < 0)
+             throw InputError(where(file, n.source()) + "'" + k + "' must be a non-negative integer");
+           s.waveSeed = static_cast<std::uint64_t>(*v);
+         }}}},
       {"layers",
        {{"wind",
          [&](const toml::node& n, const std::string& k) {
@@ -170,10 +178,12 @@ void validateScene(const SceneSettings& s, const std::string& origin) {
     throw InputError(prefix + "ocean model must be bruneton or classic, not '" + s.oceanModel + "'");
   if (!std::isfinite(s.windSpeedMs) || s.windSpeedMs < 0.0 || s.windSpeedMs > 50.0)
     throw InputError(prefix + "wind speed must be within [0, 50] m/s");
-  if (!std::isfinite(s.windDirectionDeg) || std::abs(s.windDirectionDeg) > 720.0)
+  if (!std::isfinite(s.windFromDeg) || std::abs(s.windFromDeg) > 720.0)
     throw InputError(prefix + "wind direction must be a finite number of degrees within [-720, 720]");
   if (auto problem = atmosphere::validate(s.atmosphere))
     throw InputError(prefix + "[atmosphere]: " + *problem);
+  if (!std::isfinite(s.simulationTimeS) || std::abs(s.simulationTimeS) > 1e9)
+    throw InputError(prefix + "simulation time must be a finite number of seconds within [-1e9, 1e9]");
   if (s.glBackend != "auto" && s.glBackend != "egl" && s.glBackend != "osmesa")
     throw InputError(prefix + "GL backend must be auto, egl or osmesa, not '" + s.glBackend + "'");
 }

@@ -4,7 +4,8 @@
 //   [camera]  latitude_deg, longitude_deg, height_m, heading_deg, pitch_deg, roll_deg, fov_deg
 //   [sun]     time = "2024-06-20T12:00:00Z"  |  elevation_deg, azimuth_deg
 //   [image]   width, height, exposure
-//   [ocean]   model = "bruneton" | "classic", wind_speed_ms, wind_direction_deg
+//   [ocean]   model = "bruneton" | "classic", wind_speed_ms, wind_direction_deg (from, meteorological),
+//             time_s (wave clock), seed
 //   [layers]  wind = ["FILE[:U,V]", ...] (first is the bottom of the stack), elevation = "FILE[:VAR]"
 //   [gl]      backend = "auto" | "egl" | "osmesa"
 //   [atmosphere] solar_irradiance, rayleigh_scattering, mie_scattering, mie_extinction,
@@ -15,6 +16,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <cstdint>
 #include <vector>
 
 #include "atmosphere/Parameters.hpp"
@@ -34,9 +36,13 @@ struct SceneSettings {
   std::string glBackend = "auto";
   std::string oceanModel = "bruneton";    ///< "bruneton" (filtered, default) or "classic"
   double windSpeedMs = 7.0;               ///< 10 m wind where no wind layer covers, [0, 50]
-  double windDirectionDeg = 90.0;         ///< direction the wind blows towards, clockwise from north
+  /// Where the wind comes from, degrees clockwise from north (meteorological: 270 = a westerly,
+  /// blowing towards the east).
+  double windFromDeg = 270.0;
   std::vector<std::string> windLayers;    ///< "FILE[:U,V]" specs, bottom of the stack first
   std::string elevationLayer;             ///< "FILE[:VAR]", empty = embedded default
+  double simulationTimeS = 0.0;           ///< wave clock at the image (record: at frame 0), s
+  std::uint64_t waveSeed = 1;             ///< wave directions and phases are reproducible from it
   atmosphere::Parameters atmosphere;      ///< [atmosphere]: Earth defaults
 };
 

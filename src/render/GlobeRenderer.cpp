@@ -60,12 +60,14 @@ void GlobeRenderer::ensureTargets(int width, int height) {
   ldr_ = gl::createRenderTarget(width, height, GL_RGBA8, false);
 }
 
-const ocean::WaveSet& GlobeRenderer::waveSetFor(double windSpeedMs, double windDirectionDeg) {
+const ocean::WaveSet& GlobeRenderer::waveSetFor(double windSpeedMs, double windDirectionDeg,
+                                                std::uint64_t seed) {
   if (waves_.waves.empty() || waves_.params.windSpeedMs != windSpeedMs ||
-      waves_.params.windDirectionDeg != windDirectionDeg) {
+      waves_.params.windDirectionDeg != windDirectionDeg || waves_.params.seed != seed) {
     ocean::WaveSetParams p;
     p.windSpeedMs = windSpeedMs;
     p.windDirectionDeg = windDirectionDeg;
+    p.seed = seed;
     waves_ = ocean::makeWaveSet(p);
   }
   return waves_;
@@ -111,7 +113,7 @@ void GlobeRenderer::render(const FrameInput& f) {
     windSpeed = std::min(std::hypot(w.uMs, w.vMs), 50.0);
     windDirection = std::atan2(w.uMs, w.vMs) / kDeg;
   }
-  const ocean::WaveSet& waves = waveSetFor(windSpeed, windDirection);
+  const ocean::WaveSet& waves = waveSetFor(windSpeed, windDirection, f.waveSeed);
   wind_->setWaveSet(waves);
   wind_->bind(globe_, windSpeed, windDirection);
   const bool grid = view.position.heightM < kOceanGridMaxHeightM;

@@ -40,6 +40,7 @@ struct FrameInput {
   /// moves); nullptr starts a fresh frame under the camera.
   const ocean::OceanFrame* oceanFrame = nullptr;
   int oceanCellPixels = 8;         ///< projected-grid cell size, pixels
+  std::uint64_t waveSeed = 1;      ///< wave directions and phases
 };
 
 /// Below this camera height the sea is the projected grid with waves; above, the ellipsoid with
@@ -83,7 +84,7 @@ class GlobeRenderer {
 
  private:
   void ensureTargets(int width, int height);
-  const ocean::WaveSet& waveSetFor(double windSpeedMs, double windDirectionDeg);
+  const ocean::WaveSet& waveSetFor(double windSpeedMs, double windDirectionDeg, std::uint64_t seed);
 
   std::shared_ptr<const Atmosphere> atmosphere_;
   gl::Program globe_;

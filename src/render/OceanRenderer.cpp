@@ -65,12 +65,20 @@ gl::Texture makeFresnelRamp() {
 std::vector<std::string> skyDefines(const Atmosphere* atmosphere) {
   return atmosphere ? std::vector<std::string>{} : std::vector<std::string>{"OCEAN_SIMPLE_SKY"};
 }
+
+// The validation variants' defines (shaders/ocean/waves.glsl, lighting.glsl, ocean.frag).
+std::vector<std::string> oceanDefines(const Atmosphere* atmosphere, ValidationMode mode) {
+  std::vector<std::string> d = skyDefines(atmosphere);
+  if (mode == ValidationMode::Reference) d.emplace_back("OCEAN_VALIDATION_REFERENCE");
+  if (mode == ValidationMode::ConstantBrdf) d.emplace_back("OCEAN_VALIDATION_CONSTANT");
+  return d;
+}
 }  // namespace
 
-OceanRenderer::OceanRenderer(const Atmosphere* atmosphere)
+OceanRenderer::OceanRenderer(const Atmosphere* atmosphere, ValidationMode mode)
     : atmosphere_(atmosphere),
       program_({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}},
-               skyDefines(atmosphere)),
+               oceanDefines(atmosphere, mode)),
       classic_({{GL_VERTEX_SHADER, "ocean/classic.vert"}, {GL_FRAGMENT_SHADER, "ocean/classic.frag"}},
                skyDefines(atmosphere)),
       bumpMap_(makeBumpMap()),

@@ -27,11 +27,20 @@ enum class OceanModel {
   Classic,   ///< four sines + scrolling bump maps + Fresnel ramp (ShaderX), the baseline
 };
 
+/// Variants of the Bruneton model for its validation (paper §7.2, docs/validation.md), built
+/// from compile-time defines of shaders/ocean/*; everything but Filtered is for `validate`.
+enum class ValidationMode {
+  Filtered,      ///< the normal model (geometry, normals and BRDF by footprint)
+  Reference,     ///< every wave as geometry and normal, mirror reflection: supersample it
+  ConstantBrdf,  ///< flat sea, the whole slope variance in the BRDF ("BRDF only")
+};
+
 class OceanRenderer {
  public:
   /// Needs a current GL 4.5 context. With an atmosphere the sea reflects its sky maps and gets
   /// its aerial perspective; without (nullptr) a simple analytic sky lights it.
-  explicit OceanRenderer(const Atmosphere* atmosphere = nullptr);
+  explicit OceanRenderer(const Atmosphere* atmosphere = nullptr,
+                         ValidationMode mode = ValidationMode::Filtered);
 
   /// The elevation layer's mapping (see render/elevation.glsl); its texture must be bound to
   /// unit 0 when drawing. Without it the sea is drawn everywhere.

@@ -13,6 +13,8 @@ glm::dvec3 toScaled(const glm::dvec3& p) {
   return p / glm::dvec3(geo::kWgs84SemiMajorM, geo::kWgs84SemiMajorM, geo::kWgs84SemiMinorM);
 }
 
+constexpr int kPolarMaxLevel = 7;
+
 void selectRecursive(TileCache& cache, const geo::CameraView& view, const SelectionParams& p,
                      const TileKey& key, std::vector<const Tile*>& out, SelectionStats& stats) {
   const Tile& t = cache.get(key);
@@ -25,7 +27,12 @@ void selectRecursive(TileCache& cache, const geo::CameraView& view, const Select
     ++stats.culledHorizon;
     return;
   }
-  const bool split = key.level < p.maxLevel &&
+  // Tiles touching a pole are wedges that all meet there: splitting them at the same rate as
+  // elsewhere multiplies tiles around the whole ring (2^(level+1) of them) for a few metres of
+  // east-west extent. They stop at kPolarMaxLevel (~4 km spacing); tiles off the pole split on.
+  const bool polar = key.southDeg() <= -90.0 + 1e-9 || key.southDeg() + key.sizeDeg() >= 90.0 - 1e-9;
+  const int maxLevel = polar ? std::min(p.maxLevel, kPolarMaxLevel) : p.maxLevel;
+  const bool split = key.level < maxLevel &&
                      (key.level < p.minLevel || tileErrorPx(view, p.heightPx, t) > p.maxSpacingPx);
   if (!split) {
     out.push_back(&t);
