@@ -38,19 +38,37 @@ mat3 localFrame(vec3 upE) {
   return mat3(east, cross(upE, east), upE);
 }
 
+// The view, the Sun and the surface in the point's local frame, and the light arriving there.
+struct SeaPoint {
+  vec3 v, n, l, tx, ty;  // to the eye, normal, to the Sun, tangents along/across the wind
+  float sunZenith, sunAzimuth;
+  vec3 eSun, eSky;       // Sun and sky irradiance at sea level for this Sun zenith
+};
+
+SeaPoint seaPoint(vec3 vE, vec3 nE, vec3 windE, vec3 upE, vec3 sunE) {
+  mat3 toLocal = transpose(localFrame(upE));
+  SeaPoint p;
+  p.v = toLocal * vE;
+  p.n = toLocal * nE;
+  p.l = toLocal * sunE;
+  vec3 w = toLocal * windE;
+  p.tx = normalize(w - dot(w, p.n) * p.n + vec3(1e-6, 0.0, 0.0));
+  p.ty = cross(p.n, p.tx);
+  p.sunZenith = acos(clamp(p.l.z, -1.0, 1.0));
+  p.sunAzimuth = atan2Safe(p.l.y, p.l.x);
+  p.eSun = sunIrradiance(p.sunZenith);
+  p.eSky = skyIrradiance(p.sunZenith);
+  return p;
+}
+
 // vE: to the eye; nE: mean (resolved) normal; windE: the wind's direction (any vector with a
 // horizontal component along it); sigma2: unresolved slope variances along/across the wind;
 // upE: the ellipsoid normal at the point; sunE: towards the Sun. All unit, ECEF axes.
 vec3 seaRadiance(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE) {
-  mat3 toLocal = transpose(localFrame(upE));
-  vec3 v = toLocal * vE, n = toLocal * nE, l = toLocal * sunE;
-  vec3 w = toLocal * windE;
-  vec3 tx = normalize(w - dot(w, n) * n + vec3(1e-6, 0.0, 0.0));
-  vec3 ty = cross(n, tx);
-  float sunZenith = acos(clamp(l.z, -1.0, 1.0));
-  float sunAzimuth = atan2Safe(l.y, l.x);
-  vec3 eSun = sunIrradiance(sunZenith);
-  vec3 eSky = skyIrradiance(sunZenith);
+  SeaPoint p = seaPoint(vE, nE, windE, upE, sunE);
+  vec3 v = p.v, n = p.n, l = p.l, tx = p.tx, ty = p.ty;
+  float sunZenith = p.sunZenith, sunAzimuth = p.sunAzimuth;
+  vec3 eSun = p.eSun, eSky = p.eSky;
   // Sun: Ross BRDF, variance clamped so a flat sea still shows the Sun's disc (Eq. 6).
   vec3 sun = eSun * rossSun(v, l, n, tx, ty, max(sigma2, vec2(SUN_SIGMA2_MIN)));
   // Sky: filtered reflection (Eqs. 9-10): the gradient lookup integrates the sky map over the
@@ -77,15 +95,10 @@ vec3 seaRadiance(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE)
 // spectrum's tail below the shortest wave, which no wave carries; it also lets a few dozen
 // samples per pixel find the Sun's 0.27° disc.
 vec3 seaRadianceMirror(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE) {
-  mat3 toLocal = transpose(localFrame(upE));
-  vec3 v = toLocal * vE, n = toLocal * nE, l = toLocal * sunE;
-  vec3 w = toLocal * windE;
-  vec3 tx = normalize(w - dot(w, n) * n + vec3(1e-6, 0.0, 0.0));
-  vec3 ty = cross(n, tx);
-  float sunZenith = acos(clamp(l.z, -1.0, 1.0));
-  float sunAzimuth = atan2Safe(l.y, l.x);
-  vec3 eSun = sunIrradiance(sunZenith);
-  vec3 eSky = skyIrradiance(sunZenith);
+  SeaPoint p = seaPoint(vE, nE, windE, upE, sunE);
+  vec3 v = p.v, n = p.n, l = p.l, tx = p.tx, ty = p.ty;
+  float sunZenith = p.sunZenith, sunAzimuth = p.sunAzimuth;
+  vec3 eSun = p.eSun, eSky = p.eSky;
   vec3 sun = eSun * rossSun(v, l, n, tx, ty, max(sigma2, vec2(SUN_SIGMA2_MIN)));
   float f = fresnelSchlick(dot(v, n));
   vec3 sky = f * skyMapRadianceStereo(stereographic(reflect(-v, n)), sunZenith, sunAzimuth,
