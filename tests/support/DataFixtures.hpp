@@ -55,6 +55,12 @@ class NcWriter {
     ok(nc_put_att_double(id_, v, name.c_str(), type, 1, &value));
   }
   void values(int v, std::vector<double> data) { pending_.emplace_back(v, std::move(data)); }
+  /// Queues several variables' values (written by close(), after the axes).
+  void data(const std::vector<std::pair<int, std::vector<double>>>& fields) {
+    for (const auto& [v, d] : fields) pending_.emplace_back(v, d);
+  }
+  /// No fill value: unwritten data stays whatever the file holds.
+  void noFill(int v) { ok(nc_def_var_fill(id_, v, NC_NOFILL, nullptr)); }
   void close() {
     ok(nc_enddef(id_));
     for (const auto& [v, data] : pending_) ok(nc_put_var_double(id_, v, data.data()));

@@ -20,6 +20,8 @@
 #include "data/Elevation.hpp"
 #include "data/GridLayout.hpp"
 #include "data/LatLonGrid.hpp"
+#include "support/DataFixtures.hpp"
+#include "support/ExpectError.hpp"
 
 namespace fs = std::filesystem;
 using og::data::LatLonGrid;
@@ -32,70 +34,8 @@ fs::path outDir() {
   return dir;
 }
 
-/// Thin netCDF-C writer for fixtures; any error fails the test at the call site.
-class NcWriter {
- public:
-  NcWriter(const fs::path& file, int mode) : path_(file) {
-    fs::remove(file);
-    ok(nc_create(file.c_str(), mode | NC_CLOBBER, &id_));
-  }
-  ~NcWriter() {
-    if (id_ >= 0) nc_close(id_);
-  }
-  NcWriter(const NcWriter&) = delete;
-  NcWriter& operator=(const NcWriter&) = delete;
-
-  int dim(const std::string& name, std::size_t length) {
-    int d = -1;
-    ok(nc_def_dim(id_, name.c_str(), length, &d));
-    return d;
-  }
-  int var(const std::string& name, nc_type type, const std::vector<int>& dims) {
-    int v = -1;
-    ok(nc_def_var(id_, name.c_str(), type, static_cast<int>(dims.size()), dims.data(), &v));
-    return v;
-  }
-  /// A 1-D axis variable on its own dimension, with `units` (skipped when empty).
-  int axis(const std::string& name, const std::vector<double>& values, const std::string& units,
-           nc_type type = NC_DOUBLE) {
-    const int v = var(name, type, {dim(name, values.size())});
-    if (!units.empty()) text(v, "units", units);
-    axes_.emplace_back(v, values);
-    return v;
-  }
-  void text(int v, const std::string& name, const std::string& value) {
-    ok(nc_put_att_text(id_, v, name.c_str(), value.size(), value.c_str()));
-  }
-  void number(int v, const std::string& name, nc_type type, double value) {
-    ok(nc_put_att_double(id_, v, name.c_str(), type, 1, &value));
-  }
-  void noFill(int v) { ok(nc_def_var_fill(id_, v, NC_NOFILL, nullptr)); }
-  /// Leaves define mode, writes the axes, then `values` for each variable given.
-  void data(const std::vector<std::pair<int, std::vector<double>>>& fields) {
-    ok(nc_enddef(id_));
-    for (const auto& [v, values] : axes_) ok(nc_put_var_double(id_, v, values.data()));
-    for (const auto& [v, values] : fields) ok(nc_put_var_double(id_, v, values.data()));
-  }
-  void close() {
-    ok(nc_close(id_));
-    id_ = -1;
-  }
-
- private:
-  void ok(int status) const {
-    if (status != NC_NOERR)
-      throw std::runtime_error(path_.string() + ": netCDF: " + nc_strerror(status));
-  }
-  fs::path path_;
-  int id_ = -1;
-  std::vector<std::pair<int, std::vector<double>>> axes_;
-};
-
-std::vector<double> range(double first, double step, int count) {
-  std::vector<double> v(static_cast<std::size_t>(count));
-  for (int i = 0; i < count; ++i) v[static_cast<std::size_t>(i)] = first + step * i;
-  return v;
-}
+using og::test::NcWriter;
+using og::test::expectInputError;
 
 /// Field value used by the fixtures: distinct everywhere, metres.
 double relief(double latDeg, double lonDeg) { return 100.0 * latDeg + lonDeg; }
@@ -125,19 +65,6 @@ fs::path writeSimple(const std::string& name, const std::vector<double>& lat,
   return file;
 }
 
-/// Expects InputError "FILE: ..." containing `fragment`.
-void expectInputError(const std::string& label, const std::string& fragment,
-                      const std::function<void()>& f) {
-  try {
-    f();
-    ADD_FAILURE() << "expected og::InputError from " << label;
-  } catch (const og::InputError& e) {
-    const std::string message = e.what();
-    EXPECT_EQ(message.rfind(label + ": ", 0), 0u) << message;
-    EXPECT_NE(message.find(fragment), std::string::npos) << message;
-    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-  }
-}
 
 std::string readAll(const fs::path& file) {
   std::string bytes(static_cast<std::size_t>(fs::file_size(file)), '\0');
@@ -154,9 +81,9 @@ fs::path writeEra5Like(const std::string& name, int mode) {
   const int time = nc.dim("valid_time", 1);
   const int tv = nc.var("valid_time", NC_INT64, {time});
   nc.text(tv, "units", "seconds since 1970-01-01");
-  const int lat = nc.axis("latitude", range(90.0, -45.0, 5), "degrees_north", NC_FLOAT);
+  const int lat = nc.axis("latitude", og::test::steps(90.0, -45.0, 5), "degrees_north", NC_FLOAT).second;
   nc.text(lat, "standard_name", "latitude");
-  nc.axis("longitude", range(0.0, 45.0, 8), "degrees_east", NC_FLOAT);
+  nc.axis("longitude", og::test::steps(0.0, 45.0, 8), "degrees_east", NC_FLOAT);
   const int z = nc.var("z", NC_SHORT, {time, 1, 2});
   nc.number(z, "scale_factor", NC_DOUBLE, 0.5);
   nc.number(z, "add_offset", NC_DOUBLE, 1000.0);
@@ -164,8 +91,8 @@ fs::path writeEra5Like(const std::string& name, int mode) {
   nc.number(z, "missing_value", NC_SHORT, -32767);
   nc.text(z, "units", "m");
   std::vector<double> packed;
-  for (double la : range(90.0, -45.0, 5))
-    for (double lo : range(0.0, 45.0, 8)) packed.push_back((relief(la, lo) - 1000.0) / 0.5);
+  for (double la : og::test::steps(90.0, -45.0, 5))
+    for (double lo : og::test::steps(0.0, 45.0, 8)) packed.push_back((relief(la, lo) - 1000.0) / 0.5);
   packed[2 * 8 + 3] = -32767;  // latitude 0, longitude 135: no data
   nc.data({{z, packed}, {tv, {1.7e9}}});
   nc.close();
@@ -233,8 +160,8 @@ TEST(DataElevation, MemoryImageMatchesFile) {
 
 TEST(DataElevation, ClassicFileWithSeamColumnAndSignedLongitudes) {
   // -180..180 inclusive: the last column repeats the first and must be dropped.
-  const auto lat = range(-45.0, 30.0, 4);
-  const auto lon = range(-180.0, 45.0, 9);
+  const auto lat = og::test::steps(-45.0, 30.0, 4);
+  const auto lon = og::test::steps(-180.0, 45.0, 9);
   const fs::path file = writeSimple(
       "seam.nc", lat, lon,
       fieldValues(lat, lon,
@@ -256,13 +183,13 @@ TEST(DataElevation, ClassicFileWithSeamColumnAndSignedLongitudes) {
 
 TEST(DataElevation, AxesFoundByStandardNameAndOddNamesAndDescendingLongitude) {
   const fs::path file = outDir() / "odd_axes.nc";
-  const auto lat = range(10.0, 1.0, 4);
-  const auto lon = range(25.0, -1.0, 6);  // descending: 25..20
+  const auto lat = og::test::steps(10.0, 1.0, 4);
+  const auto lon = og::test::steps(25.0, -1.0, 6);  // descending: 25..20
   {
     NcWriter nc(file, NC_NETCDF4);
-    const int y = nc.axis("YY", lat, "");
+    const int y = nc.axis("YY", lat, "").second;
     nc.text(y, "standard_name", "latitude");
-    const int x = nc.axis("XX", lon, "");
+    const int x = nc.axis("XX", lon, "").second;
     nc.text(x, "standard_name", "longitude");
     const int t = nc.var("other", NC_FLOAT, {0});  // a 1-D field: never a candidate
     const int z = nc.var("foo", NC_INT, {0, 1});
@@ -283,8 +210,8 @@ TEST(DataElevation, AxesFoundByStandardNameAndOddNamesAndDescendingLongitude) {
 }
 
 TEST(DataElevation, FillNanAndUnpackedMissingValue) {
-  const auto lat = range(0.0, 1.0, 3);
-  const auto lon = range(0.0, 1.0, 3);
+  const auto lat = og::test::steps(0.0, 1.0, 3);
+  const auto lon = og::test::steps(0.0, 1.0, 3);
   // Float field: NaN and the netCDF default fill count as no data.
   std::vector<double> values = fieldValues(lat, lon);
   values[0] = std::numeric_limits<double>::quiet_NaN();
@@ -328,7 +255,7 @@ TEST(DataElevation, ConcurrentReadsAreSerialisedSafely) {
 
 TEST(DataElevation, NonMonotonicLatitudeIsRejected) {
   const std::vector<double> lat = {0.0, 1.0, 3.0, 2.0};
-  const auto lon = range(0.0, 1.0, 4);
+  const auto lon = og::test::steps(0.0, 1.0, 4);
   const fs::path file = writeSimple("nonmonotonic.nc", lat, lon, fieldValues(lat, lon));
   expectInputError(file.string(), "not strictly monotonic",
                    [&] { (void)og::data::readElevationFile(file); });
@@ -336,15 +263,15 @@ TEST(DataElevation, NonMonotonicLatitudeIsRejected) {
 
 TEST(DataElevation, IrregularLatitudeIsRejected) {
   const std::vector<double> lat = {-80.0, -40.0, 0.0, 41.0, 80.0};  // Gaussian-like
-  const auto lon = range(0.0, 90.0, 4);
+  const auto lon = og::test::steps(0.0, 90.0, 4);
   const fs::path file = writeSimple("irregular.nc", lat, lon, fieldValues(lat, lon));
   expectInputError(file.string(), "not regularly spaced",
                    [&] { (void)og::data::readElevationFile(file); });
 }
 
 TEST(DataElevation, AllFillIsRejected) {
-  const auto lat = range(0.0, 1.0, 3);
-  const auto lon = range(0.0, 1.0, 4);
+  const auto lat = og::test::steps(0.0, 1.0, 3);
+  const auto lon = og::test::steps(0.0, 1.0, 4);
   const fs::path file =
       writeSimple("all_fill.nc", lat, lon, std::vector<double>(12, -999.0), NC_FLOAT, NC_NETCDF4,
                   [](NcWriter& nc, int z) { nc.number(z, "_FillValue", NC_FLOAT, -999.0); });
@@ -356,8 +283,8 @@ TEST(DataElevation, CharVariableIsRejected) {
   const fs::path file = outDir() / "char_field.nc";
   {
     NcWriter nc(file, NC_CLASSIC_MODEL);
-    nc.axis("lat", range(0.0, 1.0, 2), "degrees_north");
-    nc.axis("lon", range(0.0, 1.0, 3), "degrees_east");
+    nc.axis("lat", og::test::steps(0.0, 1.0, 2), "degrees_north");
+    nc.axis("lon", og::test::steps(0.0, 1.0, 3), "degrees_east");
     const int z = nc.var("z", NC_CHAR, {0, 1});
     nc.noFill(z);
     nc.data({});
@@ -370,8 +297,8 @@ TEST(DataElevation, CharVariableIsRejected) {
 }
 
 TEST(DataElevation, NonFiniteValueIsRejected) {
-  const auto lat = range(0.0, 1.0, 2);
-  const auto lon = range(0.0, 1.0, 2);
+  const auto lat = og::test::steps(0.0, 1.0, 2);
+  const auto lon = og::test::steps(0.0, 1.0, 2);
   for (const double bad : {std::numeric_limits<double>::infinity(), 1e300}) {
     const std::vector<double> values = {1.0, bad, 2.0, 3.0};
     const fs::path file = writeSimple("infinite.nc", lat, lon, values, NC_DOUBLE);
@@ -381,8 +308,8 @@ TEST(DataElevation, NonFiniteValueIsRejected) {
 }
 
 TEST(DataElevation, TruncatedFilesAreRejected) {
-  const auto lat = range(-45.0, 1.0, 50);
-  const auto lon = range(0.0, 1.0, 60);
+  const auto lat = og::test::steps(-45.0, 1.0, 50);
+  const auto lon = og::test::steps(0.0, 1.0, 60);
   for (const int mode : {NC_CLASSIC_MODEL, NC_NETCDF4}) {
     SCOPED_TRACE(mode);
     const std::string name = mode == NC_NETCDF4 ? "truncated4.nc" : "truncated3.nc";
@@ -413,8 +340,8 @@ TEST(DataElevation, NonNetcdfAndMissingFilesAreRejected) {
 
 TEST(DataElevation, SeveralTimeStepsAreRejected) {
   const fs::path file = outDir() / "three_steps.nc";
-  const auto lat = range(0.0, 1.0, 2);
-  const auto lon = range(0.0, 1.0, 2);
+  const auto lat = og::test::steps(0.0, 1.0, 2);
+  const auto lon = og::test::steps(0.0, 1.0, 2);
   {
     NcWriter nc(file, NC_NETCDF4);
     const int time = nc.dim("time", 3);
@@ -433,8 +360,8 @@ TEST(DataElevation, SeveralTimeStepsAreRejected) {
 }
 
 TEST(DataElevation, VariableSelection) {
-  const auto lat = range(0.0, 1.0, 2);
-  const auto lon = range(0.0, 1.0, 2);
+  const auto lat = og::test::steps(0.0, 1.0, 2);
+  const auto lon = og::test::steps(0.0, 1.0, 2);
   const auto write = [&](const std::string& name, const std::vector<std::string>& fields) {
     const fs::path file = outDir() / name;
     NcWriter nc(file, NC_NETCDF4);
@@ -509,13 +436,13 @@ TEST(DataGridLayout, AxisValidation) {
                        bool isFloat = false) {
     return planGridLayout("f", lat, "lat", isFloat, lon, "lon", isFloat);
   };
-  const auto lon = range(0.0, 1.0, 4);
-  expectInputError("f", "outside [-90, 90]", [&] { (void)plan(range(-95.0, 5.0, 5), lon); });
+  const auto lon = og::test::steps(0.0, 1.0, 4);
+  expectInputError("f", "outside [-90, 90]", [&] { (void)plan(og::test::steps(-95.0, 5.0, 5), lon); });
   expectInputError("f", "non-finite", [&] {
     (void)plan({0.0, std::numeric_limits<double>::quiet_NaN(), 2.0}, lon);
   });
   expectInputError("f", "not strictly monotonic", [&] { (void)plan({0.0, 1.0, 1.0}, lon); });
-  expectInputError("f", "more than 360", [&] { (void)plan({0.0, 1.0}, range(0.0, 10.0, 40)); });
+  expectInputError("f", "more than 360", [&] { (void)plan({0.0, 1.0}, og::test::steps(0.0, 10.0, 40)); });
 
   // 0.01° float-stored longitudes near 360 carry rounding of ~1e-3 of a step: accepted.
   std::vector<double> fine;
@@ -524,13 +451,13 @@ TEST(DataGridLayout, AxisValidation) {
   EXPECT_NO_THROW((void)plan({0.0, 1.0}, fine, true));
 
   // Longitudes starting anywhere: 20..380 with a seam (the ETOPO20 layout).
-  const auto layout = plan(range(-89.75, 0.5, 360), range(20.25, 0.5, 721));
+  const auto layout = plan(og::test::steps(-89.75, 0.5, 360), og::test::steps(20.25, 0.5, 721));
   EXPECT_TRUE(layout.dropSeam);
   EXPECT_EQ(layout.width, 720);
   EXPECT_TRUE(layout.wrapsLongitude);
   EXPECT_DOUBLE_EQ(layout.lon0Deg, 20.25);
   EXPECT_DOUBLE_EQ(layout.dLonDeg, 0.5);
-  const auto shifted = plan({0.0, 1.0}, range(-400.0, 1.0, 10));
+  const auto shifted = plan({0.0, 1.0}, og::test::steps(-400.0, 1.0, 10));
   EXPECT_DOUBLE_EQ(shifted.lon0Deg, 320.0);
   EXPECT_FALSE(shifted.wrapsLongitude);
 }

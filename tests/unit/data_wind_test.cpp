@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/Error.hpp"
+#include "support/ExpectError.hpp"
 #include "data/Elevation.hpp"
 #include "data/GridFile.hpp"
 #include "data/TimeAxis.hpp"
@@ -25,6 +26,7 @@ using og::data::LatLonGrid;
 using og::data::WindGrid;
 using og::data::WindLayers;
 using og::data::WindVector;
+using og::test::expectInputError;
 using og::test::fixtureU;
 using og::test::fixtureV;
 using og::test::NcWriter;
@@ -40,18 +42,6 @@ fs::path outDir() {
 
 UtcTime iso(const char* text) { return *UtcTime::parseIso8601(text); }
 
-void expectInputError(const std::string& label, const std::string& fragment,
-                      const std::function<void()>& f) {
-  try {
-    f();
-    ADD_FAILURE() << "expected og::InputError from " << label;
-  } catch (const og::InputError& e) {
-    const std::string message = e.what();
-    EXPECT_EQ(message.rfind(label + ": ", 0), 0u) << message;
-    EXPECT_NE(message.find(fragment), std::string::npos) << message;
-    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-  }
-}
 
 /// A simple wind file: `lat`, `lon` axes (as given), u/v named `uName`/`vName` with `units`,
 /// values from the fixture wind at step 0; `edit` may add to the header.
