@@ -61,30 +61,36 @@ SeaPoint seaPoint(vec3 vE, vec3 nE, vec3 windE, vec3 upE, vec3 sunE) {
   return p;
 }
 
+// The Sun through the Ross BRDF, variance clamped so a flat sea still shows the Sun's disc
+// (Eq. 6).
+vec3 seaSunGlint(SeaPoint p, vec2 sigma2) {
+  return p.eSun * rossSun(p.v, p.l, p.n, p.tx, p.ty, max(sigma2, vec2(SUN_SIGMA2_MIN)));
+}
+
+// Light refracted from below the surface, L_sea (1 - F) (§5.3), F the Fresnel factor used for
+// the reflected sky.
+vec3 seaRefracted(SeaPoint p, vec3 upE, float fresnel) {
+  return shallowSeaColor(uSeaColor, seaFloorDepthM(upE)) * (p.eSun * max(p.l.z, 0.0) + p.eSky) *
+         (1.0 - fresnel);
+}
+
 // vE: to the eye; nE: mean (resolved) normal; windE: the wind's direction (any vector with a
 // horizontal component along it); sigma2: unresolved slope variances along/across the wind;
 // upE: the ellipsoid normal at the point; sunE: towards the Sun. All unit, ECEF axes.
 vec3 seaRadiance(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE) {
   SeaPoint p = seaPoint(vE, nE, windE, upE, sunE);
-  vec3 v = p.v, n = p.n, l = p.l, tx = p.tx, ty = p.ty;
-  float sunZenith = p.sunZenith, sunAzimuth = p.sunAzimuth;
-  vec3 eSun = p.eSun, eSky = p.eSky;
-  // Sun: Ross BRDF, variance clamped so a flat sea still shows the Sun's disc (Eq. 6).
-  vec3 sun = eSun * rossSun(v, l, n, tx, ty, max(sigma2, vec2(SUN_SIGMA2_MIN)));
   // Sky: filtered reflection (Eqs. 9-10): the gradient lookup integrates the sky map over the
   // unresolved slopes' footprint, U(zeta) the stereographic coordinate of a facet's mirror ray.
-  float sigmaV = sqrt(azimuthVariance(v, tx, ty, sigma2));
-  float fbar = effectiveFresnel(dot(v, n), sigmaV);
+  float sigmaV = sqrt(azimuthVariance(p.v, p.tx, p.ty, sigma2));
+  float fbar = effectiveFresnel(dot(p.v, p.n), sigmaV);
   const float eps = 1e-3;
-  vec2 u0 = stereographic(reflectedBySlope(v, n, tx, ty, vec2(0.0)));
-  vec2 ux = stereographic(reflectedBySlope(v, n, tx, ty, vec2(eps, 0.0)));
-  vec2 uy = stereographic(reflectedBySlope(v, n, tx, ty, vec2(0.0, eps)));
+  vec2 u0 = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, vec2(0.0)));
+  vec2 ux = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, vec2(eps, 0.0)));
+  vec2 uy = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, vec2(0.0, eps)));
   vec2 sigma = sqrt(sigma2);
-  vec3 sky = fbar * skyMapRadianceStereo(u0, sunZenith, sunAzimuth,
+  vec3 sky = fbar * skyMapRadianceStereo(u0, p.sunZenith, p.sunAzimuth,
                                          2.0 * sigma.x * (ux - u0) / eps, 2.0 * sigma.y * (uy - u0) / eps);
-  // Refracted light from below: L_sea (1 - F̄) (§5.3).
-  vec3 sea = shallowSeaColor(uSeaColor, seaFloorDepthM(upE)) * (eSun * max(l.z, 0.0) + eSky) * (1.0 - fbar);
-  return sun + sky + sea;
+  return seaSunGlint(p, sigma2) + sky + seaRefracted(p, upE, fbar);
 }
 
 #ifdef OCEAN_VALIDATION_REFERENCE
@@ -96,14 +102,9 @@ vec3 seaRadiance(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE)
 // samples per pixel find the Sun's 0.27° disc.
 vec3 seaRadianceMirror(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE) {
   SeaPoint p = seaPoint(vE, nE, windE, upE, sunE);
-  vec3 v = p.v, n = p.n, l = p.l, tx = p.tx, ty = p.ty;
-  float sunZenith = p.sunZenith, sunAzimuth = p.sunAzimuth;
-  vec3 eSun = p.eSun, eSky = p.eSky;
-  vec3 sun = eSun * rossSun(v, l, n, tx, ty, max(sigma2, vec2(SUN_SIGMA2_MIN)));
-  float f = fresnelSchlick(dot(v, n));
-  vec3 sky = f * skyMapRadianceStereo(stereographic(reflect(-v, n)), sunZenith, sunAzimuth,
+  float f = fresnelSchlick(dot(p.v, p.n));
+  vec3 sky = f * skyMapRadianceStereo(stereographic(reflect(-p.v, p.n)), p.sunZenith, p.sunAzimuth,
                                       vec2(0.0), vec2(0.0));
-  vec3 sea = shallowSeaColor(uSeaColor, seaFloorDepthM(upE)) * (eSun * max(l.z, 0.0) + eSky) * (1.0 - f);
-  return sun + sky + sea;
+  return seaSunGlint(p, sigma2) + sky + seaRefracted(p, upE, f);
 }
 #endif

@@ -54,6 +54,17 @@ std::uint8_t toSrgb8(double linear) {
   const double s = x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
   return static_cast<std::uint8_t>(std::lround(255.0 * s));
 }
+// The camera of a validation view.
+geo::CameraPose poseOf(const ValidationSettings& settings, const ValidationView& v) {
+  geo::CameraPose pose;
+  pose.position = settings.where;
+  pose.position.heightM = v.heightM;
+  pose.headingDeg = v.headingDeg;
+  pose.pitchDeg = v.pitchDeg;
+  pose.verticalFovDeg = settings.verticalFovDeg;
+  return pose;
+}
+
 }  // namespace
 
 std::vector<ValidationView> defaultValidationViews() {
@@ -87,12 +98,7 @@ OceanValidator::~OceanValidator() = default;
 
 io::ImageRgbaF OceanValidator::render(OceanRenderer& renderer, const ValidationView& v, int width,
                                       int height) {
-  geo::CameraPose pose;
-  pose.position = settings_.where;
-  pose.position.heightM = v.heightM;
-  pose.headingDeg = v.headingDeg;
-  pose.pitchDeg = v.pitchDeg;
-  pose.verticalFovDeg = settings_.verticalFovDeg;
+  const geo::CameraPose pose = poseOf(settings_, v);
   const geo::CameraView view = geo::makeCameraView(pose, width, height);
   ocean::OceanFrame frame;
   frame.reset(pose.position);
@@ -125,12 +131,7 @@ ValidationResult OceanValidator::run(const ValidationView& v) {
   r.constant = render(*constant_, v, w, h);
   r.reference = weightedDownsample(render(*reference_, v, w * s, h * s), s);
 
-  geo::CameraPose pose;
-  pose.position = settings_.where;
-  pose.position.heightM = v.heightM;
-  pose.headingDeg = v.headingDeg;
-  pose.pitchDeg = v.pitchDeg;
-  pose.verticalFovDeg = settings_.verticalFovDeg;
+  const geo::CameraPose pose = poseOf(settings_, v);
   const geo::CameraView view = geo::makeCameraView(pose, w, h);
   for (int y = 0; y < h; ++y) {
     RowError e;
