@@ -169,5 +169,13 @@ void main() {
     radiance += seaHoles * withAerialPerspective(shadeSea(-seaHoleDir, ellipsoidNormal(seaHoleDir, seaHoleT)),
                                                  seaHoleDir, seaHoleT, uSunDir);
   fragRadiance = vec4(radiance * 0.25, (coverage + seaHoles) * 0.25);
-  gl_FragDepth = nHit > 0 ? clamp(uNear / nearestT, 0.0, 1.0) : 0.0;
+  // Depth of the surface on the pixel-centre ray where it hits the globe, as the terrain and
+  // the grid rasterise theirs, so land at or above sea level always passes in front of this
+  // fallback (the nearest sample would stand up to half a pixel's footprint closer: from 30 km,
+  // hundreds of metres at a grazing angle, hiding low coasts). The nearest sample otherwise.
+  float depthZ = nearestT;
+  vec3 centreDir = normalize(uForward + vNdc.x * uTanHalfFov.x * uRight + vNdc.y * uTanHalfFov.y * uUp);
+  float centreT = nHit > 0 ? intersectEllipsoid(centreDir) : -1.0;
+  if (centreT >= 0.0) depthZ = centreT * dot(centreDir, uForward);
+  gl_FragDepth = nHit > 0 ? clamp(uNear / depthZ, 0.0, 1.0) : 0.0;
 }

@@ -2,18 +2,63 @@
 // Terrain shading: Lambertian stand-in materials (terrain/material.glsl) lit by the Sun
 // attenuated to the point's altitude and by the sky's irradiance (tilted by the slope), then
 // aerial perspective along the eye-to-point path ending at the point's altitude. Radiance in
-// Sun-irradiance units, like the globe pass.
+// Sun-irradiance units, like the globe pass. The normal is the mesh's, tilted by the detail
+// octaves finer than the mesh resolves (terrain/detail.glsl), down to the pixel's footprint.
 #include "common/constants.glsl"
+#include "common/types.glsl"
 #include "atmosphere/model.glsl"
 #include "render/aerial.glsl"
 #include "terrain/material.glsl"
+#include "terrain/detail.glsl"
 
 in vec3 vRelative;
 in vec3 vNormal;
-in vec4 vInfo;  // height m, latitude rad, longitude rad, slope
+in vec4 vInfo;  // height m, latitude rad, longitude rad, detail amplitude m
 out vec4 fragRadiance;
 
 uniform vec3 uSunDir;  // unit, ECEF axes
+
+// The detail's octaves (terrain::DetailOctaves): octave k has 2^k uDetailScale0 lattice cells
+// per unit of the sphere and weight detailOctaveWeight(k) / uDetailNorm; the eye lies in lattice cell
+// uDetailCell[k] at uDetailFrac[k] (split in double on the CPU).
+const int MAX_DETAIL_OCTAVES = 24;
+uniform int uDetailCount;   // octaves in the normals
+uniform int uDetailFirst;   // the first octave this tile's vertex normals leave out
+uniform float uDetailNorm;
+uniform float uDetailScale0;
+uniform ivec3 uDetailCell[MAX_DETAIL_OCTAVES];
+uniform vec3 uDetailFrac[MAX_DETAIL_OCTAVES];
+uniform float uEyeFootScale;  // |diag(1, 1, a²/b²) F| for the eye's foot point F, m
+
+// Geodetic normal at a foot point minus the eye's, from the offset between the two foot
+// points, with no absolute coordinates: n(F) = G F / |G F| with G = diag(1, 1, a²/b²), and
+// G F = G F_eye + G r; with e = n(F_eye) and g = G r / |G F_eye|,
+// n(F) - e = (g + e (1 - |e + g|)) / |e + g|, where 1 - |e + g| is formed from the small terms.
+vec3 normalOffsetFromEye(vec3 footOffset) {
+  vec3 g = footOffset * vec3(1.0, 1.0, (WGS84_A / WGS84_B) * (WGS84_A / WGS84_B)) / uEyeFootScale;
+  vec3 e = uCamUp;
+  float small = 2.0 * dot(e, g) + dot(g, g);
+  float len = sqrt(1.0 + small);
+  return (g - e * (small / (1.0 + len))) / len;
+}
+
+// Gradient (per unit of the sphere) of the detail octaves from uDetailFirst on, each faded out
+// as its wavelength nears two pixels: shading detail without aliasing. `dUp`: the point's
+// geodetic normal minus the eye's; `footprint`: how much dUp changes across a pixel.
+vec3 pixelDetailGradient(vec3 dUp, float footprint) {
+  vec3 grad = vec3(0.0);
+  float scale = uDetailScale0 * exp2(float(uDetailFirst));
+  for (int k = uDetailFirst; k < min(uDetailCount, MAX_DETAIL_OCTAVES); ++k) {
+    float w = 1.0 - smoothstep(0.25, 0.5, footprint * scale);  // lattice cells per pixel
+    if (w <= 0.0) break;
+    vec3 q = uDetailFrac[k] + dUp * scale;
+    vec3 c = floor(q);
+    vec4 r = detailRidged(uDetailCell[k] + ivec3(c), q - c);
+    grad += (w * detailOctaveWeight(k) / uDetailNorm * scale) * r.yzw;
+    scale *= 2.0;
+  }
+  return grad;
+}
 
 // Aerial perspective to a point at altitude hP (the tables' sphere, as in globe.frag): the
 // path's zenith cosine is the one joining the eye's radius to R + hP over distance t.
@@ -47,11 +92,19 @@ void main() {
     vec3 m = n - dot(n, dir) * dir;  // zero when the face looks straight away from the eye
     n = dot(m, m) > 1e-12 ? normalize(m) : up;
   }
+  // Tilt by the finer detail: its height gradient per metre along the surface, tangential.
+  vec3 dUp = normalOffsetFromEye(vRelative - heightM * up + uCamAltitude * uCamUp);
+  float footprint = max(length(dFdx(dUp)), length(dFdy(dUp)));
+  if (vInfo.w > 0.0) {
+    vec3 g = pixelDetailGradient(dUp, footprint) * (vInfo.w / WGS84_A);
+    n = normalize(n - (g - dot(g, n) * n));
+  }
+  float slope = 1.0 - clamp(dot(n, up), 0.0, 1.0);
   float hP = max(heightM, 0.0);
   vec3 skyIrr;
   vec3 sunIrr = sunAndSkyIrradiance(uAtmosphere, uAtmTransmittance, uAtmIrradiance,
                                     uAtmosphere.bottomRadius + hP, dot(up, uSunDir), skyIrr);
-  vec3 albedo = terrainAlbedo(heightM, vInfo.w, lat);
+  vec3 albedo = terrainAlbedo(heightM, slope, lat);
   // Sky light on a tilted surface: the part of the sky dome it sees.
   float skyView = 0.5 + 0.5 * dot(n, up);
   vec3 surface = albedo / PI * (sunIrr * max(dot(n, uSunDir), 0.0) + skyIrr * skyView);

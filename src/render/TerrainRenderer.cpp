@@ -1,9 +1,12 @@
 #include "render/TerrainRenderer.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 
 #include "core/Error.hpp"
+#include "geo/Wgs84.hpp"
 
 namespace og::render {
 
@@ -30,6 +33,31 @@ TerrainRenderer::TerrainRenderer(const data::LatLonGrid& elevation, const Atmosp
   gl::checkErrors("TerrainRenderer setup");
 }
 
+void TerrainRenderer::setDetailUniforms(const geo::CameraView& view) const {
+  // Each octave's lattice coordinate at the eye, split in double into a cell and a position
+  // in it: the shader continues from there with small camera-relative offsets.
+  const terrain::DetailOctaves& o = cache_.heights().octaves();
+  const int count = std::min(o.normalCount, kMaxDetailOctaves);
+  std::array<glm::ivec3, kMaxDetailOctaves> cells{};
+  std::array<glm::vec3, kMaxDetailOctaves> fracs{};
+  for (int k = 0; k < count; ++k) {
+    const glm::dvec3 q = terrain::detailLatticePoint(o, k, view.enu.up);
+    const glm::dvec3 c = glm::floor(q);
+    cells[static_cast<std::size_t>(k)] = glm::ivec3(c);
+    fracs[static_cast<std::size_t>(k)] = glm::vec3(q - c);
+  }
+  const gl::Program& p = program_;
+  glProgramUniform3iv(p.id(), p.location("uDetailCell"), count, &cells[0].x);
+  glProgramUniform3fv(p.id(), p.location("uDetailFrac"), count, &fracs[0].x);
+  p.set("uDetailCount", count);
+  p.set("uDetailNorm", static_cast<float>(o.norm));
+  p.set("uDetailScale0", static_cast<float>(geo::kWgs84SemiMajorM / o.longestM));
+  // The eye's foot point on the ellipsoid, scaled by diag(1, 1, a²/b²): its length.
+  const double ab = geo::kWgs84SemiMajorM / geo::kWgs84SemiMinorM;
+  const glm::dvec3 foot = view.positionEcef - view.position.heightM * view.enu.up;
+  p.set("uEyeFootScale", static_cast<float>(glm::length(foot * glm::dvec3(1.0, 1.0, ab * ab))));
+}
+
 void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
                            const glm::dvec3& sunDirectionEcef) {
   params_.widthPx = width;
@@ -43,6 +71,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   p.set("uSunDir", glm::vec3(glm::normalize(sunDirectionEcef)));
   p.set("uCamUp", glm::vec3(view.enu.up));
   p.set("uCamAltitude", static_cast<float>(view.position.heightM));
+  setDetailUniforms(view);
   if (atmosphere_ != nullptr) atmosphere_->bind(p);
   p.use();
   glBindVertexArray(vao_.id());
@@ -59,6 +88,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
     }
     // Camera-relative tile origin in double, then float: never float world coordinates.
     p.set("uTileOffset", glm::vec3(t->centreEcef - view.positionEcef));
+    p.set("uDetailFirst", t->normalOctaves);
     glVertexArrayVertexBuffer(vao_.id(), 0, it->second.vertices.id(), 0, sizeof(terrain::TileVertex));
     glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
   }

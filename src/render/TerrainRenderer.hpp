@@ -39,6 +39,8 @@ class TerrainRenderer {
   terrain::SelectionParams& selection() { return params_; }
 
  private:
+  static constexpr int kMaxDetailOctaves = 24;  // MAX_DETAIL_OCTAVES in terrain.frag
+  void setDetailUniforms(const geo::CameraView& view) const;
   struct GpuTile {
     gl::Buffer vertices;
   };

@@ -2,11 +2,37 @@
 // The terrain's height function: the elevation layer (bilinear) plus deterministic fractal
 // detail below the layer's resolution. A pure function of the geodetic position, so tiles of any
 // level that share a vertex position get bit-identical heights (crack-free seams).
+//
+// The detail's octaves (shaders/terrain/detail.glsl, compiled here as C++) go from two layer
+// cells down to kDetailShortestM in the heights; the normals go on down to kNormalShortestM,
+// the mesh's vertex normals carrying the octaves it resolves and the fragment shader the finer
+// ones, as many as each pixel's footprint allows.
+#include <glm/glm.hpp>
+
 #include <memory>
 
 #include "data/LatLonGrid.hpp"
 
 namespace og::terrain {
+
+/// The detail's octave ladder for a layer: octave k has wavelength longestM / 2^k and weight
+/// detailOctaveWeight(k) / norm (terrain/detail.glsl).
+struct DetailOctaves {
+  double longestM = 0.0;
+  int heightCount = 0;  ///< octaves in the heights (wavelength >= kDetailShortestM)
+  int normalCount = 0;  ///< octaves in the normals (wavelength >= kNormalShortestM)
+  double norm = 1.0;    ///< sum of the height octaves' weights
+  [[nodiscard]] double wavelengthM(int k) const;
+  /// The first octave finer than `wavelengthM` (the number of octaves at least that long).
+  [[nodiscard]] int countAtLeast(double wavelengthM) const;
+};
+
+/// Height and surface normal at a point.
+struct HeightSample {
+  double heightM = 0.0;         ///< above mean sea level, detail included
+  double detailAmplitudeM = 0;  ///< the detail's local amplitude (scales its normalised sum)
+  glm::dvec3 normal{0.0};       ///< unit, ECEF axes
+};
 
 class Heightfield {
  public:
@@ -17,15 +43,23 @@ class Heightfield {
   /// Height above mean sea level in metres (negative = depth) at a geodetic position (degrees),
   /// detail included.
   [[nodiscard]] double heightM(double latitudeDeg, double longitudeDeg) const;
+  /// Height plus the normal of the layer (central differences `stepDeg` either way) tilted by
+  /// the detail's first `normalOctaves` octaves (analytic gradient). The height is the same as
+  /// heightM() bit for bit.
+  [[nodiscard]] HeightSample sample(double latitudeDeg, double longitudeDeg, int normalOctaves,
+                                    double stepDeg) const;
   /// The layer alone (bilinear, no detail), metres.
   [[nodiscard]] double layerHeightM(double latitudeDeg, double longitudeDeg) const;
-  /// Fractal detail in [-1, 1] at a point of the unit sphere (geodetic normal); continuous and
-  /// deterministic, wavelengths from `longestM` down to kDetailShortestM.
-  [[nodiscard]] static double detail(double nx, double ny, double nz, double longestM);
+  /// The detail's amplitude at a point, m: the layer's local relief (height differences over
+  /// one cell), at least 3 % of |h| and at most 80 % of it, so detail never crosses sea level.
+  [[nodiscard]] double detailAmplitudeM(double latitudeDeg, double longitudeDeg) const;
 
-  /// Shortest wavelength of the procedural detail, m.
+  /// Shortest wavelength of the procedural detail in the heights, m.
   static constexpr double kDetailShortestM = 40.0;
+  /// Shortest wavelength of the detail in the shading normals, m.
+  static constexpr double kNormalShortestM = 2.5;
 
+  [[nodiscard]] const DetailOctaves& octaves() const { return octaves_; }
   [[nodiscard]] const data::LatLonGrid& layer() const { return layer_; }
   /// The layer's cell size, m (north-south).
   [[nodiscard]] double cellM() const { return cellM_; }
@@ -33,6 +67,17 @@ class Heightfield {
  private:
   data::LatLonGrid layer_;
   double cellM_ = 0.0;
+  DetailOctaves octaves_;
 };
+
+/// The detail's normalised sum (in [-1, 1]) at a point of the unit sphere, over octaves
+/// [0, count), and the gradient (per unit of the sphere's coordinates) of its first
+/// `gradientOctaves` octaves.
+double detailSum(const DetailOctaves& o, const glm::dvec3& unitUp, int count, int gradientOctaves,
+                 glm::dvec3* gradient);
+
+/// The octave's lattice coordinate of a point of the unit sphere: unitUp · a / wavelength plus
+/// the octave's offset (what the fragment shader continues from the eye's).
+glm::dvec3 detailLatticePoint(const DetailOctaves& o, int k, const glm::dvec3& unitUp);
 
 }  // namespace og::terrain

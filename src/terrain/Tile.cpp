@@ -45,7 +45,12 @@ Tile buildTile(const Heightfield& heights, const TileKey& key) {
   const double midLon = key.westDeg() + 0.5 * key.sizeDeg();
   t.centreEcef = geodeticToEcefFast(midLat, midLon, 0.0);
 
-  std::vector<double> h(static_cast<std::size_t>(n * n));
+  // The mesh's normals carry the detail octaves at least four vertex spacings long (which it
+  // resolves); the fragment shader adds the finer ones.
+  t.normalOctaves = heights.octaves().countAtLeast(4.0 * t.spacingM);
+  const double stepDeg = 0.5 * std::max(key.sizeDeg() / kTileQuads, heights.layer().dLatDeg);
+
+  std::vector<HeightSample> samples(static_cast<std::size_t>(n * n));
   std::vector<glm::dvec3> ecef(static_cast<std::size_t>(n * n));
   std::vector<double> lats(static_cast<std::size_t>(n * n)), lons(static_cast<std::size_t>(n * n));
   t.minHeightM = 1e30;
@@ -54,27 +59,12 @@ Tile buildTile(const Heightfield& heights, const TileKey& key) {
     for (int i = 0; i < n; ++i) {
       const auto k = static_cast<std::size_t>(j * n + i);
       tileVertexLatLon(key, i, j, lats[k], lons[k]);
-      h[k] = heights.heightM(lats[k], lons[k]);
-      ecef[k] = geodeticToEcefFast(lats[k], lons[k], h[k]);
-      t.minHeightM = std::min(t.minHeightM, h[k]);
-      t.maxHeightM = std::max(t.maxHeightM, h[k]);
+      samples[k] = heights.sample(lats[k], lons[k], t.normalOctaves, stepDeg);
+      const double h = samples[k].heightM;
+      ecef[k] = geodeticToEcefFast(lats[k], lons[k], h);
+      t.minHeightM = std::min(t.minHeightM, h);
+      t.maxHeightM = std::max(t.maxHeightM, h);
     }
-
-  // Normals from the height function at half a spacing either way: the same detail the mesh
-  // resolves, no more (finer normals would alias from afar).
-  const double dDeg = 0.5 * key.sizeDeg() / kTileQuads;
-  auto normalAt = [&](double lat, double lon, const glm::dvec3& up) {
-    const double latN = std::min(lat + dDeg, 90.0), latS = std::max(lat - dDeg, -90.0);
-    const glm::dvec3 pn = geodeticToEcefFast(latN, lon, heights.heightM(latN, lon));
-    const glm::dvec3 ps = geodeticToEcefFast(latS, lon, heights.heightM(latS, lon));
-    const glm::dvec3 pe = geodeticToEcefFast(lat, lon + dDeg, heights.heightM(lat, lon + dDeg));
-    const glm::dvec3 pw = geodeticToEcefFast(lat, lon - dDeg, heights.heightM(lat, lon - dDeg));
-    const glm::dvec3 c = glm::cross(pe - pw, pn - ps);
-    const double len = glm::length(c);
-    // At the poles the east-west difference vanishes: use the vertical there.
-    const double ns = glm::length(pn - ps);
-    return len > 1e-6 * ns * ns ? c / len : up;
-  };
 
   // Skirt depth: hides the gaps at T-junctions with coarser neighbours, which are at most the
   // height differences across a cell of this tile.
@@ -82,29 +72,23 @@ Tile buildTile(const Heightfield& heights, const TileKey& key) {
 
   t.positions.reserve(kTileVertices);
   t.vertices.reserve(kTileVertices);
-  auto push = [&](std::size_t k, double depth, const glm::dvec3& normal) {
+  auto push = [&](std::size_t k, double depth) {
     const double lat = lats[k] * kDeg, lon = lons[k] * kDeg;
     const glm::dvec3 up{std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
     const glm::dvec3 p = ecef[k] - depth * up - t.centreEcef;
     t.positions.push_back(p);
-    t.vertices.push_back({glm::vec3(p), glm::vec3(normal), static_cast<float>(h[k] - depth),
-                          static_cast<float>(lat), static_cast<float>(lon),
-                          static_cast<float>(1.0 - std::clamp(glm::dot(normal, up), 0.0, 1.0))});
+    t.vertices.push_back({glm::vec3(p), glm::vec3(samples[k].normal),
+                          static_cast<float>(samples[k].heightM - depth), static_cast<float>(lat),
+                          static_cast<float>(lon), static_cast<float>(samples[k].detailAmplitudeM)});
   };
-  std::vector<glm::dvec3> normals(static_cast<std::size_t>(n * n));
-  for (std::size_t k = 0; k < normals.size(); ++k) {
-    const double lat = lats[k] * kDeg, lon = lons[k] * kDeg;
-    const glm::dvec3 up{std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
-    normals[k] = normalAt(lats[k], lons[k], up);
-    push(k, 0.0, normals[k]);
-  }
+  for (std::size_t k = 0; k < samples.size(); ++k) push(k, 0.0);
   // Skirts: south edge, east edge, north edge, west edge, each kTileQuads + 1 vertices.
   for (int e = 0; e < 4; ++e)
     for (int s = 0; s < n; ++s) {
       const int i = e == 0 ? s : e == 1 ? n - 1 : e == 2 ? s : 0;
       const int j = e == 0 ? 0 : e == 1 ? s : e == 2 ? n - 1 : s;
       const auto k = static_cast<std::size_t>(j * n + i);
-      push(k, skirt, normals[k]);
+      push(k, skirt);
     }
 
   // Bounding sphere about the tile's middle vertex: the mesh lies in the vertices' hull.

@@ -45,7 +45,7 @@ struct TileVertex {
   float heightM;       ///< above sea level, m
   float latitudeRad;
   float longitudeRad;
-  float slope;         ///< 1 - cos(angle between the normal and the vertical)
+  float detailAmplitudeM;  ///< scale of the detail's normalised sum here, m (0: none)
 };
 static_assert(sizeof(TileVertex) == 40);
 
@@ -58,6 +58,7 @@ struct Tile {
   double boundRadiusM = 0.0;
   double minHeightM = 0.0, maxHeightM = 0.0;
   double spacingM = 0.0;                 ///< vertex spacing north-south, m
+  int normalOctaves = 0;                 ///< detail octaves in the vertex normals (the rest per pixel)
   std::uint64_t lastUsedFrame = 0;
 
   /// Memory held by the tile's CPU arrays, bytes.

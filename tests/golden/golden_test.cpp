@@ -59,7 +59,7 @@ const GoldenCase kCases[] = {
     // Terrain: a coast (land, shallows and sea side by side) and mountains against the sky.
     {"terrain_coast_30km", pose(35.6, -5.6, 3.0e4, 0, -30, 60), nullptr, 45, 160, 160, 96,
      {6, 0.3, 2, 0.01}},
-    {"terrain_mountain_15km", pose(27.3, 86.9, 1.5e4, 10, -2), nullptr, 30, 200, 160, 96,
+    {"terrain_mountain_15km", pose(27.3, 86.9, 1.5e4, 10, -6), nullptr, 25, 100, 160, 96,
      {6, 0.3, 2, 0.01}},
 };
 

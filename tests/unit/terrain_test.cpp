@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <set>
 #include <tuple>
 
@@ -113,6 +114,47 @@ TEST(TerrainHeight, DetailIsDeterministicContinuousAndScaledToRelief) {
     const double layer = h.layerHeightM(lat, lon);
     EXPECT_EQ(h.heightM(lat, lon) > 0.0, layer > 0.0) << lat << " " << lon;
   }
+}
+
+TEST(TerrainHeight, DetailGradientMatchesFiniteDifferences) {
+  // The analytic gradient (terrain/detail.glsl, the same code the fragment shader runs for
+  // the finer octaves) against central differences of the sum, on the unit sphere.
+  const DetailOctaves& o = heights()->octaves();
+  ASSERT_GE(o.normalCount, o.heightCount);
+  ASSERT_GE(o.heightCount, 8);  // ETOPO20: 74 km down to 40 m
+  for (int i = 0; i < 20; ++i) {
+    const double lat = (27.0 + 0.37 * i) * std::numbers::pi / 180.0, lon = (86.0 + 0.91 * i) * std::numbers::pi / 180.0;
+    const glm::dvec3 up{std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
+    glm::dvec3 grad;
+    const int count = o.heightCount;
+    detailSum(o, up, count, count, &grad);
+    // A step far inside the finest octave's lattice cell (40 m / a on the sphere).
+    const double h = 0.02 / 6378137.0;
+    for (int axis = 0; axis < 3; ++axis) {
+      glm::dvec3 d(0.0);
+      d[axis] = h;
+      const double fd = (detailSum(o, up + d, count, 0, nullptr) - detailSum(o, up - d, count, 0, nullptr)) / (2.0 * h);
+      EXPECT_NEAR(grad[axis], fd, 2e-3 * std::max(1.0, std::abs(fd)) + 0.02 * glm::length(grad))
+          << "point " << i << " axis " << axis;
+    }
+  }
+}
+
+TEST(TerrainHeight, SampleNormalIsTiltedByTheDetailAndHeightMatches) {
+  const Heightfield& h = *heights();
+  // Rugged ground: the detail's octaves tilt the normal away from the layer's; the height is
+  // heightM()'s bit for bit (vertex positions and seams depend on it).
+  double maxTilt = 0.0;
+  for (int i = 0; i < 50; ++i) {
+    const double lat = 27.8 + i * 0.003, lon = 86.9;
+    const HeightSample flat = h.sample(lat, lon, 0, 0.05);
+    const HeightSample tilted = h.sample(lat, lon, h.octaves().normalCount, 0.05);
+    EXPECT_EQ(tilted.heightM, h.heightM(lat, lon));
+    EXPECT_EQ(flat.heightM, tilted.heightM);
+    EXPECT_NEAR(glm::length(tilted.normal), 1.0, 1e-12);
+    maxTilt = std::max(maxTilt, std::acos(std::min(1.0, glm::dot(flat.normal, tilted.normal))));
+  }
+  EXPECT_GT(maxTilt, 10.0 * std::numbers::pi / 180.0);  // mountain slopes, not a blur
 }
 
 TEST(TerrainSelection, FinerNearTheCameraAndNoneBehind) {

@@ -1,0 +1,71 @@
+// GL tier (issue 6, "Done when"): mountains read as relief. A Lambertian relief lit from the
+// east and then from the west swaps its bright and dark slopes; a terrain without relief in
+// its shading (flat normals, or normals too smooth to see) changes only as a whole.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "data/Elevation.hpp"
+#include "geo/Sun.hpp"
+#include "gl/Context.hpp"
+#include "render/GlobeRenderer.hpp"
+
+using namespace og;
+
+namespace {
+
+constexpr int kW = 192, kH = 108;
+
+// Luminance of the linear radiance.
+std::vector<double> luminance(const io::ImageRgbaF& img) {
+  std::vector<double> y(static_cast<std::size_t>(kW * kH));
+  for (int i = 0; i < kW * kH; ++i) {
+    const float* p = &img.pixels[static_cast<std::size_t>(i) * 4];
+    y[static_cast<std::size_t>(i)] = 0.2126 * double{p[0]} + 0.7152 * double{p[1]} + 0.0722 * double{p[2]};
+  }
+  return y;
+}
+
+// The image minus its 5x5 box mean: the pixel-scale shading, not the haze or the materials'
+// broad gradients.
+double highPass(const std::vector<double>& y, int x, int row) {
+  double sum = 0.0;
+  for (int dy = -2; dy <= 2; ++dy)
+    for (int dx = -2; dx <= 2; ++dx) sum += y[static_cast<std::size_t>((row + dy) * kW + x + dx)];
+  return y[static_cast<std::size_t>(row * kW + x)] - sum / 25.0;
+}
+
+}  // namespace
+
+TEST(TerrainRender, MountainShadingSwapsWhenTheSunCrossesTheSky) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  render::FrameInput f;
+  f.camera.position = {27.3, 86.9, 15000.0};  // Nepal, looking north at the Himalaya
+  f.camera.headingDeg = 10.0;
+  f.camera.pitchDeg = -20.0;
+  f.width = kW;
+  f.height = kH;
+  std::vector<double> y[2];
+  const double azimuths[2] = {90.0, 270.0};
+  for (int k = 0; k < 2; ++k) {
+    f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 35.0, azimuths[k]);
+    r.render(f);
+    y[k] = luminance(r.radiance());
+  }
+  // Correlation of the two high-passed images over the ground (the lower half of the frame).
+  double sxy = 0.0, sxx = 0.0, syy = 0.0;
+  for (int row = kH / 2; row < kH - 2; ++row)
+    for (int x = 2; x < kW - 2; ++x) {
+      const double a = highPass(y[0], x, row), b = highPass(y[1], x, row);
+      sxy += a * b;
+      sxx += a * a;
+      syy += b * b;
+    }
+  ASSERT_GT(sxx, 0.0);
+  ASSERT_GT(syy, 0.0);
+  const double correlation = sxy / std::sqrt(sxx * syy);
+  // Measured -0.98 with the relief normals; +0.94 with flat ones.
+  EXPECT_LT(correlation, -0.4) << "slopes lit from the east should be dark when lit from the west";
+}
