@@ -7,7 +7,7 @@
 //   sun_azimuth_deg = 270
 //   width = 1280                         # pixels, [1, 16384]
 //   height = 720
-//   exposure = 10
+//   exposure = 6
 //   ocean_model = "bruneton"             # or "classic"
 //   wind_speed_ms = 7                    # [0, 50]
 //   wind_direction_deg = 270             # from (meteorological), clockwise from north

@@ -32,7 +32,7 @@ struct SceneSettings {
   std::optional<double> sunAzimuthDeg;    ///< clockwise from north at that point
   int width = 512;
   int height = 512;
-  double exposure = 10.0;
+  double exposure = 6.0;
   std::string glBackend = "auto";
   std::string oceanModel = "bruneton";    ///< "bruneton" (filtered, default) or "classic"
   double windSpeedMs = 7.0;               ///< 10 m wind where no wind layer covers, [0, 50]

@@ -27,7 +27,7 @@ struct FrameInput {
   /// Multiplies radiance (Sun-irradiance units) before tone mapping. The default is a fixed,
   /// physically based exposure for sunlit scenes (docs/atmosphere.md): daylight at sea level
   /// and the day side seen from orbit share it, as both are lit by the same Sun.
-  double exposure = 10.0;
+  double exposure = 6.0;
   int width = 256;
   int height = 256;
   double simulationTimeS = 0.0;  ///< seconds since the start of the sequence (wave animation)
