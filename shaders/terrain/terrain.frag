@@ -10,6 +10,7 @@
 #include "render/aerial.glsl"
 #include "terrain/material.glsl"
 #include "terrain/detail.glsl"
+#include "terrain/shadow.glsl"
 
 in vec3 vRelative;
 in vec3 vNormal;
@@ -92,6 +93,7 @@ void main() {
     vec3 m = n - dot(n, dir) * dir;  // zero when the face looks straight away from the eye
     n = dot(m, m) > 1e-12 ? normalize(m) : up;
   }
+  vec3 nGeometric = n;
   // Tilt by the finer detail: its height gradient per metre along the surface, tangential.
   vec3 dUp = normalOffsetFromEye(vRelative - heightM * up + uCamAltitude * uCamUp);
   float footprint = max(length(dFdx(dUp)), length(dFdy(dUp)));
@@ -107,6 +109,7 @@ void main() {
   vec3 albedo = terrainAlbedo(heightM, slope, lat);
   // Sky light on a tilted surface: the part of the sky dome it sees.
   float skyView = 0.5 + 0.5 * dot(n, up);
-  vec3 surface = albedo / PI * (sunIrr * max(dot(n, uSunDir), 0.0) + skyIrr * skyView);
+  float sunSeen = dot(n, uSunDir) > 0.0 ? sunVisibility(vRelative, nGeometric) : 0.0;
+  vec3 surface = albedo / PI * (sunIrr * (max(dot(n, uSunDir), 0.0) * sunSeen) + skyIrr * skyView);
   fragRadiance = vec4(aerialToAltitude(surface, dir, t, hP), 1.0);
 }

@@ -15,6 +15,10 @@ TerrainRenderer::TerrainRenderer(const data::LatLonGrid& elevation, const Atmosp
       cache_(std::make_shared<const terrain::Heightfield>(elevation)),
       program_({{GL_VERTEX_SHADER, "terrain/terrain.vert"},
                 {GL_FRAGMENT_SHADER, "terrain/terrain.frag"}}),
+      shadowProgram_({{GL_VERTEX_SHADER, "terrain/terrain.vert"},
+                      {GL_FRAGMENT_SHADER, "terrain/shadow_depth.frag"}}),
+      shadowMap_(gl::createTexture(GL_TEXTURE_2D)),
+      shadowFbo_(gl::createFramebuffer()),
       vao_(gl::createVertexArray()),
       indices_(gl::createBuffer()) {
   const auto& idx = terrain::tileIndices();
@@ -30,7 +34,102 @@ TerrainRenderer::TerrainRenderer(const data::LatLonGrid& elevation, const Atmosp
   glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(terrain::TileVertex, normal));
   glVertexArrayAttribFormat(vao, 2, 4, GL_FLOAT, GL_FALSE, offsetof(terrain::TileVertex, heightM));
   for (GLuint a = 0; a < 3; ++a) glVertexArrayAttribBinding(vao, a, 0);
+  glTextureStorage2D(shadowMap_.id(), 1, GL_DEPTH_COMPONENT32F, kShadowMapSize, kShadowMapSize);
+  glTextureParameteri(shadowMap_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(shadowMap_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(shadowMap_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(shadowMap_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(shadowMap_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glTextureParameteri(shadowMap_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glNamedFramebufferTexture(shadowFbo_.id(), GL_DEPTH_ATTACHMENT, shadowMap_.id(), 0);
+  glNamedFramebufferDrawBuffer(shadowFbo_.id(), GL_NONE);
+  if (glCheckNamedFramebufferStatus(shadowFbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw InternalError("terrain shadow map framebuffer incomplete");
   gl::checkErrors("TerrainRenderer setup");
+}
+
+void TerrainRenderer::bindTile(const terrain::Tile& t) {
+  auto [it, fresh] = gpu_.try_emplace(t.key.packed());
+  if (fresh) {
+    it->second.vertices = gl::createBuffer();
+    glNamedBufferStorage(it->second.vertices.id(),
+                         static_cast<GLsizeiptr>(t.vertices.size() * sizeof(terrain::TileVertex)),
+                         t.vertices.data(), 0);
+  }
+  glVertexArrayVertexBuffer(vao_.id(), 0, it->second.vertices.id(), 0, sizeof(terrain::TileVertex));
+}
+
+void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
+                                      const std::vector<const terrain::Tile*>& tiles,
+                                      const glm::dvec3& sunDirectionEcef) {
+  const gl::Program& p = program_;
+  p.set("uShadowOn", 0);
+  const glm::dvec3 s = glm::normalize(sunDirectionEcef);
+  const double h = view.position.heightM;
+  // Shadows of relief matter within a few hundred km; from farther out they are sub-pixel.
+  // With the Sun below the horizon the terrain gets no direct light to shadow.
+  if (h > 1.0e6 || glm::dot(s, view.enu.up) < -0.2 || tiles.empty()) return;
+  // The receivers: tiles within reach of the eye (by height: 30 h, 20..400 km), in a frame
+  // whose z axis points at the Sun. Camera-relative throughout.
+  const double reach = std::clamp(30.0 * h, 20000.0, 400000.0);
+  const glm::dvec3 helper = std::abs(s.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+  const glm::dvec3 lx = glm::normalize(glm::cross(helper, s));
+  const glm::dvec3 ly = glm::cross(s, lx);
+  glm::dvec2 lo(1e300), hi(-1e300);
+  double zLo = 1e300, zHi = -1e300;
+  for (const terrain::Tile* t : tiles) {
+    const glm::dvec3 c = t->boundCentreEcef - view.positionEcef;
+    const double r = t->boundRadiusM;
+    zLo = std::min(zLo, glm::dot(c, s) - r);
+    zHi = std::max(zHi, glm::dot(c, s) + r);
+    if (glm::length(c) - r > reach) continue;
+    lo = glm::min(lo, glm::dvec2(glm::dot(c, lx), glm::dot(c, ly)) - r);
+    hi = glm::max(hi, glm::dvec2(glm::dot(c, lx), glm::dot(c, ly)) + r);
+  }
+  if (!(hi.x > lo.x && hi.y > lo.y)) return;
+  lo = glm::max(lo, glm::dvec2(-reach));
+  hi = glm::min(hi, glm::dvec2(reach));
+  // Square texels: the larger extent sets the scale.
+  const double half = 0.5 * std::max(hi.x - lo.x, hi.y - lo.y);
+  const glm::dvec2 mid = 0.5 * (lo + hi);
+  // Camera-relative ECEF -> clip: x, y over the box, depth 0 nearest the Sun (zHi) .. 1 (zLo).
+  glm::dmat4 m(1.0);
+  for (int col = 0; col < 3; ++col) {
+    m[col][0] = lx[col] / half;
+    m[col][1] = ly[col] / half;
+    m[col][2] = -s[col] / (zHi - zLo);
+  }
+  m[3][0] = -mid.x / half;
+  m[3][1] = -mid.y / half;
+  m[3][2] = zHi / (zHi - zLo);
+  glm::dmat4 toTexture(1.0);  // clip x, y in [-1, 1] -> uv in [0, 1]
+  toTexture[0][0] = toTexture[1][1] = 0.5;
+  toTexture[3][0] = toTexture[3][1] = 0.5;
+
+  GLint previousFbo = 0, viewport[4];
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFbo);
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  glBindFramebuffer(GL_FRAMEBUFFER, shadowFbo_.id());
+  glViewport(0, 0, kShadowMapSize, kShadowMapSize);
+  const float one = 1.0f;
+  glClearNamedFramebufferfv(shadowFbo_.id(), GL_DEPTH, 0, &one);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  shadowProgram_.set("uViewProjection", glm::mat4(m));
+  shadowProgram_.use();
+  glBindVertexArray(vao_.id());
+  for (const terrain::Tile* t : tiles) {
+    shadowProgram_.set("uTileOffset", glm::vec3(t->centreEcef - view.positionEcef));
+    bindTile(*t);
+    glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFbo));
+  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+
+  p.set("uShadowOn", 1);
+  p.set("uShadowMatrix", glm::mat4(toTexture * m));
+  p.set("uShadowTexelM", static_cast<float>(2.0 * half / kShadowMapSize));
 }
 
 void TerrainRenderer::setDetailUniforms(const geo::CameraView& view) const {
@@ -72,6 +171,8 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   p.set("uCamUp", glm::vec3(view.enu.up));
   p.set("uCamAltitude", static_cast<float>(view.position.heightM));
   setDetailUniforms(view);
+  renderShadowMap(view, tiles, sunDirectionEcef);
+  glBindTextureUnit(11, shadowMap_.id());
   if (atmosphere_ != nullptr) atmosphere_->bind(p);
   p.use();
   glBindVertexArray(vao_.id());
@@ -79,17 +180,10 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   glDepthFunc(GL_GREATER);
   glDepthMask(GL_TRUE);
   for (const terrain::Tile* t : tiles) {
-    auto [it, fresh] = gpu_.try_emplace(t->key.packed());
-    if (fresh) {
-      it->second.vertices = gl::createBuffer();
-      glNamedBufferStorage(it->second.vertices.id(),
-                           static_cast<GLsizeiptr>(t->vertices.size() * sizeof(terrain::TileVertex)),
-                           t->vertices.data(), 0);
-    }
     // Camera-relative tile origin in double, then float: never float world coordinates.
     p.set("uTileOffset", glm::vec3(t->centreEcef - view.positionEcef));
     p.set("uDetailFirst", t->normalOctaves);
-    glVertexArrayVertexBuffer(vao_.id(), 0, it->second.vertices.id(), 0, sizeof(terrain::TileVertex));
+    bindTile(*t);
     glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
   }
   stats_.tiles = static_cast<int>(tiles.size());

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <memory>
 #include <unordered_map>
+#include <vector>
 
 #include "data/LatLonGrid.hpp"
 #include "geo/Camera.hpp"
@@ -40,7 +41,13 @@ class TerrainRenderer {
 
  private:
   static constexpr int kMaxDetailOctaves = 24;  // MAX_DETAIL_OCTAVES in terrain.frag
+  static constexpr int kShadowMapSize = 2048;   // texels per side
   void setDetailUniforms(const geo::CameraView& view) const;
+  /// Renders the Sun's depth map over the tiles in view and sets the terrain program's shadow
+  /// uniforms (uShadowOn = 0 when there is none this frame).
+  void renderShadowMap(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
+                       const glm::dvec3& sunDirectionEcef);
+  void bindTile(const terrain::Tile& tile);
   struct GpuTile {
     gl::Buffer vertices;
   };
@@ -49,6 +56,9 @@ class TerrainRenderer {
   terrain::TileCache cache_;
   terrain::SelectionParams params_;
   gl::Program program_;
+  gl::Program shadowProgram_;
+  gl::Texture shadowMap_;
+  gl::Framebuffer shadowFbo_;
   gl::VertexArray vao_;
   gl::Buffer indices_;
   int indexCount_ = 0;
