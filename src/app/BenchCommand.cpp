@@ -24,6 +24,8 @@
 #include "gl/Context.hpp"
 #include "render/Atmosphere.hpp"
 #include "render/GlobeRenderer.hpp"
+#include "terrain/Selection.hpp"
+#include "terrain/TileCache.hpp"
 
 namespace og::app {
 namespace {
@@ -125,6 +127,34 @@ void benchWindData(nlohmann::json& report, bool json) {
   }
 }
 
+/// CPU time of the terrain selection of a view's first frame with an empty tile cache (every
+/// tile it visits is built), with one build thread and with the default pool.
+void benchTerrainFirstFrame(const data::LatLonGrid& elevation, const BenchView& view, int w, int h,
+                            nlohmann::json& report, bool json) {
+  using Clock = std::chrono::steady_clock;
+  const auto heights = std::make_shared<const terrain::Heightfield>(elevation);
+  const geo::CameraView camera = geo::makeCameraView(view.pose, w, h);
+  terrain::SelectionParams params;
+  params.widthPx = w;
+  params.heightPx = h;
+  for (const int workers : {1, 0}) {
+    terrain::TileCache cache(heights, std::size_t{96} << 20, workers);
+    terrain::SelectionStats stats;
+    const auto t0 = Clock::now();
+    const auto tiles = terrain::selectTiles(cache, camera, params, &stats);
+    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    report["terrain_first_frame"].push_back(
+        {{"view", view.name}, {"size", std::to_string(w) + "x" + std::to_string(h)},
+         {"workers", cache.workerCount()}, {"tiles_built", cache.builtCount()},
+         {"tiles_drawn", tiles.size()}, {"ms", ms}});
+    if (!json)
+      std::printf("terrain first frame %s %dx%d, cold cache: %llu tiles built, %zu drawn, "
+                  "%.1f ms with %d build thread(s)\n",
+                  view.name, w, h, static_cast<unsigned long long>(cache.builtCount()),
+                  tiles.size(), ms, cache.workerCount());
+  }
+}
+
 }  // namespace
 
 Run addBenchCommand(CLI::App& parent) {
@@ -221,6 +251,10 @@ Run addBenchCommand(CLI::App& parent) {
                       static_cast<double>(ts.gpuBytes) / 1048576.0);
       }
     }
+    for (const auto& view : benchViews())
+      if (std::string(view.name) == "mountain-15km" && !sizes.empty())
+        benchTerrainFirstFrame(elevation, view, sizes.front().first, sizes.front().second, report,
+                               o->json);
     benchWindData(report, o->json);
     if (o->json) std::printf("%s\n", report.dump(2).c_str());
     return static_cast<int>(kExitOk);

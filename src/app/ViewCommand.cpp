@@ -116,6 +116,8 @@ class Viewer {
     glfwSwapInterval(1);
 
     renderer_ = std::make_unique<render::GlobeRenderer>(elevation_, scene_.atmosphere);
+    // Progressive terrain: missing tiles are built in the background, never stalling a frame.
+    renderer_->terrain().selection().wait = false;
     // The renderer reads the layers point by point (wind texture); L switches them off.
     if (wind_.size() > 0) windShared_ = std::make_shared<const data::WindLayers>(wind_);
     renderer_->setWindLayers(layersOn_ ? windShared_ : nullptr);
@@ -409,7 +411,9 @@ class Viewer {
     else
       lines.push_back(format("UTC -- (sun by angles, %+.2f h)", timeOffsetS_ / 3600.0));
     lines.push_back(format("exposure %.3g  ocean %s", scene_.exposure, oceanModelName()));
-    lines.push_back(format("%.1f fps  speed %s/s", fps_, heightText(controller_.speedMs()).c_str()));
+    lines.push_back(format("%.1f fps  speed %s/s  tiles pending %zu", fps_,
+                           heightText(controller_.speedMs()).c_str(),
+                           renderer_->terrain().stats().tilesPending));
     if (flight_)
       lines.push_back(format("path %.1f / %.1f s %s", playS_, flight_->durationS(),
                              playing_ ? "playing" : "paused"));

@@ -81,6 +81,7 @@ class GlobeRenderer {
 
   /// The terrain pass (tile counts and memory of the last frame).
   [[nodiscard]] const TerrainRenderer& terrain() const { return *terrain_; }
+  TerrainRenderer& terrain() { return *terrain_; }
 
  private:
   void ensureTargets(int width, int height);

@@ -188,6 +188,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   }
   stats_.tiles = static_cast<int>(tiles.size());
   stats_.finestLevel = sel.finestLevel;
+  stats_.tilesPending = sel.pending;
   stats_.cpuBytes = cache_.bytes();
   stats_.gpuBytes = gpu_.size() * terrain::kTileVertices * sizeof(terrain::TileVertex);
   gl::checkErrors("TerrainRenderer::draw");

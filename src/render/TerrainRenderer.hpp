@@ -26,6 +26,7 @@ struct TerrainStats {
   int finestLevel = 0;
   std::size_t cpuBytes = 0;     ///< tile cache (CPU), bytes
   std::size_t gpuBytes = 0;     ///< vertex buffers, bytes
+  std::size_t tilesPending = 0; ///< being built in the background (selection().wait = false)
 };
 
 class TerrainRenderer {
@@ -37,6 +38,7 @@ class TerrainRenderer {
   void draw(const geo::CameraView& view, int width, int height, const glm::dvec3& sunDirectionEcef);
 
   [[nodiscard]] const TerrainStats& stats() const { return stats_; }
+  /// Selection settings; `wait = false` (progressive) never stalls a frame on tile builds.
   terrain::SelectionParams& selection() { return params_; }
 
  private:

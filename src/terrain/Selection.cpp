@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace og::terrain {
 namespace {
@@ -15,32 +16,22 @@ glm::dvec3 toScaled(const glm::dvec3& p) {
 
 constexpr int kPolarMaxLevel = 7;
 
-void selectRecursive(TileCache& cache, const geo::CameraView& view, const SelectionParams& p,
-                     const TileKey& key, std::vector<const Tile*>& out, SelectionStats& stats) {
-  const Tile& t = cache.get(key);
-  ++stats.visited;
-  if (!inFrustum(view, p.widthPx, p.heightPx, t.boundCentreEcef, t.boundRadiusM)) {
-    ++stats.culledFrustum;
-    return;
+// Position in the depth-first walk (root, then children 0..3 at each level): sorting the
+// selection by it gives the order the recursive walk produced, whatever the walk.
+std::uint64_t depthFirstOrder(const TileKey& k) {
+  std::uint64_t code = static_cast<std::uint64_t>(k.x >> k.level) << (2 * kMaxLevel + 1);
+  for (int l = 1; l <= k.level; ++l) {
+    const int shift = k.level - l;
+    const auto digit = static_cast<std::uint64_t>(((k.x >> shift) & 1) | (((k.y >> shift) & 1) << 1));
+    code |= digit << (2 * (kMaxLevel - l));
   }
-  if (!aboveHorizon(view.positionEcef, t.boundCentreEcef, t.boundRadiusM)) {
-    ++stats.culledHorizon;
-    return;
-  }
-  // Tiles touching a pole are wedges that all meet there: splitting them at the same rate as
-  // elsewhere multiplies tiles around the whole ring (2^(level+1) of them) for a few metres of
-  // east-west extent. They stop at kPolarMaxLevel (~4 km spacing); tiles off the pole split on.
-  const bool polar = key.southDeg() <= -90.0 + 1e-9 || key.southDeg() + key.sizeDeg() >= 90.0 - 1e-9;
-  const int maxLevel = polar ? std::min(p.maxLevel, kPolarMaxLevel) : p.maxLevel;
-  const bool split = key.level < maxLevel &&
-                     (key.level < p.minLevel || tileErrorPx(view, p.heightPx, t) > p.maxSpacingPx);
-  if (!split) {
-    out.push_back(&t);
-    stats.finestLevel = std::max(stats.finestLevel, key.level);
-    return;
-  }
-  for (int i = 0; i < 4; ++i) selectRecursive(cache, view, p, key.child(i), out, stats);
+  return code;
 }
+
+struct Request {
+  TileKey key;
+  double parentErrorPx;
+};
 
 }  // namespace
 
@@ -86,12 +77,74 @@ double tileErrorPx(const geo::CameraView& view, int heightPx, const Tile& tile) 
 }
 
 std::vector<const Tile*> selectTiles(TileCache& cache, const geo::CameraView& view,
-                                     const SelectionParams& params, SelectionStats* stats) {
+                                     const SelectionParams& p, SelectionStats* stats) {
   cache.beginFrame();
   std::vector<const Tile*> out;
-  SelectionStats local;
-  for (int x = 0; x < 2; ++x) selectRecursive(cache, view, params, TileKey{0, x, 0}, out, local);
-  if (stats != nullptr) *stats = local;
+  std::vector<Request> requests;
+  SelectionStats st;
+  // Progressive mode still builds the few coarse levels now: they are all the globe needs.
+  const int syncBelow = std::max(p.minLevel, 1);
+  std::vector<TileKey> level{TileKey{0, 0, 0}, TileKey{0, 1, 0}}, next;
+  while (!level.empty()) {
+    const int l = level.front().level;
+    if (p.wait || l < syncBelow) cache.buildMissing(level);  // in parallel
+    next.clear();
+    for (const TileKey& key : level) {
+      const Tile& t = cache.get(key);
+      ++st.visited;
+      if (!inFrustum(view, p.widthPx, p.heightPx, t.boundCentreEcef, t.boundRadiusM)) {
+        ++st.culledFrustum;
+        continue;
+      }
+      if (!aboveHorizon(view.positionEcef, t.boundCentreEcef, t.boundRadiusM)) {
+        ++st.culledHorizon;
+        continue;
+      }
+      // Tiles touching a pole are wedges that all meet there: splitting them at the same rate
+      // as elsewhere multiplies tiles around the whole ring (2^(level+1) of them) for a few
+      // metres of east-west extent. They stop at kPolarMaxLevel (~4 km spacing); tiles off the
+      // pole split on.
+      const bool polar = key.southDeg() <= -90.0 + 1e-9 || key.southDeg() + key.sizeDeg() >= 90.0 - 1e-9;
+      const int maxLevel = polar ? std::min(p.maxLevel, kPolarMaxLevel) : p.maxLevel;
+      const double errorPx = tileErrorPx(view, p.heightPx, t);
+      const bool split = key.level < maxLevel && (key.level < p.minLevel || errorPx > p.maxSpacingPx);
+      if (!split) {
+        out.push_back(&t);
+        continue;
+      }
+      if (!p.wait && l + 1 >= syncBelow) {
+        bool ready = true;
+        for (int i = 0; i < 4; ++i)
+          if (!cache.contains(key.child(i))) {
+            ready = false;
+            requests.push_back({key.child(i), errorPx});
+          }
+        if (!ready) {  // drawn until all four children are built (no partial overlap)
+          out.push_back(&t);
+          ++st.standIns;
+          continue;
+        }
+      }
+      for (int i = 0; i < 4; ++i) next.push_back(key.child(i));
+    }
+    std::swap(level, next);
+  }
+  // Coarse levels first (they unblock the finer ones), then the worst error. An empty list
+  // drops requests of earlier frames no longer needed.
+  std::stable_sort(requests.begin(), requests.end(), [](const Request& a, const Request& b) {
+    return a.key.level != b.key.level ? a.key.level < b.key.level : a.parentErrorPx > b.parentErrorPx;
+  });
+  std::vector<TileKey> keys;
+  keys.reserve(requests.size());
+  for (const Request& r : requests) keys.push_back(r.key);
+  cache.request(keys);
+  st.pending = cache.pending();
+
+  std::sort(out.begin(), out.end(), [](const Tile* a, const Tile* b) {
+    return depthFirstOrder(a->key) < depthFirstOrder(b->key);
+  });
+  for (const Tile* t : out) st.finestLevel = std::max(st.finestLevel, t->key.level);
+  if (stats != nullptr) *stats = st;
   return out;
 }
 

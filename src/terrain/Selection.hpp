@@ -1,7 +1,9 @@
 #pragma once
 // View-dependent choice of tiles: a tile is split while its vertex spacing, seen from the
 // camera, exceeds a pixel threshold; tiles outside the view frustum or wholly below the
-// horizon are dropped. Everything in double precision.
+// horizon are dropped. Everything in double precision. The quadtree is walked level by level, so
+// the tiles a level needs are built together (in parallel) or, in progressive mode, asked for in
+// the background while a built ancestor stands in.
 #include <cstddef>
 #include <vector>
 
@@ -17,6 +19,11 @@ struct SelectionParams {
   double maxSpacingPx = 12.0;
   int minLevel = 2;        ///< always split down to this level (45° tiles keep the shape round)
   int maxLevel = kMaxLevel;
+  /// true: build every tile the view needs before returning (deterministic, complete: render,
+  /// record, bench). false (interactive): never wait for a build below minLevel; a tile whose
+  /// children are not built yet is drawn in their place and the children are requested from
+  /// the background workers, arriving in a later frame.
+  bool wait = true;
 };
 
 struct SelectionStats {
@@ -24,6 +31,8 @@ struct SelectionStats {
   int culledFrustum = 0;
   int culledHorizon = 0;
   int finestLevel = 0;
+  int standIns = 0;          ///< tiles drawn in place of children not built yet (wait = false)
+  std::size_t pending = 0;   ///< tiles requested or being built after this frame
 };
 
 /// Whether a sphere (ECEF centre, radius m) can be seen over the planet from `eyeEcef`: false
@@ -39,7 +48,8 @@ bool inFrustum(const geo::CameraView& view, int widthPx, int heightPx,
 /// nearest distance. Tiles wholly under 50 m of water count a quarter (the sea covers them).
 double tileErrorPx(const geo::CameraView& view, int heightPx, const Tile& tile);
 
-/// The tiles to draw, coarse-to-fine order not guaranteed; builds missing tiles in `cache`.
+/// The tiles to draw, in depth-first quadtree order (children 0..3); builds missing tiles in
+/// `cache` (all of them with params.wait, else only levels below minLevel).
 std::vector<const Tile*> selectTiles(TileCache& cache, const geo::CameraView& view,
                                      const SelectionParams& params, SelectionStats* stats = nullptr);
 

@@ -1,19 +1,27 @@
-// Terrain LOD on the CPU: tile selection, crack-free seams, the cache's memory bound and the
-// procedural detail's continuity.
+// Terrain LOD on the CPU: tile selection, crack-free seams, the cache's memory bound, the
+// procedural detail's continuity and the tile builders (parallel, progressive).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <numbers>
 #include <set>
+#include <stdexcept>
+#include <thread>
 #include <tuple>
+#include <vector>
 
 #include "data/Elevation.hpp"
 #include "geo/Camera.hpp"
 #include "terrain/Heightfield.hpp"
 #include "terrain/Selection.hpp"
 #include "terrain/Tile.hpp"
+#include "terrain/TileBuilder.hpp"
 #include "terrain/TileCache.hpp"
 
 namespace og::terrain {
@@ -239,6 +247,260 @@ TEST(TerrainCache, StaysWithinItsBudget) {
   const auto built = cache.builtCount();
   (void)cache.get(TileKey{7, 100, 40});
   EXPECT_EQ(cache.builtCount(), built);
+}
+
+using KeyList = std::vector<std::tuple<int, int, int>>;
+
+KeyList keysOf(const std::vector<const Tile*>& tiles) {
+  KeyList keys;
+  for (const Tile* t : tiles) keys.emplace_back(t->key.level, t->key.x, t->key.y);
+  return keys;
+}
+
+bool isAncestor(const TileKey& a, const TileKey& b) {  // a strictly contains b
+  return a.level < b.level && (b.x >> (b.level - a.level)) == a.x && (b.y >> (b.level - a.level)) == a.y;
+}
+
+// The depth-first walk the selection did before it was breadth-first and parallel (one tile at
+// a time through TileCache::get): the reference for "the same tiles, in the same order".
+void referenceWalk(TileCache& cache, const geo::CameraView& view, const SelectionParams& p,
+                   const TileKey& key, KeyList& out, KeyList* split = nullptr) {
+  const Tile& t = cache.get(key);
+  if (!inFrustum(view, p.widthPx, p.heightPx, t.boundCentreEcef, t.boundRadiusM)) return;
+  if (!aboveHorizon(view.positionEcef, t.boundCentreEcef, t.boundRadiusM)) return;
+  const bool polar = key.southDeg() <= -90.0 + 1e-9 || key.southDeg() + key.sizeDeg() >= 90.0 - 1e-9;
+  const int maxLevel = polar ? std::min(p.maxLevel, 7) : p.maxLevel;
+  if (key.level < maxLevel &&
+      (key.level < p.minLevel || tileErrorPx(view, p.heightPx, t) > p.maxSpacingPx)) {
+    if (split != nullptr) split->emplace_back(key.level, key.x, key.y);
+    for (int i = 0; i < 4; ++i) referenceWalk(cache, view, p, key.child(i), out, split);
+  } else {
+    out.emplace_back(key.level, key.x, key.y);
+  }
+}
+
+struct NamedView {
+  const char* name;
+  geo::CameraView view;
+};
+
+SelectionParams smallParams(bool wait = true) {
+  SelectionParams p;
+  p.widthPx = 320;
+  p.heightPx = 180;
+  p.wait = wait;
+  return p;
+}
+
+std::vector<NamedView> parallelTestViews() {
+  // Small images: fewer, coarser tiles keep the tests fast.
+  return {{"mountain-15km", viewAt(27.9, 86.9, 15000.0, 10.0, -6.0, 320, 180)},
+          {"orbit", viewAt(10.0, -30.0, 2.0e7, 0.0, -90.0, 320, 180)},
+          {"sea-level-coast", viewAt(36.0, -5.5, 2.0, 270.0, 2.0, 320, 180)}};
+}
+
+TEST(TerrainSelection, ParallelBuildsSelectTheSameTilesAsOneWorker) {
+  for (const auto& [name, view] : parallelTestViews()) {
+    const SelectionParams params = smallParams();
+    TileCache one(heights(), std::size_t{96} << 20, 1);
+    TileCache many(heights(), std::size_t{96} << 20, 4);  // more threads than cores: interleaving
+    ASSERT_EQ(one.workerCount(), 1);
+    SelectionStats s1, s4;
+    const KeyList k1 = keysOf(selectTiles(one, view, params, &s1));
+    const KeyList k4 = keysOf(selectTiles(many, view, params, &s4));
+    ASSERT_FALSE(k1.empty()) << name;
+    EXPECT_EQ(k1, k4) << name;  // same tiles, same order
+    EXPECT_EQ(s1.visited, s4.visited) << name;
+    EXPECT_EQ(s1.culledFrustum, s4.culledFrustum) << name;
+    EXPECT_EQ(s1.culledHorizon, s4.culledHorizon) << name;
+    EXPECT_EQ(s4.standIns, 0) << name;
+    EXPECT_EQ(s4.pending, 0u) << name;
+    // Every visited tile built exactly once, none more.
+    EXPECT_EQ(many.builtCount(), static_cast<std::uint64_t>(s4.visited)) << name;
+    EXPECT_EQ(many.size(), many.builtCount()) << name;
+    // The recursive walk of old (on the warm cache: nothing to build) agrees, order included.
+    KeyList reference;
+    for (int x = 0; x < 2; ++x) referenceWalk(many, view, params, TileKey{0, x, 0}, reference);
+    EXPECT_EQ(reference, k4) << name;
+    EXPECT_EQ(many.size(), many.builtCount()) << name;
+  }
+}
+
+// Progressive selection: each tile drawn is either one the complete selection draws or one it
+// splits (standing in for children not built yet); together they cover what the complete
+// selection draws, each of its tiles exactly once.
+void expectCovers(const std::vector<const Tile*>& progressive, const KeyList& complete,
+                  const KeyList& completeSplits) {
+  for (const auto& [l, x, y] : complete) {
+    const TileKey k{l, x, y};
+    int covering = 0;
+    for (const Tile* t : progressive) covering += t->key == k || isAncestor(t->key, k);
+    EXPECT_EQ(covering, 1) << "tile " << l << " " << x << " " << y;
+  }
+  for (const Tile* t : progressive) {
+    const auto k = std::make_tuple(t->key.level, t->key.x, t->key.y);
+    EXPECT_TRUE(std::find(complete.begin(), complete.end(), k) != complete.end() ||
+                std::find(completeSplits.begin(), completeSplits.end(), k) != completeSplits.end())
+        << "stray tile " << t->key.level << " " << t->key.x << " " << t->key.y;
+  }
+}
+
+TEST(TerrainSelection, ProgressiveDrawsAncestorsThenConvergesToTheCompleteSelection) {
+  const geo::CameraView view = parallelTestViews()[0].view;
+  TileCache blockingCache(heights());
+  SelectionStats complete;
+  const KeyList target = keysOf(selectTiles(blockingCache, view, smallParams(), &complete));
+  KeyList reference, splits;
+  for (int x = 0; x < 2; ++x)
+    referenceWalk(blockingCache, view, smallParams(), TileKey{0, x, 0}, reference, &splits);
+  ASSERT_EQ(reference, target);
+
+  const SelectionParams params = smallParams(false);
+  TileCache cache(heights());
+  SelectionStats s;
+  auto tiles = selectTiles(cache, view, params, &s);
+  // The first frame builds only the levels below minLevel (2 + 8 tiles) and draws those.
+  EXPECT_LE(cache.builtCount(), 10u);
+  ASSERT_FALSE(tiles.empty());
+  for (const Tile* t : tiles) EXPECT_LT(t->key.level, params.minLevel);
+  EXPECT_EQ(s.standIns, static_cast<int>(tiles.size()));
+  EXPECT_GT(s.pending, 0u);
+  expectCovers(tiles, target, splits);
+
+  int frames = 1;
+  while (s.pending > 0 && frames < 40) {
+    cache.waitIdle();
+    tiles = selectTiles(cache, view, params, &s);
+    ++frames;
+    expectCovers(tiles, target, splits);
+  }
+  EXPECT_GT(frames, 5);  // refined level by level
+  EXPECT_EQ(s.pending, 0u);
+  EXPECT_EQ(s.standIns, 0);
+  EXPECT_EQ(keysOf(tiles), target);
+  EXPECT_EQ(s.visited, complete.visited);
+  // Nothing was built that the complete selection does not visit, nothing twice.
+  EXPECT_EQ(cache.builtCount(), static_cast<std::uint64_t>(complete.visited));
+  EXPECT_EQ(cache.size(), cache.builtCount());
+}
+
+TEST(TerrainCache, ProgressiveFramesNeverRequestATileTwice) {
+  // Frames in quick succession ask for the same tiles while they are queued or being built.
+  const geo::CameraView view = parallelTestViews()[2].view;
+  const SelectionParams params = smallParams(false);
+  TileCache cache(heights());
+  SelectionStats s;
+  for (int round = 0; round < 40; ++round) {
+    for (int i = 0; i < 4; ++i) (void)selectTiles(cache, view, params, &s);
+    cache.waitIdle();
+    (void)selectTiles(cache, view, params, &s);
+    if (s.pending == 0) break;
+  }
+  EXPECT_EQ(s.pending, 0u);
+  EXPECT_EQ(s.standIns, 0);
+  EXPECT_EQ(cache.size(), cache.builtCount());
+  EXPECT_EQ(cache.builtCount(), static_cast<std::uint64_t>(s.visited));
+}
+
+// A build function that records what it built and can be held back.
+struct ScriptedBuilds {
+  std::mutex mutex;
+  std::map<std::uint64_t, int> count;
+  std::vector<TileKey> order;
+  std::atomic<bool> open{true};
+
+  TileBuilder::BuildFn fn() {
+    return [this](const TileKey& key) {
+      while (!open.load()) std::this_thread::sleep_for(std::chrono::microseconds(200));
+      if (key.level == 3 && key.x == 7) throw std::runtime_error("bad tile");
+      {
+        std::lock_guard lock(mutex);
+        ++count[key.packed()];
+        order.push_back(key);
+      }
+      Tile t;
+      t.key = key;
+      return t;
+    };
+  }
+};
+
+std::vector<TileKey> row(int level, int y, int from, int n) {
+  std::vector<TileKey> keys;
+  for (int x = from; x < from + n; ++x) keys.push_back({level, x, y});
+  return keys;
+}
+
+TEST(TerrainBuilder, DropsStaleRequestsKeepsOrderAndBuildsEachKeyOnce) {
+  ScriptedBuilds script;
+  script.open = false;
+  TileBuilder builder(script.fn(), 1);
+  const auto stale = row(8, 1, 0, 20), fresh = row(8, 2, 0, 20);
+  builder.request(stale);
+  builder.request(fresh);  // the latest frame: the stale ones still queued are dropped
+  builder.request(fresh);  // asked again while queued: not queued twice
+  EXPECT_LE(builder.pending(), fresh.size() + 1);
+  script.open = true;
+  builder.build(std::vector<TileKey>{fresh[7], fresh[7], TileKey{8, 9, 9}});  // queued or new
+  builder.waitIdle();
+  builder.request(fresh);  // finished but not taken: not built again
+  builder.waitIdle();
+  const TileBuilder::Finished f = builder.takeFinished();
+  EXPECT_FALSE(f.error);
+  EXPECT_EQ(builder.pending(), 0u);
+
+  int staleBuilt = 0;
+  for (const TileKey& k : stale) staleBuilt += static_cast<int>(script.count.count(k.packed()));
+  EXPECT_LE(staleBuilt, 1);  // at most the one the worker had started
+  for (const auto& [key, n] : script.count) EXPECT_EQ(n, 1) << key;
+  EXPECT_EQ(f.tiles.size(), script.count.size());
+  // One worker: background requests are built in the order given.
+  std::vector<TileKey> freshOrder;
+  for (const TileKey& k : script.order)
+    if (k.y == 2 && !(k == fresh[7])) freshOrder.push_back(k);
+  std::vector<TileKey> expected = fresh;
+  expected.erase(expected.begin() + 7);
+  EXPECT_EQ(freshOrder, expected);
+}
+
+TEST(TerrainBuilder, WorkerExceptionsReachTheCallerAndTheBuilderGoesOn) {
+  ScriptedBuilds script;
+  TileBuilder builder(script.fn(), 2);
+  builder.build(std::vector<TileKey>{{3, 6, 0}, {3, 7, 0}, {3, 8, 0}});
+  TileBuilder::Finished f = builder.takeFinished();
+  ASSERT_TRUE(f.error);
+  EXPECT_THROW(std::rethrow_exception(f.error), std::runtime_error);
+  EXPECT_EQ(f.tiles.size(), 2u);
+  EXPECT_EQ(builder.pending(), 0u);
+  builder.request(std::vector<TileKey>{{4, 1, 1}});
+  builder.waitIdle();
+  f = builder.takeFinished();
+  EXPECT_FALSE(f.error);
+  EXPECT_EQ(f.tiles.size(), 1u);
+}
+
+TEST(TerrainBuilder, DestroyedWithWorkInFlight) {
+  // Joins its workers; tiles in flight are finished and dropped, queued ones never started.
+  ScriptedBuilds script;
+  {
+    TileBuilder builder(
+        [fn = script.fn()](const TileKey& key) {
+          std::this_thread::sleep_for(std::chrono::milliseconds(2));
+          return fn(key);
+        },
+        2);
+    builder.request(row(10, 3, 0, 200));
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  std::lock_guard lock(script.mutex);
+  EXPECT_LT(script.count.size(), 200u);
+}
+
+TEST(TerrainCache, WorkersDefaultToTheHardware) {
+  TileCache cache(heights());
+  EXPECT_GE(cache.workerCount(), 1);
+  EXPECT_EQ(cache.workerCount(),
+            std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
 }
 
 }  // namespace
