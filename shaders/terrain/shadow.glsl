@@ -1,22 +1,27 @@
-// Cast shadows of the terrain from the Sun: an orthographic depth map along the Sun's rays
-// over the terrain in view (TerrainRenderer::renderShadowMap), looked up with 2x2 hardware
-// comparisons at 4 offsets (a 3x3-texel soft edge, like the penumbra of relief a few km away).
-layout(binding = 11) uniform sampler2DShadow uShadowMap;
-uniform mat4 uShadowMatrix;   // camera-relative ECEF -> shadow map (uv in [0,1], depth [0,1])
-uniform int uShadowOn;        // 0: no map this frame (Sun down, or seen from far out)
-uniform float uShadowTexelM;  // texel size, m
+// Cast shadows of the terrain from the Sun: orthographic depth maps along the Sun's rays over
+// the terrain in view (TerrainRenderer::renderShadowMap), two cascades (near: an eighth of the
+// far one's reach), looked up with 2x2 hardware comparisons at 4 offsets (a 3x3-texel soft
+// edge, like the penumbra of relief a few km away).
+const int SHADOW_CASCADES = 2;
+layout(binding = 11) uniform sampler2DArrayShadow uShadowMap;
+uniform mat4 uShadowMatrix[SHADOW_CASCADES];  // camera-relative ECEF -> uv in [0,1], depth [0,1]
+uniform float uShadowTexelM[SHADOW_CASCADES]; // texel size, m
+uniform float uShadowSplitM;  // distance from the eye where the near cascade hands over, m
+uniform int uShadowOn;        // 0: no maps this frame (Sun down, or seen from far out)
 
 // Fraction of the Sun seen from a point (camera-relative `rel`) with geometric normal `n`.
 float sunVisibility(vec3 rel, vec3 n) {
   if (uShadowOn == 0) return 1.0;
+  int c = length(rel) < uShadowSplitM ? 0 : 1;
   // Offset along the normal by a texel and a half: a surface never shadows itself.
-  vec4 s = uShadowMatrix * vec4(rel + n * (1.5 * uShadowTexelM), 1.0);
+  vec4 s = uShadowMatrix[c] * vec4(rel + n * (1.5 * uShadowTexelM[c]), 1.0);
   if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0))) || s.z <= 0.0) return 1.0;
-  vec2 texel = 1.0 / vec2(textureSize(uShadowMap, 0));
+  vec2 texel = 1.0 / vec2(textureSize(uShadowMap, 0).xy);
+  float layer = float(c);
   float lit = 0.0;
-  lit += texture(uShadowMap, vec3(s.xy + vec2(-0.5, -0.5) * texel, s.z));
-  lit += texture(uShadowMap, vec3(s.xy + vec2(0.5, -0.5) * texel, s.z));
-  lit += texture(uShadowMap, vec3(s.xy + vec2(-0.5, 0.5) * texel, s.z));
-  lit += texture(uShadowMap, vec3(s.xy + vec2(0.5, 0.5) * texel, s.z));
+  lit += texture(uShadowMap, vec4(s.xy + vec2(-0.5, -0.5) * texel, layer, s.z));
+  lit += texture(uShadowMap, vec4(s.xy + vec2(0.5, -0.5) * texel, layer, s.z));
+  lit += texture(uShadowMap, vec4(s.xy + vec2(-0.5, 0.5) * texel, layer, s.z));
+  lit += texture(uShadowMap, vec4(s.xy + vec2(0.5, 0.5) * texel, layer, s.z));
   return 0.25 * lit;
 }

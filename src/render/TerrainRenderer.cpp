@@ -17,7 +17,7 @@ TerrainRenderer::TerrainRenderer(const data::LatLonGrid& elevation, const Atmosp
                 {GL_FRAGMENT_SHADER, "terrain/terrain.frag"}}),
       shadowProgram_({{GL_VERTEX_SHADER, "terrain/terrain.vert"},
                       {GL_FRAGMENT_SHADER, "terrain/shadow_depth.frag"}}),
-      shadowMap_(gl::createTexture(GL_TEXTURE_2D)),
+      shadowMap_(gl::createTexture(GL_TEXTURE_2D_ARRAY)),
       shadowFbo_(gl::createFramebuffer()),
       vao_(gl::createVertexArray()),
       indices_(gl::createBuffer()) {
@@ -34,14 +34,15 @@ TerrainRenderer::TerrainRenderer(const data::LatLonGrid& elevation, const Atmosp
   glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(terrain::TileVertex, normal));
   glVertexArrayAttribFormat(vao, 2, 4, GL_FLOAT, GL_FALSE, offsetof(terrain::TileVertex, heightM));
   for (GLuint a = 0; a < 3; ++a) glVertexArrayAttribBinding(vao, a, 0);
-  glTextureStorage2D(shadowMap_.id(), 1, GL_DEPTH_COMPONENT32F, kShadowMapSize, kShadowMapSize);
+  glTextureStorage3D(shadowMap_.id(), 1, GL_DEPTH_COMPONENT32F, kShadowMapSize, kShadowMapSize,
+                     kShadowCascades);
   glTextureParameteri(shadowMap_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(shadowMap_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(shadowMap_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(shadowMap_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glTextureParameteri(shadowMap_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glTextureParameteri(shadowMap_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-  glNamedFramebufferTexture(shadowFbo_.id(), GL_DEPTH_ATTACHMENT, shadowMap_.id(), 0);
+  glNamedFramebufferTextureLayer(shadowFbo_.id(), GL_DEPTH_ATTACHMENT, shadowMap_.id(), 0, 0);
   glNamedFramebufferDrawBuffer(shadowFbo_.id(), GL_NONE);
   if (glCheckNamedFramebufferStatus(shadowFbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw InternalError("terrain shadow map framebuffer incomplete");
@@ -69,67 +70,91 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
   // Shadows of relief matter within a few hundred km; from farther out they are sub-pixel.
   // With the Sun below the horizon the terrain gets no direct light to shadow.
   if (h > 1.0e6 || glm::dot(s, view.enu.up) < -0.2 || tiles.empty()) return;
-  // The receivers: tiles within reach of the eye (by height: 30 h, 20..400 km), in a frame
-  // whose z axis points at the Sun. Camera-relative throughout.
-  const double reach = std::clamp(30.0 * h, 20000.0, 400000.0);
+  // Cascades: the far one over the receivers within reach of the eye (by height: 30 h,
+  // 20..400 km), the near one over an eighth of that, in a frame whose z axis points at the
+  // Sun. Camera-relative throughout.
+  const double farReach = std::clamp(30.0 * h, 20000.0, 400000.0);
   const glm::dvec3 helper = std::abs(s.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
   const glm::dvec3 lx = glm::normalize(glm::cross(helper, s));
   const glm::dvec3 ly = glm::cross(s, lx);
-  glm::dvec2 lo(1e300), hi(-1e300);
+  // Casters: every tile in view (its depth range along the Sun).
   double zLo = 1e300, zHi = -1e300;
   for (const terrain::Tile* t : tiles) {
-    const glm::dvec3 c = t->boundCentreEcef - view.positionEcef;
-    const double r = t->boundRadiusM;
-    zLo = std::min(zLo, glm::dot(c, s) - r);
-    zHi = std::max(zHi, glm::dot(c, s) + r);
-    if (glm::length(c) - r > reach) continue;
-    lo = glm::min(lo, glm::dvec2(glm::dot(c, lx), glm::dot(c, ly)) - r);
-    hi = glm::max(hi, glm::dvec2(glm::dot(c, lx), glm::dot(c, ly)) + r);
+    const double z = glm::dot(t->boundCentreEcef - view.positionEcef, s);
+    zLo = std::min(zLo, z - t->boundRadiusM);
+    zHi = std::max(zHi, z + t->boundRadiusM);
   }
-  if (!(hi.x > lo.x && hi.y > lo.y)) return;
-  lo = glm::max(lo, glm::dvec2(-reach));
-  hi = glm::min(hi, glm::dvec2(reach));
-  // Square texels: the larger extent sets the scale.
-  const double half = 0.5 * std::max(hi.x - lo.x, hi.y - lo.y);
-  const glm::dvec2 mid = 0.5 * (lo + hi);
-  // Camera-relative ECEF -> clip: x, y over the box, depth 0 nearest the Sun (zHi) .. 1 (zLo).
-  glm::dmat4 m(1.0);
-  for (int col = 0; col < 3; ++col) {
-    m[col][0] = lx[col] / half;
-    m[col][1] = ly[col] / half;
-    m[col][2] = -s[col] / (zHi - zLo);
-  }
-  m[3][0] = -mid.x / half;
-  m[3][1] = -mid.y / half;
-  m[3][2] = zHi / (zHi - zLo);
-  glm::dmat4 toTexture(1.0);  // clip x, y in [-1, 1] -> uv in [0, 1]
-  toTexture[0][0] = toTexture[1][1] = 0.5;
-  toTexture[3][0] = toTexture[3][1] = 0.5;
 
   GLint previousFbo = 0, viewport[4];
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFbo);
   glGetIntegerv(GL_VIEWPORT, viewport);
   glBindFramebuffer(GL_FRAMEBUFFER, shadowFbo_.id());
   glViewport(0, 0, kShadowMapSize, kShadowMapSize);
-  const float one = 1.0f;
-  glClearNamedFramebufferfv(shadowFbo_.id(), GL_DEPTH, 0, &one);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
-  shadowProgram_.set("uViewProjection", glm::mat4(m));
   shadowProgram_.use();
   glBindVertexArray(vao_.id());
-  for (const terrain::Tile* t : tiles) {
-    shadowProgram_.set("uTileOffset", glm::vec3(t->centreEcef - view.positionEcef));
-    bindTile(*t);
-    glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+  std::array<glm::mat4, kShadowCascades> matrices{};
+  std::array<float, kShadowCascades> texels{};
+  for (int cascade = 0; cascade < kShadowCascades; ++cascade) {
+    const double reach = farReach / std::pow(8.0, kShadowCascades - 1 - cascade);
+    glm::dvec2 lo(1e300), hi(-1e300);
+    for (const terrain::Tile* t : tiles) {
+      const glm::dvec3 c = t->boundCentreEcef - view.positionEcef;
+      const double r = t->boundRadiusM;
+      if (glm::length(c) - r > reach) continue;
+      lo = glm::min(lo, glm::dvec2(glm::dot(c, lx), glm::dot(c, ly)) - r);
+      hi = glm::max(hi, glm::dvec2(glm::dot(c, lx), glm::dot(c, ly)) + r);
+    }
+    lo = glm::max(lo, glm::dvec2(-reach));
+    hi = glm::min(hi, glm::dvec2(reach));
+    if (!(hi.x > lo.x && hi.y > lo.y)) {  // nothing near: an empty box far below
+      lo = glm::dvec2(-1.0);
+      hi = glm::dvec2(1.0);
+    }
+    // Square texels: the larger extent sets the scale.
+    const double half = 0.5 * std::max(hi.x - lo.x, hi.y - lo.y);
+    const glm::dvec2 mid = 0.5 * (lo + hi);
+    // Camera-relative ECEF -> clip: x, y over the box, depth 0 nearest the Sun (zHi) .. 1 (zLo).
+    glm::dmat4 m(1.0);
+    for (int col = 0; col < 3; ++col) {
+      m[col][0] = lx[col] / half;
+      m[col][1] = ly[col] / half;
+      m[col][2] = -s[col] / (zHi - zLo);
+    }
+    m[3][0] = -mid.x / half;
+    m[3][1] = -mid.y / half;
+    m[3][2] = zHi / (zHi - zLo);
+    glm::dmat4 toTexture(1.0);  // clip x, y in [-1, 1] -> uv in [0, 1]
+    toTexture[0][0] = toTexture[1][1] = 0.5;
+    toTexture[3][0] = toTexture[3][1] = 0.5;
+    matrices[static_cast<std::size_t>(cascade)] = glm::mat4(toTexture * m);
+    texels[static_cast<std::size_t>(cascade)] = static_cast<float>(2.0 * half / kShadowMapSize);
+
+    glNamedFramebufferTextureLayer(shadowFbo_.id(), GL_DEPTH_ATTACHMENT, shadowMap_.id(), 0, cascade);
+    const float one = 1.0f;
+    glClearNamedFramebufferfv(shadowFbo_.id(), GL_DEPTH, 0, &one);
+    shadowProgram_.set("uViewProjection", glm::mat4(m));
+    for (const terrain::Tile* t : tiles) {
+      // Only tiles over the box cast into it.
+      const glm::dvec3 c = t->boundCentreEcef - view.positionEcef;
+      const glm::dvec2 xy(glm::dot(c, lx), glm::dot(c, ly));
+      if (glm::any(glm::greaterThan(glm::abs(xy - mid), glm::dvec2(half + t->boundRadiusM)))) continue;
+      shadowProgram_.set("uTileOffset", glm::vec3(t->centreEcef - view.positionEcef));
+      bindTile(*t);
+      glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+    }
   }
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFbo));
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
 
   p.set("uShadowOn", 1);
-  p.set("uShadowMatrix", glm::mat4(toTexture * m));
-  p.set("uShadowTexelM", static_cast<float>(2.0 * half / kShadowMapSize));
+  glProgramUniformMatrix4fv(p.id(), p.location("uShadowMatrix"), kShadowCascades, GL_FALSE,
+                            &matrices[0][0][0]);
+  glProgramUniform1fv(p.id(), p.location("uShadowTexelM"), kShadowCascades, texels.data());
+  // The near cascade serves the points well inside its reach.
+  p.set("uShadowSplitM", static_cast<float>(0.8 * farReach / std::pow(8.0, kShadowCascades - 1)));
 }
 
 void TerrainRenderer::setDetailUniforms(const geo::CameraView& view) const {

@@ -44,6 +44,7 @@ class TerrainRenderer {
  private:
   static constexpr int kMaxDetailOctaves = 24;  // MAX_DETAIL_OCTAVES in terrain.frag
   static constexpr int kShadowMapSize = 2048;   // texels per side
+  static constexpr int kShadowCascades = 2;     // SHADOW_CASCADES in terrain/shadow.glsl
   void setDetailUniforms(const geo::CameraView& view) const;
   /// Renders the Sun's depth map over the tiles in view and sets the terrain program's shadow
   /// uniforms (uShadowOn = 0 when there is none this frame).
