@@ -1,10 +1,24 @@
 #version 450 core
-// HDR radiance -> 8-bit sRGB for PNG output and the window.
+// HDR radiance -> 8-bit sRGB for PNG output and the window. Multisampled radiance is tone
+// mapped per sample and then averaged: averaging linear HDR first lets a bright sample (sky)
+// dominate the pixel, so bright-dark edges step again after the tone curve.
 #include "common/color.glsl"
+#ifdef TONEMAP_MULTISAMPLE
+layout(binding = 0) uniform sampler2DMS uRadiance;
+#else
 layout(binding = 0) uniform sampler2D uRadiance;
+#endif
 uniform float uExposure;
 out vec4 fragColor;
 void main() {
-  vec4 hdr = texelFetch(uRadiance, ivec2(gl_FragCoord.xy), 0);
+  ivec2 p = ivec2(gl_FragCoord.xy);
+#ifdef TONEMAP_MULTISAMPLE
+  int n = textureSamples(uRadiance);
+  vec3 sum = vec3(0.0);
+  for (int i = 0; i < n; ++i) sum += toneMap(texelFetch(uRadiance, p, i).rgb, uExposure);
+  fragColor = vec4(linearToSrgb(sum / float(n)), 1.0);
+#else
+  vec4 hdr = texelFetch(uRadiance, p, 0);
   fragColor = vec4(linearToSrgb(toneMap(hdr.rgb, uExposure)), 1.0);
+#endif
 }

@@ -62,6 +62,7 @@ struct BenchOptions {
   std::vector<std::string> sizes{"640x360", "1280x720"};
   bool json = false;
   std::string record;  // camera path for the record case (render + H.264 encode)
+  std::vector<int> samples{4};
 };
 
 bool parseSize(const std::string& s, int& w, int& h) {
@@ -165,18 +166,25 @@ Run addBenchCommand(CLI::App& parent) {
   cmd->add_option("--frames", o->frames, "timed frames per case (after 2 warm-up frames)")
       ->check(CLI::Range(1, 10000));
   cmd->add_option("--size", o->sizes, "image sizes WIDTHxHEIGHT (repeatable)");
+  cmd->add_option("--samples", o->samples,
+                  "samples per pixel: 1, 2, 4 (default) or 8; several (--samples 1 4) time each "
+                  "case at each count, frames interleaved so that machine load hits all alike");
   cmd->add_flag("--json", o->json, "print JSON instead of a table");
   cmd->add_option("--record", o->record,
                   "instead: frames/s recording this camera path (e.g. config/flythrough.toml) to "
                   "MP4 at each --size, encoding included");
   return [o]() {
+    for (const int n : o->samples)
+      if (!render::isValidSampleCount(n))
+        throw InputError("--samples: expected 1, 2, 4 or 8, got " + std::to_string(n));
     std::vector<std::pair<int, int>> sizes;
     for (const auto& s : o->sizes) {
       int w = 0, h = 0;
       if (!parseSize(s, w, h)) throw InputError("--size: expected WIDTHxHEIGHT, got '" + s + "'");
       sizes.emplace_back(w, h);
     }
-    if (!o->record.empty()) return benchRecord(o->record, sizes, o->frames, o->gl, o->json);
+    if (!o->record.empty())
+      return benchRecord(o->record, sizes, o->frames, o->gl, o->samples, o->json);
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
     auto context = gl::createHeadlessContext(*gl::parseBackend(o->gl));
@@ -200,9 +208,13 @@ Run addBenchCommand(CLI::App& parent) {
     std::error_code ignored;
     std::filesystem::remove_all(atmoCache, ignored);
     cold.reset();
-    render::GlobeRenderer renderer(elevation, cached);
+    // One renderer per sample count: switching one renderer's count would rebuild its targets.
+    std::vector<std::unique_ptr<render::GlobeRenderer>> renderers;
+    renderers.push_back(std::make_unique<render::GlobeRenderer>(elevation, cached));
     render::GlobeRenderer::finish();
     const double startupMs = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    while (renderers.size() < o->samples.size())
+      renderers.push_back(std::make_unique<render::GlobeRenderer>(elevation, cached));
 
     nlohmann::json report;
     report["gl"] = {{"backend", context->info().backend},
@@ -217,10 +229,10 @@ Run addBenchCommand(CLI::App& parent) {
       std::printf("oceanglobe bench: %s, %s\nstartup (context + shaders + data): %.1f ms\n"
                   "atmosphere precompute: cold %.1f ms, cached second run %.1f ms%s "
                   "(sky maps %.1f ms of it)\n"
-                  "%-16s %10s %9s %9s %9s\n",
+                  "%-16s %10s %7s %9s %9s %9s\n",
                   context->info().renderer.c_str(), context->info().backend.c_str(), startupMs,
                   atmoColdMs, atmoCachedMs, cached->timing().fromCache ? "" : " (cache MISSED)",
-                  cached->timing().skyMapsMs, "view", "size", "median", "min", "max");
+                  cached->timing().skyMapsMs, "view", "size", "samples", "median", "min", "max");
     for (const auto& view : benchViews()) {
       for (const auto& [w, h] : sizes) {
         render::FrameInput f;
@@ -228,27 +240,33 @@ Run addBenchCommand(CLI::App& parent) {
         f.width = w;
         f.height = h;
         f.sunDirectionEcef = geo::sunDirectionFromHorizontal(view.pose.position, 20.0, 250.0);
-        std::vector<double> ms;
-        for (int i = 0; i < o->frames + 2; ++i) {
-          const auto s = Clock::now();
-          renderer.render(f);
-          render::GlobeRenderer::finish();
-          if (i >= 2) ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - s).count());
-        }
-        std::sort(ms.begin(), ms.end());
-        const double median = ms[ms.size() / 2];
+        std::vector<std::vector<double>> ms(renderers.size());
+        for (int i = 0; i < o->frames + 2; ++i)
+          for (std::size_t k = 0; k < renderers.size(); ++k) {
+            f.samples = o->samples[k];
+            const auto s = Clock::now();
+            renderers[k]->render(f);
+            render::GlobeRenderer::finish();
+            if (i >= 2) ms[k].push_back(std::chrono::duration<double, std::milli>(Clock::now() - s).count());
+          }
         const std::string size = std::to_string(w) + "x" + std::to_string(h);
-        const render::TerrainStats& ts = renderer.terrain().stats();
-        report["cases"].push_back({{"view", view.name}, {"size", size}, {"median_ms", median},
-                                   {"min_ms", ms.front()}, {"max_ms", ms.back()},
-                                   {"frames", ms.size()}, {"terrain_tiles", ts.tiles},
-                                   {"terrain_cpu_bytes", ts.cpuBytes},
-                                   {"terrain_gpu_bytes", ts.gpuBytes}});
-        if (!o->json)
-          std::printf("%-16s %10s %7.2fms %7.2fms %7.2fms  terrain %d tiles, %.1f MiB CPU + %.1f MiB GPU\n",
-                      view.name, size.c_str(), median, ms.front(), ms.back(), ts.tiles,
-                      static_cast<double>(ts.cpuBytes) / 1048576.0,
-                      static_cast<double>(ts.gpuBytes) / 1048576.0);
+        for (std::size_t k = 0; k < renderers.size(); ++k) {
+          std::vector<double>& t = ms[k];
+          std::sort(t.begin(), t.end());
+          const double median = t[t.size() / 2];
+          const render::TerrainStats& ts = renderers[k]->terrain().stats();
+          report["cases"].push_back({{"view", view.name}, {"size", size},
+                                     {"samples", renderers[k]->samples()}, {"median_ms", median},
+                                     {"min_ms", t.front()}, {"max_ms", t.back()},
+                                     {"frames", t.size()}, {"terrain_tiles", ts.tiles},
+                                     {"terrain_cpu_bytes", ts.cpuBytes},
+                                     {"terrain_gpu_bytes", ts.gpuBytes}});
+          if (!o->json)
+            std::printf("%-16s %10s %7d %7.2fms %7.2fms %7.2fms  terrain %d tiles, %.1f MiB CPU + %.1f MiB GPU\n",
+                        view.name, size.c_str(), renderers[k]->samples(), median, t.front(),
+                        t.back(), ts.tiles, static_cast<double>(ts.cpuBytes) / 1048576.0,
+                        static_cast<double>(ts.gpuBytes) / 1048576.0);
+        }
       }
     }
     for (const auto& view : benchViews())

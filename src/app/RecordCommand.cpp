@@ -241,6 +241,7 @@ RecordResult runRecording(const RecordJob& job) {
     frame.exposure = scene.exposure;
     frame.width = scene.width;
     frame.height = scene.height;
+    frame.samples = scene.samples;
     frame.simulationTimeS = scene.simulationTimeS + t;
     frame.waveSeed = scene.waveSeed;
     renderer.render(frame);
@@ -288,7 +289,8 @@ RecordResult runRecording(const RecordJob& job) {
 }
 
 int benchRecord(const std::string& pathFile, const std::vector<std::pair<int, int>>& sizes,
-                int frames, const std::string& glBackend, bool json) {
+                int frames, const std::string& glBackend, const std::vector<int>& samples,
+                bool json) {
   RecordJob job;
   job.path = io::readCameraPath(pathFile);
   job.scene = job.path.scene;
@@ -306,37 +308,40 @@ int benchRecord(const std::string& pathFile, const std::vector<std::pair<int, in
   nlohmann::json report;
   if (!json)
     std::printf("oceanglobe bench --record %s (every %lld. of %lld frames, preset %s, crf %d)\n"
-                "%10s %7s %14s %16s %10s\n",
+                "%10s %7s %7s %14s %16s %10s\n",
                 pathFile.c_str(), static_cast<long long>(job.stride), static_cast<long long>(total),
-                job.preset.c_str(), job.crf, "size", "frames", "render fps", "render+mp4 fps",
-                "ratio");
+                job.preset.c_str(), job.crf, "size", "samples", "frames", "render fps",
+                "render+mp4 fps", "ratio");
   for (const auto& [w, h] : sizes) {
-    job.scene.width = w;
-    job.scene.height = h;
-    job.output.clear();
-    const RecordResult renderOnly = runRecording(job);
-    job.output = mp4.string();
-    RecordResult withVideo;
-    try {
-      withVideo = runRecording(job);
-    } catch (...) {
+    for (const int count : samples) {
+      job.scene.samples = count;
+      job.scene.width = w;
+      job.scene.height = h;
+      job.output.clear();
+      const RecordResult renderOnly = runRecording(job);
+      job.output = mp4.string();
+      RecordResult withVideo;
+      try {
+        withVideo = runRecording(job);
+      } catch (...) {
+        std::error_code ignored;
+        fs::remove(mp4, ignored);
+        throw;
+      }
       std::error_code ignored;
       fs::remove(mp4, ignored);
-      throw;
+      const double n = static_cast<double>(withVideo.rendered);
+      const double renderFps = n / renderOnly.wallS, videoFps = n / withVideo.wallS;
+      // ratio 100 %: encoding entirely hidden behind rendering (it runs on its own thread).
+      const std::string size = std::to_string(w) + "x" + std::to_string(h);
+      report["record"].push_back({{"path", pathFile}, {"size", size}, {"samples", count},
+                                  {"frames", withVideo.rendered}, {"render_fps", renderFps},
+                                  {"render_encode_fps", videoFps}, {"renderer", withVideo.glRenderer}});
+      if (!json)
+        std::printf("%10s %7d %7lld %14.2f %16.2f %9.0f%%\n", size.c_str(), count,
+                    static_cast<long long>(withVideo.rendered), renderFps, videoFps,
+                    100.0 * videoFps / renderFps);
     }
-    std::error_code ignored;
-    fs::remove(mp4, ignored);
-    const double n = static_cast<double>(withVideo.rendered);
-    const double renderFps = n / renderOnly.wallS, videoFps = n / withVideo.wallS;
-    // ratio 100 %: encoding entirely hidden behind rendering (it runs on its own thread).
-    const std::string size = std::to_string(w) + "x" + std::to_string(h);
-    report["record"].push_back({{"path", pathFile}, {"size", size}, {"frames", withVideo.rendered},
-                                {"render_fps", renderFps}, {"render_encode_fps", videoFps},
-                                {"renderer", withVideo.glRenderer}});
-    if (!json)
-      std::printf("%10s %7lld %14.2f %16.2f %9.0f%%\n", size.c_str(),
-                  static_cast<long long>(withVideo.rendered), renderFps, videoFps,
-                  100.0 * videoFps / renderFps);
   }
   if (json) std::printf("%s\n", report.dump(2).c_str());
   return static_cast<int>(kExitOk);

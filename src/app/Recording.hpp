@@ -38,10 +38,11 @@ struct RecordResult {
 /// Frames in a path of `durationS` seconds at `fps`: both ends included (t = 0 ... duration).
 std::int64_t frameCount(double durationS, double fps);
 
-/// `oceanglobe bench --record PATH`: frames/s of the path at each size, rendering only and
-/// rendering + MP4 encoding, `frames` frames sampled evenly along the flight.
+/// `oceanglobe bench --record PATH`: frames/s of the path at each size and sample count,
+/// rendering only and rendering + MP4 encoding, `frames` frames sampled evenly along the flight.
 int benchRecord(const std::string& pathFile, const std::vector<std::pair<int, int>>& sizes,
-                int frames, const std::string& glBackend, bool json);
+                int frames, const std::string& glBackend, const std::vector<int>& samples,
+                bool json);
 
 /// Runs the job. Throws og::InputError for bad output names or ranges (before rendering).
 RecordResult runRecording(const RecordJob& job);

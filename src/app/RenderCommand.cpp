@@ -65,6 +65,7 @@ Run addRenderCommand(CLI::App& parent) {
     frame.exposure = scene.exposure;
     frame.width = scene.width;
     frame.height = scene.height;
+    frame.samples = scene.samples;
     frame.oceanModel = oceanModelOf(scene);
     frame.windSpeedMs = scene.windSpeedMs;
     frame.windDirectionDeg = windTowardsDeg(scene);

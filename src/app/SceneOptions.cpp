@@ -3,9 +3,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <optional>
+#include <string>
 
 #include "core/Error.hpp"
 #include "geo/Sun.hpp"
+#include "render/GlobeRenderer.hpp"
 
 namespace og::app {
 namespace {
@@ -31,6 +33,8 @@ void SceneOptions::add(CLI::App& cmd) {
   cmd.add_option("--fov", c.verticalFovDeg, "vertical field of view, degrees");
   cmd.add_option("--width", flags_.width, "image width, pixels");
   cmd.add_option("--height", flags_.height, "image height, pixels");
+  cmd.add_option("--samples", flags_.samples,
+                 "samples per pixel for anti-aliased edges: 1, 2, 4 (default) or 8");
   auto* time = cmd.add_option("--time", time_, "UTC time (ISO 8601) that places the Sun");
   auto* el = cmd.add_option("--sun-elevation", sunElevation_,
                             "Sun elevation at the point under the camera, degrees");
@@ -66,6 +70,11 @@ io::SceneSettings SceneOptions::resolve(io::SceneSettings s) const {
   if (given("--fov")) c.verticalFovDeg = f.verticalFovDeg;
   if (given("--width")) s.width = flags_.width;
   if (given("--height")) s.height = flags_.height;
+  if (given("--samples")) {
+    if (!render::isValidSampleCount(flags_.samples))
+      throw InputError("--samples: expected 1, 2, 4 or 8, got " + std::to_string(flags_.samples));
+    s.samples = flags_.samples;
+  }
   if (given("--exposure")) s.exposure = flags_.exposure;
   if (given("--gl")) s.glBackend = flags_.glBackend;
   if (given("--ocean")) s.oceanModel = flags_.oceanModel;

@@ -14,8 +14,8 @@ namespace og::app {
 
 class SceneOptions {
  public:
-  /// Registers --lat --lon --alt --heading --pitch --roll --fov --width --height --time
-  /// --sun-elevation --sun-azimuth --exposure --gl --ocean --wind --wind-layer
+  /// Registers --lat --lon --alt --heading --pitch --roll --fov --width --height --samples
+  /// --time --sun-elevation --sun-azimuth --exposure --gl --ocean --wind --wind-layer
   /// --elevation-layer --config on `cmd`.
   void add(CLI::App& cmd);
   /// `base` (defaults, or e.g. a camera path's scene), then --config FILE, then the flags

@@ -366,6 +366,7 @@ class Viewer {
     frame.exposure = scene_.exposure;
     frame.width = width;
     frame.height = height;
+    frame.samples = scene_.samples;
     frame.simulationTimeS = wallS_;
     frame.oceanModel = oceanModel_;
     frame.windSpeedMs = std::clamp(std::hypot(wind.uMs, wind.vMs), 0.0, 50.0);

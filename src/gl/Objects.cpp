@@ -1,5 +1,6 @@
 #include "gl/Objects.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -47,22 +48,39 @@ Query createQuery(GLenum target) {
   return Query(id);
 }
 
-RenderTarget createRenderTarget(int width, int height, GLenum colorFormat, bool withDepth) {
+RenderTarget createRenderTarget(int width, int height, GLenum colorFormat, bool withDepth,
+                                int samples) {
   RenderTarget t;
   t.width = width;
   t.height = height;
   t.fbo = createFramebuffer();
-  t.color = createTexture(GL_TEXTURE_2D);
-  glTextureStorage2D(t.color.id(), 1, colorFormat, width, height);
-  glTextureParameteri(t.color.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(t.color.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(t.color.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(t.color.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  const bool multisample = samples > 1;
+  // Fixed sample locations: colour and depth must agree for the framebuffer to be complete.
+  auto storage = [&](const Texture& tex, GLenum format) {
+    if (multisample)
+      glTextureStorage2DMultisample(tex.id(), samples, format, width, height, GL_TRUE);
+    else
+      glTextureStorage2D(tex.id(), 1, format, width, height);
+  };
+  const GLenum target = multisample ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
+  t.color = createTexture(target);
+  storage(t.color, colorFormat);
+  if (!multisample) {  // multisample textures have no sampler state
+    glTextureParameteri(t.color.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(t.color.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(t.color.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t.color.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
   glNamedFramebufferTexture(t.fbo.id(), GL_COLOR_ATTACHMENT0, t.color.id(), 0);
   if (withDepth) {
-    t.depth = createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(t.depth.id(), 1, GL_DEPTH_COMPONENT32F, width, height);
+    t.depth = createTexture(target);
+    storage(t.depth, GL_DEPTH_COMPONENT32F);
     glNamedFramebufferTexture(t.fbo.id(), GL_DEPTH_ATTACHMENT, t.depth.id(), 0);
+  }
+  if (multisample) {
+    GLint allocated = 0;
+    glGetTextureLevelParameteriv(t.color.id(), 0, GL_TEXTURE_SAMPLES, &allocated);
+    t.samples = static_cast<int>(allocated);
   }
   const GLenum status = glCheckNamedFramebufferStatus(t.fbo.id(), GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
@@ -71,6 +89,24 @@ RenderTarget createRenderTarget(int width, int height, GLenum colorFormat, bool 
     throw InternalError(buf);
   }
   return t;
+}
+
+int maxSamples(GLenum colorFormat) {
+  GLint limit = 1;
+  glGetIntegerv(GL_MAX_SAMPLES, &limit);
+  for (const GLenum pname : {GL_MAX_COLOR_TEXTURE_SAMPLES, GL_MAX_DEPTH_TEXTURE_SAMPLES}) {
+    GLint v = 1;
+    glGetIntegerv(pname, &v);
+    limit = std::min(limit, v);
+  }
+  // Per format: float formats may allow fewer samples than the global limits.
+  for (const GLenum format : {colorFormat, static_cast<GLenum>(GL_DEPTH_COMPONENT32F)}) {
+    GLint counts = 0, highest = 1;
+    glGetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, format, GL_NUM_SAMPLE_COUNTS, 1, &counts);
+    if (counts > 0) glGetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, format, GL_SAMPLES, 1, &highest);
+    limit = std::min(limit, highest);  // counts come highest first
+  }
+  return std::max(limit, 1);
 }
 
 void checkErrors(const char* where) {

@@ -60,18 +60,26 @@ Renderbuffer createRenderbuffer();
 Query createQuery(GLenum target);
 
 /// An off-screen render target: one colour texture and a 32-bit float depth texture
-/// (reversed-Z: clear to 0, GL_GREATER).
+/// (reversed-Z: clear to 0, GL_GREATER). With samples > 1 both are multisample textures
+/// (GL_TEXTURE_2D_MULTISAMPLE); `samples` is then the count the driver allocated, which may
+/// exceed the one asked for.
 struct RenderTarget {
   Framebuffer fbo;
   Texture color;
   Texture depth;
   int width = 0;
   int height = 0;
+  int samples = 1;
 };
 
-/// colorFormat e.g. GL_RGBA32F (HDR radiance) or GL_RGBA8 (display). Throws
-/// og::InternalError if the framebuffer is incomplete.
-RenderTarget createRenderTarget(int width, int height, GLenum colorFormat, bool withDepth);
+/// colorFormat e.g. GL_RGBA32F (HDR radiance) or GL_RGBA8 (display). samples must not exceed
+/// maxSamples(colorFormat). Throws og::InternalError if the framebuffer is incomplete.
+RenderTarget createRenderTarget(int width, int height, GLenum colorFormat, bool withDepth,
+                                int samples = 1);
+
+/// The most samples a multisample render target of this colour format (with a 32-bit float
+/// depth texture) can have on the current context; 1 without multisampling.
+int maxSamples(GLenum colorFormat);
 
 /// Throws og::InternalError naming `where` if glGetError reports an error.
 void checkErrors(const char* where);

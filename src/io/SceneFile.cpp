@@ -6,6 +6,7 @@
 #include <functional>
 #include <map>
 #include <set>
+#include <string>
 
 #include "core/Error.hpp"
 
@@ -41,6 +42,9 @@ glm::dvec3 triple(const std::filesystem::path& file, const toml::node& n, const 
   for (int i = 0; i < 3; ++i) v[i] = number(file, *a->get(static_cast<std::size_t>(i)), key);
   return v;
 }
+
+// Multisampling counts the renderer takes (render::isValidSampleCount; io sits below render).
+bool validSamples(std::int64_t n) { return n == 1 || n == 2 || n == 4 || n == 8; }
 
 std::string text(const std::filesystem::path& file, const toml::node& n, const std::string& key) {
   if (auto v = n.value<std::string>(); v && n.is_string()) return *v;
@@ -91,7 +95,14 @@ SceneSettings readSceneFile(const std::filesystem::path& file, SceneSettings s) 
       {"image",
        {{"width", [&](const toml::node& n, const std::string& k) { s.width = integer(file, n, k); }},
         {"height", [&](const toml::node& n, const std::string& k) { s.height = integer(file, n, k); }},
-        {"exposure", num(s.exposure)}}},
+        {"exposure", num(s.exposure)},
+        {"samples",
+         [&](const toml::node& n, const std::string& k) {
+           const auto v = n.value<std::int64_t>();
+           if (!n.is_integer() || !v || !validSamples(*v))
+             throw InputError(where(file, n.source()) + "'" + k + "' must be 1, 2, 4 or 8");
+           s.samples = static_cast<int>(*v);
+         }}}},
       {"ocean",
        {{"model",
          [&](const toml::node& n, const std::string& k) { s.oceanModel = text(file, n, k); }},
@@ -168,6 +179,8 @@ void validateScene(const SceneSettings& s, const std::string& origin) {
     throw InputError(prefix + "image size must be within [1, 16384] pixels");
   if (!std::isfinite(s.exposure) || s.exposure <= 0.0 || s.exposure > 1e9)
     throw InputError(prefix + "exposure must be a positive finite number");
+  if (!validSamples(s.samples))
+    throw InputError(prefix + "samples per pixel must be 1, 2, 4 or 8, not " + std::to_string(s.samples));
   if (s.time && (s.sunElevationDeg || s.sunAzimuthDeg))
     throw InputError(prefix + "give either a time or Sun elevation/azimuth, not both");
   if (s.sunElevationDeg && (!std::isfinite(*s.sunElevationDeg) || std::abs(*s.sunElevationDeg) > 90.0))

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <utility>
 
 #include "core/Error.hpp"
+#include "core/Log.hpp"
 #include "gl/Readback.hpp"
 
 namespace og::render {
@@ -26,6 +28,9 @@ GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
               {GL_FRAGMENT_SHADER, "render/globe.frag"}}),
       tonemap_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
                 {GL_FRAGMENT_SHADER, "render/tonemap.frag"}}),
+      tonemapMs_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
+                  {GL_FRAGMENT_SHADER, "render/tonemap.frag"}},
+                 {"TONEMAP_MULTISAMPLE"}),
       emptyVao_(gl::createVertexArray()),
       ocean_(std::make_unique<OceanRenderer>(atmosphere_.get())),
       wind_(std::make_unique<WindTextures>()) {
@@ -51,13 +56,43 @@ GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
   elevationWraps_ = elevation.wrapsLongitude ? 1 : 0;
   ocean_->setElevationLayer(elevationMap_, elevationSize_, elevationWraps_);
   terrain_ = std::make_unique<TerrainRenderer>(elevation, atmosphere_.get());
+  maxSamples_ = gl::maxSamples(GL_RGBA32F);
   gl::checkErrors("GlobeRenderer setup");
 }
 
-void GlobeRenderer::ensureTargets(int width, int height) {
-  if (hdr_.width == width && hdr_.height == height) return;
-  hdr_ = gl::createRenderTarget(width, height, GL_RGBA32F, true);
+void GlobeRenderer::ensureTargets(int width, int height, int requested) {
+  if (hdr_.width == width && hdr_.height == height && requestedSamples_ == requested) return;
+  if (!isValidSampleCount(requested))
+    throw InternalError("FrameInput::samples must be 1, 2, 4 or 8, not " + std::to_string(requested));
+  const int samples = std::min(requested, maxSamples_);
+  if (samples < requested && warnedSamples_ != requested) {
+    log::warn(std::to_string(requested) + " samples per pixel asked for, but this OpenGL device "
+              "offers at most " + std::to_string(maxSamples_) + ": using " + std::to_string(samples));
+    warnedSamples_ = requested;
+  }
+  hdr_ = gl::createRenderTarget(width, height, GL_RGBA32F, true, samples);
   ldr_ = gl::createRenderTarget(width, height, GL_RGBA8, false);
+  resolved_ = {};
+  requestedSamples_ = requested;
+  if (hdr_.samples != samples)
+    log::info("the OpenGL device made " + std::to_string(hdr_.samples) + " samples per pixel of " +
+              std::to_string(samples) + " asked for");
+}
+
+const gl::RenderTarget& GlobeRenderer::singleSampleHdr() const {
+  if (hdr_.samples == 1) return hdr_;
+  if (!resolvedCurrent_) {
+    if (resolved_.width != hdr_.width || resolved_.height != hdr_.height)
+      resolved_ = gl::createRenderTarget(hdr_.width, hdr_.height, GL_RGBA32F, true);
+    // Colour: the mean of the samples, linear (the radiance an EXR should hold). Depth must
+    // use GL_NEAREST; GL leaves its resolve to the driver (a value between the samples').
+    glBlitNamedFramebuffer(hdr_.fbo.id(), resolved_.fbo.id(), 0, 0, hdr_.width, hdr_.height, 0,
+                           0, hdr_.width, hdr_.height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT,
+                           GL_NEAREST);
+    gl::checkErrors("GlobeRenderer resolve");
+    resolvedCurrent_ = true;
+  }
+  return resolved_;
 }
 
 const ocean::WaveSet& GlobeRenderer::waveSetFor(double windSpeedMs, double windDirectionDeg,
@@ -74,7 +109,8 @@ const ocean::WaveSet& GlobeRenderer::waveSetFor(double windSpeedMs, double windD
 }
 
 void GlobeRenderer::render(const FrameInput& f) {
-  ensureTargets(f.width, f.height);
+  ensureTargets(f.width, f.height, f.samples);
+  resolvedCurrent_ = false;
   const geo::CameraView view = geo::makeCameraView(f.camera, f.width, f.height);
 
   // Eye in the ellipsoid's scaled space; C = |o|² - 1 in double (see geo/ellipsoid.glsl).
@@ -154,16 +190,18 @@ void GlobeRenderer::render(const FrameInput& f) {
 
   glDisable(GL_DEPTH_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, ldr_.fbo.id());
-  tonemap_.set("uExposure", static_cast<float>(f.exposure));
+  const gl::Program& tonemap = hdr_.samples > 1 ? tonemapMs_ : tonemap_;
+  tonemap.set("uExposure", static_cast<float>(f.exposure));
   glBindTextureUnit(0, hdr_.color.id());
-  tonemap_.use();
+  tonemap.use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   gl::checkErrors("GlobeRenderer::render");
 }
 
 io::ImageRgbaF GlobeRenderer::radiance() const {
-  return {hdr_.width, hdr_.height, gl::readRgbaF(hdr_.fbo.id(), hdr_.width, hdr_.height)};
+  const gl::RenderTarget& t = singleSampleHdr();
+  return {t.width, t.height, gl::readRgbaF(t.fbo.id(), t.width, t.height)};
 }
 
 io::ImageRgba8 GlobeRenderer::display() const {
@@ -171,7 +209,8 @@ io::ImageRgba8 GlobeRenderer::display() const {
 }
 
 std::vector<float> GlobeRenderer::depth() const {
-  return gl::readDepth(hdr_.fbo.id(), hdr_.width, hdr_.height);
+  const gl::RenderTarget& t = singleSampleHdr();
+  return gl::readDepth(t.fbo.id(), t.width, t.height);
 }
 
 void GlobeRenderer::finish() { glFinish(); }

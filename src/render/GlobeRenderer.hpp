@@ -1,6 +1,7 @@
 #pragma once
 // Renders one frame of the globe into off-screen targets: an HDR radiance target (linear,
-// float, alpha = coverage, reversed-Z depth) and a display target (tone-mapped sRGB, 8-bit).
+// float, alpha = coverage, reversed-Z depth; multisampled) and a display target (tone-mapped
+// sRGB, 8-bit).
 #include <glm/glm.hpp>
 
 #include <memory>
@@ -41,7 +42,14 @@ struct FrameInput {
   const ocean::OceanFrame* oceanFrame = nullptr;
   int oceanCellPixels = 8;         ///< projected-grid cell size, pixels
   std::uint64_t waveSeed = 1;      ///< wave directions and phases
+  /// Samples per pixel of the HDR target: 1, 2, 4 or 8 (clamped, with a warning, to what the
+  /// GL device offers). Shaders still run once per pixel; the extra samples anti-alias the
+  /// edges of triangles and of the depth test (terrain silhouettes, shorelines).
+  int samples = 4;
 };
+
+/// The sample counts FrameInput::samples accepts.
+[[nodiscard]] constexpr bool isValidSampleCount(int n) { return n == 1 || n == 2 || n == 4 || n == 8; }
 
 /// Below this camera height the sea is the projected grid with waves; above, the ellipsoid with
 /// the BRDF of the whole slope distribution. The grid's waves fade out towards it
@@ -68,10 +76,14 @@ class GlobeRenderer {
   /// Draws a frame into the internal targets (resized as needed).
   void render(const FrameInput& frame);
 
-  /// Results of the last render().
+  /// Results of the last render(). With multisampling, radiance is the mean of each pixel's
+  /// samples and depth one sample's value (the driver's resolve).
   [[nodiscard]] io::ImageRgbaF radiance() const;
   [[nodiscard]] io::ImageRgba8 display() const;
   [[nodiscard]] std::vector<float> depth() const;
+
+  /// Samples per pixel of the last render() (after clamping; the driver may round up).
+  [[nodiscard]] int samples() const { return hdr_.samples; }
 
   /// The tone-mapped display target of the last render() (for blitting to a window).
   [[nodiscard]] GLuint displayFramebuffer() const { return ldr_.fbo.id(); }
@@ -84,12 +96,16 @@ class GlobeRenderer {
   TerrainRenderer& terrain() { return *terrain_; }
 
  private:
-  void ensureTargets(int width, int height);
+  void ensureTargets(int width, int height, int samples);
+  /// The HDR target, resolved to one sample per pixel when multisampled (on first use after
+  /// each render()).
+  const gl::RenderTarget& singleSampleHdr() const;
   const ocean::WaveSet& waveSetFor(double windSpeedMs, double windDirectionDeg, std::uint64_t seed);
 
   std::shared_ptr<const Atmosphere> atmosphere_;
   gl::Program globe_;
   gl::Program tonemap_;
+  gl::Program tonemapMs_;  ///< per-sample tone mapping of a multisampled target
   gl::VertexArray emptyVao_;
   gl::Texture elevation_;
   glm::vec4 elevationMap_{};
@@ -101,6 +117,11 @@ class GlobeRenderer {
   ocean::WaveSet waves_;
   gl::RenderTarget hdr_;
   gl::RenderTarget ldr_;
+  int maxSamples_ = 1;        ///< what the device offers for the HDR target
+  int requestedSamples_ = 0;  ///< FrameInput::samples that hdr_ was made for
+  int warnedSamples_ = 0;     ///< the request last warned about (once, not every resize)
+  mutable gl::RenderTarget resolved_;  ///< hdr_ resolved, for read-back
+  mutable bool resolvedCurrent_ = false;
 };
 
 }  // namespace og::render

@@ -108,6 +108,8 @@ TEST(Cli, BadInputExitsTwoWithOneLineAndNoFile) {
       {"render --wind 5,abc -o " + out, "--wind"},
       {"render --wind 80 -o " + out, "wind speed"},
       {"render --ocean fancy -o " + out, "ocean model"},
+      {"render --samples 3 -o " + out, "--samples: expected 1, 2, 4 or 8, got 3"},
+      {"render --samples 0 -o " + out, "--samples"},
       {"render --lat abc -o " + out, "--lat"},
       {"render --no-such-flag -o " + out, "no-such-flag"},
       {"render", "--output"},
@@ -117,6 +119,7 @@ TEST(Cli, BadInputExitsTwoWithOneLineAndNoFile) {
       {"render --config " + (dir / "none.toml").string() + " -o " + out, "none.toml"},
       {"frobnicate", ""},
       {"bench --size 0x7", "--size"},
+      {"bench --samples 3", "--samples"},
   };
   for (const auto& [args, needle] : cases) {
     const RunResult r = run(args);
@@ -131,6 +134,7 @@ TEST(Cli, ConfigFileIsReadAndFlagsOverrideIt) {
   const fs::path dir = scratch();
   std::ofstream(dir / "scene.toml") << "[camera]\nlatitude_deg = 10\nlongitude_deg = -30\n"
                                        "height_m = 2.0e7\n[image]\nwidth = 96\nheight = 64\n"
+                                       "samples = 2\n"
                                        "[sun]\nelevation_deg = 40\nazimuth_deg = 120\n";
   RunResult r = run("render --config " + (dir / "scene.toml").string() + " --width 80 -o " +
                     (dir / "a.png").string());
@@ -148,6 +152,11 @@ TEST(Cli, ConfigFileIsReadAndFlagsOverrideIt) {
   r = run("render --config " + (dir / "type.toml").string() + " -o " + (dir / "b.png").string());
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("type.toml:2: 'width' must be an integer"), std::string::npos) << r.err;
+
+  std::ofstream(dir / "samples.toml") << "[image]\nwidth = 64\nsamples = 3\n";
+  r = run("render --config " + (dir / "samples.toml").string() + " -o " + (dir / "b.png").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("samples.toml:3: 'samples' must be 1, 2, 4 or 8"), std::string::npos) << r.err;
 
   std::ofstream(dir / "syntax.toml") << "[camera\nlatitude_deg = 1\n";
   r = run("render --config " + (dir / "syntax.toml").string() + " -o " + (dir / "b.png").string());

@@ -215,6 +215,7 @@ TEST(Record, BadInputExitsTwoWithFileAndLine) {
       {"record " + good.string() + " --lat 3 -o " + (dir / "a.mp4").string(), "--lat"},
       {"record " + good.string() + " -o " + (dir / "missing" / "a.mp4").string(), "does not exist"},
       {"record " + good.string() + " --crf 60 -o " + (dir / "a.mp4").string(), "--crf"},
+      {"record " + good.string() + " --samples 3 -o " + (dir / "a.mp4").string(), "--samples"},
   };
   for (const auto& [args, needle] : cases) {
     const RunResult r = run(args);

@@ -1,0 +1,264 @@
+// GL tier: multisampling of the HDR target. A ridge seen against the sky from below its top:
+// with 4 samples the silhouette's pixels are partly covered (alpha and colour between sky
+// and ground), with 1 sample they step from sky to ground.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "core/Error.hpp"
+#include "geo/Sun.hpp"
+#include "gl/Context.hpp"
+#include "gl/Readback.hpp"
+#include "gl/Shader.hpp"
+#include "io/Image.hpp"
+#include "render/GlobeRenderer.hpp"
+
+using namespace og;
+
+namespace {
+
+// Global 0.25° layer: lowland at 300 m and a 5000 m ridge along 0.375° N from 2° W to 2° E
+// (one row of cells: a crest, jagged by the procedural detail).
+data::LatLonGrid ridge() {
+  data::LatLonGrid g;
+  g.name = "ridge";
+  g.width = 1440;
+  g.height = 720;
+  g.lon0Deg = -179.875;
+  g.lat0Deg = -89.875;
+  g.dLonDeg = g.dLatDeg = 0.25;
+  g.wrapsLongitude = true;
+  for (int r = 0; r < g.height; ++r)
+    for (int c = 0; c < g.width; ++c) {
+      const double lat = g.lat0Deg + r * g.dLatDeg, lon = g.lon0Deg + c * g.dLonDeg;
+      const bool onRidge = lat > 0.3 && lat < 0.45 && std::abs(lon) < 2.0;
+      g.values.push_back(onRidge ? 5000.0f : 300.0f);
+    }
+  return g;
+}
+
+// Looking north at the crest from 2500 m, 30 km south of it; the Sun low behind it and off
+// to the side, so the face towards the camera is dark against a bright sky.
+render::FrameInput ridgeView(int samples) {
+  render::FrameInput f;
+  f.camera.position = {0.1, 0.0, 2500.0};
+  f.camera.headingDeg = 0.0;
+  f.camera.pitchDeg = 4.0;
+  f.camera.rollDeg = 5.0;  // the skyline crosses the pixel rows: a staircase without AA
+  f.camera.verticalFovDeg = 30.0;
+  f.width = 192;
+  f.height = 128;
+  f.samples = samples;
+  f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 8.0, 40.0);
+  return f;
+}
+
+struct Silhouette {
+  int columns = 0;           ///< columns with sky above ground
+  int partlyCovered = 0;     ///< of which the first non-sky pixel has coverage in (0, 1)
+  int contrasted = 0;        ///< columns where sky and ground differ enough on screen
+  int blendedOnScreen = 0;   ///< of which the silhouette pixel lies strictly between them
+};
+
+double luminance(const io::ImageRgba8& img, int x, int y) {
+  const std::uint8_t* p = &img.pixels[4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) +
+                                           static_cast<std::size_t>(x))];
+  return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+}
+
+// Per column, top down: the first pixel with any coverage (alpha, linear resolve) is the
+// silhouette; compared with the last sky pixel above it and the first fully covered below.
+Silhouette measure(const io::ImageRgbaF& radiance, const io::ImageRgba8& display) {
+  const int w = radiance.width, h = radiance.height;
+  auto alpha = [&](int x, int y) {
+    return radiance.pixels[4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
+                                static_cast<std::size_t>(x)) + 3];
+  };
+  Silhouette s;
+  for (int x = 0; x < w; ++x) {
+    int y = 0;
+    while (y < h && alpha(x, y) <= 0.01f) ++y;
+    if (y == 0 || y >= h - 6) continue;
+    int ground = y;
+    while (ground < y + 3 && alpha(x, ground) < 0.99f) ++ground;
+    if (alpha(x, ground) < 0.99f) continue;
+    ++s.columns;
+    if (alpha(x, y) < 0.99f) ++s.partlyCovered;
+    // The ground's value nearest the sky's among its first rows (the crest itself is hazier
+    // than the face below it): an edge pixel must lie beyond it, not just inside a gradient.
+    const double sky = luminance(display, x, y - 1), edge = luminance(display, x, y);
+    double below = luminance(display, x, ground);
+    for (int r = ground + 1; r <= ground + 2; ++r)
+      if (std::abs(sky - luminance(display, x, r)) < std::abs(sky - below)) below = luminance(display, x, r);
+    const double step = std::abs(sky - below);
+    if (step < 20.0) continue;
+    ++s.contrasted;
+    const double lo = std::min(sky, below) + 0.1 * step, hi = std::max(sky, below) - 0.1 * step;
+    if (edge > lo && edge < hi) ++s.blendedOnScreen;
+  }
+  return s;
+}
+
+}  // namespace
+
+TEST(Multisampling, SilhouetteAgainstTheSkyIsBlendedWithFourSamples) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(ridge());
+  Silhouette s[2];
+  io::ImageRgba8 images[2];
+  const int counts[2] = {1, 4};
+  for (int k = 0; k < 2; ++k) {
+    r.render(ridgeView(counts[k]));
+    ASSERT_EQ(r.samples(), counts[k]) << "this GL device offers fewer samples";
+    images[k] = r.display();
+    io::writePng(std::string(OG_TEST_OUT_DIR) + "/msaa_ridge_" + std::to_string(counts[k]) + ".png",
+                 images[k]);
+    s[k] = measure(r.radiance(), images[k]);
+    std::printf("%d sample(s): %d silhouette columns, %d partly covered; %d with contrast, %d "
+                "blended on screen\n",
+                counts[k], s[k].columns, s[k].partlyCovered, s[k].contrasted, s[k].blendedOnScreen);
+  }
+  const int w = images[0].width;
+  // Both views must find the skyline across (nearly) the whole image.
+  for (const Silhouette& x : s) {
+    ASSERT_GE(x.columns, w * 9 / 10);
+    ASSERT_GE(x.contrasted, w / 2);
+  }
+  // One sample: coverage is all or nothing, the colour steps from sky to ground.
+  EXPECT_LE(s[0].partlyCovered, w / 20);
+  EXPECT_LE(s[0].blendedOnScreen, s[0].contrasted / 10);
+  // Four samples: most silhouette pixels are partly covered (an edge misses all four only
+  // within a quarter of a pixel of the pixel's border), in the linear resolve and on screen.
+  EXPECT_GE(s[1].partlyCovered, s[1].columns / 2);
+  EXPECT_GE(s[1].blendedOnScreen, s[1].contrasted / 2);
+}
+
+// The extra samples change edges only: away from them both images agree, and sky pixels
+// (one value in every sample) are identical after the per-sample tone mapping.
+TEST(Multisampling, InteriorsMatchOneSampleAndDepthReadsBack) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(ridge());
+  r.render(ridgeView(1));
+  const io::ImageRgba8 one = r.display();
+  const io::ImageRgbaF oneRadiance = r.radiance();
+  r.render(ridgeView(4));
+  const io::ImageRgba8 four = r.display();
+  const io::ImageRgbaF fourRadiance = r.radiance();
+  const std::vector<float> depth = r.depth();
+  const int w = one.width, h = one.height;
+  ASSERT_EQ(depth.size(), static_cast<std::size_t>(w * h));
+
+  auto alphaAt = [&](const io::ImageRgbaF& img, int x, int y) {
+    return img.pixels[4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
+                           static_cast<std::size_t>(x)) + 3];
+  };
+  int sky = 0, ground = 0, skyDiffer = 0, groundOver2 = 0;
+  for (int y = 1; y + 1 < h; ++y)
+    for (int x = 1; x + 1 < w; ++x) {
+      // Interior: the 3x3 neighbourhood wholly sky or wholly covered in both renders.
+      float lo = 1.0f, hi = 0.0f;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+          for (const io::ImageRgbaF* img : {&oneRadiance, &fourRadiance}) {
+            lo = std::min(lo, alphaAt(*img, x + dx, y + dy));
+            hi = std::max(hi, alphaAt(*img, x + dx, y + dy));
+          }
+      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
+                            static_cast<std::size_t>(x);
+      int diff = 0;
+      for (std::size_t c = 0; c < 3; ++c)
+        diff = std::max(diff, std::abs(int(one.pixels[4 * i + c]) - int(four.pixels[4 * i + c])));
+      if (hi == 0.0f) {
+        ++sky;
+        skyDiffer += diff > 0 ? 1 : 0;
+        EXPECT_EQ(depth[i], 0.0f) << x << "," << y;
+      } else if (lo == 1.0f) {
+        ++ground;
+        groundOver2 += diff > 2 ? 1 : 0;
+        EXPECT_GT(depth[i], 0.0f) << x << "," << y;
+      }
+    }
+  ASSERT_GT(sky, w * h / 10);
+  ASSERT_GT(ground, w * h / 10);
+  EXPECT_EQ(skyDiffer, 0);
+  // Inside the ground, triangle edges between tiles and skirts may still shift a little.
+  EXPECT_LE(groundOver2, ground / 100) << groundOver2 << " of " << ground;
+}
+
+TEST(Multisampling, UnavailableCountsAreClampedAndInvalidOnesRefused) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(ridge());
+  render::FrameInput f = ridgeView(8);
+  f.width = 32;
+  f.height = 16;
+  r.render(f);  // 8 may exceed the device's limit: clamped with a warning, never an error
+  EXPECT_GE(r.samples(), 1);
+  EXPECT_LE(r.samples(), 8);
+  EXPECT_EQ(r.radiance().pixels.size(), 4u * 32u * 16u);
+  f.samples = 3;
+  EXPECT_THROW(r.render(f), InternalError);
+}
+
+// The display resolve tone-maps each sample, then averages: an edge between a very bright and
+// a dark surface gets intermediate pixels. Averaging the linear radiance first would saturate
+// every partly bright pixel to white (the second render below shows it).
+TEST(Multisampling, ToneMappingIsPerSampleBeforeAveraging) {
+  auto ctx = gl::createHeadlessContext();
+  constexpr int kSize = 32;
+  gl::RenderTarget hdr = gl::createRenderTarget(kSize, kSize, GL_RGBA32F, true, 4);
+  ASSERT_EQ(hdr.samples, 4);
+  gl::RenderTarget linear = gl::createRenderTarget(kSize, kSize, GL_RGBA32F, true);
+  gl::RenderTarget ldr = gl::createRenderTarget(kSize, kSize, GL_RGBA8, false);
+  gl::Program solid({{GL_VERTEX_SHADER, "render/solid.vert"}, {GL_FRAGMENT_SHADER, "render/solid.frag"}});
+  gl::Program perSample({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "render/tonemap.frag"}},
+                        {"TONEMAP_MULTISAMPLE"});
+  gl::Program single({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "render/tonemap.frag"}});
+  gl::VertexArray vao = gl::createVertexArray();
+  glBindVertexArray(vao.id());
+  glViewport(0, 0, kSize, kSize);
+  glDisable(GL_DEPTH_TEST);
+
+  // Dark ground, then a bright triangle whose long edge crosses the image at a slant.
+  const float dark[] = {0.0005f, 0.0005f, 0.0005f, 1.0f};
+  glClearNamedFramebufferfv(hdr.fbo.id(), GL_COLOR, 0, dark);
+  glBindFramebuffer(GL_FRAMEBUFFER, hdr.fbo.id());
+  // solid.vert's triangle at distance 0.5 spans (-1,-1), (3,-1), (-1,3); squeeze and shift it.
+  glm::mat4 m(1.0f);
+  m[0][0] = 0.7f;
+  m[3] = glm::vec4(-0.55f, -0.8f, 0.0f, 1.0f);
+  m[2][2] = 0.0f;
+  solid.set("uViewProjection", m);
+  solid.set("uDistance", 0.5f);
+  solid.set("uColor", glm::vec4(50.0f, 50.0f, 50.0f, 1.0f));
+  solid.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+
+  auto intermediate = [&](GLuint texture, const gl::Program& tonemap) {
+    glBindFramebuffer(GL_FRAMEBUFFER, ldr.fbo.id());
+    tonemap.set("uExposure", 10.0f);
+    glBindTextureUnit(0, texture);
+    tonemap.use();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    const std::vector<std::uint8_t> px = gl::readRgba8(ldr.fbo.id(), kSize, kSize);
+    int n = 0, bright = 0;
+    for (std::size_t i = 0; i < px.size(); i += 4) {
+      n += px[i] > 40 && px[i] < 240 ? 1 : 0;
+      bright += px[i] >= 240 ? 1 : 0;
+    }
+    EXPECT_GT(bright, kSize * kSize / 4);
+    return n;
+  };
+  const int perSampleEdge = intermediate(hdr.color.id(), perSample);
+  glBlitNamedFramebuffer(hdr.fbo.id(), linear.fbo.id(), 0, 0, kSize, kSize, 0, 0, kSize, kSize,
+                         GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  const int linearEdge = intermediate(linear.color.id(), single);
+  gl::checkErrors("tone mapping test");
+  std::printf("edge pixels between dark and white: %d per sample, %d linear resolve\n", perSampleEdge, linearEdge);
+  // The edge crosses ~32 pixel columns; three in four of its pixels are partly covered.
+  EXPECT_GE(perSampleEdge, kSize / 2);
+  EXPECT_LE(linearEdge, 2);
+}
