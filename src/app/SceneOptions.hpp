@@ -29,7 +29,11 @@ class SceneOptions {
   double sunElevation_ = 0, sunAzimuth_ = 0;
   std::string config_;
   std::string wind_;
+  std::string samples_;
 };
+
+/// A --samples value: "auto" (render::kAutoSamples), 1, 2, 4 or 8. Throws og::InputError.
+int parseSampleCount(const std::string& text);
 
 /// Direction to the Sun (ECEF, unit) for a scene: from the almanac at the scene's time, from
 /// the given elevation/azimuth at the point under the camera, or a default afternoon Sun

@@ -109,6 +109,15 @@ int maxSamples(GLenum colorFormat) {
   return std::max(limit, 1);
 }
 
+bool isSoftwareRenderer() {
+  const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (r == nullptr) return false;
+  const std::string name(r);
+  for (const char* cpu : {"llvmpipe", "softpipe", "swrast", "lavapipe"})
+    if (name.find(cpu) != std::string::npos) return true;
+  return false;
+}
+
 void checkErrors(const char* where) {
   const GLenum e = glGetError();
   if (e == GL_NO_ERROR) return;

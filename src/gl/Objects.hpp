@@ -81,6 +81,10 @@ RenderTarget createRenderTarget(int width, int height, GLenum colorFormat, bool 
 /// depth texture) can have on the current context; 1 without multisampling.
 int maxSamples(GLenum colorFormat);
 
+/// Whether the current context renders on the CPU (Mesa's llvmpipe, softpipe, swrast, or
+/// lavapipe underneath Zink), from GL_RENDERER.
+bool isSoftwareRenderer();
+
 /// Throws og::InternalError naming `where` if glGetError reports an error.
 void checkErrors(const char* where);
 

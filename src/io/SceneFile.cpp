@@ -98,9 +98,13 @@ SceneSettings readSceneFile(const std::filesystem::path& file, SceneSettings s) 
         {"exposure", num(s.exposure)},
         {"samples",
          [&](const toml::node& n, const std::string& k) {
+           if (n.is_string() && n.value<std::string>() == "auto") {
+             s.samples = 0;
+             return;
+           }
            const auto v = n.value<std::int64_t>();
            if (!n.is_integer() || !v || !validSamples(*v))
-             throw InputError(where(file, n.source()) + "'" + k + "' must be 1, 2, 4 or 8");
+             throw InputError(where(file, n.source()) + "'" + k + "' must be \"auto\", 1, 2, 4 or 8");
            s.samples = static_cast<int>(*v);
          }}}},
       {"ocean",
@@ -179,8 +183,8 @@ void validateScene(const SceneSettings& s, const std::string& origin) {
     throw InputError(prefix + "image size must be within [1, 16384] pixels");
   if (!std::isfinite(s.exposure) || s.exposure <= 0.0 || s.exposure > 1e9)
     throw InputError(prefix + "exposure must be a positive finite number");
-  if (!validSamples(s.samples))
-    throw InputError(prefix + "samples per pixel must be 1, 2, 4 or 8, not " + std::to_string(s.samples));
+  if (s.samples != 0 && !validSamples(s.samples))
+    throw InputError(prefix + "samples per pixel must be auto, 1, 2, 4 or 8, not " + std::to_string(s.samples));
   if (s.time && (s.sunElevationDeg || s.sunAzimuthDeg))
     throw InputError(prefix + "give either a time or Sun elevation/azimuth, not both");
   if (s.sunElevationDeg && (!std::isfinite(*s.sunElevationDeg) || std::abs(*s.sunElevationDeg) > 90.0))

@@ -3,7 +3,7 @@
 //
 //   [camera]  latitude_deg, longitude_deg, height_m, heading_deg, pitch_deg, roll_deg, fov_deg
 //   [sun]     time = "2024-06-20T12:00:00Z"  |  elevation_deg, azimuth_deg
-//   [image]   width, height, exposure, samples (per pixel: 1, 2, 4 or 8)
+//   [image]   width, height, exposure, samples (per pixel: "auto", 1, 2, 4 or 8)
 //   [ocean]   model = "bruneton" | "classic", wind_speed_ms, wind_direction_deg (from, meteorological),
 //             time_s (wave clock), seed
 //   [layers]  wind = ["FILE[:U,V]", ...] (first is the bottom of the stack), elevation = "FILE[:VAR]"
@@ -33,7 +33,7 @@ struct SceneSettings {
   int width = 512;
   int height = 512;
   double exposure = 6.0;
-  int samples = 4;                        ///< multisampling per pixel: 1, 2, 4 or 8
+  int samples = 0;  ///< multisampling per pixel: 1, 2, 4 or 8; 0 = auto (4 on a GPU, 1 on the CPU)
   std::string glBackend = "auto";
   std::string oceanModel = "bruneton";    ///< "bruneton" (filtered, default) or "classic"
   double windSpeedMs = 7.0;               ///< 10 m wind where no wind layer covers, [0, 50]

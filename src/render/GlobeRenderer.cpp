@@ -63,10 +63,11 @@ GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
 void GlobeRenderer::ensureTargets(int width, int height, int requested) {
   if (hdr_.width == width && hdr_.height == height && requestedSamples_ == requested) return;
   if (!isValidSampleCount(requested))
-    throw InternalError("FrameInput::samples must be 1, 2, 4 or 8, not " + std::to_string(requested));
-  const int samples = std::min(requested, maxSamples_);
-  if (samples < requested && warnedSamples_ != requested) {
-    log::warn(std::to_string(requested) + " samples per pixel asked for, but this OpenGL device "
+    throw InternalError("FrameInput::samples must be 0 (auto), 1, 2, 4 or 8, not " + std::to_string(requested));
+  const int wanted = requested == kAutoSamples ? (gl::isSoftwareRenderer() ? 1 : 4) : requested;
+  const int samples = std::min(wanted, maxSamples_);
+  if (samples < wanted && warnedSamples_ != requested) {
+    log::warn(std::to_string(wanted) + " samples per pixel asked for, but this OpenGL device "
               "offers at most " + std::to_string(maxSamples_) + ": using " + std::to_string(samples));
     warnedSamples_ = requested;
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstddef>
 
 #include "core/Error.hpp"
@@ -204,12 +205,24 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
   glDepthMask(GL_TRUE);
+  // A heightfield seen from above hides its back faces behind front ones: cull them (the
+  // skirts, seen from either side, are drawn without culling). Fragments are not free even
+  // when hidden: llvmpipe shades them before the depth test when multisampling.
+  const GLsizei gridIndices = 6 * terrain::kTileQuads * terrain::kTileQuads;
+  glFrontFace(GL_CCW);
+  glCullFace(GL_BACK);
   for (const terrain::Tile* t : tiles) {
+    // Wholly under 50 m of water: the sea (the grid, or the globe's from orbit) covers it.
+    if (t->maxHeightM < -50.0) continue;
     // Camera-relative tile origin in double, then float: never float world coordinates.
     p.set("uTileOffset", glm::vec3(t->centreEcef - view.positionEcef));
     p.set("uDetailFirst", t->normalOctaves);
     bindTile(*t);
-    glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+    glEnable(GL_CULL_FACE);
+    glDrawElements(GL_TRIANGLES, gridIndices, GL_UNSIGNED_INT, nullptr);
+    glDisable(GL_CULL_FACE);
+    glDrawElements(GL_TRIANGLES, indexCount_ - gridIndices, GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(static_cast<std::uintptr_t>(gridIndices) * sizeof(std::uint32_t)));
   }
   stats_.tiles = static_cast<int>(tiles.size());
   stats_.finestLevel = sel.finestLevel;

@@ -108,7 +108,7 @@ TEST(Cli, BadInputExitsTwoWithOneLineAndNoFile) {
       {"render --wind 5,abc -o " + out, "--wind"},
       {"render --wind 80 -o " + out, "wind speed"},
       {"render --ocean fancy -o " + out, "ocean model"},
-      {"render --samples 3 -o " + out, "--samples: expected 1, 2, 4 or 8, got 3"},
+      {"render --samples 3 -o " + out, "--samples: expected auto, 1, 2, 4 or 8, got '3'"},
       {"render --samples 0 -o " + out, "--samples"},
       {"render --lat abc -o " + out, "--lat"},
       {"render --no-such-flag -o " + out, "no-such-flag"},
@@ -156,7 +156,7 @@ TEST(Cli, ConfigFileIsReadAndFlagsOverrideIt) {
   std::ofstream(dir / "samples.toml") << "[image]\nwidth = 64\nsamples = 3\n";
   r = run("render --config " + (dir / "samples.toml").string() + " -o " + (dir / "b.png").string());
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_NE(r.err.find("samples.toml:3: 'samples' must be 1, 2, 4 or 8"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("samples.toml:3: 'samples' must be \"auto\", 1, 2, 4 or 8"), std::string::npos) << r.err;
 
   std::ofstream(dir / "syntax.toml") << "[camera\nlatitude_deg = 1\n";
   r = run("render --config " + (dir / "syntax.toml").string() + " -o " + (dir / "b.png").string());
