@@ -10,6 +10,7 @@
 #include "ocean/brdf.glsl"
 #include "ocean/lighting.glsl"
 #include "render/elevation.glsl"
+#include "ocean/coast.glsl"
 
 in vec2 vOceanXY;
 in vec3 vRelative;
@@ -36,8 +37,12 @@ void main() {
   vec3 frameUp = oceanToEcef[2];
   vec3 up = ellipsoidNormal(dir, dist);
   vec2 latLon = latLonOfNormal(up);
-  // No sea over land: the elevation layer decides where the coast is.
-  if (uElevationSize.x > 0.0 && elevationAt(latLon) > 0.0) discard;
+  // No sea over land, sample by sample (ocean/coast.glsl).
+  int seaSamples = 0;
+  for (int i = 0; i < gl_NumSamples; ++i)
+    if (seaAt(interpolateAtSample(vRelative, i))) seaSamples |= 1 << i;
+  if (seaSamples == 0) discard;
+  gl_SampleMask[0] = seaSamples;
   vec2 wind = localWind(latLon);  // speed, azimuth
   OceanNormal on = oceanNormal(vOceanXY, max(footprint, 1e-4), wind.x);
   // Waves live in the frame's tangent plane; tilt their normal onto the ellipsoid's curvature
