@@ -176,6 +176,12 @@ void main() {
   float depthZ = nearestT;
   vec3 centreDir = normalize(uForward + vNdc.x * uTanHalfFov.x * uRight + vNdc.y * uTanHalfFov.y * uUp);
   float centreT = nHit > 0 ? intersectEllipsoid(centreDir) : -1.0;
-  if (centreT >= 0.0) depthZ = centreT * dot(centreDir, uForward);
+  if (centreT >= 0.0) {
+    depthZ = centreT * dot(centreDir, uForward);
+    // Over land the terrain draws the ground and this flat fallback must never stand in front
+    // of a tile: the coarsest tiles' chords sag up to ~0.5 km below the ellipsoid. Over the sea
+    // (from orbit) the depth stays exact, so the sea surface hides the bathymetry.
+    if (elevationAt(latLonOfNormal(ellipsoidNormal(centreDir, centreT))) > 0.0) depthZ += 20000.0;
+  }
   gl_FragDepth = nHit > 0 ? clamp(uNear / depthZ, 0.0, 1.0) : 0.0;
 }

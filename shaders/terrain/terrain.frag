@@ -18,6 +18,7 @@ in vec4 vInfo;  // height m, latitude rad, longitude rad, detail amplitude m
 out vec4 fragRadiance;
 
 uniform vec3 uSunDir;  // unit, ECEF axes
+uniform int uSeaFromGlobe;  // 1 above the grid's ceiling: the globe pass draws the sea
 
 // The detail's octaves (terrain::DetailOctaves): octave k has 2^k uDetailScale0 lattice cells
 // per unit of the sphere and weight detailOctaveWeight(k) / uDetailNorm; the eye lies in lattice cell
@@ -82,6 +83,10 @@ void main() {
   // fragment for them with undefined (NaN) attributes. They cover nothing: drop them.
   if (any(isnan(vInfo)) || any(isnan(vRelative)) || any(isnan(vNormal))) discard;
   float heightM = vInfo.x;
+  // From high up the globe pass's sea covers the bathymetry: leave it to it rather than to a
+  // depth test a few kilometres deep at thousands of kilometres (which llvmpipe's multisample
+  // depth interpolation does not resolve).
+  if (uSeaFromGlobe == 1 && heightM < 0.0) discard;
   float lat = vInfo.y, lon = vInfo.z;
   vec3 up = vec3(cos(lat) * cos(lon), cos(lat) * sin(lon), sin(lat));
   // Triangles that collapse at a pole give no normal (zero or NaN): the vertical stands in.

@@ -168,7 +168,7 @@ void GlobeRenderer::render(const FrameInput& f) {
 
   // Terrain over the globe's land (its far fallback), depth-tested; the ocean below is then
   // depth-tested against it, so the shoreline is where sea surface and ground meet.
-  terrain_->draw(view, f.width, f.height, f.sunDirectionEcef);
+  terrain_->draw(view, f.width, f.height, f.sunDirectionEcef, !grid);
   glBindTextureUnit(0, elevation_.id());
   glBindVertexArray(emptyVao_.id());
 

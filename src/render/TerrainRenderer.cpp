@@ -184,7 +184,7 @@ void TerrainRenderer::setDetailUniforms(const geo::CameraView& view) const {
 }
 
 void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
-                           const glm::dvec3& sunDirectionEcef) {
+                           const glm::dvec3& sunDirectionEcef, bool seaFromGlobe) {
   params_.widthPx = width;
   params_.heightPx = height;
   terrain::SelectionStats sel;
@@ -196,6 +196,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   p.set("uSunDir", glm::vec3(glm::normalize(sunDirectionEcef)));
   p.set("uCamUp", glm::vec3(view.enu.up));
   p.set("uCamAltitude", static_cast<float>(view.position.heightM));
+  p.set("uSeaFromGlobe", seaFromGlobe ? 1 : 0);
   setDetailUniforms(view);
   renderShadowMap(view, tiles, sunDirectionEcef);
   glBindTextureUnit(11, shadowMap_.id());

@@ -35,7 +35,10 @@ class TerrainRenderer {
   TerrainRenderer(const data::LatLonGrid& elevation, const Atmosphere* atmosphere);
 
   /// Draws into the bound framebuffer (width x height) with GL_GREATER depth test and writes.
-  void draw(const geo::CameraView& view, int width, int height, const glm::dvec3& sunDirectionEcef);
+  /// `seaFromGlobe`: the globe pass drew the sea (above the projected grid's ceiling), so
+  /// fragments under sea level are left to it.
+  void draw(const geo::CameraView& view, int width, int height, const glm::dvec3& sunDirectionEcef,
+            bool seaFromGlobe);
 
   [[nodiscard]] const TerrainStats& stats() const { return stats_; }
   /// Selection settings; `wait = false` (progressive) never stalls a frame on tile builds.

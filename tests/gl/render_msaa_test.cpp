@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/Error.hpp"
+#include "data/LatLonGrid.hpp"
 #include "geo/Sun.hpp"
 #include "gl/Context.hpp"
 #include "gl/Readback.hpp"
@@ -187,6 +188,52 @@ TEST(Multisampling, InteriorsMatchOneSampleAndDepthReadsBack) {
   EXPECT_EQ(skyDiffer, 0);
   // Inside the ground, triangle edges between tiles and skirts may still shift a little.
   EXPECT_LE(groundOver2, ground / 100) << groundOver2 << " of " << ground;
+}
+
+// From orbit the globe's sea hides the bathymetry. With 4 samples llvmpipe's per-sample depth
+// could not tell a sea floor kilometres down from the surface 20 000 km away, and whole tiles
+// of sea floor showed through in lighter blocks; the terrain now leaves sub-sea fragments to
+// the globe from up there. The open sea must look the same with 1 and 4 samples.
+TEST(Multisampling, OrbitSeaIsTheSameWithFourSamples) {
+  auto ctx = gl::createHeadlessContext();
+  // Sea 4000 m deep with one land block (so that its tiles, partly sea, are drawn).
+  data::LatLonGrid g;
+  g.name = "sea";
+  g.width = 72;
+  g.height = 36;
+  g.lon0Deg = -177.5;
+  g.lat0Deg = -87.5;
+  g.dLonDeg = g.dLatDeg = 5.0;
+  g.wrapsLongitude = true;
+  for (int row = 0; row < g.height; ++row)
+    for (int col = 0; col < g.width; ++col)
+      g.values.push_back(row == 22 && col == 40 ? 800.0f : -4000.0f);  // ~22.5N, 22.5E
+  render::GlobeRenderer r(g);
+  render::FrameInput f;
+  f.camera.position = {20.0, 15.0, 2.0e7};
+  f.camera.pitchDeg = -90.0;
+  f.width = 96;
+  f.height = 96;
+  f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 60.0, 180.0);
+  f.samples = 1;
+  r.render(f);
+  const io::ImageRgba8 one = r.display();
+  f.samples = 4;
+  r.render(f);
+  const io::ImageRgba8 four = r.display();
+  int sea = 0, differ = 0;
+  for (int y = 30; y < 66; ++y)
+    for (int x = 30; x < 66; ++x) {
+      const std::size_t i = 4 * (static_cast<std::size_t>(y) * 96 + static_cast<std::size_t>(x));
+      // Skip the land block and its edges: where the 1-sample image is not sea-blue.
+      if (one.pixels[i + 2] <= one.pixels[i]) continue;
+      ++sea;
+      int diff = 0;
+      for (std::size_t c = 0; c < 3; ++c) diff = std::max(diff, std::abs(int(one.pixels[i + c]) - int(four.pixels[i + c])));
+      differ += diff > 3 ? 1 : 0;
+    }
+  ASSERT_GT(sea, 600);
+  EXPECT_LE(differ, sea / 50) << differ << " of " << sea << " sea pixels differ";
 }
 
 TEST(Multisampling, UnavailableCountsAreClampedAndInvalidOnesRefused) {
