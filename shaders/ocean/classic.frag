@@ -11,6 +11,7 @@
 #include "ocean/lighting.glsl"
 #include "render/elevation.glsl"
 #include "ocean/coast.glsl"
+#include "terrain/shadow.glsl"
 
 in vec2 vOceanXY;
 in vec3 vRelative;
@@ -52,7 +53,8 @@ void main() {
   float sunZenith = acos(clamp(uSunDirOcean.z, -1.0, 1.0));
   float sunAzimuth = atan2Safe(uSunDirOcean.y, uSunDirOcean.x);
   vec3 sky = skyMapRadianceStereo(stereographic(r), sunZenith, sunAzimuth, vec2(0.0), vec2(0.0));
-  vec3 eSun = sunIrradiance(sunZenith);
+  // The terrain's shadows on the sea (the frame's up stands in for the local vertical).
+  vec3 eSun = sunIrradiance(sunZenith) * sunVisibility(vRelative, transpose(uEcefToOcean)[2]);
   // Sparkles: the Sun seen in the mirror direction, a narrow Phong lobe.
   float sparkle = pow(max(dot(r, uSunDirOcean), 0.0), 800.0) * 60.0;
   vec3 water = ramp.rgb * (eSun * max(uSunDirOcean.z, 0.0) + skyIrradiance(sunZenith));

@@ -45,6 +45,10 @@ struct SeaPoint {
   vec3 eSun, eSky;       // Sun and sky irradiance at sea level for this Sun zenith
 };
 
+// Fraction of the Sun's disc seen from the sea point being shaded (the terrain's shadows:
+// terrain/shadow.glsl); the grid's shaders set it before shading, elsewhere the Sun is open.
+float gSeaSunVisibility = 1.0;
+
 SeaPoint seaPoint(vec3 vE, vec3 nE, vec3 windE, vec3 upE, vec3 sunE) {
   mat3 toLocal = transpose(localFrame(upE));
   SeaPoint p;
@@ -56,7 +60,7 @@ SeaPoint seaPoint(vec3 vE, vec3 nE, vec3 windE, vec3 upE, vec3 sunE) {
   p.ty = cross(p.n, p.tx);
   p.sunZenith = acos(clamp(p.l.z, -1.0, 1.0));
   p.sunAzimuth = atan2Safe(p.l.y, p.l.x);
-  p.eSun = sunIrradiance(p.sunZenith);
+  p.eSun = sunIrradiance(p.sunZenith) * gSeaSunVisibility;
   p.eSky = skyIrradiance(p.sunZenith);
   return p;
 }

@@ -11,6 +11,7 @@
 #include "ocean/lighting.glsl"
 #include "render/elevation.glsl"
 #include "ocean/coast.glsl"
+#include "terrain/shadow.glsl"
 
 in vec2 vOceanXY;
 in vec3 vRelative;
@@ -43,6 +44,7 @@ void main() {
     if (seaAt(interpolateAtSample(vRelative, i))) seaSamples |= 1 << i;
   if (seaSamples == 0) discard;
   gl_SampleMask[0] = seaSamples;
+  gSeaSunVisibility = sunVisibility(vRelative, up);  // mountains shade the sea at their feet
   vec2 wind = localWind(latLon);  // speed, azimuth
   OceanNormal on = oceanNormal(vOceanXY, max(footprint, 1e-4), wind.x);
   // Waves live in the frame's tangent plane; tilt their normal onto the ellipsoid's curvature

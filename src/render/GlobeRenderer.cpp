@@ -179,6 +179,7 @@ void GlobeRenderer::render(const FrameInput& f) {
     const ocean::OceanFrame& frame = f.oceanFrame ? *f.oceanFrame : fresh;
     OceanLighting lighting;
     lighting.sunDirectionEcef = f.sunDirectionEcef;
+    lighting.shadows = &terrain_->shadows();
     // Waves fade out on the way up so the grid meets the orbit model at the switch.
     const double h = view.position.heightM;
     const double x = std::clamp((h - kOceanFadeStartM) / (kOceanGridMaxHeightM - kOceanFadeStartM), 0.0, 1.0);

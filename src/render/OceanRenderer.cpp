@@ -135,6 +135,10 @@ void OceanRenderer::setCommon(const gl::Program& p, const geo::CameraView& view,
   p.set("uElevationWraps", elevationWraps_);
   p.set("uCamUp", toFloat(view.enu.up));
   p.set("uCamAltitude", static_cast<float>(view.position.heightM));
+  if (lighting.shadows != nullptr)
+    lighting.shadows->apply(p);
+  else
+    p.set("uShadowOn", 0);
   if (atmosphere_ != nullptr) {
     atmosphere_->bind(p);
     atmosphere_->bindSkyMaps();

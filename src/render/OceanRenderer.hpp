@@ -10,6 +10,7 @@
 #include "ocean/OceanFrame.hpp"
 #include "ocean/WaveSet.hpp"
 #include "render/Atmosphere.hpp"
+#include "render/TerrainRenderer.hpp"
 #include "render/WindTextures.hpp"
 
 namespace og::render {
@@ -20,6 +21,8 @@ struct OceanLighting {
   // Used without an atmosphere only (tests of the ocean alone): a simple analytic sky.
   glm::vec3 skyZenith{0.02f, 0.045f, 0.11f};
   glm::vec3 skyHorizon{0.07f, 0.09f, 0.12f};
+  /// The terrain's Sun shadows to cast on the sea (maps bound to unit 11), or none.
+  const SunShadows* shadows = nullptr;
 };
 
 enum class OceanModel {

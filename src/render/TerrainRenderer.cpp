@@ -65,7 +65,8 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
                                       const std::vector<const terrain::Tile*>& tiles,
                                       const glm::dvec3& sunDirectionEcef) {
   const gl::Program& p = program_;
-  p.set("uShadowOn", 0);
+  shadows_.on = false;
+  shadows_.apply(p);
   const glm::dvec3 s = glm::normalize(sunDirectionEcef);
   const double h = view.position.heightM;
   // Shadows of relief matter within a few hundred km; from farther out they are sub-pixel.
@@ -96,8 +97,8 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
   glDepthMask(GL_TRUE);
   shadowProgram_.use();
   glBindVertexArray(vao_.id());
-  std::array<glm::mat4, kShadowCascades> matrices{};
-  std::array<float, kShadowCascades> texels{};
+  std::array<glm::mat4, kShadowCascades>& matrices = shadows_.matrices;
+  std::array<float, kShadowCascades>& texels = shadows_.texelM;
   for (int cascade = 0; cascade < kShadowCascades; ++cascade) {
     const double reach = farReach / std::pow(8.0, kShadowCascades - 1 - cascade);
     glm::dvec2 lo(1e300), hi(-1e300);
@@ -150,12 +151,18 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFbo));
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
 
-  p.set("uShadowOn", 1);
-  glProgramUniformMatrix4fv(p.id(), p.location("uShadowMatrix"), kShadowCascades, GL_FALSE,
-                            &matrices[0][0][0]);
-  glProgramUniform1fv(p.id(), p.location("uShadowTexelM"), kShadowCascades, texels.data());
+  shadows_.on = true;
   // The near cascade serves the points well inside its reach.
-  p.set("uShadowSplitM", static_cast<float>(0.8 * farReach / std::pow(8.0, kShadowCascades - 1)));
+  shadows_.splitM = static_cast<float>(0.8 * farReach / std::pow(8.0, kShadowCascades - 1));
+  shadows_.apply(p);
+}
+
+void SunShadows::apply(const gl::Program& p) const {
+  p.set("uShadowOn", on ? 1 : 0);
+  if (!on) return;
+  glProgramUniformMatrix4fv(p.id(), p.location("uShadowMatrix"), kCascades, GL_FALSE, &matrices[0][0][0]);
+  glProgramUniform1fv(p.id(), p.location("uShadowTexelM"), kCascades, texelM.data());
+  p.set("uShadowSplitM", splitM);
 }
 
 void TerrainRenderer::setDetailUniforms(const geo::CameraView& view) const {

@@ -5,6 +5,7 @@
 // mirrored on the GPU as one vertex buffer each, dropped when the CPU cache evicts them.
 #include <glm/glm.hpp>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -20,6 +21,18 @@
 #include "terrain/TileCache.hpp"
 
 namespace og::render {
+
+/// The terrain's Sun shadow maps of the last frame, for other passes to look up
+/// (terrain/shadow.glsl's uniforms; the maps stay bound to texture unit 11).
+struct SunShadows {
+  static constexpr int kCascades = 2;  // SHADOW_CASCADES in terrain/shadow.glsl
+  bool on = false;
+  std::array<glm::mat4, kCascades> matrices{};
+  std::array<float, kCascades> texelM{};
+  float splitM = 0.0f;
+  /// Sets terrain/shadow.glsl's uniforms on `p`.
+  void apply(const gl::Program& p) const;
+};
 
 struct TerrainStats {
   int tiles = 0;                ///< drawn in the last frame
@@ -41,13 +54,15 @@ class TerrainRenderer {
             bool seaFromGlobe);
 
   [[nodiscard]] const TerrainStats& stats() const { return stats_; }
+  /// The shadow maps drawn by the last draw() (off when there were none).
+  [[nodiscard]] const SunShadows& shadows() const { return shadows_; }
   /// Selection settings; `wait = false` (progressive) never stalls a frame on tile builds.
   terrain::SelectionParams& selection() { return params_; }
 
  private:
   static constexpr int kMaxDetailOctaves = 24;  // MAX_DETAIL_OCTAVES in terrain.frag
   static constexpr int kShadowMapSize = 2048;   // texels per side
-  static constexpr int kShadowCascades = 2;     // SHADOW_CASCADES in terrain/shadow.glsl
+  static constexpr int kShadowCascades = SunShadows::kCascades;
   void setDetailUniforms(const geo::CameraView& view) const;
   /// Renders the Sun's depth map over the tiles in view and sets the terrain program's shadow
   /// uniforms (uShadowOn = 0 when there is none this frame).
@@ -70,6 +85,7 @@ class TerrainRenderer {
   int indexCount_ = 0;
   std::unordered_map<std::uint64_t, GpuTile> gpu_;
   TerrainStats stats_;
+  SunShadows shadows_;
 };
 
 }  // namespace og::render
