@@ -1,20 +1,31 @@
 #version 450 core
 // Terrain tiles: positions relative to the tile centre plus the tile centre relative to the
 // camera (computed in double on the CPU), so nothing on the GPU is in world coordinates.
+// Geomorphing (as in CDLOD): a tile is chosen once its parent's vertex spacing exceeds the
+// screen-space limit at the parent's nearest point, so at that moment its vertices morph
+// fully onto the parent's mesh (no pop), and they reach their own positions as the parent's
+// spacing there grows to twice the limit, when the tile itself would split.
 layout(location = 0) in vec3 aPosition;  // m, relative to the tile centre, ECEF axes
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec4 aInfo;      // height m, latitude rad, longitude rad, detail amplitude m
+layout(location = 3) in vec3 aMorph;     // the parent mesh's point minus this vertex, m
 
 uniform mat4 uViewProjection;  // for camera-relative ECEF positions
 uniform vec3 uTileOffset;      // tile centre - eye, m
+// The parent's screen-space error over the limit at 1 m: (parent spacing) x (pixels per
+// radian) / (limit in pixels); 0 for tiles that do not morph (forced levels, no parent drawn).
+uniform float uMorphScale;
 
 out vec3 vRelative;
 out vec3 vNormal;
 out vec4 vInfo;
 
 void main() {
-  vRelative = uTileOffset + aPosition;
+  vec3 relative = uTileOffset + aPosition;
+  float m = uMorphScale > 0.0 ? clamp(2.0 - uMorphScale / max(length(relative), 1e-3), 0.0, 1.0) : 0.0;
+  vec3 up = vec3(cos(aInfo.y) * cos(aInfo.z), cos(aInfo.y) * sin(aInfo.z), sin(aInfo.y));
+  vRelative = relative + m * aMorph;
   vNormal = aNormal;
-  vInfo = aInfo;
+  vInfo = vec4(aInfo.x + m * dot(aMorph, up), aInfo.yzw);
   gl_Position = uViewProjection * vec4(vRelative, 1.0);
 }

@@ -31,10 +31,12 @@ TerrainRenderer::TerrainRenderer(const data::LatLonGrid& elevation, const Atmosp
   glEnableVertexArrayAttrib(vao, 0);
   glEnableVertexArrayAttrib(vao, 1);
   glEnableVertexArrayAttrib(vao, 2);
+  glEnableVertexArrayAttrib(vao, 3);
   glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(terrain::TileVertex, position));
   glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(terrain::TileVertex, normal));
   glVertexArrayAttribFormat(vao, 2, 4, GL_FLOAT, GL_FALSE, offsetof(terrain::TileVertex, heightM));
-  for (GLuint a = 0; a < 3; ++a) glVertexArrayAttribBinding(vao, a, 0);
+  glVertexArrayAttribFormat(vao, 3, 3, GL_FLOAT, GL_FALSE, offsetof(terrain::TileVertex, morph));
+  for (GLuint a = 0; a < 4; ++a) glVertexArrayAttribBinding(vao, a, 0);
   glTextureStorage3D(shadowMap_.id(), 1, GL_DEPTH_COMPONENT32F, kShadowMapSize, kShadowMapSize,
                      kShadowCascades);
   glTextureParameteri(shadowMap_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -48,6 +50,14 @@ TerrainRenderer::TerrainRenderer(const data::LatLonGrid& elevation, const Atmosp
   if (glCheckNamedFramebufferStatus(shadowFbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw InternalError("terrain shadow map framebuffer incomplete");
   gl::checkErrors("TerrainRenderer setup");
+}
+
+float TerrainRenderer::morphScale(const terrain::Tile& t, const geo::CameraView& view, int heightPx) const {
+  // Tiles at forced levels never had a parent drawn; polar tiles at their cap never split.
+  if (t.key.level <= params_.minLevel) return 0.0f;
+  const double pixelsPerRadian = heightPx / (2.0 * std::tan(0.5 * view.verticalFovRad));
+  const double weight = t.maxHeightM < -50.0 ? 0.25 : 1.0;  // as terrain::tileErrorPx
+  return static_cast<float>(weight * 2.0 * t.spacingM * pixelsPerRadian / params_.maxSpacingPx);
 }
 
 void TerrainRenderer::bindTile(const terrain::Tile& t) {
@@ -144,6 +154,7 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
       const glm::dvec2 xy(glm::dot(c, lx), glm::dot(c, ly));
       if (glm::any(glm::greaterThan(glm::abs(xy - mid), glm::dvec2(half + t->boundRadiusM)))) continue;
       shadowProgram_.set("uTileOffset", glm::vec3(t->centreEcef - view.positionEcef));
+      shadowProgram_.set("uMorphScale", morphScale(*t, view, params_.heightPx));
       bindTile(*t);
       glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
     }
@@ -224,6 +235,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
     if (t->maxHeightM < -50.0) continue;
     // Camera-relative tile origin in double, then float: never float world coordinates.
     p.set("uTileOffset", glm::vec3(t->centreEcef - view.positionEcef));
+    p.set("uMorphScale", morphScale(*t, view, height));
     p.set("uDetailFirst", t->normalOctaves);
     bindTile(*t);
     glEnable(GL_CULL_FACE);

@@ -69,6 +69,8 @@ class TerrainRenderer {
   void renderShadowMap(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
                        const glm::dvec3& sunDirectionEcef);
   void bindTile(const terrain::Tile& tile);
+  /// terrain.vert's uMorphScale for a tile.
+  [[nodiscard]] float morphScale(const terrain::Tile& tile, const geo::CameraView& view, int heightPx) const;
   struct GpuTile {
     gl::Buffer vertices;
   };

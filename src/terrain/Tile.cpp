@@ -72,6 +72,25 @@ Tile buildTile(const Heightfield& heights, const TileKey& key) {
 
   t.positions.reserve(kTileVertices);
   t.vertices.reserve(kTileVertices);
+  // Morph targets: the parent's mesh at each vertex. A parent quad covers 2x2 of ours and is
+  // split along the same diagonal (indices a, b, d / a, d, c: from (i, j) to (i+1, j+1)).
+  std::vector<glm::dvec3> morph(static_cast<std::size_t>(n * n), glm::dvec3(0.0));
+  auto at = [&](int i, int j) { return ecef[static_cast<std::size_t>(j * n + i)]; };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      // Parity on the finest grid's lattice of the parent: the parent's vertices are ours at
+      // even global indices (x * kTileQuads + i), i.e. even i and j since kTileQuads is even.
+      const bool oddI = (i & 1) != 0, oddJ = (j & 1) != 0;
+      glm::dvec3 target = at(i, j);
+      if (oddI && oddJ)
+        target = 0.5 * (at(i - 1, j - 1) + at(i + 1, j + 1));
+      else if (oddI)
+        target = 0.5 * (at(i - 1, j) + at(i + 1, j));
+      else if (oddJ)
+        target = 0.5 * (at(i, j - 1) + at(i, j + 1));
+      morph[static_cast<std::size_t>(j * n + i)] = target - at(i, j);
+    }
+
   auto push = [&](std::size_t k, double depth) {
     const double lat = lats[k] * kDeg, lon = lons[k] * kDeg;
     const glm::dvec3 up{std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
@@ -79,7 +98,8 @@ Tile buildTile(const Heightfield& heights, const TileKey& key) {
     t.positions.push_back(p);
     t.vertices.push_back({glm::vec3(p), glm::vec3(samples[k].normal),
                           static_cast<float>(samples[k].heightM - depth), static_cast<float>(lat),
-                          static_cast<float>(lon), static_cast<float>(samples[k].detailAmplitudeM)});
+                          static_cast<float>(lon), static_cast<float>(samples[k].detailAmplitudeM),
+                          glm::vec3(morph[k])});
   };
   for (std::size_t k = 0; k < samples.size(); ++k) push(k, 0.0);
   // Skirts: south edge, east edge, north edge, west edge, each kTileQuads + 1 vertices.

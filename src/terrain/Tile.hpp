@@ -46,8 +46,12 @@ struct TileVertex {
   float latitudeRad;
   float longitudeRad;
   float detailAmplitudeM;  ///< scale of the detail's normalised sum here, m (0: none)
+  /// Where the parent tile's mesh puts this vertex, minus its position, m (ECEF axes): zero at
+  /// the vertices the parent shares, the midpoint of the parent's edge or diagonal elsewhere.
+  /// The vertex shader morphs towards it as the tile nears its parent's detail (no popping).
+  glm::vec3 morph;
 };
-static_assert(sizeof(TileVertex) == 40);
+static_assert(sizeof(TileVertex) == 52);
 
 struct Tile {
   TileKey key;

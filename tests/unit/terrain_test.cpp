@@ -99,6 +99,37 @@ TEST(TerrainTile, SkirtsHangBelowTheEdges) {
   for (auto i : idx) EXPECT_LT(i, static_cast<std::uint32_t>(kTileVertices));
 }
 
+TEST(TerrainTile, MorphTargetsLieOnTheParentsMesh) {
+  // A child's vertices morph onto its parent's triangles: the parent's own vertices stay, the
+  // others go to the midpoint of the parent's edge or diagonal through them (the parent's quads
+  // are split from (i, j) to (i+1, j+1), as the children's).
+  const TileKey parentKey{9, 759, 335};  // 27.8°N 86.9°E, the Himalaya: rugged detail
+  const Tile parent = buildTile(*heights(), parentKey);
+  const TileKey childKey = parentKey.child(3);       // the north-east quarter
+  const Tile child = buildTile(*heights(), childKey);
+  constexpr int n = kTileQuads + 1;
+  auto parentPoint = [&](int pi, int pj) {  // parent grid vertex, ECEF
+    return parent.positions[static_cast<std::size_t>(pj * n + pi)] + parent.centreEcef;
+  };
+  double maxMorph = 0.0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const auto k = static_cast<std::size_t>(j * n + i);
+      const glm::dvec3 target = child.positions[k] + child.centreEcef + glm::dvec3(child.vertices[k].morph);
+      // Child (i, j) is parent (16 + i/2, 16 + j/2) in the north-east quarter.
+      const int pi0 = kTileQuads / 2 + i / 2, pj0 = kTileQuads / 2 + j / 2;
+      glm::dvec3 expected;
+      if (i % 2 == 0 && j % 2 == 0) expected = parentPoint(pi0, pj0);
+      else if (i % 2 == 1 && j % 2 == 1) expected = 0.5 * (parentPoint(pi0, pj0) + parentPoint(pi0 + 1, pj0 + 1));
+      else if (i % 2 == 1) expected = 0.5 * (parentPoint(pi0, pj0) + parentPoint(pi0 + 1, pj0));
+      else expected = 0.5 * (parentPoint(pi0, pj0) + parentPoint(pi0, pj0 + 1));
+      // Float morph offsets of up to a few hundred metres: millimetres.
+      EXPECT_LT(glm::length(target - expected), 0.01) << i << "," << j;
+      maxMorph = std::max(maxMorph, static_cast<double>(glm::length(child.vertices[k].morph)));
+    }
+  EXPECT_GT(maxMorph, 5.0);  // the detail the child adds is really there to morph away
+}
+
 TEST(TerrainHeight, DetailIsDeterministicContinuousAndScaledToRelief) {
   const Heightfield& h = *heights();
   EXPECT_EQ(h.heightM(28.0, 87.0), h.heightM(28.0, 87.0));
