@@ -20,7 +20,7 @@ namespace og::terrain {
 
 class TileCache {
  public:
-  /// `budgetBytes`: the CPU memory the cached tiles may hold (default 96 MiB, ~1800 tiles).
+  /// `budgetBytes`: the CPU memory the cached tiles may hold (default 96 MiB, ~1050 tiles).
   /// `workers`: build threads, <= 0 for std::thread::hardware_concurrency().
   explicit TileCache(std::shared_ptr<const Heightfield> heights,
                      std::size_t budgetBytes = std::size_t{96} << 20, int workers = 0);
