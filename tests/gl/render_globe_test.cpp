@@ -7,25 +7,17 @@
 #include "geo/Sun.hpp"
 #include "gl/Context.hpp"
 #include "render/GlobeRenderer.hpp"
+#include "support/GridFixtures.hpp"
 #include "support/ImageCompare.hpp"
 
 using namespace og;
 
 namespace {
-// A synthetic layer: land (1000 m) in the northern hemisphere east of 0°, sea elsewhere.
+// 5° cells: land at 1000 m north of the equator and east of Greenwich, sea 4000 m deep elsewhere.
 data::LatLonGrid halfLand() {
-  data::LatLonGrid g;
-  g.name = "test";
-  g.width = 72;
-  g.height = 36;
-  g.lon0Deg = -177.5;
-  g.lat0Deg = -87.5;
-  g.dLonDeg = g.dLatDeg = 5.0;
-  g.wrapsLongitude = true;
-  for (int r = 0; r < g.height; ++r)
-    for (int c = 0; c < g.width; ++c)
-      g.values.push_back((r >= 18 && c >= 36) ? 1000.0f : -4000.0f);
-  return g;
+  return test::globalGrid("test", 5.0, [](double lat, double lon) {
+    return lat > 0.0 && lon > 0.0 ? 1000.0 : -4000.0;
+  });
 }
 
 render::FrameInput frame(double lat, double lon, double h, double pitch, int size = 64) {

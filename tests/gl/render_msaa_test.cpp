@@ -17,6 +17,7 @@
 #include "gl/Shader.hpp"
 #include "io/Image.hpp"
 #include "render/GlobeRenderer.hpp"
+#include "support/GridFixtures.hpp"
 
 using namespace og;
 
@@ -25,21 +26,9 @@ namespace {
 // Global 0.25° layer: lowland at 300 m and a 5000 m ridge along 0.375° N from 2° W to 2° E
 // (one row of cells: a crest, jagged by the procedural detail).
 data::LatLonGrid ridge() {
-  data::LatLonGrid g;
-  g.name = "ridge";
-  g.width = 1440;
-  g.height = 720;
-  g.lon0Deg = -179.875;
-  g.lat0Deg = -89.875;
-  g.dLonDeg = g.dLatDeg = 0.25;
-  g.wrapsLongitude = true;
-  for (int r = 0; r < g.height; ++r)
-    for (int c = 0; c < g.width; ++c) {
-      const double lat = g.lat0Deg + r * g.dLatDeg, lon = g.lon0Deg + c * g.dLonDeg;
-      const bool onRidge = lat > 0.3 && lat < 0.45 && std::abs(lon) < 2.0;
-      g.values.push_back(onRidge ? 5000.0f : 300.0f);
-    }
-  return g;
+  return test::globalGrid("ridge", 0.25, [](double lat, double lon) {
+    return lat > 0.3 && lat < 0.45 && std::abs(lon) < 2.0 ? 5000.0 : 300.0;
+  });
 }
 
 // Looking north at the crest from 2500 m, 30 km south of it; the Sun low behind it and off
@@ -197,17 +186,9 @@ TEST(Multisampling, InteriorsMatchOneSampleAndDepthReadsBack) {
 TEST(Multisampling, OrbitSeaIsTheSameWithFourSamples) {
   auto ctx = gl::createHeadlessContext();
   // Sea 4000 m deep with one land block (so that its tiles, partly sea, are drawn).
-  data::LatLonGrid g;
-  g.name = "sea";
-  g.width = 72;
-  g.height = 36;
-  g.lon0Deg = -177.5;
-  g.lat0Deg = -87.5;
-  g.dLonDeg = g.dLatDeg = 5.0;
-  g.wrapsLongitude = true;
-  for (int row = 0; row < g.height; ++row)
-    for (int col = 0; col < g.width; ++col)
-      g.values.push_back(row == 22 && col == 40 ? 800.0f : -4000.0f);  // ~22.5N, 22.5E
+  const data::LatLonGrid g = test::globalGrid("sea", 5.0, [](double lat, double lon) {
+    return lat > 20.0 && lat < 25.0 && lon > 20.0 && lon < 25.0 ? 800.0 : -4000.0;
+  });
   render::GlobeRenderer r(g);
   render::FrameInput f;
   f.camera.position = {20.0, 15.0, 2.0e7};

@@ -12,6 +12,7 @@
 #include "geo/Sun.hpp"
 #include "gl/Context.hpp"
 #include "render/GlobeRenderer.hpp"
+#include "support/GridFixtures.hpp"
 
 using namespace og;
 
@@ -77,16 +78,9 @@ namespace {
 // A dry plain at 100 m with a 5 km high north-south ridge along 5°E (0.05° cells, 0..10°E,
 // 20..30°N).
 data::LatLonGrid ridgeLayer() {
-  data::LatLonGrid g;
-  g.name = "ridge";
-  g.width = 201;
-  g.height = 201;
-  g.lon0Deg = 0.0;
-  g.lat0Deg = 20.0;
-  g.dLonDeg = g.dLatDeg = 0.05;
-  g.values.assign(static_cast<std::size_t>(g.width * g.height), 100.0f);
-  for (int row = 0; row < g.height; ++row) g.values[static_cast<std::size_t>(row * g.width + 100)] = 5000.0f;
-  return g;
+  return test::grid("ridge", 20.0, 0.0, 0.05, 201, 201, false, [](double, double lon) {
+    return std::abs(lon - 5.0) < 0.01 ? 5000.0 : 100.0;
+  });
 }
 
 }  // namespace
@@ -126,21 +120,11 @@ TEST(TerrainRender, RidgeCastsItsShadowAwayFromTheSun) {
 // The sea at a mountain's foot lies in its shadow too: seen from straight above (no glint),
 // the sea south of a ridge's end, in its shadow, is darker than the sea north of it, in the Sun.
 TEST(TerrainRender, RidgeShadesTheSeaAtItsFoot) {
-  data::LatLonGrid g;
-  g.name = "coast";
-  g.width = 201;
-  g.height = 201;
-  g.lon0Deg = 0.0;
-  g.lat0Deg = 20.0;
-  g.dLonDeg = g.dLatDeg = 0.05;
-  for (int row = 0; row < g.height; ++row)
-    for (int col = 0; col < g.width; ++col) {
-      const double lat = g.lat0Deg + row * g.dLatDeg;
-      // Sea west of 5°E; a 3 km ridge along the coast from 23°N to 25°N only.
-      float h = col < 100 ? -200.0f : 100.0f;
-      if (col == 101 && lat >= 23.0 && lat <= 25.0) h = 3000.0f;
-      g.values.push_back(h);
-    }
+  // Sea west of 5°E; a 3 km ridge along the coast from 23°N to 25°N only.
+  const data::LatLonGrid g = test::grid("coast", 20.0, 0.0, 0.05, 201, 201, false, [](double lat, double lon) {
+    if (std::abs(lon - 5.05) < 0.01 && lat >= 23.0 - 1e-9 && lat <= 25.0 + 1e-9) return 3000.0;
+    return lon < 5.0 - 1e-9 ? -200.0 : 100.0;
+  });
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(g);
   render::FrameInput f;
