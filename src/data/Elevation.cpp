@@ -1,6 +1,8 @@
 #include "data/Elevation.hpp"
 
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -55,6 +57,22 @@ LatLonGrid readElevation(const GridFile& file, const std::string& variable) {
   if (*factor != 1.0) {
     for (float& v : grid.values) v = static_cast<float>(static_cast<double>(v) * *factor);
     grid.units = std::string("m");  // (a literal trips GCC 12's false -Wrestrict)
+  }
+  // Earth's relief spans -10 994 m (Challenger Deep) to 8849 m (Everest). Anything far outside
+  // is not relief in metres (wrong units, an unflagged fill value, corruption); the terrain's
+  // detail, culling and bounds assume this range.
+  for (std::size_t i = 0; i < grid.values.size(); ++i) {
+    const float v = grid.values[i];
+    if (std::isnan(v) || (v >= kMinElevationM && v <= kMaxElevationM)) continue;
+    const auto row = static_cast<int>(i / static_cast<std::size_t>(grid.width));
+    const auto col = static_cast<int>(i % static_cast<std::size_t>(grid.width));
+    char where[96];
+    std::snprintf(where, sizeof where, "%g m at latitude %.4g, longitude %.4g", static_cast<double>(v),
+                  grid.lat0Deg + row * grid.dLatDeg, grid.lon0Deg + col * grid.dLonDeg);
+    throw InputError(file.label() + ": variable '" + name + "' has " + where +
+                     ", outside Earth's relief (" + std::to_string(static_cast<int>(kMinElevationM)) +
+                     " to " + std::to_string(static_cast<int>(kMaxElevationM)) +
+                     " m); is it an elevation in metres, with its fill value declared?");
   }
   return grid;
 }

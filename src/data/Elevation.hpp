@@ -10,9 +10,15 @@
 
 namespace og::data {
 
+/// The heights an elevation layer may hold, m: Earth's relief with a margin. Values outside
+/// are refused (og::InputError) rather than drawn.
+inline constexpr float kMinElevationM = -12000.0f;
+inline constexpr float kMaxElevationM = 10000.0f;
+
 /// Reads an elevation grid (metres above mean sea level, negative below) from a NetCDF file
 /// (classic, 64-bit offset or NetCDF-4) or a GRIB file. Units m, km or ft are converted to
-/// metres; no units is taken as metres; other units are refused.
+/// metres; no units is taken as metres; other units are refused, and so are values outside
+/// [kMinElevationM, kMaxElevationM].
 /// The latitude/longitude axes are found by CF units (degrees_north / degrees_east) or
 /// standard_name, not by name. `variable` names the field; when empty the only 2-D field on
 /// those axes is used (or one called ROSE / z / elevation / topo / altitude / height).

@@ -46,8 +46,9 @@ bool aboveHorizon(const glm::dvec3& eyeEcef, const glm::dvec3& centreEcef, doubl
   // A point at radius rho is visible iff its distance to the eye is at most the sum of the two
   // tangent lengths, sqrt(|e|² - s²) + sqrt(rho² - s²); the sphere's nearest point is at
   // |c - e| - r and no point is farther out than |c| + r
-  // (and none is higher than the highest summit: 9 km above the ellipsoid).
-  const double rhoMax = std::min(std::sqrt(glm::dot(c, c)) + r, 1.0 + 9000.0 / geo::kWgs84SemiMinorM);
+  // (and none is higher than 18 km above the ellipsoid: a layer's 10 km at most, plus at most
+  // 80 % of it in detail).
+  const double rhoMax = std::min(std::sqrt(glm::dot(c, c)) + r, 1.0 + 18000.0 / geo::kWgs84SemiMinorM);
   if (rhoMax * rhoMax <= s2) return false;
   const double reach = std::sqrt(e2 - s2) + std::sqrt(rhoMax * rhoMax - s2);
   return glm::length(c - e) - r <= reach;

@@ -253,6 +253,25 @@ TEST(DataElevation, ConcurrentReadsAreSerialisedSafely) {
 // ---------------------------------------------------------------------------------------------
 // Files that must be refused with "FILE: problem"
 
+TEST(DataElevation, HeightsOutsideEarthsReliefAreRejected) {
+  // An undeclared fill value and heights in the wrong units are refused, not drawn (the
+  // terrain's detail, culling and bounds assume Earth's relief).
+  const auto lat = og::test::steps(0.0, 1.0, 3);
+  const auto lon = og::test::steps(0.0, 1.0, 3);
+  std::vector<double> values = fieldValues(lat, lon);
+  values[4] = -32768.0;
+  const fs::path fill = writeSimple("undeclared_fill.nc", lat, lon, values);
+  expectInputError(fill.string(), "-32768 m at latitude 1, longitude 1, outside Earth's relief",
+                   [&] { (void)og::data::readElevationFile(fill); });
+  const fs::path km = writeSimple("km_as_m.nc", lat, lon, std::vector<double>(9, 12.0), NC_FLOAT,
+                                  NC_NETCDF4, [](NcWriter& nc, int z) { nc.text(z, "units", "km"); });
+  expectInputError(km.string(), "12000 m", [&] { (void)og::data::readElevationFile(km); });
+  // Everest and the Challenger Deep are fine.
+  const fs::path earth = writeSimple("extremes.nc", lat, lon,
+                                     {8849, -10994, 0, 1, 2, 3, 4, 5, 6});
+  EXPECT_NO_THROW((void)og::data::readElevationFile(earth));
+}
+
 TEST(DataElevation, NonMonotonicLatitudeIsRejected) {
   const std::vector<double> lat = {0.0, 1.0, 3.0, 2.0};
   const auto lon = og::test::steps(0.0, 1.0, 4);
