@@ -33,6 +33,7 @@
 #include "io/Image.hpp"
 #include "ocean/OceanFrame.hpp"
 #include "render/GlobeRenderer.hpp"
+#include "terrain/Heightfield.hpp"
 
 namespace og::app {
 namespace fs = std::filesystem;
@@ -79,13 +80,14 @@ class Viewer {
   Viewer(const ViewOptions& options, io::SceneSettings scene, std::optional<io::CameraPath> path)
       : options_(options),
         scene_(std::move(scene)),
-        elevation_(data::loadElevationLayer(scene_.elevationLayer)),
+        ground_(data::loadElevationLayer(scene_.elevationLayer)),
         wind_(data::WindLayers::load(
             scene_.windLayers,
             data::windFromSpeedDirection(scene_.windSpeedMs, windTowardsDeg(scene_)), scene_.time)),
         controller_(scene_.camera, [this](double lat, double lon) {
-          // The sea is at the ellipsoid; land lifts the floor to its elevation.
-          return std::max(0.0, static_cast<double>(elevation_.sample(lat, lon)));
+          // The sea is at the ellipsoid; land lifts the floor to the terrain's height, detail
+          // included (the same function the tiles are built from).
+          return std::max(0.0, ground_.heightM(lat, lon));
         }),
         start_(scene_.camera) {
     if (path) flight_.emplace(path->keyframes);
@@ -115,7 +117,7 @@ class Viewer {
     glfwSetScrollCallback(w, [](GLFWwindow* win, double, double y) { self(win).onScroll(y); });
     glfwSwapInterval(1);
 
-    renderer_ = std::make_unique<render::GlobeRenderer>(elevation_, scene_.atmosphere);
+    renderer_ = std::make_unique<render::GlobeRenderer>(ground_.layer(), scene_.atmosphere);
     // Progressive terrain: missing tiles are built in the background, never stalling a frame.
     renderer_->terrain().selection().wait = false;
     // The renderer reads the layers point by point (wind texture); L switches them off.
@@ -465,7 +467,7 @@ class Viewer {
 
   ViewOptions options_;
   io::SceneSettings scene_;
-  data::LatLonGrid elevation_;
+  terrain::Heightfield ground_;  // the elevation layer and its detail: the floor to fly over
   data::WindLayers wind_;
   std::shared_ptr<const data::WindLayers> windShared_;  // the same, for the renderer
   viewer::FlightController controller_;
