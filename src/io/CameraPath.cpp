@@ -100,6 +100,12 @@ void readScene(const fs::path& file, const toml::table& t, SceneSettings& s) {
          s.height = static_cast<int>(integer(file, n, k, 1, 16384));
        }},
       {"exposure", num(s.exposure)},
+      {"samples",  // "auto" or 1, 2, 4, 8 (validateScene refuses the others)
+       [&](const toml::node& n, const std::string& k) {
+         s.samples = n.is_string() && n.value<std::string>() == "auto"
+                         ? 0
+                         : static_cast<int>(integer(file, n, k, 1, 8));
+       }},
       {"ocean_model", [&](const toml::node& n, const std::string& k) { s.oceanModel = text(file, n, k); }},
       {"wind_speed_ms", num(s.windSpeedMs)},
       {"wind_direction_deg", num(s.windFromDeg)},

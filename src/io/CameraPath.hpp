@@ -8,6 +8,7 @@
 //   width = 1280                         # pixels, [1, 16384]
 //   height = 720
 //   exposure = 6
+//   samples = 4                          # per pixel: "auto", 1, 2, 4 or 8
 //   ocean_model = "bruneton"             # or "classic"
 //   wind_speed_ms = 7                    # [0, 50]
 //   wind_direction_deg = 270             # from (meteorological), clockwise from north

@@ -225,3 +225,14 @@ TEST(Record, BadInputExitsTwoWithFileAndLine) {
   }
   EXPECT_TRUE(fs::is_empty(dir)) << "a failed run left a file behind";
 }
+
+// The shipped camera paths stay valid: they parse, and --count-frames gives their length.
+TEST(Record, ShippedPathsParse) {
+  const fs::path source = OG_SOURCE_DIR;
+  for (const auto& [file, frames] : {std::pair{"config/flythrough.toml", 601},
+                                     std::pair{"config/himalaya.toml", 601}}) {
+    const RunResult r = run("record " + (source / file).string() + " --count-frames", "count");
+    ASSERT_EQ(r.exitCode, 0) << file << ": " << r.err;
+    EXPECT_NE(r.out.find(std::to_string(frames)), std::string::npos) << file << ": " << r.out;
+  }
+}
