@@ -32,12 +32,7 @@ const vec4 BUMP_SPEED = vec4(0.031, 0.04, -0.03, 0.02);   // tiles per second, t
 vec3 oceanSurfaceRadiance(vec3 relative, vec3 radiance);  // aerial perspective (the pass)
 
 void main() {
-  // No sea over land, sample by sample (ocean/coast.glsl).
-  int seaSamples = 0;
-  for (int i = 0; i < gl_NumSamples; ++i)
-    if (seaAt(interpolateAtSample(vRelative, i))) seaSamples |= 1 << i;
-  if (seaSamples == 0) discard;
-  gl_SampleMask[0] = seaSamples;
+  KEEP_SEA_SAMPLES(vRelative)  // no sea over land (ocean/coast.glsl)
   vec2 uv = (vOceanXY + uFieldOffset) / BUMP_TILE_M;
   vec2 uv0 = uv + uTime * BUMP_SPEED.xy;
   vec2 uv1 = uv.yx * 1.25 + uTime * BUMP_SPEED.zw;  // swapped so the maps never align

@@ -10,3 +10,15 @@ bool seaAt(vec3 relative) {
   float d = length(relative);
   return elevationAt(latLonOfNormal(ellipsoidNormal(relative / d, d))) <= 0.0;
 }
+
+// No sea over land, sample by sample: keeps the pixel's sea samples in gl_SampleMask and drops
+// the fragment when it has none. A macro because interpolateAtSample takes the shader's input
+// variable itself (`RELATIVE`, the camera-relative position), not a copy.
+#define KEEP_SEA_SAMPLES(RELATIVE)                                     \
+  {                                                                    \
+    int seaSamples = 0;                                                \
+    for (int i = 0; i < gl_NumSamples; ++i)                            \
+      if (seaAt(interpolateAtSample(RELATIVE, i))) seaSamples |= 1 << i; \
+    if (seaSamples == 0) discard;                                      \
+    gl_SampleMask[0] = seaSamples;                                     \
+  }

@@ -38,12 +38,7 @@ void main() {
   vec3 frameUp = oceanToEcef[2];
   vec3 up = ellipsoidNormal(dir, dist);
   vec2 latLon = latLonOfNormal(up);
-  // No sea over land, sample by sample (ocean/coast.glsl).
-  int seaSamples = 0;
-  for (int i = 0; i < gl_NumSamples; ++i)
-    if (seaAt(interpolateAtSample(vRelative, i))) seaSamples |= 1 << i;
-  if (seaSamples == 0) discard;
-  gl_SampleMask[0] = seaSamples;
+  KEEP_SEA_SAMPLES(vRelative)  // no sea over land (ocean/coast.glsl)
   gSeaSunVisibility = sunVisibility(vRelative, up);  // mountains shade the sea at their feet
   vec2 wind = localWind(latLon);  // speed, azimuth
   OceanNormal on = oceanNormal(vOceanXY, max(footprint, 1e-4), wind.x);

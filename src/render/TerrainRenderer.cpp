@@ -52,12 +52,12 @@ TerrainRenderer::TerrainRenderer(const data::LatLonGrid& elevation, const Atmosp
   gl::checkErrors("TerrainRenderer setup");
 }
 
-float TerrainRenderer::morphScale(const terrain::Tile& t, const geo::CameraView& view, int heightPx) const {
-  // Tiles at forced levels never had a parent drawn; polar tiles at their cap never split.
+float TerrainRenderer::morphScale(const terrain::Tile& t, const geo::CameraView& view) const {
+  // Tiles at forced levels never had a parent drawn.
   if (t.key.level <= params_.minLevel) return 0.0f;
-  const double pixelsPerRadian = heightPx / (2.0 * std::tan(0.5 * view.verticalFovRad));
-  const double weight = t.maxHeightM < -50.0 ? 0.25 : 1.0;  // as terrain::tileErrorPx
-  return static_cast<float>(weight * 2.0 * t.spacingM * pixelsPerRadian / params_.maxSpacingPx);
+  // The parent's spacing (twice the tile's) in pixels at 1 m, over the limit.
+  const double spacingPx = terrain::tileSpacingPx(view, params_.heightPx, t, 1.0);
+  return static_cast<float>(2.0 * spacingPx / params_.maxSpacingPx);
 }
 
 void TerrainRenderer::bindTile(const terrain::Tile& t) {
@@ -116,8 +116,9 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
       const glm::dvec3 c = t->boundCentreEcef - view.positionEcef;
       const double r = t->boundRadiusM;
       if (glm::length(c) - r > reach) continue;
-      lo = glm::min(lo, glm::dvec2(glm::dot(c, lx), glm::dot(c, ly)) - r);
-      hi = glm::max(hi, glm::dvec2(glm::dot(c, lx), glm::dot(c, ly)) + r);
+      const glm::dvec2 xy(glm::dot(c, lx), glm::dot(c, ly));
+      lo = glm::min(lo, xy - r);
+      hi = glm::max(hi, xy + r);
     }
     lo = glm::max(lo, glm::dvec2(-reach));
     hi = glm::min(hi, glm::dvec2(reach));
@@ -154,7 +155,7 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
       const glm::dvec2 xy(glm::dot(c, lx), glm::dot(c, ly));
       if (glm::any(glm::greaterThan(glm::abs(xy - mid), glm::dvec2(half + t->boundRadiusM)))) continue;
       shadowProgram_.set("uTileOffset", glm::vec3(t->centreEcef - view.positionEcef));
-      shadowProgram_.set("uMorphScale", morphScale(*t, view, params_.heightPx));
+      shadowProgram_.set("uMorphScale", morphScale(*t, view));
       bindTile(*t);
       glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
     }
@@ -231,11 +232,10 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   glFrontFace(GL_CCW);
   glCullFace(GL_BACK);
   for (const terrain::Tile* t : tiles) {
-    // Wholly under 50 m of water: the sea (the grid, or the globe's from orbit) covers it.
-    if (t->maxHeightM < -50.0) continue;
+    if (t->coveredBySea()) continue;  // the grid's sea, or the globe's from orbit, hides it
     // Camera-relative tile origin in double, then float: never float world coordinates.
     p.set("uTileOffset", glm::vec3(t->centreEcef - view.positionEcef));
-    p.set("uMorphScale", morphScale(*t, view, height));
+    p.set("uMorphScale", morphScale(*t, view));
     p.set("uDetailFirst", t->normalOctaves);
     bindTile(*t);
     glEnable(GL_CULL_FACE);

@@ -70,7 +70,7 @@ class TerrainRenderer {
                        const glm::dvec3& sunDirectionEcef);
   void bindTile(const terrain::Tile& tile);
   /// terrain.vert's uMorphScale for a tile.
-  [[nodiscard]] float morphScale(const terrain::Tile& tile, const geo::CameraView& view, int heightPx) const;
+  [[nodiscard]] float morphScale(const terrain::Tile& tile, const geo::CameraView& view) const;
   struct GpuTile {
     gl::Buffer vertices;
   };

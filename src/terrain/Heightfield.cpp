@@ -30,11 +30,6 @@ using std::pow;
 #include "terrain/detail.glsl"
 }  // namespace glsl
 
-glm::dvec3 unitUpOf(double latitudeDeg, double longitudeDeg) {
-  const double lat = latitudeDeg * kDeg, lon = longitudeDeg * kDeg;
-  return {std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
-}
-
 }  // namespace
 
 double DetailOctaves::wavelengthM(int k) const { return std::ldexp(longestM, -k); }
@@ -89,7 +84,10 @@ double Heightfield::layerHeightM(double latitudeDeg, double longitudeDeg) const 
 }
 
 double Heightfield::detailAmplitudeM(double latitudeDeg, double longitudeDeg) const {
-  const double h = layerHeightM(latitudeDeg, longitudeDeg);
+  return detailAmplitudeM(latitudeDeg, longitudeDeg, layerHeightM(latitudeDeg, longitudeDeg));
+}
+
+double Heightfield::detailAmplitudeM(double latitudeDeg, double longitudeDeg, double h) const {
   const double d = layer_.dLatDeg;
   const double relief =
       0.5 * (std::abs(layerHeightM(latitudeDeg + d, longitudeDeg) -
@@ -106,8 +104,8 @@ HeightSample Heightfield::sample(double latitudeDeg, double longitudeDeg, int no
                                  double stepDeg) const {
   HeightSample s;
   const double h = layerHeightM(latitudeDeg, longitudeDeg);
-  const glm::dvec3 up = unitUpOf(latitudeDeg, longitudeDeg);
-  s.detailAmplitudeM = detailAmplitudeM(latitudeDeg, longitudeDeg);
+  const glm::dvec3 up = geodeticUpFast(latitudeDeg, longitudeDeg);
+  s.detailAmplitudeM = detailAmplitudeM(latitudeDeg, longitudeDeg, h);
   glm::dvec3 grad(0.0);
   s.heightM = h;
   if (s.detailAmplitudeM > 0.0)
@@ -136,9 +134,9 @@ HeightSample Heightfield::sample(double latitudeDeg, double longitudeDeg, int no
 
 double Heightfield::heightM(double latitudeDeg, double longitudeDeg) const {
   const double h = layerHeightM(latitudeDeg, longitudeDeg);
-  const double amplitude = detailAmplitudeM(latitudeDeg, longitudeDeg);
+  const double amplitude = detailAmplitudeM(latitudeDeg, longitudeDeg, h);
   if (amplitude <= 0.0) return h;
-  return h + amplitude * detailSum(octaves_, unitUpOf(latitudeDeg, longitudeDeg),
+  return h + amplitude * detailSum(octaves_, geodeticUpFast(latitudeDeg, longitudeDeg),
                                    octaves_.heightCount, 0, nullptr);
 }
 

@@ -65,6 +65,9 @@ class Heightfield {
   [[nodiscard]] double cellM() const { return cellM_; }
 
  private:
+  /// detailAmplitudeM for a layer height `h` already read there.
+  [[nodiscard]] double detailAmplitudeM(double latitudeDeg, double longitudeDeg, double h) const;
+
   data::LatLonGrid layer_;
   double cellM_ = 0.0;
   DetailOctaves octaves_;

@@ -69,12 +69,16 @@ bool inFrustum(const geo::CameraView& view, int widthPx, int heightPx, const glm
   return true;
 }
 
+double tileSpacingPx(const geo::CameraView& view, int heightPx, const Tile& tile, double distanceM) {
+  const double pixelsPerRadian = heightPx / (2.0 * std::tan(0.5 * view.verticalFovRad));
+  const double weight = tile.coveredBySea() ? 0.25 : 1.0;
+  return weight * tile.spacingM / distanceM * pixelsPerRadian;
+}
+
 double tileErrorPx(const geo::CameraView& view, int heightPx, const Tile& tile) {
   const double distance =
       std::max(glm::length(tile.boundCentreEcef - view.positionEcef) - tile.boundRadiusM, 1.0);
-  const double pixelsPerRadian = heightPx / (2.0 * std::tan(0.5 * view.verticalFovRad));
-  const double weight = tile.maxHeightM < -50.0 ? 0.25 : 1.0;
-  return weight * tile.spacingM / distance * pixelsPerRadian;
+  return tileSpacingPx(view, heightPx, tile, distance);
 }
 
 std::vector<const Tile*> selectTiles(TileCache& cache, const geo::CameraView& view,

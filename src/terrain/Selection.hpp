@@ -44,8 +44,11 @@ bool aboveHorizon(const glm::dvec3& eyeEcef, const glm::dvec3& centreEcef, doubl
 bool inFrustum(const geo::CameraView& view, int widthPx, int heightPx,
                const glm::dvec3& centreEcef, double radiusM);
 
-/// Screen-space error of a tile: its vertex spacing in pixels at its bounding sphere's
-/// nearest distance. Tiles wholly under 50 m of water count a quarter (the sea covers them).
+/// A tile's vertex spacing in pixels seen at `distanceM` from the eye. Tiles the sea covers
+/// (Tile::coveredBySea) count a quarter.
+double tileSpacingPx(const geo::CameraView& view, int heightPx, const Tile& tile, double distanceM);
+
+/// Screen-space error of a tile: tileSpacingPx at its bounding sphere's nearest distance.
 double tileErrorPx(const geo::CameraView& view, int heightPx, const Tile& tile);
 
 /// The tiles to draw, in depth-first quadtree order (children 0..3); builds missing tiles in

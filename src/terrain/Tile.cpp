@@ -36,6 +36,11 @@ glm::dvec3 geodeticToEcefFast(double latDeg, double lonDeg, double heightM) {
           (n * (1.0 - e2) + heightM) * s};
 }
 
+glm::dvec3 geodeticUpFast(double latDeg, double lonDeg) {
+  const double lat = latDeg * kDeg, lon = lonDeg * kDeg;
+  return {std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
+}
+
 Tile buildTile(const Heightfield& heights, const TileKey& key) {
   constexpr int n = kTileQuads + 1;
   Tile t;
@@ -93,8 +98,7 @@ Tile buildTile(const Heightfield& heights, const TileKey& key) {
 
   auto push = [&](std::size_t k, double depth) {
     const double lat = lats[k] * kDeg, lon = lons[k] * kDeg;
-    const glm::dvec3 up{std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
-    const glm::dvec3 p = ecef[k] - depth * up - t.centreEcef;
+    const glm::dvec3 p = ecef[k] - depth * geodeticUpFast(lats[k], lons[k]) - t.centreEcef;
     t.positions.push_back(p);
     t.vertices.push_back({glm::vec3(p), glm::vec3(samples[k].normal),
                           static_cast<float>(samples[k].heightM - depth), static_cast<float>(lat),

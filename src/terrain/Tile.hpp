@@ -65,6 +65,9 @@ struct Tile {
   int normalOctaves = 0;                 ///< detail octaves in the vertex normals (the rest per pixel)
   std::uint64_t lastUsedFrame = 0;
 
+  /// Wholly under 50 m of water: the sea covers it (drawn by the sea, split with less care).
+  [[nodiscard]] bool coveredBySea() const { return maxHeightM < -50.0; }
+
   /// Memory held by the tile's CPU arrays, bytes.
   [[nodiscard]] std::size_t bytes() const {
     return sizeof(Tile) + positions.capacity() * sizeof(glm::dvec3) +
@@ -82,5 +85,8 @@ const std::vector<std::uint32_t>& tileIndices();
 /// Closed-form geodetic -> ECEF (m): the same arithmetic for every caller, so shared vertices
 /// match bit for bit.
 glm::dvec3 geodeticToEcefFast(double latDeg, double lonDeg, double heightM);
+
+/// The geodetic normal (unit, ECEF axes) at a latitude/longitude in degrees, closed form.
+glm::dvec3 geodeticUpFast(double latDeg, double lonDeg);
 
 }  // namespace og::terrain
