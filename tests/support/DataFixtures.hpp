@@ -78,6 +78,13 @@ class NcWriter {
   std::vector<std::pair<int, std::vector<double>>> pending_;
 };
 
+/// A folder for a test group's fixture files under the build's test output (kept between tests).
+inline std::filesystem::path fixtureDir(const std::string& group) {
+  const std::filesystem::path dir = std::filesystem::path(OG_TEST_OUT_DIR) / group;
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
 inline std::vector<double> steps(double first, double step, int count) {
   std::vector<double> v(static_cast<std::size_t>(count));
   for (int i = 0; i < count; ++i) v[static_cast<std::size_t>(i)] = first + step * i;

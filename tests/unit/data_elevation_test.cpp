@@ -28,11 +28,7 @@ using og::data::LatLonGrid;
 
 namespace {
 
-fs::path outDir() {
-  const fs::path dir = fs::path(OG_TEST_OUT_DIR) / "data_elevation";
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path outDir() { return og::test::fixtureDir("data_elevation"); }
 
 using og::test::NcWriter;
 using og::test::expectInputError;

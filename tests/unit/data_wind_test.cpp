@@ -34,11 +34,7 @@ using og::test::steps;
 
 namespace {
 
-fs::path outDir() {
-  const fs::path dir = fs::path(OG_TEST_OUT_DIR) / "data_wind";
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path outDir() { return og::test::fixtureDir("data_wind"); }
 
 UtcTime iso(const char* text) { return *UtcTime::parseIso8601(text); }
 
