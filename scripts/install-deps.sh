@@ -9,6 +9,8 @@ packages=(
   libegl-dev libgl-dev libosmesa6-dev libegl-mesa0 libgl1-mesa-dri
   libnetcdf-dev libeccodes-dev libpng-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev
+  # FFTW: the CPU reference of the GPU FFT wave patterns in the tests
+  libfftw3-dev
   # video output for `record`; ffmpeg/ffprobe for the tests and the Slurm encode step
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg
   # the viewer's test: a private X server and synthetic key presses

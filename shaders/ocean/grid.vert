@@ -1,12 +1,13 @@
 #version 450 core
 // Screen-space projected grid (Bruneton 2010 §4.2, after Hinsinger et al.): a regular grid of
 // vertices every few pixels, each cast onto the WGS84 ellipsoid (not a plane) along its pixel's
-// ray and displaced by the filtered wave sum. Vertices whose rays miss the sea are pulled down
-// onto the horizon so no triangle spans the sky. Positions stay camera- or frame-relative.
+// ray and displaced by the FFT wave patterns filtered by the cell's size (ocean/patterns.glsl).
+// Vertices whose rays miss the sea are pulled down onto the horizon so no triangle spans the
+// sky. Positions stay camera- or frame-relative.
 #include "common/types.glsl"
 #include "geo/ellipsoid.glsl"
 #include "ocean/wind.glsl"
-#include "ocean/waves.glsl"
+#include "ocean/patterns.glsl"
 
 uniform ivec2 uGridSize;      // vertices per row, rows
 uniform vec4 uGridMarginNdc;  // overshoot (left, right, bottom, top) so displaced edges stay covered
@@ -45,8 +46,7 @@ void main() {
   vec3 n = uEcefToOcean * ellipsoidNormal(dir, t);
   float cosIncidence = max(abs(dot(uEcefToOcean * dir, n)), 0.02);
   float cell = t * uCellAngle / cosIncidence;
-  float windSpeed = localWind(latLonOfNormal(ellipsoidNormal(dir, t))).x;
-  vec3 d = oceanDisplacement(local.xy, cell, windSpeed);
+  vec3 d = oceanDisplacement(local.xy, cell, localWind(latLonOfNormal(ellipsoidNormal(dir, t))));
   // Displacement along the frame's axes; near the camera (where waves are resolved at all)
   // they coincide with the local tangent frame.
   vRelative = rel + transpose(uEcefToOcean) * d;

@@ -97,6 +97,19 @@ vec3 seaRadiance(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE)
   return seaSunGlint(p, sigma2) + sky + seaRefracted(p, upE, fbar);
 }
 
+// Whitecap foam (Dupuy & Bruneton 2012 Eq. 2): a Lambertian surface of reflectance 0.4
+// (Koepke 1984) over the fraction `coverage` of the footprint, the clear sea over the rest:
+// R = W R_foam + (1 - W) R_sea.
+const float FOAM_REFLECTANCE = 0.4;
+vec3 seaRadianceWithFoam(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE,
+                         float coverage) {
+  vec3 clear = seaRadiance(vE, nE, windE, sigma2, upE, sunE);
+  if (coverage <= 0.0) return clear;
+  SeaPoint p = seaPoint(vE, nE, windE, upE, sunE);
+  vec3 foam = FOAM_REFLECTANCE / PI * (p.eSun * max(p.l.z, 0.0) + p.eSky);
+  return mix(clear, foam, coverage);
+}
+
 #ifdef OCEAN_VALIDATION_REFERENCE
 // The brute-force reference of the validation (paper §7.2, docs/validation.md): each sample is a
 // perfect mirror with its exact facet normal n (every wave), the pixel's average coming from

@@ -1,12 +1,13 @@
 #version 450 core
-// Sea-surface shading of the projected grid: per-pixel normal from the waves resolved at the
-// pixel's footprint (Eq. 3, with the back-facing fix), the rest of the slope variance in the
-// BRDF (Eq. 4, w_r = 1 - w_n), then Algorithm 5.1 (ocean/lighting.glsl), with the globe's
-// aerial perspective on top.
+// Sea-surface shading of the projected grid: the footprint's mean normal and unresolved slope
+// variance from the FFT wave patterns (ocean/patterns.glsl; Bruneton 2010 Eqs. 3-4 as
+// mip-mapped moments), the back-facing fix, whitecaps from the Jacobian's statistics in the
+// footprint (Dupuy & Bruneton 2012), then Algorithm 5.1 (ocean/lighting.glsl), with the
+// globe's aerial perspective on top.
 #include "common/types.glsl"
 #include "geo/ellipsoid.glsl"
 #include "ocean/wind.glsl"
-#include "ocean/waves.glsl"
+#include "ocean/patterns.glsl"
 #include "ocean/brdf.glsl"
 #include "ocean/lighting.glsl"
 #include "render/elevation.glsl"
@@ -41,10 +42,10 @@ void main() {
   KEEP_SEA_SAMPLES(vRelative)  // no sea over land (ocean/coast.glsl)
   gSeaSunVisibility = sunVisibility(vRelative, up);  // mountains shade the sea at their feet
   vec2 wind = localWind(latLon);  // speed, azimuth
-  OceanNormal on = oceanNormal(vOceanXY, max(footprint, 1e-4), wind.x);
+  SeaSurface sea = oceanSurface(vOceanXY, max(footprint, 1e-4), wind);
   // Waves live in the frame's tangent plane; tilt their normal onto the ellipsoid's curvature
   // so that with the waves faded out the normal is exactly the ellipsoid's (as in orbit).
-  vec3 nFrame = oceanToEcef * on.normal;
+  vec3 nFrame = oceanToEcef * normalize(vec3(-sea.meanSlope, 1.0));
   vec3 n = normalize(nFrame + (up - frameUp) * dot(nFrame, frameUp));
 #ifdef OCEAN_VALIDATION_REFERENCE
   // Sub-triangle facets are sampled uniformly over the triangle, but a facet's share of the
@@ -57,19 +58,18 @@ void main() {
   // Back-facing normals seen at grazing angles: reflect about the view plane (§5.1).
   float nv = dot(n, v);
   if (nv < 0.0) n = normalize(n - 2.0 * nv * v);
-  // Unresolved slope variance: the local wind's total minus what the normals already show.
-  // (The resolved part is split along/across the reference wind the waves were built for.)
-  vec2 sigma2 = max(windSlopeVariance(wind.x) - on.resolvedVariance, vec2(2e-5));
   mat3 local = localFrame(up);
   vec3 windDir = sin(wind.y) * local[0] + cos(wind.y) * local[1];
 #ifdef OCEAN_VALIDATION_REFERENCE
-  // Validation reference: a mirror per sample; sigma2 is only the tail below the shortest wave.
-  vec3 radiance = seaRadianceMirror(v, n, windDir, sigma2, up, uSunDirEcef);
+  // Validation reference: a mirror per sample; the variance is only the tail below the finest
+  // pattern (sea.variance at lod 0 holds just that plus the texels' own spread).
+  vec3 radiance = seaRadianceMirror(v, n, windDir, sea.variance, up, uSunDirEcef);
   // Weighted sample: premultiplied radiance, weight in alpha (never 0, alpha also marks sea).
   fragRadiance = vec4(oceanSurfaceRadiance(vRelative, radiance) * sampleWeight, max(sampleWeight, 1e-6));
   return;
 #else
-  vec3 radiance = seaRadiance(v, n, windDir, sigma2, up, uSunDirEcef);
+  float foam = whitecapCoverage(sea.jacobian);
+  vec3 radiance = seaRadianceWithFoam(v, n, windDir, sea.variance, up, uSunDirEcef, foam);
 #endif
   fragRadiance = vec4(oceanSurfaceRadiance(vRelative, radiance), 1.0);
 }

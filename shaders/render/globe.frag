@@ -28,6 +28,7 @@
 #include "ocean/brdf.glsl"
 #include "ocean/lighting.glsl"
 #include "ocean/wind.glsl"
+#include "ocean/patterns.glsl"
 #include "render/elevation.glsl"
 #include "render/aerial.glsl"
 
@@ -61,7 +62,8 @@ vec3 shadeLand(vec3 albedo, float muS, vec3 sunIrr, vec3 skyIrr) {
 }
 
 // Sea seen from afar (above 20 km, and wherever the grid is not drawn): the ellipsoid with the
-// Ross BRDF over the whole slope distribution of the local wind (Bruneton 2010 §6), the same lighting
+// Ross BRDF over the whole slope distribution of the local wind (Bruneton 2010 §6) and the
+// whitecap coverage of the local wind's Jacobian statistics (Dupuy 2012), the same lighting
 // code as the projected grid (ocean/lighting.glsl), so the switch between the two is invisible.
 vec3 shadeSea(vec3 v, vec3 n) {
   vec3 east = cross(vec3(0.0, 0.0, 1.0), n);
@@ -69,7 +71,8 @@ vec3 shadeSea(vec3 v, vec3 n) {
   vec3 north = cross(n, east);
   vec2 w = localWind(latLonOfNormal(n));  // speed, azimuth
   vec3 wind = sin(w.y) * east + cos(w.y) * north;
-  return seaRadiance(v, n, wind, windSlopeVariance(w.x), n, uSunDir);
+  float foam = whitecapCoverage(vec2(1.0, seaJacobianVarianceTotal(w.x)));
+  return seaRadianceWithFoam(v, n, wind, seaSlopeVarianceTotal(w.x), n, uSunDir, foam);
 }
 
 // Light leaving the globe's surface at distance t along dir, towards the viewer.

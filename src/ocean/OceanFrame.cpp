@@ -1,7 +1,6 @@
 #include "ocean/OceanFrame.hpp"
 
 #include <cmath>
-#include <numbers>
 
 namespace og::ocean {
 
@@ -28,20 +27,14 @@ void OceanFrame::moveTo(const geo::Geodetic& camera) {
   axes_ = newAxes;
 }
 
-OceanFrame::WavePhases OceanFrame::phases(const WaveSet& waves, double timeS) const {
-  constexpr double kTwoPi = 2.0 * std::numbers::pi;
-  WavePhases out;
-  out.k.reserve(waves.waves.size());
-  out.phaseRad.reserve(waves.waves.size());
+glm::dvec2 OceanFrame::fieldOffsetModulo(double tileM) const {
   const double c = std::cos(rotation_), s = std::sin(rotation_);
-  for (const Wave& w : waves.waves) {
-    const glm::dvec2 k{c * w.kEast - s * w.kNorth, s * w.kEast + c * w.kNorth};
-    // theta = omega t + phase0 - k . (x + offset): fold everything but k . x here, in double.
-    const double phase = std::fmod(w.omegaRadS * timeS + w.phaseRad - glm::dot(k, offset_), kTwoPi);
-    out.k.push_back(k);
-    out.phaseRad.push_back(phase < 0.0 ? phase + kTwoPi : phase);
-  }
-  return out;
+  const glm::dvec2 field{c * offset_.x + s * offset_.y, -s * offset_.x + c * offset_.y};
+  auto fold = [tileM](double v) {
+    const double r = std::fmod(v, tileM);
+    return r < 0.0 ? r + tileM : r;
+  };
+  return {fold(field.x), fold(field.y)};
 }
 
 }  // namespace og::ocean

@@ -2,14 +2,11 @@
 // The local ocean frame (Bruneton 2010 §6, as Proland does it): a tangent plane at the sea point
 // under the camera, rebuilt in double precision whenever the camera moves, with the wave phases
 // carried across rebuilds so waves stay fixed to the Earth and never jump. The GPU only sees
-// positions in this frame (metres, within a few hundred km of its origin) and per-wave phases
-// already reduced modulo 2 pi.
+// positions in this frame (metres, within a few hundred km of its origin) and the wave field's
+// offset already folded modulo each wave pattern's tile (fieldOffsetModulo).
 #include <glm/glm.hpp>
 
-#include <vector>
-
 #include "geo/Wgs84.hpp"
-#include "ocean/WaveSet.hpp"
 
 namespace og::ocean {
 
@@ -29,14 +26,10 @@ class OceanFrame {
   /// (meridian convergence accumulated by moves).
   [[nodiscard]] double fieldRotationRad() const { return rotation_; }
 
-  /// Per-wave phases at time t for this frame: theta_i(x) = phase_i - k_i . x with x the
-  /// position in this frame's tangent plane (east, north, metres); reduced modulo 2 pi in double.
-  /// Also returns the wave vectors in this frame's axes.
-  struct WavePhases {
-    std::vector<glm::dvec2> k;      ///< rad/m, east/north in this frame
-    std::vector<double> phaseRad;   ///< [0, 2 pi)
-  };
-  [[nodiscard]] WavePhases phases(const WaveSet& waves, double timeS) const;
+  /// Position of this frame's origin in the wave field, in the field's own axes (the frame's
+  /// axes turned by -fieldRotationRad), folded into [0, tileM) per axis, in double: what a
+  /// periodic tile of that size shows at the frame's origin. tileM > 0.
+  [[nodiscard]] glm::dvec2 fieldOffsetModulo(double tileM) const;
 
  private:
   glm::dvec3 origin_{0.0};

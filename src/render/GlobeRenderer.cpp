@@ -25,7 +25,8 @@ GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
                              std::shared_ptr<const Atmosphere> atmosphere)
     : atmosphere_(std::move(atmosphere)),
       globe_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
-              {GL_FRAGMENT_SHADER, "render/globe.frag"}}),
+              {GL_FRAGMENT_SHADER, "render/globe.frag"}},
+             OceanPatterns::shaderDefines()),
       tonemap_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
                 {GL_FRAGMENT_SHADER, "render/tonemap.frag"}}),
       tonemapMs_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
@@ -96,17 +97,16 @@ const gl::RenderTarget& GlobeRenderer::singleSampleHdr() const {
   return resolved_;
 }
 
-const ocean::WaveSet& GlobeRenderer::waveSetFor(double windSpeedMs, double windDirectionDeg,
-                                                std::uint64_t seed) {
-  if (waves_.waves.empty() || waves_.params.windSpeedMs != windSpeedMs ||
-      waves_.params.windDirectionDeg != windDirectionDeg || waves_.params.seed != seed) {
-    ocean::WaveSetParams p;
-    p.windSpeedMs = windSpeedMs;
-    p.windDirectionDeg = windDirectionDeg;
+const OceanPatterns& GlobeRenderer::patternsFor(double referenceWindMs, std::uint64_t seed) {
+  if (patterns_ == nullptr || patterns_->patterns().params.seed != seed ||
+      patterns_->requestedWindMs() != referenceWindMs) {
+    ocean::WavePatternParams p;
+    p.referenceWindMs = std::clamp(referenceWindMs, 0.0, 50.0);
     p.seed = seed;
-    waves_ = ocean::makeWaveSet(p);
+    patterns_ = std::make_unique<OceanPatterns>(
+        std::make_shared<const ocean::WavePatterns>(ocean::makeWavePatterns(p)), referenceWindMs);
   }
-  return waves_;
+  return *patterns_;
 }
 
 void GlobeRenderer::render(const FrameInput& f) {
@@ -142,17 +142,14 @@ void GlobeRenderer::render(const FrameInput& f) {
   globe_.set("uEyeC", static_cast<float>(c));
   globe_.set("uCamUp", toFloat(view.enu.up));
   globe_.set("uCamAltitude", static_cast<float>(view.position.heightM));
-  // The wave set is built for the wind under the camera; elsewhere the shaders rescale it to
-  // the local wind (WindTextures' tables).
-  double windSpeed = f.windSpeedMs, windDirection = f.windDirectionDeg;
-  if (const data::WindLayers* layers = wind_->layers()) {
-    const data::WindVector w = layers->sample(view.position.latitudeDeg, view.position.longitudeDeg);
-    windSpeed = std::min(std::hypot(w.uMs, w.vMs), 50.0);
-    windDirection = std::atan2(w.uMs, w.vMs) / kDeg;
-  }
-  const ocean::WaveSet& waves = waveSetFor(windSpeed, windDirection, f.waveSeed);
-  wind_->setWaveSet(waves);
-  wind_->bind(globe_, windSpeed, windDirection);
+  // The waves hold the strongest wind of the scene; every point scales and turns them to its
+  // own wind (ocean/patterns.glsl).
+  wind_->setConstantWind(f.windSpeedMs, f.windDirectionDeg);
+  const OceanPatterns& patterns =
+      patternsFor(std::max(f.windSpeedMs, wind_->maxLayerSpeedMs()), f.waveSeed);
+  wind_->bind(globe_);
+  patterns.bind();
+  patterns.setUniforms(globe_, nullptr, 0.0);
   const bool grid = view.position.heightM < kOceanGridMaxHeightM;
   globe_.set("uSeaByGrid", grid ? 1 : 0);
   globe_.set("uSeaColor", OceanLighting{}.seaColor);
@@ -186,7 +183,8 @@ void GlobeRenderer::render(const FrameInput& f) {
     const double amplitude = 1.0 - x * x * (3.0 - 2.0 * x);
     glDepthFunc(GL_GREATER);
     ocean_->setCellPixels(f.oceanCellPixels);
-    ocean_->draw(view, f.width, f.height, waves, frame, f.simulationTimeS, lighting, amplitude,
+    if (f.oceanModel == OceanModel::Bruneton) patterns_->update(f.simulationTimeS);
+    ocean_->draw(view, f.width, f.height, *patterns_, frame, f.simulationTimeS, lighting, amplitude,
                  f.oceanModel, *wind_);
   }
 

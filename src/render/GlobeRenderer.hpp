@@ -14,8 +14,8 @@
 #include "gl/Shader.hpp"
 #include "io/Image.hpp"
 #include "ocean/OceanFrame.hpp"
-#include "ocean/WaveSet.hpp"
 #include "render/Atmosphere.hpp"
+#include "render/OceanPatterns.hpp"
 #include "render/OceanRenderer.hpp"
 #include "render/TerrainRenderer.hpp"
 #include "render/WindTextures.hpp"
@@ -45,7 +45,7 @@ struct FrameInput {
   /// moves); nullptr starts a fresh frame under the camera.
   const ocean::OceanFrame* oceanFrame = nullptr;
   int oceanCellPixels = 8;         ///< projected-grid cell size, pixels
-  std::uint64_t waveSeed = 1;      ///< wave directions and phases
+  std::uint64_t waveSeed = 1;      ///< the waves' random amplitudes and phases
   /// Samples per pixel of the HDR target: 1, 2, 4 or 8 (clamped, with a warning, to what the
   /// GL device offers), or kAutoSamples. Shaders still run once per pixel; the extra samples
   /// anti-alias the edges of triangles and of the depth test (terrain silhouettes, shorelines).
@@ -97,6 +97,9 @@ class GlobeRenderer {
   /// Blocks until the GPU has finished the last frame (for timing).
   static void finish();
 
+  /// The wave patterns of the last frame (nullptr before the first).
+  [[nodiscard]] const OceanPatterns* oceanPatterns() const { return patterns_.get(); }
+
   /// The terrain pass (tile counts and memory of the last frame).
   [[nodiscard]] const TerrainRenderer& terrain() const { return *terrain_; }
   TerrainRenderer& terrain() { return *terrain_; }
@@ -106,7 +109,9 @@ class GlobeRenderer {
   /// The HDR target, resolved to one sample per pixel when multisampled (on first use after
   /// each render()).
   const gl::RenderTarget& singleSampleHdr() const;
-  const ocean::WaveSet& waveSetFor(double windSpeedMs, double windDirectionDeg, std::uint64_t seed);
+  /// The wave patterns for the scene's winds: made for the strongest wind of the layers and the
+  /// constant wind (never the wind under the camera), rebuilt only when that or the seed changes.
+  const OceanPatterns& patternsFor(double referenceWindMs, std::uint64_t seed);
 
   std::shared_ptr<const Atmosphere> atmosphere_;
   gl::Program globe_;
@@ -120,7 +125,7 @@ class GlobeRenderer {
   std::unique_ptr<OceanRenderer> ocean_;
   std::unique_ptr<TerrainRenderer> terrain_;
   std::unique_ptr<WindTextures> wind_;
-  ocean::WaveSet waves_;
+  std::unique_ptr<OceanPatterns> patterns_;
   gl::RenderTarget hdr_;
   gl::RenderTarget ldr_;
   int maxSamples_ = 1;        ///< what the device offers for the HDR target

@@ -66,9 +66,10 @@ std::vector<std::string> skyDefines(const Atmosphere* atmosphere) {
   return atmosphere ? std::vector<std::string>{} : std::vector<std::string>{"OCEAN_SIMPLE_SKY"};
 }
 
-// The validation variants' defines (shaders/ocean/waves.glsl, lighting.glsl, ocean.frag).
+// The validation variants' defines (shaders/ocean/patterns.glsl, lighting.glsl, ocean.frag).
 std::vector<std::string> oceanDefines(const Atmosphere* atmosphere, ValidationMode mode) {
   std::vector<std::string> d = skyDefines(atmosphere);
+  for (const std::string& define : OceanPatterns::shaderDefines()) d.push_back(define);
   if (mode == ValidationMode::Reference) d.emplace_back("OCEAN_VALIDATION_REFERENCE");
   if (mode == ValidationMode::ConstantBrdf) d.emplace_back("OCEAN_VALIDATION_CONSTANT");
   return d;
@@ -84,8 +85,7 @@ OceanRenderer::OceanRenderer(const Atmosphere* atmosphere, ValidationMode mode)
       bumpMap_(makeBumpMap()),
       fresnelRamp_(makeFresnelRamp()),
       vao_(gl::createVertexArray()),
-      indices_(gl::createBuffer()),
-      waveBuffer_(gl::createBuffer()) {}
+      indices_(gl::createBuffer()) {}
 
 void OceanRenderer::ensureGrid(int columns, int rows) {
   if (columns == gridColumns_ && rows == gridRows_) return;
@@ -149,26 +149,24 @@ void OceanRenderer::setCommon(const gl::Program& p, const geo::CameraView& view,
 }
 
 void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
-                         const ocean::WaveSet& waves, const ocean::OceanFrame& frame, double timeS,
+                         const OceanPatterns& patterns, const ocean::OceanFrame& frame, double timeS,
                          const OceanLighting& lighting, double amplitudeScale, OceanModel model,
                          const WindTextures& wind) {
   // The grid overshoots the screen (NDC) so displaced edges stay covered: waves displace
-  // vertices by up to their summed amplitude, which is a large angle seen from a few metres.
-  double amplitudeSum = 0.0;
-  for (const auto& w : waves.waves) amplitudeSum += w.amplitudeM;
-  if (model == OceanModel::Classic) amplitudeSum = 0.76;  // the four sines' heights
+  // vertices by up to their amplitude, which is a large angle seen from a few metres.
+  const double amplitude = model == OceanModel::Classic ? 0.76 : patterns.amplitudeBoundM();  // classic: its four sines
   const double eyeAbove = std::max(view.position.heightM, 0.1);
-  const double side = std::clamp(amplitudeScale * amplitudeSum / eyeAbove, 0.1, 1.0);
-  const double bottom = std::clamp(3.0 * amplitudeScale * amplitudeSum / eyeAbove, 0.1, 3.0);
+  const double side = std::clamp(amplitudeScale * amplitude / eyeAbove, 0.1, 1.0);
+  const double bottom = std::clamp(3.0 * amplitudeScale * amplitude / eyeAbove, 0.1, 3.0);
   const glm::vec4 margin(static_cast<float>(side), static_cast<float>(side),
                          static_cast<float>(bottom), 0.1f);  // left, right, bottom, top
   ensureGrid(std::max(2, static_cast<int>(std::ceil(width * (1 + side) / cellPixels_)) + 1),
              std::max(2, static_cast<int>(std::ceil(height * (1 + 0.5 * (bottom + 0.1)) / cellPixels_)) + 1));
 
+  const gl::Program& p = model == OceanModel::Classic ? classic_ : program_;
+  setCommon(p, view, height, frame, lighting);
+  p.set("uGridMarginNdc", margin);
   if (model == OceanModel::Classic) {
-    const gl::Program& p = classic_;
-    setCommon(p, view, height, frame, lighting);
-    p.set("uGridMarginNdc", margin);
     // The classic pattern repeats every 800 m (see classic.vert/.frag): fold the offset there.
     const glm::dvec2 off = frame.fieldOffsetM();
     p.set("uFieldOffset", glm::vec2(static_cast<float>(std::fmod(off.x, 800.0)),
@@ -176,42 +174,12 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     p.set("uTime", static_cast<float>(std::fmod(timeS, 1000.0)));
     glBindTextureUnit(8, bumpMap_.id());
     glBindTextureUnit(9, fresnelRamp_.id());
-    p.use();
   } else {
-    // Wave data for this frame: phases folded in double on the CPU (OceanFrame::phases).
-    const ocean::OceanFrame::WavePhases phases = frame.phases(waves, timeS);
-    const double windRad = waves.params.windDirectionDeg * 3.14159265358979323846 / 180.0;
-    const double rot = frame.fieldRotationRad();
-    const glm::dvec2 wind0{std::sin(windRad), std::cos(windRad)};  // east, north
-    const glm::dvec2 windDir{std::cos(rot) * wind0.x - std::sin(rot) * wind0.y,
-                             std::sin(rot) * wind0.x + std::cos(rot) * wind0.y};
-    std::vector<glm::vec4> data;
-    data.reserve(2 * waves.waves.size());
-    for (std::size_t i = 0; i < waves.waves.size(); ++i) {
-      const glm::dvec2 k = phases.k[i];
-      const double kl = glm::length(k);
-      const double up = glm::dot(k, windDir) / kl;
-      const double cross = (k.x * windDir.y - k.y * windDir.x) / kl;
-      data.emplace_back(static_cast<float>(k.x), static_cast<float>(k.y),
-                        static_cast<float>(waves.waves[i].amplitudeM),
-                        static_cast<float>(phases.phaseRad[i]));
-      data.emplace_back(static_cast<float>(waves.waves[i].wavelengthM), static_cast<float>(kl),
-                        static_cast<float>(up * up), static_cast<float>(cross * cross));
-    }
-    waveBuffer_ = gl::createBuffer();
-    glNamedBufferStorage(waveBuffer_.id(), static_cast<GLsizeiptr>(data.size() * sizeof(glm::vec4)),
-                         data.data(), 0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, waveBuffer_.id());
-    const gl::Program& p = program_;
-    setCommon(p, view, height, frame, lighting);
-    p.set("uGridMarginNdc", margin);
-    p.set("uWaveCount", static_cast<int>(waves.waves.size()));
-    p.set("uWaveLambdaMax", static_cast<float>(waves.waves.front().wavelengthM));
-    p.set("uWaveLogRatio", static_cast<float>(std::log(waves.wavelengthRatio)));
-    p.set("uWaveAmplitude", static_cast<float>(amplitudeScale));
-    wind.bind(p, waves.params.windSpeedMs, waves.params.windDirectionDeg);
-    p.use();
+    patterns.bind();
+    patterns.setUniforms(p, &frame, amplitudeScale);
+    wind.bind(p);
   }
+  p.use();
   glBindVertexArray(vao_.id());
   glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
   gl::checkErrors("OceanRenderer::draw");

@@ -1,6 +1,6 @@
 #pragma once
-// The near ocean (below 20 km): the projected grid displaced by the wave set and shaded per
-// pixel with the filtered BRDF (Bruneton 2010). Draws into the caller's HDR target with the
+// The near ocean (below 20 km): the projected grid displaced by the FFT wave patterns and
+// shaded per pixel with the filtered BRDF (Bruneton 2010) and whitecaps (Dupuy 2012). Draws into the caller's HDR target with the
 // reversed-Z depth test, over the globe pass.
 #include <glm/glm.hpp>
 
@@ -8,8 +8,8 @@
 #include "gl/Objects.hpp"
 #include "gl/Shader.hpp"
 #include "ocean/OceanFrame.hpp"
-#include "ocean/WaveSet.hpp"
 #include "render/Atmosphere.hpp"
+#include "render/OceanPatterns.hpp"
 #include "render/TerrainRenderer.hpp"
 #include "render/WindTextures.hpp"
 
@@ -34,7 +34,7 @@ enum class OceanModel {
 /// from compile-time defines of shaders/ocean/*; everything but Filtered is for `validate`.
 enum class ValidationMode {
   Filtered,      ///< the normal model (geometry, normals and BRDF by footprint)
-  Reference,     ///< every wave as geometry and normal, mirror reflection: supersample it
+  Reference,     ///< every pattern at full resolution, mirror reflection: supersample it
   ConstantBrdf,  ///< flat sea, the whole slope variance in the BRDF ("BRDF only")
 };
 
@@ -56,9 +56,10 @@ class OceanRenderer {
   /// Grid cell size in pixels (the paper's ~8 px); smaller = finer geometry, slower.
   void setCellPixels(int pixels) { cellPixels_ = pixels; }
 
-  /// Draws the sea into the bound framebuffer (width x height), depth-tested.
-  /// `amplitudeScale` in [0, 1] fades the resolved waves (1 = as the spectrum says).
-  void draw(const geo::CameraView& view, int width, int height, const ocean::WaveSet& waves,
+  /// Draws the sea into the bound framebuffer (width x height), depth-tested. `patterns` must
+  /// hold the sea at `timeS` (OceanPatterns::update). `amplitudeScale` in [0, 1] fades the
+  /// resolved waves (1 = as the spectrum says).
+  void draw(const geo::CameraView& view, int width, int height, const OceanPatterns& patterns,
             const ocean::OceanFrame& frame, double timeS, const OceanLighting& lighting,
             double amplitudeScale, OceanModel model, const WindTextures& wind);
 
@@ -75,7 +76,6 @@ class OceanRenderer {
   gl::Texture fresnelRamp_;  ///< classic: water colour and Fresnel by N.V
   gl::VertexArray vao_;
   gl::Buffer indices_;
-  gl::Buffer waveBuffer_;
   int gridColumns_ = 0, gridRows_ = 0;
   int indexCount_ = 0;
   int cellPixels_ = 8;

@@ -79,11 +79,11 @@ std::vector<ValidationView> defaultValidationViews() {
 }
 
 OceanValidator::OceanValidator(const ValidationSettings& settings) : settings_(settings) {
-  ocean::WaveSetParams p;
-  p.windSpeedMs = settings.windSpeedMs;
-  p.windDirectionDeg = settings.windDirectionDeg;
+  ocean::WavePatternParams p;
+  p.referenceWindMs = settings.windSpeedMs;
   p.seed = settings.seed;
-  waves_ = ocean::makeWaveSet(p);
+  patterns_ = std::make_unique<OceanPatterns>(std::make_shared<const ocean::WavePatterns>(ocean::makeWavePatterns(p)));
+  patterns_->update(settings.timeS);
   filtered_ = std::make_unique<OceanRenderer>(nullptr, ValidationMode::Filtered);
   reference_ = std::make_unique<OceanRenderer>(nullptr, ValidationMode::Reference);
   constant_ = std::make_unique<OceanRenderer>(nullptr, ValidationMode::ConstantBrdf);
@@ -91,7 +91,7 @@ OceanValidator::OceanValidator(const ValidationSettings& settings) : settings_(s
   constant_->setCellPixels(settings.cellPixels);
   reference_->setCellPixels(settings.referenceCellPixels);
   wind_ = std::make_unique<WindTextures>();
-  wind_->setWaveSet(waves_);
+  wind_->setConstantWind(settings.windSpeedMs, settings.windDirectionDeg);
 }
 
 OceanValidator::~OceanValidator() = default;
@@ -113,7 +113,7 @@ io::ImageRgbaF OceanValidator::render(OceanRenderer& renderer, const ValidationV
   glClearNamedFramebufferfv(target.fbo.id(), GL_DEPTH, 0, &zero);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
-  renderer.draw(view, width, height, waves_, frame, settings_.timeS, light, 1.0, OceanModel::Bruneton,
+  renderer.draw(view, width, height, *patterns_, frame, settings_.timeS, light, 1.0, OceanModel::Bruneton,
                 *wind_);
   io::ImageRgbaF image;
   image.width = width;

@@ -1,7 +1,7 @@
 #pragma once
 // Validation of the filtered ocean in the spirit of Bruneton et al. 2010 §7.2 (docs/validation.md):
 // each view is rendered three times, alone (no atmosphere: the analytic sky of lighting.glsl) -
-//   reference: every wave as geometry and normal, a mirror per sample, supersampled S x S and
+//   reference: every pattern at full resolution as geometry and normal, a mirror per sample, supersampled S x S and
 //              box-filtered down (the brute force that filtering should reproduce),
 //   filtered:  the model as it renders (OceanRenderer, ValidationMode::Filtered),
 //   constant:  a flat sea with the whole slope variance in the BRDF ("BRDF only"),
@@ -13,7 +13,7 @@
 
 #include "geo/Wgs84.hpp"
 #include "io/Image.hpp"
-#include "ocean/WaveSet.hpp"
+#include "render/OceanPatterns.hpp"
 #include "render/OceanRenderer.hpp"
 #include "render/WindTextures.hpp"
 
@@ -84,7 +84,7 @@ class OceanValidator {
   io::ImageRgbaF render(OceanRenderer& renderer, const ValidationView& view, int width, int height);
 
   ValidationSettings settings_;
-  ocean::WaveSet waves_;
+  std::unique_ptr<OceanPatterns> patterns_;
   std::unique_ptr<OceanRenderer> filtered_, reference_, constant_;
   std::unique_ptr<WindTextures> wind_;
 };

@@ -1,13 +1,12 @@
 #pragma once
 // The wind on the GPU (shaders/ocean/wind.glsl): the data layers rasterised to a global
-// texture, and the wave model's per-wind tables (total slope variance, every wave's amplitude),
-// so the sea's roughness and waves follow the local wind everywhere on the globe.
+// texture, so the sea's waves, roughness and whitecaps follow the local wind everywhere on the
+// globe (the per-wind tables of the waves are render/OceanPatterns').
 #include <memory>
 
 #include "data/WindLayers.hpp"
 #include "gl/Objects.hpp"
 #include "gl/Shader.hpp"
-#include "ocean/WaveSet.hpp"
 
 namespace og::render {
 
@@ -22,20 +21,26 @@ class WindTextures {
   [[nodiscard]] bool hasLayers() const { return layers_ != nullptr; }
   [[nodiscard]] const data::WindLayers* layers() const { return layers_.get(); }
 
-  /// The per-wind tables for this wave set (rebuilt only when the set changes).
-  void setWaveSet(const ocean::WaveSet& set);
+  /// The strongest wind of the layers, m/s (0 without layers): the waves must hold it.
+  [[nodiscard]] double maxLayerSpeedMs() const { return maxSpeedMs_; }
 
-  /// Binds the textures (units 1 and 10) and sets the uniforms of wind.glsl on `program`;
-  /// `speedMs`/`directionDeg` is the constant wind used when there are no layers.
-  void bind(const gl::Program& program, double speedMs, double directionDeg) const;
+  /// The wind where there are no layers: speed m/s, direction it blows towards, degrees
+  /// clockwise from north.
+  void setConstantWind(double speedMs, double towardsDeg) {
+    constantSpeedMs_ = speedMs;
+    constantTowardsDeg_ = towardsDeg;
+  }
+  [[nodiscard]] double constantSpeedMs() const { return constantSpeedMs_; }
+
+  /// Binds the texture (unit 1) and sets the uniforms of wind.glsl on `program`.
+  void bind(const gl::Program& program) const;
 
  private:
   std::shared_ptr<const data::WindLayers> layers_;
   gl::Texture wind_;
-  gl::Texture table_;
-  double tableStepMs_ = 1.0;
-  ocean::WaveSetParams tableFor_;
-  bool tableBuilt_ = false;
+  double maxSpeedMs_ = 0.0;
+  double constantSpeedMs_ = 7.0;
+  double constantTowardsDeg_ = 90.0;
 };
 
 }  // namespace og::render

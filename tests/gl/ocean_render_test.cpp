@@ -29,10 +29,11 @@ class OceanFixture : public ::testing::Test {
     ctx_ = gl::createHeadlessContext();
     ocean_ = std::make_unique<render::OceanRenderer>();
     wind_ = std::make_unique<render::WindTextures>();
-    ocean::WaveSetParams p;
-    p.windSpeedMs = 8.0;
-    p.windDirectionDeg = 250.0;
-    waves_ = ocean::makeWaveSet(p);
+    ocean::WavePatternParams p;
+    p.referenceWindMs = 8.0;
+    patterns_ = std::make_unique<render::OceanPatterns>(
+        std::make_shared<const ocean::WavePatterns>(ocean::makeWavePatterns(p)));
+    wind_->setConstantWind(8.0, 250.0);
   }
 
   // Linear radiance, RGBA, top row first.
@@ -50,8 +51,8 @@ class OceanFixture : public ::testing::Test {
     glClearNamedFramebufferfv(target.fbo.id(), GL_DEPTH, 0, &zero);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
-    wind_->setWaveSet(waves_);
-    ocean_->draw(view, s.width, s.height, waves_, frame, s.timeS, light, 1.0, s.model, *wind_);
+    patterns_->update(s.timeS);
+    ocean_->draw(view, s.width, s.height, *patterns_, frame, s.timeS, light, 1.0, s.model, *wind_);
     return gl::readRgbaF(target.fbo.id(), s.width, s.height);
   }
 
@@ -72,7 +73,7 @@ class OceanFixture : public ::testing::Test {
   std::unique_ptr<gl::Context> ctx_;
   std::unique_ptr<render::OceanRenderer> ocean_;
   std::unique_ptr<render::WindTextures> wind_;
-  ocean::WaveSet waves_;
+  std::unique_ptr<render::OceanPatterns> patterns_;
 };
 
 }  // namespace

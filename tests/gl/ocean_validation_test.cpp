@@ -26,9 +26,10 @@ render::ValidationSettings smallSettings() {
 }
 }  // namespace
 
-// Measured at 96x54, 4x4 (docs/validation.md has 160x90, 8x8): mean |row error| near band
-// filtered / constant: 2m_sun 6.5% / 144%, 2m_away 4.0% / 34%, 20m_away 3.7% / 22%; far band
-// 39% / 55%, 12% / 12%, 6.3% / 7.5%; all rows filtered 18%, 8.0%, 5.8%. Thresholds ~2x that.
+// Measured at 96x54, 4x4 (docs/validation.md has 160x90, 8x8) with the FFT wave patterns:
+// mean |row error| near band filtered / constant: 2m_sun 15% / 206%, 2m_away 3.8% / 9.8%,
+// 20m_away 5.9% / 17%; far band 35% / 70%, 14% / 17%, 9.0% / 9.8%; all rows filtered 26%,
+// 9.3%, 9.2%. The 2m_sun view's error is the Sun's glitter, compared as one sum with the sky.
 TEST(OceanValidation, FilteredTracksTheReferenceWhereConstantBrdfDoesNot) {
   const auto ctx = gl::createHeadlessContext();
   render::OceanValidator validator(smallSettings());
@@ -36,8 +37,8 @@ TEST(OceanValidation, FilteredTracksTheReferenceWhereConstantBrdfDoesNot) {
     const char* name;
     double nearMax, farMax, allMax;
   };
-  for (const Case c : {Case{"2m_sun", 0.15, 0.8, 0.4}, Case{"2m_away", 0.1, 0.25, 0.16},
-                       Case{"20m_away", 0.1, 0.15, 0.12}}) {
+  for (const Case c : {Case{"2m_sun", 0.25, 0.8, 0.4}, Case{"2m_away", 0.1, 0.25, 0.16},
+                       Case{"20m_away", 0.1, 0.15, 0.15}}) {
     render::ValidationView view;
     for (const auto& v : render::defaultValidationViews())
       if (v.name == c.name) view = v;
@@ -54,9 +55,10 @@ TEST(OceanValidation, FilteredTracksTheReferenceWhereConstantBrdfDoesNot) {
     EXPECT_LT(nearBand.meanFiltered, 0.5 * nearBand.meanConstant) << c.name;
     // Everywhere: the filtered model tracks the reference.
     EXPECT_LT(r.all.meanFiltered, c.allMax) << c.name;
-    // Far: nothing is resolved any more, both models are the same BRDF and both close.
+    // Far: fewer waves are resolved and the two models come together; the filtered one never
+    // worse than the constant BRDF.
     EXPECT_LT(farBand.meanFiltered, c.farMax) << c.name;
     EXPECT_LT(farBand.meanConstant, c.farMax) << c.name;
-    EXPECT_LT(std::abs(farBand.meanFiltered - farBand.meanConstant), 0.25) << c.name;
+    EXPECT_LT(farBand.meanFiltered, farBand.meanConstant + 0.02) << c.name;
   }
 }

@@ -1,0 +1,203 @@
+// The sea from the FFT wave patterns (render/OceanPatterns, Dupuy & Bruneton 2012) filtered by
+// the footprint as Bruneton et al. 2010 filter their waves: what the footprint resolves is
+// geometry (the vertex displacement) or the mean normal (the mean slope of the footprint, from
+// the mip-mapped slope texture), and the slope variance inside the footprint (mip-mapped
+// second moments minus the squared mean: LEAN mapping, Olano & Baker 2010) plus the spectrum's
+// tail below the finest pattern goes into the BRDF. Whitecaps: the Jacobian's mean and variance
+// in the footprint from the mip-mapped (j, j²) (Dupuy 2012 Eqs. 6-8).
+//
+// Local wind, place by place: the patterns exist for 8 wind directions 45° apart (two spectra,
+// each turned by quarter turns, which are exact on the periodic tiles); a point blends the two
+// bins around its wind with weights cos/sin(pi/2 f) (variance preserving), and scales each
+// band to its wind speed with the per-wind table. No lookup is ever turned by an angle that
+// varies in space, so waves keep their shape however far from the frame's origin.
+//
+// Coordinates: `xy` is the point in the ocean frame's tangent plane (x east, y north, m); the
+// wave field is turned by uFieldRotation relative to the frame and shifted by its offset
+// (folded modulo each tile on the CPU, in double: ocean/OceanFrame). Patterns are ordered
+// largest first, so loops over them stop at the first one the footprint averages out.
+// Needs PATTERN_COUNT defined (render/OceanPatterns::shaderDefines).
+#include "common/constants.glsl"
+
+layout(binding = 10) uniform sampler2D uPatternTable;            // per wind speed, see below
+layout(binding = 12) uniform sampler2DArray uPatternDisplacement; // (lambda Dx, lambda Dy, h, 0)
+layout(binding = 13) uniform sampler2DArray uPatternSlopes;       // (s_u, s_c, s_u², s_c²)
+layout(binding = 14) uniform sampler2DArray uPatternJacobian;     // (j, j²)
+uniform float uPatternSizeM[PATTERN_COUNT];
+uniform vec2 uPatternOffsetM[PATTERN_COUNT];  // field offset modulo each tile, field axes
+uniform vec2 uFieldRotation;                  // (cos, sin): field axes -> frame axes
+uniform float uPatternChoppiness[PATTERN_COUNT];  // lambda_i; > 0: in the whitecaps' Jacobian
+uniform float uPatternAmplitude;              // 0..1: fades the resolved waves out (12-20 km)
+uniform float uWhitecapThreshold;             // epsilon of Dupuy 2012 Eq. 3
+uniform float uPatternFftSize;                 // texels per tile side
+uniform float uPatternTopLod;                 // log2(uPatternFftSize): the 1x1 mip level
+
+// uPatternTable: column c = wind speed c m/s (0..50); row i < PATTERN_COUNT: pattern i's
+// (height scale, slope scale, up and cross slope variance of its band at that wind); row
+// PATTERN_COUNT: (tail up, tail cross, Jacobian variance of the whole sea, -); row
+// PATTERN_COUNT + 1 + i: (pattern i's Jacobian variance at that wind, -, -, -).
+vec4 patternTable(int row, float speedMs) {
+  float c = clamp(speedMs, 0.0, 50.0);
+  int c0 = min(int(c), 49);
+  return mix(texelFetch(uPatternTable, ivec2(c0, row), 0), texelFetch(uPatternTable, ivec2(c0 + 1, row), 0),
+             c - float(c0));
+}
+
+// The two direction bins around a wind blowing towards `thetaField` (radians, counter-clockwise
+// from the field's x axis), and their weights (w0² + w1² = 1).
+struct WindBins {
+  int bin[2];
+  float weight[2];
+};
+WindBins windBins(float thetaField) {
+  float b = thetaField / (0.25 * PI);
+  b -= 8.0 * floor(b / 8.0);
+  int b0 = int(floor(b)) & 7;
+  float f = b - floor(b);
+  WindBins w;
+  w.bin[0] = b0;
+  w.bin[1] = (b0 + 1) & 7;
+  w.weight[0] = cos(0.5 * PI * f);
+  w.weight[1] = sin(0.5 * PI * f);
+  return w;
+}
+
+// The wind's direction in the field's axes from its azimuth (radians clockwise from north).
+float fieldWindAngle(float azimuth) {
+  float frameAngle = 0.5 * PI - azimuth;
+  return frameAngle - atan2Safe(uFieldRotation.y, uFieldRotation.x);
+}
+
+vec2 rotate2(vec2 v, float angle) {
+  float c = cos(angle), s = sin(angle);
+  return vec2(c * v.x - s * v.y, s * v.x + c * v.y);
+}
+// Quarter turns, exact: q in 0..3, counter-clockwise.
+vec2 quarterTurn(vec2 v, int q) {
+  return q == 0 ? v : q == 1 ? vec2(-v.y, v.x) : q == 2 ? -v : vec2(v.y, -v.x);
+}
+
+// Texture coordinates of field point p in bin `bin`'s copy of pattern i.
+vec3 patternCoord(vec2 p, int bin, int i) {
+  vec2 local = quarterTurn(p + uPatternOffsetM[i], (4 - (bin >> 1)) & 3);
+  return vec3(local / uPatternSizeM[i], float((bin & 1) * PATTERN_COUNT + i));
+}
+
+// Level of detail at which pattern i's texels match a footprint (m). Validation variants
+// (`oceanglobe validate`, docs/validation.md): OCEAN_VALIDATION_REFERENCE resolves every
+// pattern fully whatever the footprint (the brute-force reference supersamples instead);
+// OCEAN_VALIDATION_CONSTANT resolves none (a flat sea, the whole slope variance in the BRDF).
+float patternLod(float footprintM, int i) {
+#if defined(OCEAN_VALIDATION_REFERENCE)
+  return 0.0;
+#elif defined(OCEAN_VALIDATION_CONSTANT)
+  return uPatternTopLod;
+#else
+  return log2(max(footprintM, 1e-6) * uPatternFftSize / uPatternSizeM[i]);
+#endif
+}
+
+vec2 fieldPosition(vec2 xy) { return vec2(dot(xy, uFieldRotation), dot(xy, vec2(-uFieldRotation.y, uFieldRotation.x))); }
+vec2 frameVector(vec2 v) { return vec2(dot(v, vec2(uFieldRotation.x, -uFieldRotation.y)), dot(v, uFieldRotation.yx)); }
+
+// Displacement of the sea surface at xy (Dupuy 2012 Eq. 1), filtered by the grid's cell size
+// (Bruneton 2010 Eq. 2: waves shorter than ~2 cells are averaged out by the mip level);
+// `wind` = (speed m/s, azimuth rad). Frame axes, m.
+vec3 oceanDisplacement(vec2 xy, float cellFootprintM, vec2 wind) {
+  vec2 p = fieldPosition(xy);
+  WindBins wb = windBins(fieldWindAngle(wind.y));
+  vec3 d = vec3(0.0);
+  for (int i = 0; i < PATTERN_COUNT; ++i) {
+    float lod = patternLod(0.5 * cellFootprintM, i);
+    if (lod >= uPatternTopLod) break;
+    float scale = patternTable(i, wind.x).x;
+    for (int k = 0; k < 2; ++k) {
+      if (wb.weight[k] < 1e-3) continue;
+      vec3 t = textureLod(uPatternDisplacement, patternCoord(p, wb.bin[k], i), lod).xyz;
+      d += (wb.weight[k] * scale) * vec3(quarterTurn(t.xy, wb.bin[k] >> 1), t.z);
+    }
+  }
+  return vec3(frameVector(d.xy), d.z) * uPatternAmplitude;
+}
+
+// A 2x2 covariance (xx, yy, xy) turned by `angle` (counter-clockwise).
+vec3 rotateCovariance(vec3 c, float angle) {
+  float cs = cos(angle), sn = sin(angle);
+  float xx = cs * cs * c.x + sn * sn * c.y - 2.0 * cs * sn * c.z;
+  float yy = sn * sn * c.x + cs * cs * c.y + 2.0 * cs * sn * c.z;
+  float xy = cs * sn * (c.x - c.y) + (cs * cs - sn * sn) * c.z;
+  return vec3(xx, yy, xy);
+}
+
+// What a pixel of footprint `footprintM` (m) sees of the sea at xy under wind (speed, azimuth).
+struct SeaSurface {
+  vec2 meanSlope;   // dz/dx, dz/dy of the footprint's mean surface, frame axes
+  vec2 variance;    // unresolved slope variance along/across the local wind (BRDF)
+  vec2 jacobian;    // mean and variance of the whitecaps' Jacobian in the footprint
+};
+
+SeaSurface oceanSurface(vec2 xy, float footprintM, vec2 wind) {
+  vec2 p = fieldPosition(xy);
+  float windField = fieldWindAngle(wind.y);
+  WindBins wb = windBins(windField);
+  vec2 mean = vec2(0.0);            // field axes
+  vec3 cov = vec3(0.0);             // local wind frame
+  vec2 jac = vec2(1.0, 0.0);
+  for (int i = 0; i < PATTERN_COUNT; ++i) {
+    float lod = patternLod(footprintM, i);
+    if (lod >= uPatternTopLod) {
+      // Averaged out entirely: the band's statistics at this wind, analytic.
+      vec4 band = patternTable(i, wind.x);
+      cov.xy += band.zw;
+      jac.y += patternTable(PATTERN_COUNT + 1 + i, wind.x).x;
+      continue;
+    }
+    float s = patternTable(i, wind.x).y;
+    bool choppy = uPatternChoppiness[i] > 0.0;
+    for (int k = 0; k < 2; ++k) {
+      float w = wb.weight[k];
+      if (w < 1e-3) continue;
+      vec3 coord = patternCoord(p, wb.bin[k], i);
+      vec4 m = textureLod(uPatternSlopes, coord, lod) * vec4(s, s, s * s, s * s);
+      float binAngle = float(wb.bin[k]) * 0.25 * PI;
+      mean += w * rotate2(m.xy, binAngle);
+      // The cross moment E[s_u s_c] is not stored: it is ~m_u m_c where the footprint holds one
+      // slope and ~0 where it averages many (m ~ 0), so the covariance is diagonal either way.
+      vec3 c = vec3(max(m.z - m.x * m.x, 0.0), max(m.w - m.y * m.y, 0.0), 0.0);
+      cov += w * w * rotateCovariance(c, binAngle - windField);
+      if (choppy) {
+        vec2 j = textureLod(uPatternJacobian, coord, lod).xy;
+        jac += vec2(w * s * j.x, w * w * s * s * max(j.y - j.x * j.x, 0.0));
+      }
+    }
+  }
+  vec4 tail = patternTable(PATTERN_COUNT, wind.x);
+  cov.xy += tail.xy;
+  // Faded-out waves (12-20 km): what the mean normal no longer shows goes into the BRDF.
+  float a = uPatternAmplitude;
+  vec2 meanWind = rotate2(mean, -windField);
+  cov.xy += (1.0 - a * a) * meanWind * meanWind;
+  SeaSurface r;
+  r.meanSlope = frameVector(a * mean);
+  r.variance = max(cov.xy, vec2(0.0));
+  r.jacobian = jac;
+  return r;
+}
+
+// The whole sea's statistics at a wind (what a footprint covering everything sees).
+vec2 seaSlopeVarianceTotal(float speedMs) {
+  vec2 v = patternTable(PATTERN_COUNT, speedMs).xy;
+  for (int i = 0; i < PATTERN_COUNT; ++i) v += patternTable(i, speedMs).zw;
+  return v;
+}
+float seaJacobianVarianceTotal(float speedMs) { return patternTable(PATTERN_COUNT, speedMs).z; }
+
+// Whitecap coverage of a footprint whose Jacobian is Normal(mean, variance): Dupuy 2012 Eq. 6,
+// W = 1/2 erfc((mu - epsilon) / (sqrt(2) sigma)).
+float whitecapCoverage(vec2 jacobian) {
+  float sigma = sqrt(max(jacobian.y, 1e-10));
+  float x = (jacobian.x - uWhitecapThreshold) / (sqrt(2.0) * sigma);
+  // erfc(x) for x >= 0 by the same rational approximation as the BRDF's masking (brdf.glsl).
+  float e = 2.0 * exp(-x * x) / (2.319 * abs(x) + sqrt(4.0 + 1.52 * x * x));
+  return x >= 0.0 ? 0.5 * e : 1.0 - 0.5 * e;
+}

@@ -1,0 +1,242 @@
+#include "render/OceanPatterns.hpp"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace og::render {
+namespace {
+constexpr int kLayers = ocean::kPatternSets * ocean::kPatternCount;
+
+gl::Texture makeArray(GLenum format, int size, int layers, int levels) {
+  gl::Texture t = gl::createTexture(GL_TEXTURE_2D_ARRAY);
+  glTextureStorage3D(t.id(), levels, format, size, size, layers);
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, levels > 1 ? GL_LINEAR : GL_NEAREST);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+  return t;
+}
+
+int log2Of(int n) {
+  int l = 0;
+  while ((1 << l) < n) ++l;
+  return l;
+}
+
+// The per-wind tables as a texture, laid out as shaders/ocean/patterns.glsl reads them.
+gl::Texture makeTableTexture(const ocean::PatternTables& t) {
+  constexpr int kColumns = ocean::PatternTables::kSpeeds, kRows = 2 * ocean::kPatternCount + 1;
+  std::vector<float> texels(static_cast<std::size_t>(4 * kColumns * kRows), 0.0f);
+  auto at = [&](int c, int r) { return &texels[static_cast<std::size_t>(4 * (r * kColumns + c))]; };
+  for (int c = 0; c < kColumns; ++c) {
+    for (int i = 0; i < ocean::kPatternCount; ++i) {
+      const ocean::PatternTableEntry& e = t.pattern[static_cast<std::size_t>(c)][static_cast<std::size_t>(i)];
+      float* v = at(c, i);
+      v[0] = static_cast<float>(e.heightScale);
+      v[1] = static_cast<float>(e.slopeScale);
+      v[2] = static_cast<float>(e.slope.up);
+      v[3] = static_cast<float>(e.slope.cross);
+      at(c, ocean::kPatternCount + 1 + i)[0] = static_cast<float>(e.jacobianVariance);
+    }
+    float* v = at(c, ocean::kPatternCount);
+    v[0] = static_cast<float>(t.tail[static_cast<std::size_t>(c)].up);
+    v[1] = static_cast<float>(t.tail[static_cast<std::size_t>(c)].cross);
+    v[2] = static_cast<float>(t.jacobianVariance[static_cast<std::size_t>(c)]);
+  }
+  gl::Texture tex = gl::createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(tex.id(), 1, GL_RGBA32F, kColumns, kRows);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage2D(tex.id(), 0, 0, 0, kColumns, kRows, GL_RGBA, GL_FLOAT, texels.data());
+  glTextureParameteri(tex.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(tex.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  return tex;
+}
+
+// Bit p set: pattern p is displaced horizontally (three FFT slots instead of two).
+int displacedMask(const ocean::WavePatternParams& p) {
+  int mask = 0;
+  for (int i = 0; i < ocean::kPatternCount; ++i)
+    if (p.choppiness[static_cast<std::size_t>(i)] >= ocean::kDisplacedChoppiness) mask |= 1 << i;
+  return mask;
+}
+
+int fftLayersPerSet(const ocean::WavePatternParams& p) {
+  int slots = 0;
+  for (int i = 0; i < ocean::kPatternCount; ++i) slots += (displacedMask(p) >> i & 1) != 0 ? 3 : 2;
+  return (slots + 1) / 2;
+}
+
+std::vector<std::string> fftDefines(const ocean::WavePatternParams& p) {
+  return {"PATTERN_COUNT " + std::to_string(ocean::kPatternCount),
+          "PATTERN_DISPLACED " + std::to_string(displacedMask(p)),
+          "FFT_LAYERS_PER_SET " + std::to_string(fftLayersPerSet(p)),
+          "FFT_SIZE " + std::to_string(p.fftSize), "FFT_LOG2 " + std::to_string(log2Of(p.fftSize))};
+}
+}  // namespace
+
+OceanPatterns::OceanPatterns(std::shared_ptr<const ocean::WavePatterns> patterns, double requestedWindMs)
+    : patterns_(std::move(patterns)),
+      tables_(ocean::makePatternTables(*patterns_)),
+      spectrum_({{GL_COMPUTE_SHADER, "ocean/fft_spectrum.comp"}}, fftDefines(patterns_->params)),
+      line_({{GL_COMPUTE_SHADER, "ocean/fft_line.comp"}}, fftDefines(patterns_->params)),
+      finish_({{GL_COMPUTE_SHADER, "ocean/fft_finish.comp"}}, fftDefines(patterns_->params)) {
+  requestedWindMs_ = requestedWindMs;
+  const int n = patterns_->params.fftSize;
+  fftLayers_ = ocean::kPatternSets * fftLayersPerSet(patterns_->params);
+  uploadSpectra();
+  for (gl::Texture& f : fields_) f = makeArray(GL_RGBA32F, n, fftLayers_, 1);
+  const int levels = log2Of(n) + 1;
+  displacement_ = makeArray(GL_RGBA16F, n, kLayers, levels);
+  slopes_ = makeArray(GL_RGBA16F, n, kLayers, levels);
+  jacobian_ = makeArray(GL_RG16F, n, kLayers, levels);
+  table_ = makeTableTexture(tables_);
+  for (const gl::Program* p : {&spectrum_, &line_, &finish_}) setLayerUniforms(*p);
+  const auto texels = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+  // Spectra (16 B/texel) + steps (4) + FFT buffers (2 x 16 per FFT layer) + mip-mapped outputs.
+  gpuBytes_ = texels * kLayers * 20 + texels * static_cast<std::size_t>(fftLayers_) * 32 +
+              texels * kLayers * 20 * 4 / 3;
+  gl::checkErrors("OceanPatterns setup");
+}
+
+// h0(k) and conj(h0(-k)) per texel (RGBA32F), and each mode's frequency step (R32UI).
+void OceanPatterns::uploadSpectra() {
+  const ocean::WavePatterns& w = *patterns_;
+  const int n = w.params.fftSize;
+  const auto texelsPerLayer = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+  std::vector<float> h0(4 * texelsPerLayer * kLayers);
+  std::vector<std::uint32_t> steps(texelsPerLayer * kLayers);
+  for (int layer = 0; layer < kLayers; ++layer) {
+    const auto set = static_cast<std::size_t>(layer / ocean::kPatternCount);
+    const auto pattern = static_cast<std::size_t>(layer % ocean::kPatternCount);
+    const auto& spectrum = w.h0[set][pattern];
+    const double dk = 2.0 * 3.14159265358979323846 / w.params.sizesM[pattern];
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        const std::size_t at = static_cast<std::size_t>(y) * n + x;
+        const std::size_t mirror = static_cast<std::size_t>((n - y) % n) * n + (n - x) % n;
+        const std::size_t texel = static_cast<std::size_t>(layer) * texelsPerLayer + at;
+        float* t = &h0[4 * texel];
+        t[0] = spectrum[at].real();
+        t[1] = spectrum[at].imag();
+        t[2] = spectrum[mirror].real();  // conj(h0(-k))
+        t[3] = -spectrum[mirror].imag();
+        const int mx = x < n / 2 ? x : x - n, my = y < n / 2 ? y : y - n;
+        steps[texel] = ocean::patternFrequencyStep(dk * std::hypot(mx, my));
+      }
+  }
+  h0_ = makeArray(GL_RGBA32F, n, kLayers, 1);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage3D(h0_.id(), 0, 0, 0, 0, n, n, kLayers, GL_RGBA, GL_FLOAT, h0.data());
+  steps_ = makeArray(GL_R32UI, n, kLayers, 1);
+  glTextureSubImage3D(steps_.id(), 0, 0, 0, 0, n, n, kLayers, GL_RED_INTEGER, GL_UNSIGNED_INT, steps.data());
+}
+
+void OceanPatterns::setLayerUniforms(const gl::Program& program) const {
+  const ocean::WavePatternParams& p = patterns_->params;
+  std::vector<float> chop, sizes;
+  for (int i = 0; i < ocean::kPatternCount; ++i) {
+    chop.push_back(static_cast<float>(p.choppiness[static_cast<std::size_t>(i)]));
+    sizes.push_back(static_cast<float>(p.sizesM[static_cast<std::size_t>(i)]));
+  }
+  for (const auto& [name, values] : {std::pair{"uChoppiness", &chop}, std::pair{"uPatternSizeM", &sizes}}) {
+    const GLint at = program.location(name);
+    if (at >= 0) glProgramUniform1fv(program.id(), at, ocean::kPatternCount, values->data());
+  }
+}
+
+void OceanPatterns::update(double timeS) {
+  if (current_ && timeS == timeS_) return;
+  runFft(timeS);
+  timeS_ = timeS;
+  current_ = true;
+}
+
+void OceanPatterns::runFft(double timeS) {
+  const ocean::WavePatterns& w = *patterns_;
+  const int n = w.params.fftSize;
+  // tau = (t mod period) / period, split into a 12-bit integer part and the rest (exact).
+  const double tau = std::fmod(std::fmod(timeS, ocean::kWaveRepeatPeriodS) + ocean::kWaveRepeatPeriodS,
+                               ocean::kWaveRepeatPeriodS) / ocean::kWaveRepeatPeriodS;
+  const double coarse = std::floor(tau * 4096.0);
+  glProgramUniform1ui(spectrum_.id(), spectrum_.location("uTimeSteps"), static_cast<GLuint>(coarse));
+  spectrum_.set("uTimeFine", static_cast<float>(tau - coarse / 4096.0));
+  glBindImageTexture(0, h0_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+  glBindImageTexture(1, steps_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+  glBindImageTexture(2, fields_[0].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  spectrum_.use();
+  glDispatchCompute(static_cast<GLuint>(n / 8), static_cast<GLuint>(n / 8), ocean::kPatternSets);
+
+  // Rows, then columns: one work group per line of every FFT layer (fft_line.comp).
+  int source = 0;
+  line_.use();
+  for (int vertical = 0; vertical < 2; ++vertical) {
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    line_.set("uVertical", vertical);
+    glBindImageTexture(0, fields_[source].id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, fields_[1 - source].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute(static_cast<GLuint>(n), static_cast<GLuint>(fftLayers_), 1);
+    source = 1 - source;
+  }
+
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glBindImageTexture(0, fields_[source].id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+  glBindImageTexture(1, displacement_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  glBindImageTexture(2, slopes_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  glBindImageTexture(3, jacobian_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG16F);
+  finish_.use();
+  glDispatchCompute(static_cast<GLuint>(n / 8), static_cast<GLuint>(n / 8), ocean::kPatternSets);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  for (const gl::Texture* t : {&displacement_, &slopes_, &jacobian_}) glGenerateTextureMipmap(t->id());
+  for (GLuint unit = 0; unit < 4; ++unit) glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+  gl::checkErrors("OceanPatterns::update");
+}
+
+std::vector<std::string> OceanPatterns::shaderDefines() {
+  return {"PATTERN_COUNT " + std::to_string(ocean::kPatternCount)};
+}
+
+double OceanPatterns::amplitudeBoundM() const {
+  double variance = 0.0;
+  for (int i = 0; i < ocean::kPatternCount; ++i)
+    variance += patterns_->stats[0][static_cast<std::size_t>(i)].heightVarianceM2;
+  return 4.0 * std::sqrt(variance) * 1.5;  // heights and, as large, the choppy displacement
+}
+
+void OceanPatterns::setUniforms(const gl::Program& program, const ocean::OceanFrame* frame,
+                                double amplitude) const {
+  const ocean::WavePatternParams& p = patterns_->params;
+  std::vector<float> sizes, chop, offsets;
+  for (int i = 0; i < ocean::kPatternCount; ++i) {
+    const double size = p.sizesM[static_cast<std::size_t>(i)];
+    sizes.push_back(static_cast<float>(size));
+    chop.push_back(static_cast<float>(p.choppiness[static_cast<std::size_t>(i)]));
+    const glm::dvec2 o = frame != nullptr ? frame->fieldOffsetModulo(size) : glm::dvec2(0.0);
+    offsets.push_back(static_cast<float>(o.x));
+    offsets.push_back(static_cast<float>(o.y));
+  }
+  auto setArray = [&](const char* name, int count, const float* v, bool pairs) {
+    const GLint at = program.location(name);
+    if (at < 0) return;
+    if (pairs) glProgramUniform2fv(program.id(), at, count, v);
+    else glProgramUniform1fv(program.id(), at, count, v);
+  };
+  setArray("uPatternSizeM", ocean::kPatternCount, sizes.data(), false);
+  setArray("uPatternChoppiness", ocean::kPatternCount, chop.data(), false);
+  setArray("uPatternOffsetM", ocean::kPatternCount, offsets.data(), true);
+  const double rotation = frame != nullptr ? frame->fieldRotationRad() : 0.0;
+  program.set("uFieldRotation", glm::vec2(static_cast<float>(std::cos(rotation)), static_cast<float>(std::sin(rotation))));
+  program.set("uPatternAmplitude", static_cast<float>(amplitude));
+  program.set("uWhitecapThreshold", static_cast<float>(ocean::kWhitecapThreshold));
+  program.set("uPatternFftSize", static_cast<float>(p.fftSize));
+  program.set("uPatternTopLod", static_cast<float>(log2Of(p.fftSize)));
+}
+
+void OceanPatterns::bind() const {
+  glBindTextureUnit(10, table_.id());
+  glBindTextureUnit(12, displacement_.id());
+  glBindTextureUnit(13, slopes_.id());
+  glBindTextureUnit(14, jacobian_.id());
+}
+
+}  // namespace og::render

@@ -1,0 +1,82 @@
+#pragma once
+// The FFT wave patterns on the GPU (Dupuy & Bruneton 2012): the initial spectra of
+// ocean::WavePatterns uploaded once, and every frame an inverse FFT per pattern and direction
+// set (compute shaders shaders/ocean/fft_*.comp) into three mip-mapped texture arrays the sea
+// shaders sample (shaders/ocean/patterns.glsl):
+//   displacement (unit 12): (lambda Dx, lambda Dy, h, 0), m, tile axes
+//   slopes       (unit 13): (s_u, s_c, s_u², s_c²) along/across the set's wind
+//   jacobian     (unit 14): (j, j²), the whitecaps' Jacobian term and its square
+// layer = set * 4 + pattern. Plus the per-wind tables (unit 10, ocean::PatternTables).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/Objects.hpp"
+#include "gl/Shader.hpp"
+#include "ocean/OceanFrame.hpp"
+#include "ocean/WavePatterns.hpp"
+
+namespace og::render {
+
+class OceanPatterns {
+ public:
+  /// Needs a current GL 4.5 context. Uploads the spectra and the per-wind tables.
+  /// `requestedWindMs`: the reference wind the caller asked for (before clamping), for reuse.
+  explicit OceanPatterns(std::shared_ptr<const ocean::WavePatterns> patterns, double requestedWindMs = -1.0);
+  [[nodiscard]] double requestedWindMs() const { return requestedWindMs_; }
+
+  [[nodiscard]] const ocean::WavePatterns& patterns() const { return *patterns_; }
+  [[nodiscard]] const ocean::PatternTables& tables() const { return tables_; }
+
+  /// Makes the textures show the sea at simulation time `timeS` (seconds, any value): runs the
+  /// FFTs unless the textures already hold that time.
+  void update(double timeS);
+
+  /// Binds the textures to their units (12, 13, 14 and the table on 10).
+  void bind() const;
+
+  /// Sets shaders/ocean/patterns.glsl's uniforms on `program`: the tiles, the field's offset and
+  /// rotation in `frame` (none: the orbit's sea, which uses the per-wind tables only) and the
+  /// amplitude of the resolved waves, [0, 1].
+  void setUniforms(const gl::Program& program, const ocean::OceanFrame* frame, double amplitude) const;
+
+  /// The defines programs including shaders/ocean/patterns.glsl need.
+  [[nodiscard]] static std::vector<std::string> shaderDefines();
+
+  /// Largest displacement the waves reach at the reference wind (about 4 standard deviations
+  /// of the height, chop included), m: how far the grid must overshoot the screen.
+  [[nodiscard]] double amplitudeBoundM() const;
+
+  /// The textures (for read-back in tests).
+  [[nodiscard]] GLuint displacementTexture() const { return displacement_.id(); }
+  [[nodiscard]] GLuint slopesTexture() const { return slopes_.id(); }
+  [[nodiscard]] GLuint jacobianTexture() const { return jacobian_.id(); }
+
+  /// GPU memory of the textures, bytes.
+  [[nodiscard]] std::size_t gpuBytes() const { return gpuBytes_; }
+
+ private:
+  void runFft(double timeS);
+  void uploadSpectra();
+  void setLayerUniforms(const gl::Program& program) const;
+
+  std::shared_ptr<const ocean::WavePatterns> patterns_;
+  ocean::PatternTables tables_;
+  gl::Program spectrum_;
+  gl::Program line_;  ///< whole-line FFT in shared memory
+  gl::Program finish_;
+  gl::Texture h0_;
+  gl::Texture steps_;
+  gl::Texture fields_[2];  ///< ping-pong buffers of the FFT
+  gl::Texture displacement_;
+  gl::Texture slopes_;
+  gl::Texture jacobian_;
+  gl::Texture table_;
+  double requestedWindMs_ = -1.0;
+  int fftLayers_ = 0;         ///< layers of the FFT buffers (1 or 2 per pattern layer)
+  double timeS_ = 0.0;
+  bool current_ = false;
+  std::size_t gpuBytes_ = 0;
+};
+
+}  // namespace og::render
