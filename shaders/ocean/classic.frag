@@ -16,7 +16,7 @@
 in vec2 vOceanXY;
 in vec3 vRelative;
 in vec2 vSlope;
-out vec4 fragRadiance;
+#include "render/outputs.glsl"
 
 layout(binding = 8) uniform sampler2D uBumpMap;     // tangent-space normals, RG = xy * 0.5 + 0.5
 layout(binding = 9) uniform sampler1D uFresnelRamp; // RGB water colour, A = Fresnel, by N.V
@@ -55,6 +55,7 @@ void main() {
   vec3 water = ramp.rgb * (eSun * max(uSunDirOcean.z, 0.0) + skyIrradiance(sunZenith));
   vec3 radiance = mix(water, sky, ramp.a) + eSun * sparkle * ramp.a;
   fragRadiance = vec4(oceanSurfaceRadiance(vRelative, radiance), 1.0);
+  fragAux = vec4(0.0);
 }
 
 #ifdef OCEAN_SIMPLE_SKY

@@ -16,7 +16,7 @@
 
 in vec2 vOceanXY;
 in vec3 vRelative;
-out vec4 fragRadiance;
+#include "render/outputs.glsl"
 
 uniform mat3 uEcefToOcean;
 uniform vec3 uSunDirEcef;
@@ -66,12 +66,14 @@ void main() {
   vec3 radiance = seaRadianceMirror(v, n, windDir, sea.variance, up, uSunDirEcef);
   // Weighted sample: premultiplied radiance, weight in alpha (never 0, alpha also marks sea).
   fragRadiance = vec4(oceanSurfaceRadiance(vRelative, radiance) * sampleWeight, max(sampleWeight, 1e-6));
+  fragAux = vec4(0.0);
   return;
 #else
   float foam = whitecapCoverage(sea.jacobian);
   vec3 radiance = seaRadianceWithFoam(v, n, windDir, sea.variance, up, uSunDirEcef, foam);
 #endif
   fragRadiance = vec4(oceanSurfaceRadiance(vRelative, radiance), 1.0);
+  fragAux = vec4(foam, 0.0, 0.0, 0.0);
 }
 
 #ifdef OCEAN_SIMPLE_SKY

@@ -33,7 +33,7 @@
 #include "render/aerial.glsl"
 
 in vec2 vNdc;
-out vec4 fragRadiance;
+#include "render/outputs.glsl"
 
 uniform vec3 uRight;       // camera basis, ECEF axes
 uniform vec3 uUp;
@@ -65,6 +65,7 @@ vec3 shadeLand(vec3 albedo, float muS, vec3 sunIrr, vec3 skyIrr) {
 // Ross BRDF over the whole slope distribution of the local wind (Bruneton 2010 §6) and the
 // whitecap coverage of the local wind's Jacobian statistics (Dupuy 2012), the same lighting
 // code as the projected grid (ocean/lighting.glsl), so the switch between the two is invisible.
+float gSeaFoam = 0.0;  // whitecap coverage of the last shadeSea (the auxiliary output)
 vec3 shadeSea(vec3 v, vec3 n) {
   vec3 east = cross(vec3(0.0, 0.0, 1.0), n);
   east = dot(east, east) > 1e-12 ? normalize(east) : vec3(0.0, 1.0, 0.0);
@@ -72,11 +73,13 @@ vec3 shadeSea(vec3 v, vec3 n) {
   vec2 w = localWind(latLonOfNormal(n));  // speed, azimuth
   vec3 wind = sin(w.y) * east + cos(w.y) * north;
   float foam = whitecapCoverage(vec2(1.0, seaJacobianVarianceTotal(w.x)));
+  gSeaFoam = foam;
   return seaRadianceWithFoam(v, n, wind, seaSlopeVarianceTotal(w.x), n, uSunDir, foam);
 }
 
 // Light leaving the globe's surface at distance t along dir, towards the viewer.
 vec3 surfaceRadiance(vec3 dir, float t) {
+  gSeaFoam = 0.0;
   vec3 n = ellipsoidNormal(dir, t);
   vec2 latLon = latLonOfNormal(n);
   float elevation = elevationAt(latLon);
@@ -131,7 +134,11 @@ void main() {
     }
   }
   vec3 surface = vec3(0.0);
-  for (int k = 0; k < nHit; ++k) surface += surfaceRadiance(dirs[hits[k]], ts[hits[k]]);
+  float foam = 0.0;  // whitecap coverage summed over the samples
+  for (int k = 0; k < nHit; ++k) {
+    surface += surfaceRadiance(dirs[hits[k]], ts[hits[k]]);
+    foam += gSeaFoam;
+  }
 
   float coverage = float(nHit);
   float R = uAtmosphere.bottomRadius;
@@ -168,10 +175,13 @@ void main() {
   // Sea holes: the grid pass paints over them; where it leaves a gap (between its horizon
   // vertices, where the chord falls short of the curved horizon) this far-field sea shows,
   // which is what the grid converges to there anyway. Shaded once per pixel, no depth.
-  if (seaHoles > 0.0)
+  if (seaHoles > 0.0) {
     radiance += seaHoles * withAerialPerspective(shadeSea(-seaHoleDir, ellipsoidNormal(seaHoleDir, seaHoleT)),
                                                  seaHoleDir, seaHoleT, uSunDir);
+    foam += seaHoles * gSeaFoam;
+  }
   fragRadiance = vec4(radiance * 0.25, (coverage + seaHoles) * 0.25);
+  fragAux = vec4(foam * 0.25, 0.0, 0.0, 0.0);
   // Depth of the surface on the pixel-centre ray where it hits the globe, as the terrain and
   // the grid rasterise theirs, so land at or above sea level always passes in front of this
   // fallback (the nearest sample would stand up to half a pixel's footprint closer: from 30 km,

@@ -15,7 +15,7 @@
 in vec3 vRelative;
 in vec3 vNormal;
 in vec4 vInfo;  // height m, latitude rad, longitude rad, detail amplitude m
-out vec4 fragRadiance;
+#include "render/outputs.glsl"
 
 uniform vec3 uSunDir;  // unit, ECEF axes
 uniform int uSeaFromGlobe;  // 1 above the grid's ceiling: the globe pass draws the sea
@@ -117,4 +117,5 @@ void main() {
   float sunSeen = dot(n, uSunDir) > 0.0 ? sunVisibility(vRelative, nGeometric) : 0.0;
   vec3 surface = albedo / PI * (sunIrr * (max(dot(n, uSunDir), 0.0) * sunSeen) + skyIrr * skyView);
   fragRadiance = vec4(aerialToAltitude(surface, dir, t, hP), 1.0);
+  fragAux = vec4(0.0);
 }

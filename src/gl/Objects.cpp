@@ -49,7 +49,7 @@ Query createQuery(GLenum target) {
 }
 
 RenderTarget createRenderTarget(int width, int height, GLenum colorFormat, bool withDepth,
-                                int samples) {
+                                int samples, GLenum auxiliaryFormat) {
   RenderTarget t;
   t.width = width;
   t.height = height;
@@ -63,15 +63,23 @@ RenderTarget createRenderTarget(int width, int height, GLenum colorFormat, bool 
       glTextureStorage2D(tex.id(), 1, format, width, height);
   };
   const GLenum target = multisample ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
-  t.color = createTexture(target);
-  storage(t.color, colorFormat);
-  if (!multisample) {  // multisample textures have no sampler state
-    glTextureParameteri(t.color.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(t.color.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(t.color.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(t.color.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  auto colour = [&](Texture& tex, GLenum format, GLenum attachment) {
+    tex = createTexture(target);
+    storage(tex, format);
+    if (!multisample) {  // multisample textures have no sampler state
+      glTextureParameteri(tex.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+      glTextureParameteri(tex.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+      glTextureParameteri(tex.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+      glTextureParameteri(tex.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
+    glNamedFramebufferTexture(t.fbo.id(), attachment, tex.id(), 0);
+  };
+  colour(t.color, colorFormat, GL_COLOR_ATTACHMENT0);
+  if (auxiliaryFormat != 0) {
+    colour(t.auxiliary, auxiliaryFormat, GL_COLOR_ATTACHMENT1);
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(t.fbo.id(), 2, buffers);
   }
-  glNamedFramebufferTexture(t.fbo.id(), GL_COLOR_ATTACHMENT0, t.color.id(), 0);
   if (withDepth) {
     t.depth = createTexture(target);
     storage(t.depth, GL_DEPTH_COMPONENT32F);

@@ -66,6 +66,7 @@ Query createQuery(GLenum target);
 struct RenderTarget {
   Framebuffer fbo;
   Texture color;
+  Texture auxiliary;  ///< optional second colour attachment (COLOR_ATTACHMENT1): extra outputs
   Texture depth;
   int width = 0;
   int height = 0;
@@ -74,8 +75,10 @@ struct RenderTarget {
 
 /// colorFormat e.g. GL_RGBA32F (HDR radiance) or GL_RGBA8 (display). samples must not exceed
 /// maxSamples(colorFormat). Throws og::InternalError if the framebuffer is incomplete.
+/// auxiliaryFormat != 0 adds a second colour attachment of that format (same samples), and
+/// both attachments are draw buffers (fragment outputs 0 and 1).
 RenderTarget createRenderTarget(int width, int height, GLenum colorFormat, bool withDepth,
-                                int samples = 1);
+                                int samples = 1, GLenum auxiliaryFormat = 0);
 
 /// The most samples a multisample render target of this colour format (with a 32-bit float
 /// depth texture) can have on the current context; 1 without multisampling.

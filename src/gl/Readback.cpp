@@ -28,6 +28,12 @@ std::vector<float> readRgbaF(GLuint fbo, int width, int height) {
 std::vector<std::uint8_t> readRgba8(GLuint fbo, int width, int height) {
   return read<std::uint8_t>(fbo, width, height, GL_RGBA, GL_UNSIGNED_BYTE, 4);
 }
+std::vector<float> readRedF(GLuint fbo, int width, int height, int attachment) {
+  glNamedFramebufferReadBuffer(fbo, static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + attachment));
+  std::vector<float> v = read<float>(fbo, width, height, GL_RED, GL_FLOAT, 1);
+  glNamedFramebufferReadBuffer(fbo, GL_COLOR_ATTACHMENT0);
+  return v;
+}
 std::vector<float> readDepth(GLuint fbo, int width, int height) {
   return read<float>(fbo, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, 1);
 }

@@ -61,8 +61,10 @@ GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
   gl::checkErrors("GlobeRenderer setup");
 }
 
-void GlobeRenderer::ensureTargets(int width, int height, int requested) {
-  if (hdr_.width == width && hdr_.height == height && requestedSamples_ == requested) return;
+void GlobeRenderer::ensureTargets(int width, int height, int requested, bool auxiliary) {
+  if (hdr_.width == width && hdr_.height == height && requestedSamples_ == requested &&
+      auxiliary_ == auxiliary)
+    return;
   if (!isValidSampleCount(requested))
     throw InternalError("FrameInput::samples must be 0 (auto), 1, 2, 4 or 8, not " + std::to_string(requested));
   const int wanted = requested == kAutoSamples ? (gl::isSoftwareRenderer() ? 1 : 4) : requested;
@@ -72,7 +74,8 @@ void GlobeRenderer::ensureTargets(int width, int height, int requested) {
               "offers at most " + std::to_string(maxSamples_) + ": using " + std::to_string(samples));
     warnedSamples_ = requested;
   }
-  hdr_ = gl::createRenderTarget(width, height, GL_RGBA32F, true, samples);
+  hdr_ = gl::createRenderTarget(width, height, GL_RGBA32F, true, samples, auxiliary ? GL_R32F : 0);
+  auxiliary_ = auxiliary;
   ldr_ = gl::createRenderTarget(width, height, GL_RGBA8, false);
   resolved_ = {};
   requestedSamples_ = requested;
@@ -85,12 +88,21 @@ const gl::RenderTarget& GlobeRenderer::singleSampleHdr() const {
   if (hdr_.samples == 1) return hdr_;
   if (!resolvedCurrent_) {
     if (resolved_.width != hdr_.width || resolved_.height != hdr_.height)
-      resolved_ = gl::createRenderTarget(hdr_.width, hdr_.height, GL_RGBA32F, true);
+      resolved_ = gl::createRenderTarget(hdr_.width, hdr_.height, GL_RGBA32F, true, 1, auxiliary_ ? GL_R32F : 0);
     // Colour: the mean of the samples, linear (the radiance an EXR should hold). Depth must
     // use GL_NEAREST; GL leaves its resolve to the driver (a value between the samples').
     glBlitNamedFramebuffer(hdr_.fbo.id(), resolved_.fbo.id(), 0, 0, hdr_.width, hdr_.height, 0,
                            0, hdr_.width, hdr_.height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT,
                            GL_NEAREST);
+    if (auxiliary_) {  // the auxiliary outputs: the mean of the samples too
+      glNamedFramebufferReadBuffer(hdr_.fbo.id(), GL_COLOR_ATTACHMENT1);
+      glNamedFramebufferDrawBuffer(resolved_.fbo.id(), GL_COLOR_ATTACHMENT1);
+      glBlitNamedFramebuffer(hdr_.fbo.id(), resolved_.fbo.id(), 0, 0, hdr_.width, hdr_.height, 0, 0,
+                             hdr_.width, hdr_.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+      glNamedFramebufferReadBuffer(hdr_.fbo.id(), GL_COLOR_ATTACHMENT0);
+      const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+      glNamedFramebufferDrawBuffers(resolved_.fbo.id(), 2, buffers);
+    }
     gl::checkErrors("GlobeRenderer resolve");
     resolvedCurrent_ = true;
   }
@@ -110,9 +122,10 @@ const OceanPatterns& GlobeRenderer::patternsFor(double referenceWindMs, std::uin
 }
 
 void GlobeRenderer::render(const FrameInput& f) {
-  ensureTargets(f.width, f.height, f.samples);
+  ensureTargets(f.width, f.height, f.samples, f.auxiliaryOutputs);
   resolvedCurrent_ = false;
   const geo::CameraView view = geo::makeCameraView(f.camera, f.width, f.height);
+  lastView_ = view;
 
   // Eye in the ellipsoid's scaled space; C = |o|² - 1 in double (see geo/ellipsoid.glsl).
   const glm::dvec3 o = view.positionEcef /
@@ -127,6 +140,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   const float clearColor[] = {0, 0, 0, 0};
   const float clearDepth = 0.0f;  // reversed-Z: 0 is infinitely far
   glClearNamedFramebufferfv(hdr_.fbo.id(), GL_COLOR, 0, clearColor);
+  if (auxiliary_) glClearNamedFramebufferfv(hdr_.fbo.id(), GL_COLOR, 1, clearColor);
   glClearNamedFramebufferfv(hdr_.fbo.id(), GL_DEPTH, 0, &clearDepth);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_ALWAYS);
@@ -211,6 +225,31 @@ io::ImageRgba8 GlobeRenderer::display() const {
 std::vector<float> GlobeRenderer::depth() const {
   const gl::RenderTarget& t = singleSampleHdr();
   return gl::readDepth(t.fbo.id(), t.width, t.height);
+}
+
+std::vector<float> GlobeRenderer::whitecap() const {
+  if (!auxiliary_) throw InternalError("GlobeRenderer::whitecap needs FrameInput::auxiliaryOutputs");
+  const gl::RenderTarget& t = singleSampleHdr();
+  return gl::readRedF(t.fbo.id(), t.width, t.height, 1);
+}
+
+std::vector<float> GlobeRenderer::viewDistance() const {
+  // Reversed-Z depth = near / (distance along the view axis); along the pixel's ray the
+  // distance is longer by |forward + x tan right + y tan up| (the ray's unnormalised length).
+  std::vector<float> d = depth();
+  const int w = hdr_.width, h = hdr_.height;
+  const double tanY = std::tan(0.5 * lastView_.verticalFovRad), tanX = tanY * lastView_.aspect;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      float& z = d[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)];
+      if (z <= 0.0f) {
+        z = kSkyDistanceM;
+        continue;
+      }
+      const double nx = (2.0 * (x + 0.5) / w - 1.0) * tanX, ny = (1.0 - 2.0 * (y + 0.5) / h) * tanY;
+      z = static_cast<float>(lastView_.nearM / static_cast<double>(z) * std::sqrt(1.0 + nx * nx + ny * ny));
+    }
+  return d;
 }
 
 void GlobeRenderer::finish() { glFinish(); }

@@ -50,6 +50,9 @@ struct FrameInput {
   /// GL device offers), or kAutoSamples. Shaders still run once per pixel; the extra samples
   /// anti-alias the edges of triangles and of the depth test (terrain silhouettes, shorelines).
   int samples = kAutoSamples;
+  /// Also render the auxiliary outputs (whitecap coverage) for GlobeRenderer::whitecap():
+  /// an extra float target, for EXR outputs that ask for them (--aov).
+  bool auxiliaryOutputs = false;
 };
 
 /// The sample counts FrameInput::samples accepts.
@@ -87,6 +90,13 @@ class GlobeRenderer {
   [[nodiscard]] io::ImageRgbaF radiance() const;
   [[nodiscard]] io::ImageRgba8 display() const;
   [[nodiscard]] std::vector<float> depth() const;
+  /// Whitecap coverage of every pixel of the last render(), [0, 1], top row first; needs
+  /// FrameInput::auxiliaryOutputs (else throws og::InternalError).
+  [[nodiscard]] std::vector<float> whitecap() const;
+  /// Distance from the eye to the surface seen in every pixel of the last render(), metres
+  /// along the pixel's ray, top row first; kSkyDistanceM where no surface is seen.
+  [[nodiscard]] std::vector<float> viewDistance() const;
+  static constexpr float kSkyDistanceM = 1e10f;  ///< what compositors' Z passes use for the sky
 
   /// Samples per pixel of the last render() (after clamping; the driver may round up).
   [[nodiscard]] int samples() const { return hdr_.samples; }
@@ -105,7 +115,7 @@ class GlobeRenderer {
   TerrainRenderer& terrain() { return *terrain_; }
 
  private:
-  void ensureTargets(int width, int height, int samples);
+  void ensureTargets(int width, int height, int samples, bool auxiliary);
   /// The HDR target, resolved to one sample per pixel when multisampled (on first use after
   /// each render()).
   const gl::RenderTarget& singleSampleHdr() const;
@@ -130,6 +140,8 @@ class GlobeRenderer {
   gl::RenderTarget ldr_;
   int maxSamples_ = 1;        ///< what the device offers for the HDR target
   int requestedSamples_ = 0;  ///< FrameInput::samples that hdr_ was made for
+  bool auxiliary_ = false;    ///< hdr_ has the auxiliary attachment
+  geo::CameraView lastView_;  ///< the camera of the last render()
   int warnedSamples_ = 0;     ///< the request last warned about (once, not every resize)
   mutable gl::RenderTarget resolved_;  ///< hdr_ resolved, for read-back
   mutable bool resolvedCurrent_ = false;
