@@ -22,6 +22,7 @@
 #include "data/WindLayers.hpp"
 #include "geo/Sun.hpp"
 #include "gl/Context.hpp"
+#include "gl/PassTimer.hpp"
 #include "render/Atmosphere.hpp"
 #include "render/GlobeRenderer.hpp"
 #include "terrain/Selection.hpp"
@@ -63,7 +64,35 @@ struct BenchOptions {
   bool json = false;
   std::string record;  // camera path for the record case (render + H.264 encode)
   std::vector<std::string> samples{"auto"};
+  bool breakdown = false;
+  std::string timer = "auto";  // how passes are timed: auto, queries, finish
 };
+
+/// How --breakdown times the passes: GL timestamp queries on a GPU; on a software renderer
+/// (llvmpipe), whose queries mark when commands are queued rather than run, a glFinish and the
+/// CPU clock at every pass boundary (gl/PassTimer.hpp).
+gl::PassTimer::Mode timerMode(const std::string& choice) {
+  if (choice == "queries") return gl::PassTimer::Mode::Queries;
+  if (choice == "finish") return gl::PassTimer::Mode::Finish;
+  if (choice == "cpu") return gl::PassTimer::Mode::ProcessCpu;
+  return gl::isSoftwareRenderer() ? gl::PassTimer::Mode::Finish : gl::PassTimer::Mode::Queries;
+}
+
+/// Median of each pass over the frames, in the order the passes ran.
+std::vector<std::pair<std::string, double>> medianPasses(
+    const std::vector<std::vector<std::pair<std::string, double>>>& frames) {
+  std::vector<std::pair<std::string, double>> out;
+  if (frames.empty()) return out;
+  for (const auto& [name, ignored] : frames.front()) {
+    std::vector<double> v;
+    for (const auto& frame : frames)
+      for (const auto& [n, ms] : frame)
+        if (n == name) v.push_back(ms);
+    std::sort(v.begin(), v.end());
+    out.emplace_back(name, v[v.size() / 2]);
+  }
+  return out;
+}
 
 bool parseSize(const std::string& s, int& w, int& h) {
   return std::sscanf(s.c_str(), "%dx%d", &w, &h) == 2 && w > 0 && h > 0 && w <= 8192 && h <= 8192;
@@ -170,6 +199,14 @@ Run addBenchCommand(CLI::App& parent) {
                   "samples per pixel: auto (default), 1, 2, 4 or 8; several (--samples 1 4) time each "
                   "case at each count, frames interleaved so that machine load hits all alike");
   cmd->add_flag("--json", o->json, "print JSON instead of a table");
+  cmd->add_flag("--breakdown", o->breakdown,
+                "also time every pass (globe, terrain shadows, terrain, ocean waves, ocean, tone "
+                "mapping) and the read-back, per view");
+  cmd->add_option("--timer", o->timer,
+                  "how --breakdown times passes: auto (queries on a GPU, finish on llvmpipe), "
+                  "queries (GL timestamps), finish (glFinish + wall clock) or cpu (glFinish + the "
+                  "process's CPU time: llvmpipe's work whatever the machine's load)")
+      ->check(CLI::IsMember({"auto", "queries", "finish", "cpu"}));
   cmd->add_option("--record", o->record,
                   "instead: frames/s recording this camera path (e.g. config/flythrough.toml) to "
                   "MP4 at each --size, encoding included");
@@ -232,6 +269,10 @@ Run addBenchCommand(CLI::App& parent) {
                   context->info().renderer.c_str(), context->info().backend.c_str(), startupMs,
                   atmoColdMs, atmoCachedMs, cached->timing().fromCache ? "" : " (cache MISSED)",
                   cached->timing().skyMapsMs, "view", "size", "samples", "median", "min", "max");
+    std::vector<gl::PassTimer> timers;
+    for (std::size_t k = 0; k < renderers.size(); ++k) timers.emplace_back(timerMode(o->timer));
+    for (std::size_t k = 0; k < renderers.size(); ++k)
+      renderers[k]->setPassTimer(o->breakdown ? &timers[k] : nullptr);
     for (const auto& view : benchViews()) {
       for (const auto& [w, h] : sizes) {
         render::FrameInput f;
@@ -240,13 +281,23 @@ Run addBenchCommand(CLI::App& parent) {
         f.height = h;
         f.sunDirectionEcef = geo::sunDirectionFromHorizontal(view.pose.position, 20.0, 250.0);
         std::vector<std::vector<double>> ms(renderers.size());
+        std::vector<std::vector<std::vector<std::pair<std::string, double>>>> passes(renderers.size());
         for (int i = 0; i < o->frames + 2; ++i)
           for (std::size_t k = 0; k < renderers.size(); ++k) {
             f.samples = samples[k];
+            f.simulationTimeS = i / 30.0;  // the waves move as in a 30 fps recording
             const auto s = Clock::now();
             renderers[k]->render(f);
             render::GlobeRenderer::finish();
-            if (i >= 2) ms[k].push_back(std::chrono::duration<double, std::milli>(Clock::now() - s).count());
+            if (i < 2) continue;
+            ms[k].push_back(std::chrono::duration<double, std::milli>(Clock::now() - s).count());
+            if (!o->breakdown) continue;
+            auto frame = timers[k].results();
+            const auto r0 = Clock::now();
+            const io::ImageRgba8 shown = renderers[k]->display();
+            frame.emplace_back("read-back", std::chrono::duration<double, std::milli>(Clock::now() - r0).count());
+            if (shown.pixels.empty()) throw InternalError("bench: empty read-back");
+            passes[k].push_back(std::move(frame));
           }
         const std::string size = std::to_string(w) + "x" + std::to_string(h);
         for (std::size_t k = 0; k < renderers.size(); ++k) {
@@ -265,6 +316,19 @@ Run addBenchCommand(CLI::App& parent) {
                         view.name, size.c_str(), renderers[k]->samples(), median, t.front(),
                         t.back(), ts.tiles, static_cast<double>(ts.cpuBytes) / 1048576.0,
                         static_cast<double>(ts.gpuBytes) / 1048576.0);
+          if (!o->breakdown) continue;
+          nlohmann::json breakdown = nlohmann::json::object();
+          const gl::PassTimer::Mode mode = timers[k].mode();
+          std::string line = std::string("    passes (") +
+                             (mode == gl::PassTimer::Mode::Queries ? "queries" : mode == gl::PassTimer::Mode::Finish ? "finish" : "process CPU") + "):";
+          for (const auto& [name, passMs] : medianPasses(passes[k])) {
+            breakdown[name] = passMs;
+            char buf[96];
+            std::snprintf(buf, sizeof buf, " %s %.1f", name.c_str(), passMs);
+            line += buf;
+          }
+          report["cases"].back()["passes_ms"] = breakdown;
+          if (!o->json) std::printf("%s ms\n", line.c_str());
         }
       }
     }

@@ -126,13 +126,12 @@ void GlobeRenderer::render(const FrameInput& f) {
   resolvedCurrent_ = false;
   const geo::CameraView view = geo::makeCameraView(f.camera, f.width, f.height);
   lastView_ = view;
-
-  // Eye in the ellipsoid's scaled space; C = |o|² - 1 in double (see geo/ellipsoid.glsl).
-  const glm::dvec3 o = view.positionEcef /
-                       glm::dvec3(geo::kWgs84SemiMajorM, geo::kWgs84SemiMajorM,
-                                  geo::kWgs84SemiMinorM);
-  const double c = glm::dot(o, o) - 1.0;
-  const double tanY = std::tan(0.5 * view.verticalFovRad);
+  if (timer_ != nullptr) timer_->beginFrame();
+  // The waves hold the strongest wind of the scene; every point scales and turns them to its
+  // own wind (ocean/patterns.glsl).
+  wind_->setConstantWind(f.windSpeedMs, f.windDirectionDeg);
+  patternsFor(std::max(f.windSpeedMs, wind_->maxLayerSpeedMs()), f.waveSeed);
+  const bool grid = view.position.heightM < kOceanGridMaxHeightM;
 
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glBindFramebuffer(GL_FRAMEBUFFER, hdr_.fbo.id());
@@ -143,8 +142,38 @@ void GlobeRenderer::render(const FrameInput& f) {
   if (auxiliary_) glClearNamedFramebufferfv(hdr_.fbo.id(), GL_COLOR, 1, clearColor);
   glClearNamedFramebufferfv(hdr_.fbo.id(), GL_DEPTH, 0, &clearDepth);
   glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_ALWAYS);
+  drawGlobe(view, f, grid);
 
+  // Terrain over the globe's land (its far fallback), depth-tested; the ocean below is then
+  // depth-tested against it, so the shoreline is where sea surface and ground meet.
+  terrain_->draw(view, f.width, f.height, f.sunDirectionEcef, !grid);
+  glBindTextureUnit(0, elevation_.id());
+  glBindVertexArray(emptyVao_.id());
+  if (grid) drawOcean(view, f);
+
+  if (timer_ != nullptr) timer_->mark("tone mapping");
+  glDisable(GL_DEPTH_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, ldr_.fbo.id());
+  const gl::Program& tonemap = hdr_.samples > 1 ? tonemapMs_ : tonemap_;
+  tonemap.set("uExposure", static_cast<float>(f.exposure));
+  glBindTextureUnit(0, hdr_.color.id());
+  tonemap.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (timer_ != nullptr) timer_->endFrame();
+  gl::checkErrors("GlobeRenderer::render");
+}
+
+// The ray-cast ellipsoid with the atmosphere: sky, the land's far fallback and the sea from
+// orbit (or, below the grid's ceiling, the sea the grid leaves uncovered).
+void GlobeRenderer::drawGlobe(const geo::CameraView& view, const FrameInput& f, bool grid) {
+  if (timer_ != nullptr) timer_->mark("globe");
+  // Eye in the ellipsoid's scaled space; C = |o|² - 1 in double (see geo/ellipsoid.glsl).
+  const glm::dvec3 o = view.positionEcef /
+                       glm::dvec3(geo::kWgs84SemiMajorM, geo::kWgs84SemiMajorM,
+                                  geo::kWgs84SemiMinorM);
+  const double tanY = std::tan(0.5 * view.verticalFovRad);
+  glDepthFunc(GL_ALWAYS);
   globe_.set("uRight", toFloat(view.right));
   globe_.set("uUp", toFloat(view.up));
   globe_.set("uForward", toFloat(view.forward));
@@ -153,18 +182,12 @@ void GlobeRenderer::render(const FrameInput& f) {
   globe_.set("uNear", static_cast<float>(view.nearM));
   globe_.set("uSunDir", toFloat(glm::normalize(f.sunDirectionEcef)));
   globe_.set("uEyeScaled", toFloat(o));
-  globe_.set("uEyeC", static_cast<float>(c));
+  globe_.set("uEyeC", static_cast<float>(glm::dot(o, o) - 1.0));
   globe_.set("uCamUp", toFloat(view.enu.up));
   globe_.set("uCamAltitude", static_cast<float>(view.position.heightM));
-  // The waves hold the strongest wind of the scene; every point scales and turns them to its
-  // own wind (ocean/patterns.glsl).
-  wind_->setConstantWind(f.windSpeedMs, f.windDirectionDeg);
-  const OceanPatterns& patterns =
-      patternsFor(std::max(f.windSpeedMs, wind_->maxLayerSpeedMs()), f.waveSeed);
   wind_->bind(globe_);
-  patterns.bind();
-  patterns.setUniforms(globe_, nullptr, 0.0);
-  const bool grid = view.position.heightM < kOceanGridMaxHeightM;
+  patterns_->bind();
+  patterns_->setUniforms(globe_, nullptr, 0.0);
   globe_.set("uSeaByGrid", grid ? 1 : 0);
   globe_.set("uSeaColor", OceanLighting{}.seaColor);
   globe_.set("uElevationMap", elevationMap_);
@@ -176,41 +199,29 @@ void GlobeRenderer::render(const FrameInput& f) {
   globe_.use();
   glBindVertexArray(emptyVao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+}
 
-  // Terrain over the globe's land (its far fallback), depth-tested; the ocean below is then
-  // depth-tested against it, so the shoreline is where sea surface and ground meet.
-  terrain_->draw(view, f.width, f.height, f.sunDirectionEcef, !grid);
-  glBindTextureUnit(0, elevation_.id());
-  glBindVertexArray(emptyVao_.id());
-
-  if (grid) {
-    // The near sea: the projected grid over the globe's sea holes, depth-tested against land.
-    ocean::OceanFrame fresh;
-    if (f.oceanFrame == nullptr) fresh.reset(view.position);
-    const ocean::OceanFrame& frame = f.oceanFrame ? *f.oceanFrame : fresh;
-    OceanLighting lighting;
-    lighting.sunDirectionEcef = f.sunDirectionEcef;
-    lighting.shadows = &terrain_->shadows();
-    // Waves fade out on the way up so the grid meets the orbit model at the switch.
-    const double h = view.position.heightM;
-    const double x = std::clamp((h - kOceanFadeStartM) / (kOceanGridMaxHeightM - kOceanFadeStartM), 0.0, 1.0);
-    const double amplitude = 1.0 - x * x * (3.0 - 2.0 * x);
-    glDepthFunc(GL_GREATER);
-    ocean_->setCellPixels(f.oceanCellPixels);
-    if (f.oceanModel == OceanModel::Bruneton) patterns_->update(f.simulationTimeS);
-    ocean_->draw(view, f.width, f.height, *patterns_, frame, f.simulationTimeS, lighting, amplitude,
-                 f.oceanModel, *wind_);
+// The near sea: the projected grid over the globe's sea holes, depth-tested against land.
+void GlobeRenderer::drawOcean(const geo::CameraView& view, const FrameInput& f) {
+  ocean::OceanFrame fresh;
+  if (f.oceanFrame == nullptr) fresh.reset(view.position);
+  const ocean::OceanFrame& frame = f.oceanFrame ? *f.oceanFrame : fresh;
+  OceanLighting lighting;
+  lighting.sunDirectionEcef = f.sunDirectionEcef;
+  lighting.shadows = &terrain_->shadows();
+  // Waves fade out on the way up so the grid meets the orbit model at the switch.
+  const double h = view.position.heightM;
+  const double x = std::clamp((h - kOceanFadeStartM) / (kOceanGridMaxHeightM - kOceanFadeStartM), 0.0, 1.0);
+  const double amplitude = 1.0 - x * x * (3.0 - 2.0 * x);
+  if (f.oceanModel == OceanModel::Bruneton) {
+    if (timer_ != nullptr) timer_->mark("ocean waves");
+    patterns_->update(f.simulationTimeS);
   }
-
-  glDisable(GL_DEPTH_TEST);
-  glBindFramebuffer(GL_FRAMEBUFFER, ldr_.fbo.id());
-  const gl::Program& tonemap = hdr_.samples > 1 ? tonemapMs_ : tonemap_;
-  tonemap.set("uExposure", static_cast<float>(f.exposure));
-  glBindTextureUnit(0, hdr_.color.id());
-  tonemap.use();
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  gl::checkErrors("GlobeRenderer::render");
+  if (timer_ != nullptr) timer_->mark("ocean");
+  glDepthFunc(GL_GREATER);
+  ocean_->setCellPixels(f.oceanCellPixels);
+  ocean_->draw(view, f.width, f.height, *patterns_, frame, f.simulationTimeS, lighting, amplitude,
+               f.oceanModel, *wind_);
 }
 
 io::ImageRgbaF GlobeRenderer::radiance() const {

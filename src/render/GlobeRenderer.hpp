@@ -11,6 +11,7 @@
 #include "data/LatLonGrid.hpp"
 #include "geo/Camera.hpp"
 #include "gl/Objects.hpp"
+#include "gl/PassTimer.hpp"
 #include "gl/Shader.hpp"
 #include "io/Image.hpp"
 #include "ocean/OceanFrame.hpp"
@@ -107,6 +108,13 @@ class GlobeRenderer {
   /// Blocks until the GPU has finished the last frame (for timing).
   static void finish();
 
+  /// Times the passes of every following frame on `timer` (nullptr: none): "globe",
+  /// "terrain shadows", "terrain", "ocean waves" (the FFTs), "ocean", "tone mapping".
+  void setPassTimer(gl::PassTimer* timer) {
+    timer_ = timer;
+    terrain_->setPassTimer(timer);
+  }
+
   /// The wave patterns of the last frame (nullptr before the first).
   [[nodiscard]] const OceanPatterns* oceanPatterns() const { return patterns_.get(); }
 
@@ -116,6 +124,8 @@ class GlobeRenderer {
 
  private:
   void ensureTargets(int width, int height, int samples, bool auxiliary);
+  void drawGlobe(const geo::CameraView& view, const FrameInput& f, bool grid);
+  void drawOcean(const geo::CameraView& view, const FrameInput& f);
   /// The HDR target, resolved to one sample per pixel when multisampled (on first use after
   /// each render()).
   const gl::RenderTarget& singleSampleHdr() const;
@@ -141,6 +151,7 @@ class GlobeRenderer {
   int maxSamples_ = 1;        ///< what the device offers for the HDR target
   int requestedSamples_ = 0;  ///< FrameInput::samples that hdr_ was made for
   bool auxiliary_ = false;    ///< hdr_ has the auxiliary attachment
+  gl::PassTimer* timer_ = nullptr;
   geo::CameraView lastView_;  ///< the camera of the last render()
   int warnedSamples_ = 0;     ///< the request last warned about (once, not every resize)
   mutable gl::RenderTarget resolved_;  ///< hdr_ resolved, for read-back

@@ -217,7 +217,9 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   p.set("uCamAltitude", static_cast<float>(view.position.heightM));
   p.set("uSeaFromGlobe", seaFromGlobe ? 1 : 0);
   setDetailUniforms(view);
+  if (timer_ != nullptr) timer_->mark("terrain shadows");
   renderShadowMap(view, tiles, sunDirectionEcef);
+  if (timer_ != nullptr) timer_->mark("terrain");
   glBindTextureUnit(11, shadowMap_.id());
   if (atmosphere_ != nullptr) atmosphere_->bind(p);
   p.use();

@@ -15,6 +15,7 @@
 #include "data/LatLonGrid.hpp"
 #include "geo/Camera.hpp"
 #include "gl/Objects.hpp"
+#include "gl/PassTimer.hpp"
 #include "gl/Shader.hpp"
 #include "render/Atmosphere.hpp"
 #include "terrain/Selection.hpp"
@@ -54,6 +55,9 @@ class TerrainRenderer {
             bool seaFromGlobe);
 
   [[nodiscard]] const TerrainStats& stats() const { return stats_; }
+
+  /// Marks the shadow and tile passes on `timer` while drawing (nullptr: none).
+  void setPassTimer(gl::PassTimer* timer) { timer_ = timer; }
   /// The shadow maps drawn by the last draw() (off when there were none).
   [[nodiscard]] const SunShadows& shadows() const { return shadows_; }
   /// Selection settings; `wait = false` (progressive) never stalls a frame on tile builds.
@@ -87,6 +91,7 @@ class TerrainRenderer {
   int indexCount_ = 0;
   std::unordered_map<std::uint64_t, GpuTile> gpu_;
   TerrainStats stats_;
+  gl::PassTimer* timer_ = nullptr;
   SunShadows shadows_;
 };
 
