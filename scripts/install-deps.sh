@@ -9,12 +9,16 @@ packages=(
   libegl-dev libgl-dev libosmesa6-dev libegl-mesa0 libgl1-mesa-dri
   libnetcdf-dev libeccodes-dev libpng-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev
+  # Google Earth KML tours (record/view/path convert)
+  libpugixml-dev
   # video output for `record`; ffmpeg/ffprobe for the tests and the Slurm encode step
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg
   # the viewer's test: a private X server and synthetic key presses
   xvfb xdotool
   # real data: ETOPO relief/bathymetry and monthly winds (used by tests when present)
   ferret-datasets
+  # the Slurm test: a private single-node Slurm (slurmctld + slurmd) and its MUNGE daemon
+  slurm-wlm munge
 )
 
 missing=()

@@ -1,0 +1,52 @@
+#include "app/PathFiles.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <memory>
+
+#include "core/Error.hpp"
+#include "data/Elevation.hpp"
+#include "terrain/Heightfield.hpp"
+
+namespace og::app {
+namespace fs = std::filesystem;
+namespace {
+constexpr const char* kCameraFlags[] = {"--lat", "--lon", "--alt", "--heading", "--pitch", "--roll", "--fov"};
+}  // namespace
+
+io::CameraPath loadPathFile(const fs::path& file, const io::SceneResolver& resolve) {
+  if (io::isKmlFile(file)) return io::readKmlPath(file, resolve, terrainHeights);
+  io::CameraPath path = io::readCameraPath(file);
+  path.scene = resolve(path.scene);
+  return path;
+}
+
+void writePathFile(const fs::path& file, const io::CameraPath& path) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".kml")
+    io::writeKmlTour(file, path);
+  else if (ext == ".json")
+    io::writeCameraPathJson(file, path);
+  else if (ext == ".toml")
+    io::writeCameraPathToml(file, path);
+  else
+    throw InputError(file.string() + ": unknown path file type '" + ext + "' (use .toml, .json or .kml)");
+}
+
+io::TerrainHeight terrainHeights(const io::SceneSettings& scene) {
+  const auto ground = std::make_shared<const terrain::Heightfield>(data::loadElevationLayer(scene.elevationLayer));
+  return [ground](double lat, double lon) { return ground->heightM(lat, lon); };
+}
+
+void hideCameraFlags(CLI::App& cmd) {
+  for (const char* flag : kCameraFlags) cmd.get_option(flag)->group("");
+}
+
+void refuseCameraFlags(const CLI::App& cmd, const std::string& command) {
+  for (const char* flag : kCameraFlags)
+    if (cmd.count(flag) > 0)
+      throw InputError(std::string(flag) + ": " + command + " takes the camera from the path file");
+}
+
+}  // namespace og::app
