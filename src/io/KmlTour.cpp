@@ -295,6 +295,8 @@ KmlTour readKmlTour(const fs::path& file) {
   const Source src(file);
   pugi::xml_document doc;
   const pugi::xml_parse_result parsed = doc.load_buffer(src.text().data(), src.text().size());
+  if (parsed.status == pugi::status_no_document_element)
+    throw InputError(src.at(1) + "not a KML file (no XML element in it)");
   if (!parsed)
     throw InputError(src.at(src.lineAt(parsed.offset)) + "not a KML file: " + parsed.description());
   const pugi::xml_node root = doc.document_element();

@@ -14,6 +14,7 @@
 #include "geo/FlightPath.hpp"
 #include "geo/Sun.hpp"
 #include "io/CameraPath.hpp"
+#include "io/KmlTour.hpp"
 
 namespace fs = std::filesystem;
 using namespace og;
@@ -236,4 +237,29 @@ TEST(ViewerKeyframes, SunAnglesHoldAtTheLastKeyframeAndBadFilesAreKept) {
   std::string first;
   std::getline(in, first);
   EXPECT_EQ(first, "[[keyframe]]");  // untouched
+}
+
+TEST(ViewerKeyframes, AKmlFileGrowsIntoAGoogleEarthTour) {
+  const fs::path file = scratch("flight.kml");
+  io::SceneSettings scene;
+  scene.width = 320;
+  scene.height = 180;
+  scene.time = UtcTime::fromCivil(2024, 6, 20, 15);
+  const glm::dvec3 sun = geo::sunEphemeris(*scene.time).directionEcef;
+  const geo::CameraPose views[] = {poseAt(36.25, -9.125, 4e5, 90, -60), poseAt(36.4, -8.5, 2e4, 95, -30),
+                                   poseAt(36.5, -8.0, 12.5, 271.5, -3.25, 1.5)};
+  for (const auto& v : views) appendKeyframe(file, v, scene, sun);
+
+  const io::KmlTour tour = io::readKmlTour(file);
+  ASSERT_EQ(tour.keys.size(), 3u);
+  // One smooth flight: at rest at the ends only (no stop where each view was appended).
+  EXPECT_EQ(tour.keys[0].easing, geo::Easing::EaseIn);
+  EXPECT_EQ(tour.keys[1].easing, geo::Easing::EaseOut);
+  ASSERT_TRUE(tour.settings);  // the viewer's scene travels inside the tour
+  EXPECT_EQ(tour.settings->scene.width, 320);
+  ASSERT_TRUE(tour.settings->scene.time);
+  EXPECT_NEAR(tour.settings->scene.time->unixSeconds + tour.keys[2].timeS, scene.time->unixSeconds, 1.0);
+  const auto keys = io::kmlKeyframes(tour, 320.0 / 180.0, {});
+  for (std::size_t k = 0; k < 3; ++k) expectSameView(keys[k].pose, views[k]);
+  EXPECT_NEAR(keys[2].pose.verticalFovDeg, views[2].verticalFovDeg, 1e-9);  // via gx:horizFov
 }
