@@ -230,7 +230,8 @@ TEST(Record, BadInputExitsTwoWithFileAndLine) {
 TEST(Record, ShippedPathsParse) {
   const fs::path source = OG_SOURCE_DIR;
   for (const auto& [file, frames] : {std::pair{"config/flythrough.toml", 601},
-                                     std::pair{"config/himalaya.toml", 601}}) {
+                                     std::pair{"config/himalaya.toml", 601},
+                                     std::pair{"config/gibraltar_tour.kml", 691}}) {
     const RunResult r = run("record " + (source / file).string() + " --count-frames", "count");
     ASSERT_EQ(r.exitCode, 0) << file << ": " << r.err;
     EXPECT_NE(r.out.find(std::to_string(frames)), std::string::npos) << file << ": " << r.out;
