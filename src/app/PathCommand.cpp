@@ -25,7 +25,7 @@ Run addPathCommand(CLI::App& parent) {
   CLI::App* convert = path->add_subcommand(
       "convert", "convert a camera path between TOML, JSON and a Google Earth KML tour (by extension)");
   convert->add_option("input", o->input, "path file to read (.toml, .json or .kml)")->required();
-  convert->add_option("output", o->output, "path file to write (.toml, .json or .kml)")->required();
+  convert->add_option("output", o->output, "path file to write (.kml, .json, otherwise TOML)")->required();
   o->scene.add(*convert);
   hideCameraFlags(*convert);
   return [o, convert]() {
@@ -33,7 +33,7 @@ Run addPathCommand(CLI::App& parent) {
     checkOutputWritable(o->output);
     const io::CameraPath p =
         loadPathFile(o->input, [&](const io::SceneSettings& s) { return o->scene.resolve(s); });
-    writePathFile(o->output, p);
+    io::writePathFile(o->output, p);
     log::info("wrote " + std::to_string(p.keyframes.size()) + " keyframes to " + o->output);
     return static_cast<int>(kExitOk);
   };

@@ -1,7 +1,5 @@
 #include "app/PathFiles.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <memory>
 
 #include "core/Error.hpp"
@@ -19,19 +17,6 @@ io::CameraPath loadPathFile(const fs::path& file, const io::SceneResolver& resol
   io::CameraPath path = io::readCameraPath(file);
   path.scene = resolve(path.scene);
   return path;
-}
-
-void writePathFile(const fs::path& file, const io::CameraPath& path) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (ext == ".kml")
-    io::writeKmlTour(file, path);
-  else if (ext == ".json")
-    io::writeCameraPathJson(file, path);
-  else if (ext == ".toml")
-    io::writeCameraPathToml(file, path);
-  else
-    throw InputError(file.string() + ": unknown path file type '" + ext + "' (use .toml, .json or .kml)");
 }
 
 io::TerrainHeight terrainHeights(const io::SceneSettings& scene) {

@@ -15,9 +15,6 @@ namespace og::app {
 /// are placed on the resolved scene's elevation layer (io::readKmlPath). Throws og::InputError.
 io::CameraPath loadPathFile(const std::filesystem::path& file, const io::SceneResolver& resolve);
 
-/// Writes a path as TOML, JSON or a KML tour, by the file's extension, atomically.
-void writePathFile(const std::filesystem::path& file, const io::CameraPath& path);
-
 /// The terrain's height function (the elevation layer with its detail, as the renderer builds
 /// its tiles from) for a scene's elevation layer.
 io::TerrainHeight terrainHeights(const io::SceneSettings& scene);

@@ -257,29 +257,19 @@ void addValue(pugi::xml_node parent, const char* name, double v) {
 
 void writeView(pugi::xml_node parent, const geo::Keyframe& k, double aspect) {
   const double halfV = 0.5 * k.pose.verticalFovDeg * kDeg;
-  const double horizontalFovDeg = 2.0 * std::atan(std::tan(halfV) * aspect) / kDeg;
-  if (k.lookAt) {
-    const geo::LookAt& v = *k.lookAt;
-    pugi::xml_node view = parent.append_child("LookAt");
-    addValue(view, "gx:horizFov", horizontalFovDeg);
-    addValue(view, "longitude", std::remainder(v.target.longitudeDeg, 360.0));
-    addValue(view, "latitude", v.target.latitudeDeg);
-    addValue(view, "altitude", v.target.heightM);
-    addValue(view, "heading", v.headingDeg);
-    addValue(view, "tilt", v.tiltDeg);
-    addValue(view, "range", v.rangeM);
-    view.append_child("altitudeMode").text().set("absolute");
-    return;
-  }
-  const geo::CameraPose& p = k.pose;
-  pugi::xml_node view = parent.append_child("Camera");
-  addValue(view, "gx:horizFov", horizontalFovDeg);
-  addValue(view, "longitude", std::remainder(p.position.longitudeDeg, 360.0));
-  addValue(view, "latitude", p.position.latitudeDeg);
-  addValue(view, "altitude", p.position.heightM);
-  addValue(view, "heading", p.headingDeg);
-  addValue(view, "tilt", p.pitchDeg + 90.0);
-  addValue(view, "roll", p.rollDeg);
+  const bool lookAt = k.lookAt.has_value();
+  const geo::Geodetic& at = lookAt ? k.lookAt->target : k.pose.position;
+  pugi::xml_node view = parent.append_child(lookAt ? "LookAt" : "Camera");
+  addValue(view, "gx:horizFov", 2.0 * std::atan(std::tan(halfV) * aspect) / kDeg);
+  addValue(view, "longitude", std::remainder(at.longitudeDeg, 360.0));
+  addValue(view, "latitude", at.latitudeDeg);
+  addValue(view, "altitude", at.heightM);
+  addValue(view, "heading", lookAt ? k.lookAt->headingDeg : k.pose.headingDeg);
+  addValue(view, "tilt", lookAt ? k.lookAt->tiltDeg : k.pose.pitchDeg + 90.0);
+  if (lookAt)
+    addValue(view, "range", k.lookAt->rangeM);
+  else
+    addValue(view, "roll", k.pose.rollDeg);
   view.append_child("altitudeMode").text().set("absolute");
 }
 
@@ -289,6 +279,17 @@ bool isKmlFile(const fs::path& file) {
   std::string ext = file.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   return ext == ".kml";
+}
+
+void writePathFile(const fs::path& file, const CameraPath& path) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".kml")
+    writeKmlTour(file, path);
+  else if (ext == ".json")
+    writeCameraPathJson(file, path);
+  else
+    writeCameraPathToml(file, path);
 }
 
 KmlTour readKmlTour(const fs::path& file) {

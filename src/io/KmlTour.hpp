@@ -104,4 +104,8 @@ void writeKmlTour(const std::filesystem::path& file, const CameraPath& path);
 /// True for a .kml file name (any case).
 bool isKmlFile(const std::filesystem::path& file);
 
+/// Writes a path by the file's extension, atomically: .kml a tour, .json JSON, else TOML (what
+/// readCameraPath reads for any other name).
+void writePathFile(const std::filesystem::path& file, const CameraPath& path);
+
 }  // namespace og::io

@@ -39,6 +39,15 @@ void expectSameView(const geo::CameraPose& a, const geo::CameraPose& b) {
   EXPECT_LT(glm::length(va.positionEcef - vb.positionEcef), 1e-6);
 }
 
+// The viewer's scene as K saves it: a 320x180 window on 2024-06-20 15:00 UTC.
+io::SceneSettings viewerScene() {
+  io::SceneSettings scene;
+  scene.width = 320;
+  scene.height = 180;
+  scene.time = UtcTime::fromCivil(2024, 6, 20, 15);
+  return scene;
+}
+
 fs::path scratch(const std::string& name) {
   const fs::path dir = fs::path(OG_TEST_OUT_DIR) / "viewer";
   fs::create_directories(dir);
@@ -186,10 +195,7 @@ TEST(ViewerFont, RasterisesLinesWithInkOutlineAndBackdrop) {
 
 TEST(ViewerKeyframes, AppendedViewsMakeAPathRecordAccepts) {
   const fs::path file = scratch("flight.toml");
-  io::SceneSettings scene;
-  scene.width = 320;
-  scene.height = 180;
-  scene.time = UtcTime::fromCivil(2024, 6, 20, 15);
+  io::SceneSettings scene = viewerScene();
   scene.windLayers = {"a \"quoted\" name.nc:U,V"};
   const glm::dvec3 sun = geo::sunEphemeris(*scene.time).directionEcef;
   const geo::CameraPose a = poseAt(36.25, -9.125, 4e5, 90, -60, 0);
@@ -241,10 +247,7 @@ TEST(ViewerKeyframes, SunAnglesHoldAtTheLastKeyframeAndBadFilesAreKept) {
 
 TEST(ViewerKeyframes, AKmlFileGrowsIntoAGoogleEarthTour) {
   const fs::path file = scratch("flight.kml");
-  io::SceneSettings scene;
-  scene.width = 320;
-  scene.height = 180;
-  scene.time = UtcTime::fromCivil(2024, 6, 20, 15);
+  const io::SceneSettings scene = viewerScene();
   const glm::dvec3 sun = geo::sunEphemeris(*scene.time).directionEcef;
   const geo::CameraPose views[] = {poseAt(36.25, -9.125, 4e5, 90, -60), poseAt(36.4, -8.5, 2e4, 95, -30),
                                    poseAt(36.5, -8.0, 12.5, 271.5, -3.25, 1.5)};

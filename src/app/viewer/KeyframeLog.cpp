@@ -73,14 +73,7 @@ AppendedKeyframe appendKeyframe(const fs::path& file, const geo::CameraPose& pos
   }
   path.scene = s;
 
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (ext == ".json")
-    io::writeCameraPathJson(file, path);
-  else if (ext == ".kml")
-    io::writeKmlTour(file, path);
-  else
-    io::writeCameraPathToml(file, path);
+  io::writePathFile(file, path);
   return {path.keyframes.size(), key.timeS};
 }
 
