@@ -253,3 +253,24 @@ TEST(CameraPathForms, LookAtKeyframesAndOrbits) {
   bad("1", "not both", "[orbit]\nlatitude_deg = 1\nlongitude_deg = 1\nrange_m = 1\nduration_s = 1\n"
                        "[[keyframe]]\nlatitude_deg = 1\nlongitude_deg = 2\nheight_m = 3\n");
 }
+
+TEST(KmlTour, HostileFilesAreRefusedCleanly) {
+  // Entities are not expanded (no "billion laughs"), deep nesting does not recurse, and huge or
+  // odd numbers are refused: every case is an og::InputError, never a crash or a hang.
+  std::string laughs = "<?xml version=\"1.0\"?>\n<!DOCTYPE kml [<!ENTITY a \"aaaaaaaaaa\">";
+  for (int i = 1; i < 10; ++i)
+    laughs += "<!ENTITY " + std::string(1, char('a' + i)) + " \"" + std::string(10, '&') + "\">";
+  laughs += "]>\n<kml><gx:Tour><gx:Playlist><gx:FlyTo><Camera>\n<latitude>&j;</latitude></Camera>"
+            "</gx:FlyTo></gx:Playlist></gx:Tour></kml>\n";
+  std::string deep = "<kml>";
+  for (int i = 0; i < 200000; ++i) deep += "<Folder>";
+  deep += "\n";
+  const std::string huge = "<kml><gx:Tour><gx:Playlist><gx:FlyTo><Camera><altitude>1e999</altitude>"
+                           "</Camera></gx:FlyTo></gx:Playlist></gx:Tour></kml>";
+  const std::string hex = "<kml><gx:Tour><gx:Playlist><gx:FlyTo><Camera><latitude>0x10</latitude>"
+                          "</Camera></gx:FlyTo></gx:Playlist></gx:Tour></kml>";
+  for (const std::string* text : std::initializer_list<const std::string*>{&laughs, &deep, &huge, &hex}) {
+    const fs::path file = kml("hostile.kml", *text, true);
+    EXPECT_THROW(io::readKmlTour(file), InputError) << text->substr(0, 60);
+  }
+}
