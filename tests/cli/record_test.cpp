@@ -173,7 +173,20 @@ TEST(Record, InterruptedMp4IsClosedAndPlayable) {
     ::execl(OG_BINARY, OG_BINARY, "record", path.c_str(), "-o", out.c_str(), static_cast<char*>(nullptr));
     std::_Exit(127);
   }
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  // Interrupt once the first fragment is out: the temporary MP4 has grown past its header
+  // (a fixed delay is too short on a busy machine, where start-up alone can take seconds).
+  auto fragmentWritten = [&] {
+    for (const auto& e : fs::directory_iterator(dir)) {
+      const std::string name = e.path().filename().string();
+      std::error_code ec;
+      if (name.rfind(".a", 0) == 0 && name.find(".tmp") != std::string::npos && fs::file_size(e.path(), ec) > 4096)
+        return true;
+    }
+    return false;
+  };
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!fragmentWritten() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
   ::kill(pid, SIGINT);
   int status = 0;
   ::waitpid(pid, &status, 0);
