@@ -194,23 +194,29 @@ fi
 say "array: $tasks tasks COMPLETED, $frames frames equal the reference; encode COMPLETED ($work/flight.mp4)"
 
 # --- a task killed part-way, resubmitted with --resume ----------------------------------------
-# Task 1 renders frames 6..11. Once it has written one, freeze its renderer (SIGSTOP, so no
-# machine is too fast for the kill to land part-way) and kill it (SIGKILL), as a node failure
-# would; the task fails.
+# Task 1 renders frames 6..11. Its renderer is frozen (SIGSTOP) as soon as it starts and let run
+# in steps of 10 ms until its first frame is out, so on any machine, however fast, it is killed
+# (SIGKILL, as a node failure would) part-way; the task fails.
 first=$CHUNK
 end=$((2 * CHUNK))
 written() { find "$work/resumed" -name 'frame_*.png' | wc -l; }
 victim=$(sbatch --parsable --array=1 --cpus-per-task=1 --chdir="$work" \
   --output="$work/log/victim-%A_%a.out" "$src/scripts/slurm_record.sh" "$path" "$work/resumed")
+renderer=
 deadline=$((SECONDS + 120))
-until (($(written) >= 1)); do  # polled often: on a fast machine a frame takes a few 10 ms
-  ((SECONDS < deadline)) || fail "task 1 wrote no frames in 120 s"
+until renderer=$(pgrep -f "$work/resumed/frame_"); do
+  ((SECONDS < deadline)) || fail "task 1's renderer did not start in 120 s"
   sleep 0.02
 done
-renderer=$(pgrep -f "$work/resumed/frame_" || true)
-[[ -n $renderer ]] || fail "task 1's oceanglobe process is gone before it could be killed"
-kill -STOP $renderer  # (scancel would send SIGCONT first: the kill goes to the process)
-kill -KILL $renderer
+kill -STOP $renderer
+deadline=$((SECONDS + 300))
+until (($(written) >= 1)); do
+  ((SECONDS < deadline)) || fail "task 1 wrote no frame in 300 s"
+  kill -CONT $renderer || fail "task 1's renderer ended before its first frame"
+  sleep 0.01
+  kill -STOP $renderer || fail "task 1's renderer ended before it was killed"
+done
+kill -KILL $renderer  # (scancel sends SIGCONT first: the kill goes to the process itself)
 scancel --full --signal=KILL "$victim" 2>/dev/null || true
 wait_for 30 finished "$victim" || fail "the killed task did not end"
 kept=$(written)
