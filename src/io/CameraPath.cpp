@@ -332,7 +332,7 @@ void readOrbit(const fs::path& file, const toml::table& t, CameraPath& path) {
   try {
     path.keyframes = geo::orbitKeyframes(o);
   } catch (const InputError& e) {
-    throw InputError(where(file, t) + "[" + e.what());
+    throw InputError(where(file, t) + e.what());
   }
 }
 
