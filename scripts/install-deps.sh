@@ -11,12 +11,16 @@ packages=(
   libgtest-dev
   # FFTW: the CPU reference of the GPU FFT wave patterns in the tests
   libfftw3-dev
+  # Google Earth KML tours (record/view/path convert)
+  libpugixml-dev
   # video output for `record`; ffmpeg/ffprobe for the tests and the Slurm encode step
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg
   # the viewer's test: a private X server and synthetic key presses
   xvfb xdotool
   # real data: ETOPO relief/bathymetry and monthly winds (used by tests when present)
   ferret-datasets
+  # the Slurm test: a private single-node Slurm (slurmctld + slurmd) and its MUNGE daemon
+  slurm-wlm munge
 )
 
 missing=()

@@ -16,5 +16,6 @@ Run addRecordCommand(CLI::App& parent);
 Run addSpectrumCommand(CLI::App& parent);
 Run addViewCommand(CLI::App& parent);
 Run addValidateCommand(CLI::App& parent);
+Run addPathCommand(CLI::App& parent);
 
 }  // namespace og::app

@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
       {"spectrum", app::addSpectrumCommand(app)},
       {"view", app::addViewCommand(app)},
       {"validate", app::addValidateCommand(app)},
+      {"path", app::addPathCommand(app)},
   };
 
   try {

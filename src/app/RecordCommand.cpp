@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "app/Commands.hpp"
+#include "app/PathFiles.hpp"
 #include "app/Recording.hpp"
 #include "app/SceneOptions.hpp"
 #include "core/AtomicFile.hpp"
@@ -89,8 +90,6 @@ class FramePattern {
   bool zeroPad_ = false;
 };
 
-constexpr const char* kCameraFlags[] = {"--lat", "--lon", "--alt", "--heading", "--pitch", "--roll", "--fov"};
-
 struct RecordOptions {
   SceneOptions scene;
   std::string pathFile;
@@ -141,7 +140,7 @@ std::int64_t frameCount(double durationS, double fps) {
 
 RecordResult runRecording(const RecordJob& job) {
   using Clock = std::chrono::steady_clock;
-  const geo::FlightPath flight(job.path.keyframes);
+  const geo::FlightPath flight = job.path.flight();
   const io::SceneSettings& scene = job.scene;
   const std::int64_t total = frameCount(flight.durationS(), job.fps);
   const std::int64_t first = job.first, end = job.end < 0 ? total : job.end;
@@ -292,14 +291,14 @@ int benchRecord(const std::string& pathFile, const std::vector<std::pair<int, in
                 int frames, const std::string& glBackend, const std::vector<int>& samples,
                 bool json) {
   RecordJob job;
-  job.path = io::readCameraPath(pathFile);
+  job.path = loadPathFile(pathFile, [](const io::SceneSettings& s) { return s; });
   job.scene = job.path.scene;
   job.scene.glBackend = glBackend;
   job.fps = job.path.fps.value_or(30.0);
   job.crf = job.path.crf.value_or(20);
   job.progress = false;
   // Sample the whole flight evenly: orbit frames and sea-level frames cost differently.
-  const geo::FlightPath flight(job.path.keyframes);
+  const geo::FlightPath flight = job.path.flight();
   const std::int64_t total = frameCount(flight.durationS(), job.fps);
   job.stride = std::max<std::int64_t>(1, total / std::max(frames, 1));
   const fs::path dir = fs::temp_directory_path();
@@ -350,8 +349,8 @@ int benchRecord(const std::string& pathFile, const std::vector<std::pair<int, in
 Run addRecordCommand(CLI::App& parent) {
   auto o = std::make_shared<RecordOptions>();
   CLI::App* cmd = parent.add_subcommand(
-      "record", "render a camera path (TOML/JSON) to an H.264 MP4 or a PNG/EXR frame sequence");
-  cmd->add_option("path", o->pathFile, "camera path file (.toml or .json), see docs/recording.md")
+      "record", "render a camera path (TOML/JSON, or a Google Earth KML tour) to an H.264 MP4 or a PNG/EXR frame sequence");
+  cmd->add_option("path", o->pathFile, "camera path file (.toml, .json or .kml), see docs/recording.md")
       ->required();
   cmd->add_option("-o,--output", o->output,
                   "OUT.mp4, or a frame pattern such as frames/frame_%05d.png or .exr (required)");
@@ -360,7 +359,7 @@ Run addRecordCommand(CLI::App& parent) {
   o->scene.add(*cmd);
   // The camera comes from the path: hide the still-image camera flags (SceneOptions still
   // looks them up) and refuse them below.
-  for (const char* flag : kCameraFlags) cmd->get_option(flag)->group("");
+  hideCameraFlags(*cmd);
   cmd->add_option("--fps", o->fps, "frames per second (default: the path's [video] fps, or 30)")
       ->check(CLI::Range(0.001, 240.0));
   cmd->add_option("--crf", o->crf, "H.264 quality, 0 (lossless) to 51 (default: the path's, or 20)")
@@ -373,12 +372,10 @@ Run addRecordCommand(CLI::App& parent) {
   cmd->add_option("--exr-type", o->exrType, "EXR pixel type: half or float")
       ->check(CLI::IsMember({"half", "float"}));
   return [o, cmd]() {
-    for (const char* flag : kCameraFlags)
-      if (cmd->count(flag) > 0)
-        throw InputError(std::string(flag) + ": record takes the camera from the path file");
+    refuseCameraFlags(*cmd, "record");
     RecordJob job;
-    job.path = io::readCameraPath(o->pathFile);
-    job.scene = o->scene.resolve(job.path.scene);
+    job.path = loadPathFile(o->pathFile, [&](const io::SceneSettings& s) { return o->scene.resolve(s); });
+    job.scene = job.path.scene;
     job.fps = o->fps.value_or(job.path.fps.value_or(30.0));
     job.crf = o->crf.value_or(job.path.crf.value_or(20));
     job.preset = o->preset;
@@ -387,12 +384,12 @@ Run addRecordCommand(CLI::App& parent) {
     job.exrFloat = o->exrType == "float";
     if (o->countFrames) {
       std::printf("%lld\n", static_cast<long long>(
-                                 frameCount(geo::FlightPath(job.path.keyframes).durationS(), job.fps)));
+                                 frameCount(job.path.flight().durationS(), job.fps)));
       return static_cast<int>(kExitOk);
     }
     if (job.output.empty()) throw InputError("record: -o/--output is required");
     if (!o->frames.empty()) {
-      const geo::FlightPath flight(job.path.keyframes);
+      const geo::FlightPath flight = job.path.flight();
       std::tie(job.first, job.end) = parseRange(o->frames, frameCount(flight.durationS(), job.fps));
     }
     const RecordResult r = runRecording(job);

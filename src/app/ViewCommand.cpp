@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "app/Commands.hpp"
+#include "app/PathFiles.hpp"
 #include "app/SceneOptions.hpp"
 #include "app/viewer/FlightController.hpp"
 #include "app/viewer/KeyframeLog.hpp"
@@ -90,7 +91,7 @@ class Viewer {
           return std::max(0.0, ground_.heightM(lat, lon));
         }),
         start_(scene_.camera) {
-    if (path) flight_.emplace(path->keyframes);
+    if (path) flight_.emplace(path->flight());
     baseTime_ = scene_.time;
     // Sun by angles: fixed in ECEF, given at the last keyframe when playing a path (as record
     // does) or at the starting point.
@@ -455,7 +456,8 @@ class Viewer {
     s.oceanModel = oceanModelName();
     if (!layersOn_) s.windLayers.clear();
     try {
-      const auto added = viewer::appendKeyframe(options_.keyframes, controller_.pose(), s, sunDirection());
+      const auto added = viewer::appendKeyframe(options_.keyframes, controller_.pose(), s, sunDirection(),
+                                                [this](double lat, double lon) { return ground_.heightM(lat, lon); });
       std::printf("keyframe %zu at %.1f s: %s\n", added.count, added.timeS, options_.keyframes.c_str());
       std::fflush(stdout);
       say(format("keyframe %zu at %.1f s", added.count, added.timeS));
@@ -505,29 +507,35 @@ Run addViewCommand(CLI::App& parent) {
   CLI::App* cmd = parent.add_subcommand(
       "view", "fly the globe by hand in a window (controls: docs/controls.md)");
   opts->scene.add(*cmd);
-  cmd->add_option("--path", opts->path, "camera path file (TOML/JSON) to play in the window");
+  cmd->add_option("--path", opts->path, "camera path file (TOML/JSON, or a Google Earth KML tour) to play");
   cmd->add_option("--keyframes", opts->keyframes,
-                  "path file that K appends the current view to (created if absent)");
+                  "path file (.toml, .json or .kml) that K appends the current view to (created if absent)");
   cmd->add_option("--screenshot-dir", opts->screenshotDir,
                   "directory for screenshots (P): oceanglobe_NNNN.png + .exr");
   cmd->add_flag("--no-overlay", opts->noOverlay, "start with the text overlay hidden (H shows it)");
   return [opts]() {
     std::optional<io::CameraPath> path;
-    io::SceneSettings base;
-    base.width = 960;  // a window, not an image: a size that fits any screen
-    base.height = 540;
+    io::SceneSettings scene;
+    scene.width = 960;  // a window, not an image: a size that fits any screen
+    scene.height = 540;
     if (!opts->path.empty()) {
-      path = io::readCameraPath(opts->path);
-      base = path->scene;
+      path = loadPathFile(opts->path, [&](const io::SceneSettings& s) { return opts->scene.resolve(s); });
+      scene = path->scene;
+    } else {
+      scene = opts->scene.resolve(scene);
     }
-    const io::SceneSettings scene = opts->scene.resolve(base);
     // Fail before opening the window: a bad output place or keyframe file exits 2.
     std::error_code ec;
     if (!fs::is_directory(opts->screenshotDir, ec))
       throw InputError("--screenshot-dir: '" + opts->screenshotDir + "' is not a directory");
     checkOutputWritable(fs::path(opts->screenshotDir) / "oceanglobe_0001.png");
     checkOutputWritable(opts->keyframes);
-    if (fs::exists(opts->keyframes, ec)) (void)io::readCameraPath(opts->keyframes);
+    if (fs::exists(opts->keyframes, ec)) {
+      if (io::isKmlFile(opts->keyframes))
+        (void)io::readKmlTour(opts->keyframes);
+      else
+        (void)io::readCameraPath(opts->keyframes);
+    }
     if (scene.glBackend != "auto") log::info("--gl is ignored by view: the window has its own context");
     Viewer viewer(*opts, scene, std::move(path));
     return viewer.run();

@@ -32,6 +32,24 @@
 //   easing = "smooth"                    # segment to the next keyframe: smooth | ease-in |
 //                                        #   ease-out | ease-in-out (see geo/FlightPath.hpp)
 //
+//   [[keyframe]]                         # a look-at keyframe (KML's LookAt) instead of a camera:
+//   look_at = { latitude_deg = 45.83, longitude_deg = 6.86, height_m = 4800 }   # the target
+//   range_m = 12000                      # eye to target, [0, 1e9]
+//   tilt_deg = 65                        # 0 looks straight down, 90 level
+//   heading_deg = 200                    # the way the eye looks; roll_deg, fov_deg as above
+//                                        # (a keyframe without position keys after a look-at
+//                                        #  keyframe keeps its target, range and tilt)
+//
+//   [path]
+//   interpolation = "geodesic"           # or "smooth" (continuous direction; geo/FlightPath.hpp)
+//
+//   [orbit]                              # instead of keyframes: circle a point
+//   latitude_deg = 45.83                 # the target (height_m, default 0)
+//   longitude_deg = 6.86
+//   range_m = 12000                      # tilt_deg (default 45), heading_deg (start, default 0)
+//   degrees = 360                        # how far round, negative = anticlockwise (default 360)
+//   duration_s = 30                      # fov_deg, roll_deg, easing (of the start and end)
+//
 // The same structure in JSON (.json: {"scene": {...}, "video": {...}, "keyframe": [{...}]})
 // is read and written too. Heights are only checked against -500 m here: the check against
 // the terrain under the path needs the elevation layer and is left to the renderer.
@@ -53,13 +71,30 @@ struct CameraPath {
   SceneSettings scene;                   ///< camera = the first keyframe's pose
   std::optional<double> fps;             ///< [video] fps when given
   std::optional<int> crf;                ///< [video] crf when given
+  std::optional<geo::Interpolation> interpolation;  ///< [path] interpolation when given
+
+  /// The flight through the keyframes (geodesic unless the path says otherwise).
+  [[nodiscard]] geo::FlightPath flight() const {
+    return geo::FlightPath(keyframes, interpolation.value_or(geo::Interpolation::Geodesic));
+  }
 };
 
 /// Reads a TOML (or, by extension, JSON) path file. Throws og::InputError "FILE:LINE: problem"
 /// for syntax errors, unknown sections or keys, wrong types, non-finite numbers, keyframes out
 /// of time order, heights below kLowestPathHeightM and invalid poses or scene settings.
 /// JSON carries no line numbers; its messages name the keyframe and key instead.
-CameraPath readCameraPath(const std::filesystem::path& file);
+/// With `needKeyframes` false a file of settings alone ([scene], [video], [path]) is read too
+/// (its keyframes, if any, are read and checked as well).
+CameraPath readCameraPath(const std::filesystem::path& file, bool needKeyframes = true);
+
+/// Reads a path from TOML text found in `file` from line `firstLine` on (e.g. embedded in a KML
+/// tour); messages name the file and its lines.
+CameraPath readCameraPathText(const std::string& text, const std::filesystem::path& file,
+                              int firstLine, bool needKeyframes = true);
+
+/// The [scene], [video] and [path] sections of a path as TOML text (what writeCameraPathToml
+/// writes before the keyframes).
+std::string pathSettingsToml(const CameraPath& path);
 
 /// Writes a path as JSON (all keys explicit, keyframe times as time_s), atomically.
 void writeCameraPathJson(const std::filesystem::path& file, const CameraPath& path);

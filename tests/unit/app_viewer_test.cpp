@@ -14,6 +14,7 @@
 #include "geo/FlightPath.hpp"
 #include "geo/Sun.hpp"
 #include "io/CameraPath.hpp"
+#include "io/KmlTour.hpp"
 
 namespace fs = std::filesystem;
 using namespace og;
@@ -36,6 +37,15 @@ void expectSameView(const geo::CameraPose& a, const geo::CameraPose& b) {
   EXPECT_LT(glm::length(va.forward - vb.forward), 1e-9);
   EXPECT_LT(glm::length(va.up - vb.up), 1e-9);
   EXPECT_LT(glm::length(va.positionEcef - vb.positionEcef), 1e-6);
+}
+
+// The viewer's scene as K saves it: a 320x180 window on 2024-06-20 15:00 UTC.
+io::SceneSettings viewerScene() {
+  io::SceneSettings scene;
+  scene.width = 320;
+  scene.height = 180;
+  scene.time = UtcTime::fromCivil(2024, 6, 20, 15);
+  return scene;
 }
 
 fs::path scratch(const std::string& name) {
@@ -185,10 +195,7 @@ TEST(ViewerFont, RasterisesLinesWithInkOutlineAndBackdrop) {
 
 TEST(ViewerKeyframes, AppendedViewsMakeAPathRecordAccepts) {
   const fs::path file = scratch("flight.toml");
-  io::SceneSettings scene;
-  scene.width = 320;
-  scene.height = 180;
-  scene.time = UtcTime::fromCivil(2024, 6, 20, 15);
+  io::SceneSettings scene = viewerScene();
   scene.windLayers = {"a \"quoted\" name.nc:U,V"};
   const glm::dvec3 sun = geo::sunEphemeris(*scene.time).directionEcef;
   const geo::CameraPose a = poseAt(36.25, -9.125, 4e5, 90, -60, 0);
@@ -236,4 +243,26 @@ TEST(ViewerKeyframes, SunAnglesHoldAtTheLastKeyframeAndBadFilesAreKept) {
   std::string first;
   std::getline(in, first);
   EXPECT_EQ(first, "[[keyframe]]");  // untouched
+}
+
+TEST(ViewerKeyframes, AKmlFileGrowsIntoAGoogleEarthTour) {
+  const fs::path file = scratch("flight.kml");
+  const io::SceneSettings scene = viewerScene();
+  const glm::dvec3 sun = geo::sunEphemeris(*scene.time).directionEcef;
+  const geo::CameraPose views[] = {poseAt(36.25, -9.125, 4e5, 90, -60), poseAt(36.4, -8.5, 2e4, 95, -30),
+                                   poseAt(36.5, -8.0, 12.5, 271.5, -3.25, 1.5)};
+  for (const auto& v : views) appendKeyframe(file, v, scene, sun);
+
+  const io::KmlTour tour = io::readKmlTour(file);
+  ASSERT_EQ(tour.keys.size(), 3u);
+  // One smooth flight: at rest at the ends only (no stop where each view was appended).
+  EXPECT_EQ(tour.keys[0].easing, geo::Easing::EaseIn);
+  EXPECT_EQ(tour.keys[1].easing, geo::Easing::EaseOut);
+  ASSERT_TRUE(tour.settings);  // the viewer's scene travels inside the tour
+  EXPECT_EQ(tour.settings->scene.width, 320);
+  ASSERT_TRUE(tour.settings->scene.time);
+  EXPECT_NEAR(tour.settings->scene.time->unixSeconds + tour.keys[2].timeS, scene.time->unixSeconds, 1.0);
+  const auto keys = io::kmlKeyframes(tour, 320.0 / 180.0, {});
+  for (std::size_t k = 0; k < 3; ++k) expectSameView(keys[k].pose, views[k]);
+  EXPECT_NEAR(keys[2].pose.verticalFovDeg, views[2].verticalFovDeg, 1e-9);  // via gx:horizFov
 }

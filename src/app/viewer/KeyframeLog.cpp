@@ -24,11 +24,32 @@ double suggestedDurationS(const geo::CameraPose& a, const geo::CameraPose& b) {
   return std::clamp(seconds, 2.0, 60.0);
 }
 
-AppendedKeyframe appendKeyframe(const fs::path& file, const geo::CameraPose& pose,
-                                const io::SceneSettings& scene, const glm::dvec3& sunDirectionEcef) {
-  io::CameraPath path;
+namespace {
+// The existing keyframes of a path file (throws on a bad file: it is kept as it is).
+io::CameraPath existingPath(const fs::path& file, const io::SceneSettings& scene,
+                            const io::TerrainHeight& terrain) {
   std::error_code ec;
-  if (fs::exists(file, ec)) path = io::readCameraPath(file);  // throws on a bad file: keep it
+  if (!fs::exists(file, ec)) return {};
+  if (!io::isKmlFile(file)) return io::readCameraPath(file);
+  const io::TerrainHeight ground = terrain ? terrain : [](double, double) { return 0.0; };
+  io::CameraPath path = io::readKmlPath(
+      file, [&](const io::SceneSettings&) { return scene; }, [&](const io::SceneSettings&) { return ground; });
+  // A tour ends at rest; the view appended now continues the flight from there.
+  auto& keys = path.keyframes;
+  if (keys.size() > 1) {
+    keys.back().easing = geo::Easing::Smooth;
+    geo::Easing& arriving = keys[keys.size() - 2].easing;
+    if (arriving == geo::Easing::EaseInOut) arriving = geo::Easing::EaseIn;
+    else if (arriving == geo::Easing::EaseOut) arriving = geo::Easing::Smooth;
+  }
+  return path;
+}
+}  // namespace
+
+AppendedKeyframe appendKeyframe(const fs::path& file, const geo::CameraPose& pose,
+                                const io::SceneSettings& scene, const glm::dvec3& sunDirectionEcef,
+                                const io::TerrainHeight& terrain) {
+  io::CameraPath path = existingPath(file, scene, terrain);
 
   geo::Keyframe key;
   key.pose = pose;
@@ -52,12 +73,7 @@ AppendedKeyframe appendKeyframe(const fs::path& file, const geo::CameraPose& pos
   }
   path.scene = s;
 
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (ext == ".json")
-    io::writeCameraPathJson(file, path);
-  else
-    io::writeCameraPathToml(file, path);
+  io::writePathFile(file, path);
   return {path.keyframes.size(), key.timeS};
 }
 

@@ -1,12 +1,14 @@
 #pragma once
 // Turning a flight by hand into a camera path file for `oceanglobe record`: each call appends
-// the current view as the last keyframe of a TOML (or .json) path file, creating it if needed.
+// the current view as the last keyframe of a TOML (.json, or .kml: a Google Earth tour) path
+// file, creating it if needed.
 #include <cstddef>
 #include <filesystem>
 
 #include <glm/glm.hpp>
 
 #include "geo/Camera.hpp"
+#include "io/KmlTour.hpp"
 #include "io/SceneFile.hpp"
 
 namespace og::app::viewer {
@@ -27,8 +29,11 @@ struct AppendedKeyframe {
 /// time `viewerTime - time_s` when `scene.time` is set (record advances the clock along the
 /// path), or as angles at that keyframe's ground point from `sunDirectionEcef` otherwise (the
 /// convention record uses for angles). The write is atomic. Throws og::InputError when the
-/// existing file is not a valid path or cannot be written.
+/// existing file is not a valid path or cannot be written. A .kml tour keeps its views (its
+/// altitudes over `terrain` where they are relative; sea level when none is given) and is
+/// written back as a tour that Google Earth opens.
 AppendedKeyframe appendKeyframe(const std::filesystem::path& file, const geo::CameraPose& pose,
-                                const io::SceneSettings& scene, const glm::dvec3& sunDirectionEcef);
+                                const io::SceneSettings& scene, const glm::dvec3& sunDirectionEcef,
+                                const io::TerrainHeight& terrain = {});
 
 }  // namespace og::app::viewer
