@@ -71,9 +71,9 @@ void main() {
 #else
   float foam = whitecapCoverage(sea.jacobian);
   vec3 radiance = seaRadianceWithFoam(v, n, windDir, sea.variance, up, uSunDirEcef, foam);
-#endif
   fragRadiance = vec4(oceanSurfaceRadiance(vRelative, radiance), 1.0);
   fragAux = vec4(foam, 0.0, 0.0, 0.0);
+#endif
 }
 
 #ifdef OCEAN_SIMPLE_SKY
