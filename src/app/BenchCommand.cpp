@@ -275,7 +275,7 @@ Run addBenchCommand(CLI::App& parent) {
       renderers[k]->setPassTimer(o->breakdown ? &timers[k] : nullptr);
     for (const auto& view : benchViews()) {
       for (const auto& [w, h] : sizes) {
-        render::FrameInput f;
+        render::FrameInput f = frameInputOf(io::SceneSettings{});  // the default scene's settings
         f.camera = view.pose;
         f.width = w;
         f.height = h;

@@ -7,6 +7,7 @@
 
 #include "core/Error.hpp"
 #include "geo/Sun.hpp"
+#include "io/SceneSchema.hpp"
 #include "render/GlobeRenderer.hpp"
 
 namespace og::app {
@@ -104,10 +105,24 @@ io::SceneSettings SceneOptions::resolve(io::SceneSettings s) const {
 }
 
 int parseSampleCount(const std::string& text) {
-  if (text == "auto") return render::kAutoSamples;
-  for (const int n : {1, 2, 4, 8})
-    if (text == std::to_string(n)) return n;
+  if (const auto n = io::parseSampleCount(text)) return *n;
   throw InputError("--samples: expected auto, 1, 2, 4 or 8, got '" + text + "'");
+}
+
+render::FrameInput frameInputOf(const io::SceneSettings& s) {
+  render::FrameInput frame;
+  frame.camera = s.camera;
+  frame.sunDirectionEcef = sunDirectionOf(s);
+  frame.exposure = s.exposure;
+  frame.width = s.width;
+  frame.height = s.height;
+  frame.samples = s.samples;
+  frame.oceanModel = oceanModelOf(s);
+  frame.windSpeedMs = s.windSpeedMs;
+  frame.windDirectionDeg = windTowardsDeg(s);
+  frame.simulationTimeS = s.simulationTimeS;
+  frame.waveSeed = s.waveSeed;
+  return frame;
 }
 
 glm::dvec3 sunDirectionOf(const io::SceneSettings& s) {

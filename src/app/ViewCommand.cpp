@@ -363,14 +363,12 @@ class Viewer {
     else
       oceanFrame_.moveTo(pose.position);
     const data::WindVector wind = windHere();
-    render::FrameInput frame;
+    render::FrameInput frame = frameInputOf(scene_);
     frame.camera = pose;
     frame.sunDirectionEcef = sunDirection();
-    frame.exposure = scene_.exposure;
     frame.width = width;
     frame.height = height;
-    frame.samples = scene_.samples;
-    frame.simulationTimeS = wallS_;
+    frame.simulationTimeS = scene_.simulationTimeS + wallS_;
     frame.oceanModel = oceanModel_;
     frame.windSpeedMs = std::clamp(std::hypot(wind.uMs, wind.vMs), 0.0, 50.0);
     frame.windDirectionDeg = std::atan2(wind.uMs, wind.vMs) * 180.0 / kPi;

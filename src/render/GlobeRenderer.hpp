@@ -14,6 +14,7 @@
 #include "gl/PassTimer.hpp"
 #include "gl/Shader.hpp"
 #include "io/Image.hpp"
+#include "io/SceneSchema.hpp"
 #include "ocean/OceanFrame.hpp"
 #include "render/Atmosphere.hpp"
 #include "render/OceanPatterns.hpp"
@@ -25,7 +26,7 @@ namespace og::render {
 
 /// FrameInput::samples: 4 on a GPU; 1 on a software renderer (llvmpipe shades every fragment
 /// of a multisampled target, hidden ones too: 4 samples cost it 1.3-2x per frame).
-inline constexpr int kAutoSamples = 0;
+inline constexpr int kAutoSamples = io::kAutoSamples;
 
 struct FrameInput {
   geo::CameraPose camera;
@@ -56,10 +57,8 @@ struct FrameInput {
   bool auxiliaryOutputs = false;
 };
 
-/// The sample counts FrameInput::samples accepts.
-[[nodiscard]] constexpr bool isValidSampleCount(int n) {
-  return n == kAutoSamples || n == 1 || n == 2 || n == 4 || n == 8;
-}
+/// The sample counts FrameInput::samples accepts (the scene schema's list).
+using io::isValidSampleCount;
 
 /// Below this camera height the sea is the projected grid with waves; above, the ellipsoid with
 /// the BRDF of the whole slope distribution. The grid's waves fade out towards it
