@@ -52,10 +52,6 @@ glm::dvec3 sunDirectionOf(const io::SceneSettings& scene);
 /// when it names none: then the constant wind holds everywhere.
 std::shared_ptr<const data::WindLayers> loadWindLayers(const io::SceneSettings& scene);
 
-/// The direction the scene's constant wind blows towards (the physics' convention), degrees
-/// clockwise from north; the user gives where it comes from.
-double windTowardsDeg(const io::SceneSettings& scene);
-
 /// The scene's ocean model ("bruneton" or "classic", validated by io::validateScene).
 render::OceanModel oceanModelOf(const io::SceneSettings& scene);
 

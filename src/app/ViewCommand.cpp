@@ -82,9 +82,7 @@ class Viewer {
       : options_(options),
         scene_(std::move(scene)),
         ground_(data::loadElevationLayer(scene_.elevationLayer)),
-        wind_(data::WindLayers::load(
-            scene_.windLayers,
-            data::windFromSpeedDirection(scene_.windSpeedMs, windTowardsDeg(scene_)), scene_.time)),
+        wind_(data::WindLayers::load(scene_.windLayers, scene_.wind().vector(), scene_.time)),
         controller_(scene_.camera, [this](double lat, double lon) {
           // The sea is at the ellipsoid; land lifts the floor to the terrain's height, detail
           // included (the same function the tiles are built from).
@@ -172,9 +170,10 @@ class Viewer {
     const double c = std::cos(a), s = std::sin(a);
     return {c * fixedSun_.x - s * fixedSun_.y, s * fixedSun_.x + c * fixedSun_.y, fixedSun_.z};
   }
-  [[nodiscard]] data::WindVector windHere() const {
+  // The wind under the camera (the layers', or the constant wind with L off).
+  [[nodiscard]] geo::Wind windHere() const {
     const auto& g = controller_.pose().position;
-    return layersOn_ ? wind_.sample(g.latitudeDeg, g.longitudeDeg) : wind_.fallback();
+    return geo::Wind::ofVector(layersOn_ ? wind_.sample(g.latitudeDeg, g.longitudeDeg) : wind_.fallback());
   }
 
   // --- input ----------------------------------------------------------------------------
@@ -362,7 +361,6 @@ class Viewer {
       oceanFrame_.reset(pose.position);
     else
       oceanFrame_.moveTo(pose.position);
-    const data::WindVector wind = windHere();
     render::FrameInput frame = frameInputOf(scene_);
     frame.camera = pose;
     frame.sunDirectionEcef = sunDirection();
@@ -370,8 +368,8 @@ class Viewer {
     frame.height = height;
     frame.simulationTimeS = scene_.simulationTimeS + wallS_;
     frame.oceanModel = oceanModel_;
-    frame.windSpeedMs = std::clamp(std::hypot(wind.uMs, wind.vMs), 0.0, 50.0);
-    frame.windDirectionDeg = std::atan2(wind.uMs, wind.vMs) * 180.0 / kPi;
+    frame.wind = windHere();
+    frame.wind.speedMs = std::min(frame.wind.speedMs, 50.0);
     frame.oceanFrame = &oceanFrame_;
     renderer_->render(frame);
     glBlitNamedFramebuffer(renderer_->displayFramebuffer(), 0, 0, 0, width, height, 0, 0, width,
@@ -394,9 +392,7 @@ class Viewer {
 
   [[nodiscard]] std::vector<std::string> overlayLines() const {
     const geo::CameraPose& p = controller_.pose();
-    const data::WindVector wind = windHere();
-    double windTo = std::atan2(wind.uMs, wind.vMs) * 180.0 / kPi;
-    if (windTo < 0.0) windTo += 360.0;
+    const geo::Wind wind = windHere();
     const geo::HorizontalAngles sun = geo::horizontalAngles(p.position, sunDirection());
     std::vector<std::string> lines;
     lines.push_back("lat " + angleText(p.position.latitudeDeg, 'N', 'S') + "  lon " +
@@ -405,7 +401,7 @@ class Viewer {
                     heightText(controller_.heightAboveSurfaceM()) + " above surface)");
     lines.push_back(format("heading %.1f\xC2\xB0  pitch %.1f\xC2\xB0  roll %.1f\xC2\xB0", p.headingDeg,
                            p.pitchDeg, p.rollDeg));
-    lines.push_back(format("wind %.1f m/s towards %.0f\xC2\xB0 ", std::hypot(wind.uMs, wind.vMs), windTo) +
+    lines.push_back(format("wind %.1f m/s towards %.0f\xC2\xB0 ", wind.speedMs, wind.towardsDeg) +
                     (wind_.size() == 0 ? "(constant)" : layersOn_ ? "(layers)" : "(layers off)"));
     lines.push_back(format("sun elevation %.1f\xC2\xB0  azimuth %.0f\xC2\xB0", sun.elevationDeg, sun.azimuthDeg));
     if (const auto t = currentTime())

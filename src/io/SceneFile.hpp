@@ -23,6 +23,7 @@
 #include "atmosphere/Parameters.hpp"
 #include "core/Time.hpp"
 #include "geo/Camera.hpp"
+#include "geo/Wind.hpp"
 
 namespace og::io {
 
@@ -41,6 +42,8 @@ struct SceneSettings {
   /// Where the wind comes from, degrees clockwise from north (meteorological: 270 = a westerly,
   /// blowing towards the east).
   double windFromDeg = 270.0;
+  /// The constant wind (speed, and the direction it blows towards) of windSpeedMs/windFromDeg.
+  [[nodiscard]] geo::Wind wind() const { return geo::Wind::blowingFrom(windSpeedMs, windFromDeg); }
   std::vector<std::string> windLayers;    ///< "FILE[:U,V]" specs, bottom of the stack first
   std::string elevationLayer;             ///< "FILE[:VAR]", empty = embedded default
   double simulationTimeS = 0.0;           ///< wave clock at the image (record: at frame 0), s

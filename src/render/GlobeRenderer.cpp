@@ -129,8 +129,8 @@ void GlobeRenderer::render(const FrameInput& f) {
   if (timer_ != nullptr) timer_->beginFrame();
   // The waves hold the strongest wind of the scene; every point scales and turns them to its
   // own wind (ocean/patterns.glsl).
-  wind_->setConstantWind(f.windSpeedMs, f.windDirectionDeg);
-  patternsFor(std::max(f.windSpeedMs, wind_->maxLayerSpeedMs()), f.waveSeed);
+  wind_->setConstantWind(f.wind);
+  patternsFor(std::max(f.wind.speedMs, wind_->maxLayerSpeedMs()), f.waveSeed);
   const bool grid = view.position.heightM < kOceanGridMaxHeightM;
 
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);

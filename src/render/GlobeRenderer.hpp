@@ -10,6 +10,7 @@
 #include "atmosphere/Parameters.hpp"
 #include "data/LatLonGrid.hpp"
 #include "geo/Camera.hpp"
+#include "geo/Wind.hpp"
 #include "gl/Objects.hpp"
 #include "gl/PassTimer.hpp"
 #include "gl/Shader.hpp"
@@ -39,10 +40,9 @@ struct FrameInput {
   int height = 256;
   double simulationTimeS = 0.0;  ///< seconds since the start of the sequence (wave animation)
   OceanModel oceanModel = OceanModel::Bruneton;
-  /// The 10 m wind, [0, 50] m/s, and the direction it blows towards (clockwise from north),
-  /// everywhere unless GlobeRenderer::setWindLayers gave local winds.
-  double windSpeedMs = 7.0;
-  double windDirectionDeg = 90.0;
+  /// The 10 m wind, [0, 50] m/s, everywhere unless GlobeRenderer::setWindLayers gave local
+  /// winds (the fallback of render::WindTextures).
+  geo::Wind wind;
   /// The ocean frame carried from earlier frames (waves fixed to the Earth while the camera
   /// moves); nullptr starts a fresh frame under the camera.
   const ocean::OceanFrame* oceanFrame = nullptr;
