@@ -8,6 +8,7 @@
 
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "gl/DriverProfile.hpp"
 #include "gl/Readback.hpp"
 
 namespace og::render {
@@ -67,7 +68,7 @@ void GlobeRenderer::ensureTargets(int width, int height, int requested, bool aux
     return;
   if (!isValidSampleCount(requested))
     throw InternalError("FrameInput::samples must be 0 (auto), 1, 2, 4 or 8, not " + std::to_string(requested));
-  const int wanted = requested == kAutoSamples ? (gl::isSoftwareRenderer() ? 1 : 4) : requested;
+  const int wanted = requested == kAutoSamples ? gl::driverProfile().autoSamples : requested;
   const int samples = std::min(wanted, maxSamples_);
   if (samples < wanted && warnedSamples_ != requested) {
     log::warn(std::to_string(wanted) + " samples per pixel asked for, but this OpenGL device "
