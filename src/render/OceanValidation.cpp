@@ -91,7 +91,7 @@ OceanValidator::OceanValidator(const ValidationSettings& settings) : settings_(s
   constant_->setCellPixels(settings.cellPixels);
   reference_->setCellPixels(settings.referenceCellPixels);
   wind_ = std::make_unique<WindTextures>();
-  wind_->setConstantWind(settings.windSpeedMs, settings.windDirectionDeg);
+  wind_->setConstantWind(geo::Wind::blowingTowards(settings.windSpeedMs, settings.windDirectionDeg));
 }
 
 OceanValidator::~OceanValidator() = default;
