@@ -129,3 +129,22 @@ Vec3 sunDiscSlopeCovariance(Vec3 v, Vec3 l, Vec3 tx, Vec3 ty, Number alpha) {
   Number inPlane = alpha * alpha / 16.0;
   return covarianceFromAxes(Vec2(inPlane, inPlane / (vh * vh)), axis);
 }
+
+// The slopes the eye sees along the view's azimuth: a facet of slope zeta (towards the eye's
+// side, in units of that azimuth's sigma) covers a share of the pixel proportional to its area
+// projected towards the eye, 1 - zeta / k with k = cot(theta_v) / sigma_phi, and none beyond k
+// (it faces away). Mean and variance of that weighted Gaussian, in units of sigma and sigma²
+// (phi, Phi: the unit normal's density and distribution):
+// M0 = Phi(k) + phi(k) / k, M1 = -Phi(k) / k, M2 = Phi(k) + 2 phi(k) / k.
+// At grazing angles (small k) the visible facets lean towards the eye and spread less: the sky
+// they reflect is higher above the horizon than the full Gaussian's (Bruneton 2010 Eq. 9 filters
+// with the full distribution, the paper's largest error, its §7.2).
+Vec2 visibleSlopeMoments(Number k) {
+  if (k > 6.0) return Vec2(0.0, 1.0);
+  Number kk = max(k, 1e-3);
+  Number pdf = exp(-0.5 * kk * kk) / sqrt(2.0 * BRDF_PI);
+  Number cdf = 1.0 - 0.5 * brdfErfc(kk / sqrt(2.0));
+  Number m0 = cdf + pdf / kk;
+  Number mean = -cdf / kk / m0;
+  return Vec2(mean, max((cdf + 2.0 * pdf / kk) / m0 - mean * mean, 0.0));
+}

@@ -21,9 +21,16 @@ uniform vec3 uSkyHorizon;  // radiance at the horizon
 vec3 skyIrradiance(float sunZenith) { return vec3(0.1, 0.13, 0.18) * clamp(cos(sunZenith) * 2.0, 0.0, 1.0); }
 vec3 skyMapRadianceStereo(vec2 u, float sunZenith, float sunAzimuth, vec2 dUdx, vec2 dUdy) {
   float q = dot(u, u);
-  if (q > SKYMAP_HORIZON_BAND) return skyMapBelowHorizon(skyIrradiance(sunZenith));  // as the maps
   float z = (1.0 - q) / (1.0 + q);  // inverse stereographic: cos(zenith angle)
-  return mix(uSkyHorizon, uSkyZenith, sqrt(clamp(z, 0.0, 1.0))) * clamp(cos(sunZenith) * 4.0, 0.0, 1.0);
+  vec3 sky = mix(uSkyHorizon, uSkyZenith, sqrt(clamp(z, 0.0, 1.0))) * clamp(cos(sunZenith) * 4.0, 0.0, 1.0);
+  // Below the horizon as the maps (skymap_common.glsl), the step filtered over the footprint
+  // (the maps' textureGrad does that): the share beyond the band of a Gaussian footprint whose
+  // axes dUdx, dUdy are 2 sigma, sigma_r its spread across the horizon (Phi as a linear ramp of
+  // the same slope at 0).
+  vec2 radial = u / max(sqrt(q), 1e-6);
+  float sigmaR = 0.5 * length(vec2(dot(dUdx, radial), dot(dUdy, radial)));
+  float below = clamp(0.5 + (sqrt(q) - sqrt(SKYMAP_HORIZON_BAND)) / max(2.5 * sigmaR, 1e-4), 0.0, 1.0);
+  return mix(sky, skyMapBelowHorizon(skyIrradiance(sunZenith)), below);
 }
 vec3 sunIrradiance(float sunZenith) { return vec3(1.0) * step(0.0, cos(sunZenith)); }
 #else
@@ -119,13 +126,22 @@ vec3 seaRadiance(vec3 vE, vec3 nE, vec3 windE, vec3 cov, vec3 upE, vec3 sunE) {
   // unresolved slopes' footprint, U(zeta) the stereographic coordinate of a facet's mirror ray.
   float sigmaV = sqrt(azimuthVariance(p.v, p.tx, p.ty, sigma2));
   float fbar = effectiveFresnel(dot(p.v, p.n), sigmaV);
+  // The footprint in the view's azimuth (a towards the eye's side, b across) of the visible
+  // slopes: along a the moments of visibleSlopeMoments (brdf.glsl), across b the Gaussian's.
+  vec2 a = vec2(dot(p.v, p.tx), dot(p.v, p.ty));
+  float sinV = length(a);
+  a = sinV > 1e-6 ? a / sinV : vec2(1.0, 0.0);
+  vec2 b = vec2(-a.y, a.x);
+  float sigmaB = sqrt(dot(b * b, sigma2));
+  vec2 visible = visibleSlopeMoments(max(dot(p.v, p.n), 0.0) / max(sinV * sigmaV, 1e-6));
+  vec2 zeta0 = visible.x * sigmaV * a;  // mean < 0: the visible facets lean towards the eye
   const float eps = 1e-3;
-  vec2 u0 = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, vec2(0.0)));
-  vec2 ux = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, vec2(eps, 0.0)));
-  vec2 uy = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, vec2(0.0, eps)));
-  vec2 sigma = sqrt(sigma2);
+  vec2 u0 = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, zeta0));
+  vec2 ua = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, zeta0 + eps * a));
+  vec2 ub = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, zeta0 + eps * b));
   vec3 sky = fbar * skyMapRadianceStereo(u0, p.sunZenith, p.sunAzimuth,
-                                         2.0 * sigma.x * (ux - u0) / eps, 2.0 * sigma.y * (uy - u0) / eps);
+                                         2.0 * sigmaV * sqrt(visible.y) * (ua - u0) / eps,
+                                         2.0 * sigmaB * (ub - u0) / eps);
   return uLightingTerms.x * glint + uLightingTerms.y * sky + uLightingTerms.z * seaRefracted(p, upE, fbar);
 }
 // sigma2: variances along/across the wind, no cross term.

@@ -21,6 +21,9 @@ struct SlopeAxes {
   glm::dvec2 axis;
 };
 SlopeAxes slopePrincipalAxes(const glm::dvec3& covariance);
+/// Mean and variance (units of sigma, sigma²) of the slopes seen along the view's azimuth,
+/// a Gaussian weighted by projected area 1 - zeta / k, k = cot(theta_v) / sigma.
+glm::dvec2 visibleSlopeMoments(double k);
 /// The Sun's disc of angular radius alphaRad as a facet slope covariance (xx, yy, xy) in (tx, ty).
 glm::dvec3 sunDiscSlopeCovariance(const glm::dvec3& v, const glm::dvec3& l, const glm::dvec3& tx,
                                   const glm::dvec3& ty, double alphaRad);

@@ -136,3 +136,26 @@ TEST(OceanBrdf, FlatSeaGlintHasTheSunsAngularSize) {
         << elevationDeg;
   }
 }
+
+// The visible slopes' moments (projected-area weighting 1 - x / k of a unit Gaussian, zero
+// beyond k) against a numerical integral; no change looking straight down, facets leaning
+// towards the eye and a narrower spread at grazing angles.
+TEST(OceanBrdf, VisibleSlopeMomentsMatchTheWeightedGaussian) {
+  for (const double k : {0.2, 0.7, 1.5, 3.0}) {
+    double m0 = 0.0, m1 = 0.0, m2 = 0.0;
+    const double dx = 1e-4;
+    for (double x = -10.0; x < k; x += dx) {
+      const double w = (1.0 - x / k) * std::exp(-0.5 * x * x) * dx;
+      m0 += w;
+      m1 += w * x;
+      m2 += w * x * x;
+    }
+    const double mean = m1 / m0, var = m2 / m0 - mean * mean;
+    const glm::dvec2 v = visibleSlopeMoments(k);
+    EXPECT_NEAR(v.x, mean, 0.01 + 0.01 * std::abs(mean)) << k;
+    EXPECT_NEAR(v.y, var, 0.01 + 0.02 * var) << k;
+    EXPECT_LT(v.x, 0.0) << k;
+    EXPECT_LT(v.y, 1.0) << k;
+  }
+  EXPECT_EQ(visibleSlopeMoments(10.0), glm::dvec2(0.0, 1.0));
+}
