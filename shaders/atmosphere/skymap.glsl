@@ -51,15 +51,18 @@ uniform int uSkyFilterProbes;
 // One sky-map layer over the footprint with axes gx, gy (texture space, a pixel's extent).
 vec3 skyMapLayerFiltered(vec2 tc, float layer, vec2 gx, vec2 gy) {
   if (uSkyFilterProbes <= 1) return textureGrad(uSkyMap, vec3(tc, layer), gx, gy).rgb;
-  // Nine isotropic lookups at k/9 of the major axis (k = -4..4), each over a ninth of it and
-  // the minor axis: together they tile the ellipse's extent along its major axis.
+  // Up to nine isotropic lookups spread along the major axis, each over 1/n of it and the
+  // minor axis: together they tile the ellipse's extent. n follows the ellipse's elongation
+  // (major / minor, at most uSkyFilterProbes), so near-round footprints cost one lookup.
   bool xMajor = dot(gx, gx) >= dot(gy, gy);
-  vec2 step = (xMajor ? gx : gy) / 9.0;
-  vec2 minor = xMajor ? gy : gx;
+  vec2 major = xMajor ? gx : gy, minor = xMajor ? gy : gx;
+  float ratio = length(major) / max(length(minor), 1e-8);
+  int n = int(clamp(ceil(ratio), 1.0, float(uSkyFilterProbes)));
+  vec2 step = major / float(n);
   vec3 sum = vec3(0.0);
-  for (int k = -4; k <= 4; ++k)
-    sum += textureGrad(uSkyMap, vec3(tc + float(k) * step, layer), step, minor).rgb;
-  return sum / 9.0;
+  for (int k = 0; k < n; ++k)
+    sum += textureGrad(uSkyMap, vec3(tc + (float(k) + 0.5 - 0.5 * float(n)) * step, layer), step, minor).rgb;
+  return sum / float(n);
 }
 
 vec3 skyMapRadianceStereo(vec2 u, float sunZenith, float sunAzimuth, vec2 dUdx, vec2 dUdy) {

@@ -24,7 +24,7 @@ struct AtmosphereOptions {
 /// textureGrad with the axes 2 sigma dU/dzeta; §7.3: "an average of nine texture2D samples
 /// inside the elliptical filter support"). Chosen in one place, Atmosphere::chooseSkyFilter.
 struct SkyFilter {
-  int probes = 1;             ///< textureGrad lookups along the ellipse's major axis (1 or 9)
+  int probes = 1;             ///< most textureGrad lookups along the ellipse's major axis (1 or 9)
   float maxAnisotropy = 1.0f; ///< the sky maps' sampler anisotropy (hardware filtering)
   std::string reason;         ///< why, for logs and `info`
 };
@@ -48,7 +48,8 @@ class Atmosphere {
   /// The sky filter for the current context: on a GPU the sampler's hardware anisotropy (up to
   /// 16x), which filters the ellipse in one lookup; on a CPU rasteriser (llvmpipe: anisotropic
   /// filtering there is ~20x slower and blurs wrongly, docs/atmosphere.md) the paper's §7.3
-  /// average of 9 isotropic lookups spread along the ellipse's major axis. The environment
+  /// average of isotropic lookups spread along the ellipse's major axis (as many as its
+  /// elongation, at most 9: SkyFilter::probes). The environment
   /// variable OCEANGLOBE_SKY_FILTER = hardware | probes | single forces one (for measurements);
   /// any other value throws og::InputError.
   static SkyFilter chooseSkyFilter();
