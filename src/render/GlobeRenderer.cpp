@@ -9,6 +9,7 @@
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "gl/Readback.hpp"
+#include "render/WaterVolume.hpp"
 
 namespace og::render {
 namespace {
@@ -190,6 +191,7 @@ void GlobeRenderer::drawGlobe(const geo::CameraView& view, const FrameInput& f, 
   patterns_->setUniforms(globe_, nullptr, 0.0);
   globe_.set("uSeaByGrid", grid ? 1 : 0);
   globe_.set("uSeaColor", OceanLighting{}.seaColor);
+  setWaterOptics(globe_, ocean::jerlovWater(ocean::kDefaultWater));
   globe_.set("uElevationMap", elevationMap_);
   globe_.set("uElevationSize", elevationSize_);
   globe_.set("uElevationWraps", elevationWraps_);
