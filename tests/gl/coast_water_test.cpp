@@ -6,6 +6,7 @@
 // rises above the surface, or with the camera under 1 m.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -204,4 +205,42 @@ TEST(CoastWater, BahamaBankIsTurquoiseFromOrbit) {
   // 0.59 against 0.52).
   EXPECT_GT(shallow.y, 1.4 * deep.y);
   EXPECT_GT(shallow.y / shallow.z, deep.y / deep.z + 0.04);
+}
+
+namespace {
+// A shelf sloping from 5 m of land at 24.0°N down to 60 m deep 0.1° (11 km) south of the shore.
+data::LatLonGrid shelf() {
+  return test::grid("shelf", kLat - 1.0, kLon - 1.0, 0.005, 401, 401, false, [](double lat, double) {
+    return std::clamp((lat - kLat) * 650.0, -60.0, 5.0);
+  });
+}
+}  // namespace
+
+// No NaN or Inf where the floor rises above the surface, at the shoreline, with the camera
+// under 1 m, looking along the shore, down and up, the Sun high and set.
+TEST(CoastWater, RadianceIsFiniteAtTheShore) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(shelf());
+  int renders = 0;
+  for (double lat : {kLat - 0.0002, kLat, kLat - 0.02})  // 2 m deep, the shoreline, 13 m deep
+    for (double h : {0.3, 0.9, 20.0})
+      for (double pitch : {-90.0, -20.0, 5.0})
+        for (double sun : {-5.0, 70.0}) {
+          render::FrameInput f;
+          f.camera.position = {lat, kLon, h};
+          f.camera.pitchDeg = pitch;
+          f.camera.headingDeg = 10.0;  // towards the land
+          f.width = 32;
+          f.height = 18;
+          f.windSpeedMs = 8.0;
+          f.simulationTimeS = 2.3;
+          f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, sun, 200.0);
+          r.render(f);
+          const io::ImageRgbaF img = r.radiance();
+          std::size_t bad = 0;
+          for (float v : img.pixels) bad += std::isfinite(v) ? 0 : 1;
+          ASSERT_EQ(bad, 0u) << "at " << lat << " h " << h << " pitch " << pitch << " sun " << sun;
+          ++renders;
+        }
+  EXPECT_EQ(renders, 54);
 }
