@@ -24,7 +24,10 @@ uniform vec3 uFloorEyeUp;          // geodetic normal under the eye, ECEF axes
 uniform float uFloorEyeHeightM;    // the eye's height above the ellipsoid, m
 const float FLOOR_RELIEF_M = 0.12;     // height of octave 0's ripples, m (weight 0.6^k below)
 const float FLOOR_ALBEDO_SPREAD = 0.45;  // relative albedo variation of the floor's patches
-const int FLOOR_MARCH_STEPS = 8;
+const int FLOOR_MARCH_STEPS = 4;  // + a secant step: the layer is near-planar over d_max
+// Below this share of the floor in the pixel (transmission down and up x (1 - Fresnel)), its
+// detail, caustics and shadows are not worth their cost: a plain floor stands in.
+const float FLOOR_DETAIL_MIN_SHARE = 0.02;
 
 // Geodetic normal at a foot point minus the eye's, from the offset between the two foot points
 // (terrain.frag's normalOffsetFromEye, here with this pass's uniforms).
@@ -57,13 +60,13 @@ vec4 floorDetail(vec3 dUp, float footprintM) {
 }
 
 // Mean slope (frame axes) of the sea surface at xy over a footprint of `footprintM`, from the
-// finest patterns only (the ones that focus light at these depths; ocean/patterns.glsl's
+// two finest patterns only (the ones that focus light at these depths; ocean/patterns.glsl's
 // oceanSurface without the variances).
 vec2 causticSlope(vec2 xy, float footprintM, vec2 wind) {
   vec2 p = fieldPosition(xy);
   WindBins wb = windBins(fieldWindAngle(wind.y));
   vec2 mean = vec2(0.0);
-  for (int i = max(PATTERN_COUNT - 3, 0); i < PATTERN_COUNT; ++i) {
+  for (int i = max(PATTERN_COUNT - 2, 0); i < PATTERN_COUNT; ++i) {
     float lod = patternLod(footprintM, i);
     if (lod >= uPatternTopLod) break;
     float s = patternTable(i, wind.x).y;
@@ -141,23 +144,28 @@ void prepareWaterVolume(vec3 rel, vec3 v, vec3 n, vec3 up, vec2 latLon, vec2 oce
   }
   float depthM = max(-(sHit * down), 0.0);
   vec3 floorRel = rel + sHit * t;
-  // The floor's detail, filtered by the pixel's footprint there (refraction magnifies little).
-  vec3 dUp = floorOffsetFromEye(floorRel + depthM * up + uFloorEyeHeightM * uFloorEyeUp);
-  vec4 detail = floorDetail(dUp, footprintM * (1.0 + sHit / max(length(rel), 1.0)));
-  vec3 g = detail.yzw - dot(detail.yzw, up) * up;
-  vec3 nFloor = normalize(up - g);
-  vec3 albedo = uFloorAlbedo * clamp(1.0 + detail.x, 0.3, 1.7);
   // The Sun refracted through the mean surface, its path down to the floor, and the point
   // where it entered the water: caustics and the terrain's (refracted) shadows are taken there.
   float muS = dot(sunE, up);
   vec3 sunWater = refract(-sunE, up, 1.0 / WATER_INDEX);  // going down
   float cosSunWater = waterRefractedCosine(max(muS, 0.0));
   float sunPathM = depthM / max(cosSunWater, 0.05);
-  vec3 entryRel = floorRel - sunPathM * sunWater;
-  vec2 entryXY = oceanXY + (ecefToOcean * (entryRel - rel)).xy;
-  float sunFactor = sunVisibility(entryRel, up) *
-                    causticGain(entryXY, sunPathM, footprintM, wind) *
-                    max(dot(nFloor, -sunWater), 0.0) / max(cosSunWater, 0.05);
+  vec3 albedo = uFloorAlbedo;
+  vec3 nFloor = up;
+  float sunFactor = 1.0;
+  vec3 seen = waterTransmittance(k, sunPathM + sHit) * (1.0 - fresnelSchlick(max(dot(n, v), 0.0)));
+  if (max(seen.x, max(seen.y, seen.z)) > FLOOR_DETAIL_MIN_SHARE) {
+    // The floor's detail, filtered by the pixel's footprint there (refraction magnifies little).
+    vec3 dUp = floorOffsetFromEye(floorRel + depthM * up + uFloorEyeHeightM * uFloorEyeUp);
+    vec4 detail = floorDetail(dUp, footprintM * (1.0 + sHit / max(length(rel), 1.0)));
+    vec3 g = detail.yzw - dot(detail.yzw, up) * up;
+    nFloor = normalize(up - g);
+    albedo *= clamp(1.0 + detail.x, 0.3, 1.7);
+    vec3 entryRel = floorRel - sunPathM * sunWater;
+    vec2 entryXY = oceanXY + (ecefToOcean * (entryRel - rel)).xy;
+    sunFactor = sunVisibility(entryRel, up) * causticGain(entryXY, sunPathM, footprintM, wind) *
+                max(dot(nFloor, -sunWater), 0.0) / max(cosSunWater, 0.05);
+  }
   float sunZenith = acos(clamp(muS, -1.0, 1.0));
   vec3 eSun = sunIrradiance(sunZenith), eSky = skyIrradiance(sunZenith);
   vec3 sunBelow = eSun * max(muS, 0.0) * (1.0 - fresnelSchlick(max(muS, 0.0)));
