@@ -13,6 +13,7 @@
 #include "render/elevation.glsl"
 #include "ocean/coast.glsl"
 #include "terrain/shadow.glsl"
+#include "ocean/water_volume.glsl"  // the sea floor seen through the water (seed 001)
 
 in vec2 vOceanXY;
 in vec3 vRelative;
@@ -73,6 +74,7 @@ void main() {
   return;
 #else
   float foam = whitecapCoverage(sea.jacobian);
+  prepareWaterVolume(vRelative, v, n, up, latLon, vOceanXY, uEcefToOcean, max(footprint, 1e-4), wind, uSunDirEcef);
   vec3 radiance = seaRadianceWithFoam(v, n, windDir, sea.covariance, up, uSunDirEcef, foam);
   fragRadiance = vec4(oceanSurfaceRadiance(vRelative, radiance), 1.0);
   fragAux = vec4(foam, 0.0, 0.0, 0.0);

@@ -80,6 +80,7 @@ vec3 shadeSea(vec3 v, vec3 n) {
   vec3 wind = sin(w.y) * east + cos(w.y) * north;
   float foam = whitecapCoverage(vec2(1.0, seaJacobianVarianceTotal(w.x)));
   gSeaFoam = foam;
+  prepareWaterColumn(v, n, uSunDir, 1.0);  // the floor through the water (terrain/shallow.glsl)
   return seaRadianceWithFoam(v, n, wind, seaSlopeVarianceTotal(w.x), n, uSunDir, foam);
 }
 

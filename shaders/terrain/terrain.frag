@@ -86,7 +86,10 @@ void main() {
   // From high up the globe pass's sea covers the bathymetry: leave it to it rather than to a
   // depth test a few kilometres deep at thousands of kilometres (which llvmpipe's multisample
   // depth interpolation does not resolve).
-  if (uSeaFromGlobe == 1 && heightM < 0.0) discard;
+  // Below the grid's ceiling the sea pass draws the floor itself, through the water
+  // (ocean/water_volume.glsl): drop the floor deeper than a metre, which the sea's chords
+  // would otherwise let show through far away over shallow banks (issue 15).
+  if (heightM < (uSeaFromGlobe == 1 ? 0.0 : -1.0)) discard;
   float lat = vInfo.y, lon = vInfo.z;
   vec3 up = vec3(cos(lat) * cos(lon), cos(lat) * sin(lon), sin(lat));
   // Triangles that collapse at a pole give no normal (zero or NaN): the vertical stands in.

@@ -52,6 +52,10 @@ std::vector<BenchView> benchViews() {
           {"sea-4m", pose(20, -40, 4.0, 270, -10)},
           {"sea-1km", pose(20, -40, 1000.0, 270, -20)},
           {"sea-8km", pose(20, -40, 8000.0, 270, -30)},
+          // Coastal water (issue 15): 2 m over the Great Bahama Bank with the floor in view,
+          // and the same view over deep water; their ratio is the water volume's cost.
+          {"coast-2m-bank", pose(24.2, -78.2, 2.0, 270, -10)},
+          {"coast-2m-deep", pose(20, -40, 2.0, 270, -10)},
           // Terrain: the Himalaya towards the horizon, and the Strait of Gibraltar's coasts.
           {"mountain-15km", pose(27.3, 86.9, 15000.0, 10, -2)},
           {"coast-30km", pose(35.6, -5.6, 30000.0, 0, -30)}};

@@ -10,6 +10,7 @@
 #include "core/Log.hpp"
 #include "gl/DriverProfile.hpp"
 #include "gl/Readback.hpp"
+#include "render/WaterVolume.hpp"
 
 namespace og::render {
 namespace {
@@ -206,6 +207,7 @@ void GlobeRenderer::drawGlobe(const geo::CameraView& view, const FrameInput& f, 
   patterns_->setUniforms(globe, nullptr, 0.0);
   globe.set("uSeaByGrid", grid ? 1 : 0);
   globe.set("uSeaColor", OceanLighting{}.seaColor);
+  setWaterOptics(globe, ocean::jerlovWater(ocean::kDefaultWater));
   globe.set("uElevationMap", elevationMap_);
   globe.set("uElevationSize", elevationSize_);
   globe.set("uElevationWraps", elevationWraps_);

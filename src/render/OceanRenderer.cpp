@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "render/WaterVolume.hpp"
+
 namespace og::render {
 namespace {
 glm::vec3 toFloat(const glm::dvec3& v) { return glm::vec3(v); }
@@ -133,6 +135,8 @@ void OceanRenderer::setCommon(const gl::Program& p, const geo::CameraView& view,
   p.set("uSunDirOcean", ecefToOcean * toFloat(glm::normalize(lighting.sunDirectionEcef)));
   p.set("uSunDirEcef", toFloat(glm::normalize(lighting.sunDirectionEcef)));
   p.set("uSeaColor", lighting.seaColor);
+  setWaterOptics(p, ocean::jerlovWater(ocean::kDefaultWater));
+  setFloorDetail(p, view);
   p.set("uElevationMap", elevationMap_);
   p.set("uElevationSize", elevationSize_);
   p.set("uElevationWraps", elevationWraps_);
