@@ -56,8 +56,8 @@ class OceanLighting : public ::testing::Test {
     f.height = h;
     f.samples = 1;
     f.simulationTimeS = 10.0;
-    f.windSpeedMs = windMs;
-    f.windDirectionDeg = 60.0;
+    f.wind.speedMs = windMs;
+    f.wind.towardsDeg = 60.0;
     f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, sunElevation, sunAzimuth);
     renderer.render(f);
     return renderer.radiance();
