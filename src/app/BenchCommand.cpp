@@ -84,7 +84,7 @@ gl::PassTimer::Mode timerMode(const std::string& choice) {
   if (choice == "queries") return gl::PassTimer::Mode::Queries;
   if (choice == "finish") return gl::PassTimer::Mode::Finish;
   if (choice == "cpu") return gl::PassTimer::Mode::ProcessCpu;
-  return gl::isSoftwareRenderer() ? gl::PassTimer::Mode::Finish : gl::PassTimer::Mode::Queries;
+  return gl::driverProfile().timestampsTimeWork ? gl::PassTimer::Mode::Queries : gl::PassTimer::Mode::Finish;
 }
 
 /// Median of each pass over the frames, in the order the passes ran.
@@ -289,7 +289,7 @@ Run addBenchCommand(CLI::App& parent) {
     for (const auto& view : benchViews()) {
       if (!wanted(*o, view.name)) continue;
       for (const auto& [w, h] : sizes) {
-        render::FrameInput f;
+        render::FrameInput f = frameInputOf(io::SceneSettings{});  // the default scene's settings
         f.camera = view.pose;
         f.width = w;
         f.height = h;

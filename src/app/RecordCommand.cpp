@@ -229,20 +229,12 @@ RecordResult runRecording(const RecordJob& job) {
   auto renderFrame = [&](std::int64_t i) {
     const double t = static_cast<double>(i) / job.fps;
     advanceOceanFrame(i);
-    render::FrameInput frame;
+    render::FrameInput frame = frameInputOf(scene);
     frame.camera = poseAt(i);
     frame.oceanFrame = &oceanFrame;
-    frame.oceanModel = oceanModelOf(scene);
-    frame.windSpeedMs = scene.windSpeedMs;
-    frame.windDirectionDeg = windTowardsDeg(scene);
     frame.sunDirectionEcef =
         scene.time ? geo::sunEphemeris(UtcTime{scene.time->unixSeconds + t}).directionEcef : fixedSun;
-    frame.exposure = scene.exposure;
-    frame.width = scene.width;
-    frame.height = scene.height;
-    frame.samples = scene.samples;
     frame.simulationTimeS = scene.simulationTimeS + t;
-    frame.waveSeed = scene.waveSeed;
     renderer.render(frame);
   };
 

@@ -59,18 +59,7 @@ Run addRenderCommand(CLI::App& parent) {
               " with " + context->info().backend + " (" + context->info().renderer + ")");
     render::GlobeRenderer renderer(elevation, scene.atmosphere);
     renderer.setWindLayers(wind);
-    render::FrameInput frame;
-    frame.camera = scene.camera;
-    frame.sunDirectionEcef = sunDirectionOf(scene);
-    frame.exposure = scene.exposure;
-    frame.width = scene.width;
-    frame.height = scene.height;
-    frame.samples = scene.samples;
-    frame.oceanModel = oceanModelOf(scene);
-    frame.windSpeedMs = scene.windSpeedMs;
-    frame.windDirectionDeg = windTowardsDeg(scene);
-    frame.simulationTimeS = scene.simulationTimeS;
-    frame.waveSeed = scene.waveSeed;
+    const render::FrameInput frame = frameInputOf(scene);
     renderer.render(frame);
     if (format == Format::Png)
       io::writePng(out, renderer.display());

@@ -7,18 +7,10 @@
 
 #include "core/Error.hpp"
 #include "geo/Sun.hpp"
+#include "io/SceneSchema.hpp"
 #include "render/GlobeRenderer.hpp"
 
 namespace og::app {
-namespace {
-// The whole string must be one number.
-std::optional<double> parseNumber(const std::string& text) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size()) return std::nullopt;
-  return v;
-}
-}  // namespace
 
 void SceneOptions::add(CLI::App& cmd) {
   cmd_ = &cmd;
@@ -80,13 +72,9 @@ io::SceneSettings SceneOptions::resolve(io::SceneSettings s) const {
   if (given("--wind-layer")) s.windLayers = flags_.windLayers;
   if (given("--elevation-layer")) s.elevationLayer = flags_.elevationLayer;
   if (given("--wind")) {
-    const std::size_t comma = wind_.find(',');
-    const auto speed = parseNumber(wind_.substr(0, comma));
-    const auto dir = comma == std::string::npos ? std::optional(s.windFromDeg)
-                                                : parseNumber(wind_.substr(comma + 1));
-    if (!speed || !dir) throw InputError("--wind: expected SPEED[,DIRECTION], got '" + wind_ + "'");
-    s.windSpeedMs = *speed;
-    s.windFromDeg = *dir;
+    const geo::Wind wind = geo::parseWindFlag(wind_, s.windFromDeg);
+    s.windSpeedMs = wind.speedMs;
+    s.windFromDeg = wind.fromDeg();
   }
   if (given("--time")) {
     s.time = UtcTime::parseIso8601(time_);
@@ -104,10 +92,23 @@ io::SceneSettings SceneOptions::resolve(io::SceneSettings s) const {
 }
 
 int parseSampleCount(const std::string& text) {
-  if (text == "auto") return render::kAutoSamples;
-  for (const int n : {1, 2, 4, 8})
-    if (text == std::to_string(n)) return n;
+  if (const auto n = io::parseSampleCount(text)) return *n;
   throw InputError("--samples: expected auto, 1, 2, 4 or 8, got '" + text + "'");
+}
+
+render::FrameInput frameInputOf(const io::SceneSettings& s) {
+  render::FrameInput frame;
+  frame.camera = s.camera;
+  frame.sunDirectionEcef = sunDirectionOf(s);
+  frame.exposure = s.exposure;
+  frame.width = s.width;
+  frame.height = s.height;
+  frame.samples = s.samples;
+  frame.oceanModel = oceanModelOf(s);
+  frame.wind = s.wind();
+  frame.simulationTimeS = s.simulationTimeS;
+  frame.waveSeed = s.waveSeed;
+  return frame;
 }
 
 glm::dvec3 sunDirectionOf(const io::SceneSettings& s) {
@@ -119,10 +120,8 @@ glm::dvec3 sunDirectionOf(const io::SceneSettings& s) {
 std::shared_ptr<const data::WindLayers> loadWindLayers(const io::SceneSettings& s) {
   if (s.windLayers.empty()) return nullptr;
   return std::make_shared<const data::WindLayers>(data::WindLayers::load(
-      s.windLayers, data::windFromSpeedDirection(s.windSpeedMs, windTowardsDeg(s)), s.time));
+      s.windLayers, s.wind().vector(), s.time));
 }
-
-double windTowardsDeg(const io::SceneSettings& s) { return std::fmod(s.windFromDeg + 180.0, 360.0); }
 
 render::OceanModel oceanModelOf(const io::SceneSettings& s) {
   return s.oceanModel == "classic" ? render::OceanModel::Classic : render::OceanModel::Bruneton;

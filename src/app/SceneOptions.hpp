@@ -8,6 +8,7 @@
 
 #include "data/WindLayers.hpp"
 #include "io/SceneFile.hpp"
+#include "render/GlobeRenderer.hpp"
 #include "render/OceanRenderer.hpp"
 
 namespace og::app {
@@ -32,8 +33,15 @@ class SceneOptions {
   std::string samples_;
 };
 
-/// A --samples value: "auto" (render::kAutoSamples), 1, 2, 4 or 8. Throws og::InputError.
+/// A --samples value: "auto" (render::kAutoSamples), 1, 2, 4 or 8 (io::parseSampleCount).
+/// Throws og::InputError.
 int parseSampleCount(const std::string& text);
+
+/// The frame a scene asks for: its camera, Sun (sunDirectionOf), exposure, image size, samples,
+/// ocean model, constant wind, wave clock and seed. The one conversion from settings to a
+/// frame (render, record, view, bench); a moving camera (record, view) then sets its pose, Sun
+/// and clock per frame.
+render::FrameInput frameInputOf(const io::SceneSettings& scene);
 
 /// Direction to the Sun (ECEF, unit) for a scene: from the almanac at the scene's time, from
 /// the given elevation/azimuth at the point under the camera, or a default afternoon Sun
@@ -43,10 +51,6 @@ glm::dvec3 sunDirectionOf(const io::SceneSettings& scene);
 /// The scene's wind layers, loaded and validated (og::InputError for a bad file), or nullptr
 /// when it names none: then the constant wind holds everywhere.
 std::shared_ptr<const data::WindLayers> loadWindLayers(const io::SceneSettings& scene);
-
-/// The direction the scene's constant wind blows towards (the physics' convention), degrees
-/// clockwise from north; the user gives where it comes from.
-double windTowardsDeg(const io::SceneSettings& scene);
 
 /// The scene's ocean model ("bruneton" or "classic", validated by io::validateScene).
 render::OceanModel oceanModelOf(const io::SceneSettings& scene);

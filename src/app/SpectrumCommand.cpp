@@ -11,6 +11,7 @@
 
 #include "app/Commands.hpp"
 #include "core/Error.hpp"
+#include "geo/Wind.hpp"
 #include "ocean/WavePatterns.hpp"
 
 namespace og::app {
@@ -20,14 +21,6 @@ struct SpectrumOptions {
   unsigned long long seed = 1;
   bool json = false;
 };
-
-double parseNumber(const std::string& text, const std::string& what) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size())
-    throw InputError("--wind: " + what + " '" + text + "' is not a number");
-  return v;
-}
 
 void printJson(const ocean::WavePatterns& w, const ocean::PatternTables& t, double u, double fromDeg) {
   const auto speed = static_cast<int>(std::lround(std::clamp(u, 0.0, 50.0)));
@@ -54,7 +47,7 @@ void printJson(const ocean::WavePatterns& w, const ocean::PatternTables& t, doub
   nlohmann::json j;
   j["wind_speed_ms"] = u;
   j["wind_from_deg"] = fromDeg;
-  j["wind_towards_deg"] = std::fmod(fromDeg + 180.0, 360.0);
+  j["wind_towards_deg"] = geo::Wind::blowingFrom(u, fromDeg).towardsDeg;
   j["mss"] = resolved.total() + tail.total();
   j["sigma_up2"] = resolved.up + tail.up;
   j["sigma_cross2"] = resolved.cross + tail.cross;
@@ -113,11 +106,8 @@ Run addSpectrumCommand(CLI::App& parent) {
   cmd->add_option("--seed", o->seed, "seed for the waves' random amplitudes and phases");
   cmd->add_flag("--json", o->json, "print JSON");
   return [o]() {
-    const std::size_t comma = o->wind.find(',');
-    const double u = parseNumber(o->wind.substr(0, comma), "speed");
-    double fromDeg = 270.0;
-    if (comma != std::string::npos) fromDeg = parseNumber(o->wind.substr(comma + 1), "direction");
-    if (!std::isfinite(u) || u < 0.0 || u > 50.0) throw InputError("--wind: speed must be within [0, 50] m/s");
+    const geo::Wind wind = geo::parseWindFlag(o->wind, 270.0);
+    const double u = wind.speedMs, fromDeg = wind.fromDeg();
     ocean::WavePatternParams p;
     p.referenceWindMs = u;
     p.seed = o->seed;

@@ -1,8 +1,5 @@
 // oceanglobe view: the globe in a window, flown by hand from orbit to sea level; screenshots
 // and keyframes of the flight for `oceanglobe record`. Controls: docs/controls.md.
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -82,9 +79,7 @@ class Viewer {
       : options_(options),
         scene_(std::move(scene)),
         ground_(data::loadElevationLayer(scene_.elevationLayer)),
-        wind_(data::WindLayers::load(
-            scene_.windLayers,
-            data::windFromSpeedDirection(scene_.windSpeedMs, windTowardsDeg(scene_)), scene_.time)),
+        wind_(data::WindLayers::load(scene_.windLayers, scene_.wind().vector(), scene_.time)),
         controller_(scene_.camera, [this](double lat, double lon) {
           // The sea is at the ellipsoid; land lifts the floor to the terrain's height, detail
           // included (the same function the tiles are built from).
@@ -106,17 +101,11 @@ class Viewer {
   int run() {
     window_ = std::make_unique<gl::GlfwWindow>(scene_.width, scene_.height, "oceanglobe view");
     log::info("viewer on " + window_->info().renderer);
-    GLFWwindow* w = window_->handle();
-    glfwSetWindowUserPointer(w, this);
-    glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int mods) {
-      self(win).onKey(key, action, mods);
-    });
-    glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int mods) {
-      self(win).onButton(button, action, mods);
-    });
-    glfwSetCursorPosCallback(w, [](GLFWwindow* win, double x, double y) { self(win).onCursor(x, y); });
-    glfwSetScrollCallback(w, [](GLFWwindow* win, double, double y) { self(win).onScroll(y); });
-    glfwSwapInterval(1);
+    window_->setInput({[this](gl::Key k, gl::KeyAction a, gl::Modifiers m) { onKey(k, a, m); },
+                       [this](gl::MouseButton b, bool pressed, gl::Modifiers m) { onButton(b, pressed, m); },
+                       [this](double x, double y) { onCursor(x, y); },
+                       [this](double notches) { onScroll(notches); }});
+    window_->setSwapInterval(1);
 
     renderer_ = std::make_unique<render::GlobeRenderer>(ground_.layer(), scene_.atmosphere);
     // Progressive terrain: missing tiles are built in the background, never stalling a frame.
@@ -156,8 +145,6 @@ class Viewer {
   }
 
  private:
-  static Viewer& self(GLFWwindow* w) { return *static_cast<Viewer*>(glfwGetWindowUserPointer(w)); }
-
   // --- time and Sun ---------------------------------------------------------------------
   [[nodiscard]] double pathTimeS() const { return flight_ ? playS_ : 0.0; }
   [[nodiscard]] std::optional<UtcTime> currentTime() const {
@@ -172,9 +159,10 @@ class Viewer {
     const double c = std::cos(a), s = std::sin(a);
     return {c * fixedSun_.x - s * fixedSun_.y, s * fixedSun_.x + c * fixedSun_.y, fixedSun_.z};
   }
-  [[nodiscard]] data::WindVector windHere() const {
+  // The wind under the camera (the layers', or the constant wind with L off).
+  [[nodiscard]] geo::Wind windHere() const {
     const auto& g = controller_.pose().position;
-    return layersOn_ ? wind_.sample(g.latitudeDeg, g.longitudeDeg) : wind_.fallback();
+    return geo::Wind::ofVector(layersOn_ ? wind_.sample(g.latitudeDeg, g.longitudeDeg) : wind_.fallback());
   }
 
   // --- input ----------------------------------------------------------------------------
@@ -183,25 +171,26 @@ class Viewer {
     messageUntilS_ = wallS_ + kMessageS;
   }
 
-  void onKey(int key, int action, int mods) {
-    if (action == GLFW_RELEASE) return;
-    const bool repeat = action == GLFW_REPEAT;
-    const bool fine = (mods & GLFW_MOD_CONTROL) != 0;
+  void onKey(gl::Key key, gl::KeyAction action, gl::Modifiers mods) {
+    using gl::Key;
+    if (action == gl::KeyAction::Release) return;
+    const bool repeat = action == gl::KeyAction::Repeat;
+    const bool fine = mods.control;
     switch (key) {
-      case GLFW_KEY_ESCAPE:
-      case GLFW_KEY_Q: glfwSetWindowShouldClose(window_->handle(), GLFW_TRUE); break;
-      case GLFW_KEY_P:
-      case GLFW_KEY_F12: if (!repeat) screenshotRequested_ = true; break;
-      case GLFW_KEY_K: if (!repeat) keyframeRequested_ = true; break;
-      case GLFW_KEY_H:
-      case GLFW_KEY_F1: if (!repeat) showOverlay_ = !showOverlay_; break;
-      case GLFW_KEY_O:
+      case Key::Escape:
+      case Key::Q: window_->close(); break;
+      case Key::P:
+      case Key::F12: if (!repeat) screenshotRequested_ = true; break;
+      case Key::K: if (!repeat) keyframeRequested_ = true; break;
+      case Key::H:
+      case Key::F1: if (!repeat) showOverlay_ = !showOverlay_; break;
+      case Key::O:
         if (repeat) break;
         oceanModel_ = oceanModel_ == render::OceanModel::Bruneton ? render::OceanModel::Classic
                                                                   : render::OceanModel::Bruneton;
         say(std::string("ocean model: ") + oceanModelName());
         break;
-      case GLFW_KEY_L:
+      case Key::L:
         if (repeat) break;
         if (wind_.size() == 0) {
           say("no wind layers (--wind-layer FILE)");
@@ -211,33 +200,33 @@ class Viewer {
           say(layersOn_ ? "wind layers on" : "wind layers off: constant wind");
         }
         break;
-      case GLFW_KEY_EQUAL:
-      case GLFW_KEY_KP_ADD:
+      case Key::Equal:
+      case Key::KeypadAdd:
         timeOffsetS_ += fine ? kTimeStepS / 6.0 : kTimeStepS;
         say(format("time of day %+.2f h", timeOffsetS_ / 3600.0));
         break;
-      case GLFW_KEY_MINUS:
-      case GLFW_KEY_KP_SUBTRACT:
+      case Key::Minus:
+      case Key::KeypadSubtract:
         timeOffsetS_ -= fine ? kTimeStepS / 6.0 : kTimeStepS;
         say(format("time of day %+.2f h", timeOffsetS_ / 3600.0));
         break;
-      case GLFW_KEY_RIGHT_BRACKET:
+      case Key::RightBracket:
         scene_.exposure = std::min(scene_.exposure * kExposureStep, 1.0e6);
         say(format("exposure %.3g", scene_.exposure));
         break;
-      case GLFW_KEY_LEFT_BRACKET:
+      case Key::LeftBracket:
         scene_.exposure = std::max(scene_.exposure / kExposureStep, 1.0e-6);
         say(format("exposure %.3g", scene_.exposure));
         break;
-      case GLFW_KEY_N: controller_.resetNorthUp(); stopPlaying(); break;
-      case GLFW_KEY_BACKSPACE:
-      case GLFW_KEY_HOME:
+      case Key::N: controller_.resetNorthUp(); stopPlaying(); break;
+      case Key::Backspace:
+      case Key::Home:
         if (repeat) break;
         controller_.setPose(start_);
         stopPlaying();
         say("back to the start view");
         break;
-      case GLFW_KEY_SPACE:
+      case Key::Space:
         if (repeat) break;
         if (!flight_) {
           say("no path to play (--path FILE)");
@@ -247,7 +236,7 @@ class Viewer {
           say(playing_ ? "playing" : "paused");
         }
         break;
-      case GLFW_KEY_R:
+      case Key::R:
         if (!repeat && flight_) {
           playS_ = 0.0;
           playing_ = true;
@@ -266,7 +255,7 @@ class Viewer {
   // Cursor in normalised device coordinates of the window (y up).
   [[nodiscard]] glm::dvec2 cursorNdc() const {
     int w = 0, h = 0;
-    glfwGetWindowSize(window_->handle(), &w, &h);
+    window_->windowSize(w, h);
     return {2.0 * cursor_.x / std::max(w, 1) - 1.0, 1.0 - 2.0 * cursor_.y / std::max(h, 1)};
   }
   [[nodiscard]] std::optional<glm::dvec3> pickAt(const glm::dvec2& ndc) const {
@@ -275,13 +264,13 @@ class Viewer {
     return controller_.pick(ndc.x, ndc.y, std::max(w, 1), std::max(h, 1));
   }
 
-  void onButton(int button, int action, int mods) {
-    if (action == GLFW_RELEASE) {
+  void onButton(gl::MouseButton button, bool pressed, gl::Modifiers mods) {
+    if (!pressed) {
       drag_ = Drag::None;
       return;
     }
-    const bool orbit = button == GLFW_MOUSE_BUTTON_RIGHT || button == GLFW_MOUSE_BUTTON_MIDDLE ||
-                       (button == GLFW_MOUSE_BUTTON_LEFT && (mods & GLFW_MOD_SHIFT) != 0);
+    const bool orbit = button == gl::MouseButton::Right || button == gl::MouseButton::Middle ||
+                       (button == gl::MouseButton::Left && mods.shift);
     drag_ = orbit ? Drag::Orbit : Drag::Look;
     if (orbit) {
       // The point under the cursor, else under the centre of the view, else the Earth's centre.
@@ -297,7 +286,7 @@ class Viewer {
     cursor_ = {x, y};
     if (drag_ == Drag::None) return;
     int w = 0, h = 0;
-    glfwGetWindowSize(window_->handle(), &w, &h);
+    window_->windowSize(w, h);
     const double dx = x - previous.x, dy = y - previous.y;
     // Drags move the scene with the cursor, as if grabbing it.
     if (drag_ == Drag::Look) {
@@ -324,18 +313,18 @@ class Viewer {
   }
 
   [[nodiscard]] viewer::MoveInput heldKeys() const {
-    GLFWwindow* w = window_->handle();
-    auto down = [w](int a, int b) { return glfwGetKey(w, a) == GLFW_PRESS || glfwGetKey(w, b) == GLFW_PRESS; };
-    auto axis = [&](int plusA, int plusB, int minusA, int minusB) {
+    using gl::Key;
+    auto down = [this](Key a, Key b) { return window_->isDown(a) || window_->isDown(b); };
+    auto axis = [&](Key plusA, Key plusB, Key minusA, Key minusB) {
       return (down(plusA, plusB) ? 1.0 : 0.0) - (down(minusA, minusB) ? 1.0 : 0.0);
     };
     viewer::MoveInput in;
-    in.forward = axis(GLFW_KEY_W, GLFW_KEY_UP, GLFW_KEY_S, GLFW_KEY_DOWN);
-    in.right = axis(GLFW_KEY_D, GLFW_KEY_RIGHT, GLFW_KEY_A, GLFW_KEY_LEFT);
-    in.up = axis(GLFW_KEY_E, GLFW_KEY_PAGE_UP, GLFW_KEY_C, GLFW_KEY_PAGE_DOWN);
-    in.roll = axis(GLFW_KEY_X, GLFW_KEY_X, GLFW_KEY_Z, GLFW_KEY_Z);
-    if (down(GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT)) in.speedFactor *= 5.0;
-    if (down(GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL)) in.speedFactor *= 0.2;
+    in.forward = axis(Key::W, Key::Up, Key::S, Key::Down);
+    in.right = axis(Key::D, Key::Right, Key::A, Key::Left);
+    in.up = axis(Key::E, Key::PageUp, Key::C, Key::PageDown);
+    in.roll = axis(Key::X, Key::X, Key::Z, Key::Z);
+    if (down(Key::LeftShift, Key::RightShift)) in.speedFactor *= 5.0;
+    if (down(Key::LeftControl, Key::RightControl)) in.speedFactor *= 0.2;
     return in;
   }
 
@@ -362,18 +351,15 @@ class Viewer {
       oceanFrame_.reset(pose.position);
     else
       oceanFrame_.moveTo(pose.position);
-    const data::WindVector wind = windHere();
-    render::FrameInput frame;
+    render::FrameInput frame = frameInputOf(scene_);
     frame.camera = pose;
     frame.sunDirectionEcef = sunDirection();
-    frame.exposure = scene_.exposure;
     frame.width = width;
     frame.height = height;
-    frame.samples = scene_.samples;
-    frame.simulationTimeS = wallS_;
+    frame.simulationTimeS = scene_.simulationTimeS + wallS_;
     frame.oceanModel = oceanModel_;
-    frame.windSpeedMs = std::clamp(std::hypot(wind.uMs, wind.vMs), 0.0, 50.0);
-    frame.windDirectionDeg = std::atan2(wind.uMs, wind.vMs) * 180.0 / kPi;
+    frame.wind = windHere();
+    frame.wind.speedMs = std::min(frame.wind.speedMs, 50.0);
     frame.oceanFrame = &oceanFrame_;
     renderer_->render(frame);
     glBlitNamedFramebuffer(renderer_->displayFramebuffer(), 0, 0, 0, width, height, 0, 0, width,
@@ -396,9 +382,7 @@ class Viewer {
 
   [[nodiscard]] std::vector<std::string> overlayLines() const {
     const geo::CameraPose& p = controller_.pose();
-    const data::WindVector wind = windHere();
-    double windTo = std::atan2(wind.uMs, wind.vMs) * 180.0 / kPi;
-    if (windTo < 0.0) windTo += 360.0;
+    const geo::Wind wind = windHere();
     const geo::HorizontalAngles sun = geo::horizontalAngles(p.position, sunDirection());
     std::vector<std::string> lines;
     lines.push_back("lat " + angleText(p.position.latitudeDeg, 'N', 'S') + "  lon " +
@@ -407,7 +391,7 @@ class Viewer {
                     heightText(controller_.heightAboveSurfaceM()) + " above surface)");
     lines.push_back(format("heading %.1f\xC2\xB0  pitch %.1f\xC2\xB0  roll %.1f\xC2\xB0", p.headingDeg,
                            p.pitchDeg, p.rollDeg));
-    lines.push_back(format("wind %.1f m/s towards %.0f\xC2\xB0 ", std::hypot(wind.uMs, wind.vMs), windTo) +
+    lines.push_back(format("wind %.1f m/s towards %.0f\xC2\xB0 ", wind.speedMs, wind.towardsDeg) +
                     (wind_.size() == 0 ? "(constant)" : layersOn_ ? "(layers)" : "(layers off)"));
     lines.push_back(format("sun elevation %.1f\xC2\xB0  azimuth %.0f\xC2\xB0", sun.elevationDeg, sun.azimuthDeg));
     if (const auto t = currentTime())

@@ -67,11 +67,6 @@ std::vector<double> coverageDistance(const std::vector<bool>& valid, int width, 
 
 }  // namespace
 
-WindVector windFromSpeedDirection(double speedMs, double towardsDeg) {
-  const double a = towardsDeg * std::numbers::pi / 180.0;
-  return {speedMs * std::sin(a), speedMs * std::cos(a)};
-}
-
 WindLayers::WindLayers(WindVector fallback) : fallback_(fallback) {}
 
 WindLayers WindLayers::load(const std::vector<std::string>& specs, WindVector fallback,

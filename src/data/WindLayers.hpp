@@ -16,18 +16,13 @@
 #include "core/Time.hpp"
 #include "data/LatLonGrid.hpp"
 #include "data/WindField.hpp"
+#include "geo/Wind.hpp"
 
 namespace og::data {
 
-/// A horizontal wind vector, m/s: eastward and northward components.
-struct WindVector {
-  double uMs = 0.0;
-  double vMs = 0.0;
-};
-
-/// The vector for a speed (m/s) blowing towards `towardsDeg` (clockwise from north), as
-/// `--wind SPEED,DIR` gives it: u = speed·sin(dir), v = speed·cos(dir).
-WindVector windFromSpeedDirection(double speedMs, double towardsDeg);
+/// A horizontal wind vector, m/s: eastward and northward components (geo/Wind.hpp; a speed and
+/// direction become one with geo::Wind::vector()).
+using WindVector = geo::WindVector;
 
 /// A global equirectangular u/v grid for a GPU texture. Cell (column c, row r) has its centre at
 /// longitude −180 + (c + ½)·360/width and latitude −90 + (r + ½)·180/height; rows run south to

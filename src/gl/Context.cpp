@@ -52,11 +52,17 @@ void Context::finishInit(std::string backend, void* (*getProcAddress)(const char
   info_.vendor = str(GL_VENDOR);
   info_.renderer = str(GL_RENDERER);
   info_.version = str(GL_VERSION);
-  const std::string& r = info_.renderer;
-  info_.software = r.find("llvmpipe") != std::string::npos ||
-                   r.find("softpipe") != std::string::npos ||
-                   r.find("swrast") != std::string::npos;
+  GLfloat anisotropy = 1.0f;  // GL 4.6 or ARB/EXT_texture_filter_anisotropic; else an error
+  glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &anisotropy);
+  while (glGetError() != GL_NO_ERROR) {
+  }
+  info_.profile = makeDriverProfile(info_.renderer, anisotropy);
   log::info("GL context: " + info_.backend + ", " + info_.renderer + ", " + info_.version);
+}
+
+const DriverProfile& driverProfile() {
+  if (gLoadedBy == nullptr) throw InternalError("driverProfile: no GL context is current");
+  return gLoadedBy->info().profile;
 }
 
 std::unique_ptr<Context> createHeadlessContext(Backend backend) {

@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "gl/DriverProfile.hpp"
+
 namespace og::gl {
 
 enum class Backend { Auto, Egl, OsMesa };
@@ -20,7 +22,7 @@ struct ContextInfo {
   std::string vendor;    ///< GL_VENDOR
   std::string renderer;  ///< GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
   std::string version;   ///< GL_VERSION, e.g. "4.5 (Core Profile) Mesa 22.3.6"
-  bool software = false; ///< llvmpipe/softpipe/swrast: pick cheaper paths (see DESIGN.md)
+  DriverProfile profile; ///< what this driver is good and bad at, decided once (DriverProfile.hpp)
 };
 
 class Context {

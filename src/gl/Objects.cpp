@@ -1,5 +1,7 @@
 #include "gl/Objects.hpp"
 
+#include "gl/DriverProfile.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -117,14 +119,7 @@ int maxSamples(GLenum colorFormat) {
   return std::max(limit, 1);
 }
 
-bool isSoftwareRenderer() {
-  const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  if (r == nullptr) return false;
-  const std::string name(r);
-  for (const char* cpu : {"llvmpipe", "softpipe", "swrast", "lavapipe"})
-    if (name.find(cpu) != std::string::npos) return true;
-  return false;
-}
+bool isSoftwareRenderer() { return driverProfile().software; }
 
 void checkErrors(const char* where) {
   const GLenum e = glGetError();

@@ -12,20 +12,22 @@
 #include <map>
 #include <sstream>
 
-#include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
+#include "io/SceneSchema.hpp"
+#include "io/SceneTables.hpp"
 
 namespace og::io {
 namespace fs = std::filesystem;
 namespace {
 
-// "FILE:LINE: " for TOML; JSON-built nodes have no source position, so just "FILE: ".
-std::string at(const fs::path& file, toml::source_index line) {
-  std::string s = file.string();
-  if (line > 0) s.append(":").append(std::to_string(line));  // (not ":" + ...: GCC 12 -Wrestrict)
-  return s.append(": ");
-}
-std::string where(const fs::path& file, const toml::node& n) { return at(file, n.source().begin.line); }
+using detail::applyKeys;
+using detail::at;
+using detail::integer;
+using detail::number;
+using detail::Setter;
+using detail::tableOf;
+using detail::text;
+using detail::where;
 
 std::string decimal(double v) {
   std::ostringstream s;
@@ -33,95 +35,9 @@ std::string decimal(double v) {
   return s.str();
 }
 
-double number(const fs::path& file, const toml::node& n, const std::string& key) {
-  if (auto v = n.value<double>(); v && n.is_number()) {
-    if (!std::isfinite(*v)) throw InputError(where(file, n) + "'" + key + "' must be finite");
-    return *v;
-  }
-  throw InputError(where(file, n) + "'" + key + "' must be a number");
-}
-
-std::int64_t integer(const fs::path& file, const toml::node& n, const std::string& key,
-                     std::int64_t lo, std::int64_t hi) {
-  if (auto v = n.value<std::int64_t>(); v && n.is_integer()) {
-    if (*v < lo || *v > hi)
-      throw InputError(where(file, n) + "'" + key + "' must be within [" + std::to_string(lo) +
-                       ", " + std::to_string(hi) + "]");
-    return *v;
-  }
-  throw InputError(where(file, n) + "'" + key + "' must be an integer");
-}
-
-std::string text(const fs::path& file, const toml::node& n, const std::string& key) {
-  if (auto v = n.value<std::string>(); v && n.is_string()) return *v;
-  throw InputError(where(file, n) + "'" + key + "' must be a string");
-}
-
-const toml::table& tableOf(const fs::path& file, const toml::node& n, const std::string& name) {
-  const toml::table* t = n.as_table();
-  if (t == nullptr) throw InputError(where(file, n) + "'" + name + "' must be a table");
-  return *t;
-}
-
-using Setter = std::function<void(const toml::node&, const std::string&)>;
-
-// Calls the setter of each key of `table`; unknown keys are errors.
-void applyKeys(const fs::path& file, const toml::table& table, const std::string& section,
-               const std::map<std::string, Setter>& schema) {
-  for (const auto& [key, value] : table) {
-    const std::string k(key.str());
-    const auto it = schema.find(k);
-    if (it == schema.end())
-      throw InputError(at(file, key.source().begin.line) + "unknown key '" + k + "' in " + section);
-    it->second(value, k);
-  }
-}
-
+// [scene]: the scene file's tables one level down, or older paths' flat keys.
 void readScene(const fs::path& file, const toml::table& t, SceneSettings& s) {
-  auto num = [&](double& out) -> Setter {
-    return [&](const toml::node& n, const std::string& k) { out = number(file, n, k); };
-  };
-  const std::map<std::string, Setter> schema = {
-      {"time",
-       [&](const toml::node& n, const std::string& k) {
-         const std::string value = text(file, n, k);
-         s.time = UtcTime::parseIso8601(value);
-         if (!s.time)
-           throw InputError(where(file, n) + "'time' is not an ISO-8601 UTC time: '" + value + "'");
-       }},
-      {"sun_elevation_deg",
-       [&](const toml::node& n, const std::string& k) { s.sunElevationDeg = number(file, n, k); }},
-      {"sun_azimuth_deg",
-       [&](const toml::node& n, const std::string& k) { s.sunAzimuthDeg = number(file, n, k); }},
-      {"width",
-       [&](const toml::node& n, const std::string& k) {
-         s.width = static_cast<int>(integer(file, n, k, 1, 16384));
-       }},
-      {"height",
-       [&](const toml::node& n, const std::string& k) {
-         s.height = static_cast<int>(integer(file, n, k, 1, 16384));
-       }},
-      {"exposure", num(s.exposure)},
-      {"samples",  // "auto" or 1, 2, 4, 8 (validateScene refuses the others)
-       [&](const toml::node& n, const std::string& k) {
-         s.samples = n.is_string() && n.value<std::string>() == "auto"
-                         ? 0
-                         : static_cast<int>(integer(file, n, k, 1, 8));
-       }},
-      {"ocean_model", [&](const toml::node& n, const std::string& k) { s.oceanModel = text(file, n, k); }},
-      {"wind_speed_ms", num(s.windSpeedMs)},
-      {"wind_direction_deg", num(s.windFromDeg)},
-      {"wind_layers",
-       [&](const toml::node& n, const std::string& k) {
-         const toml::array* list = n.as_array();
-         if (list == nullptr) throw InputError(where(file, n) + "'" + k + "' must be an array of strings");
-         s.windLayers.clear();
-         for (const toml::node& item : *list) s.windLayers.push_back(text(file, item, k));
-       }},
-      {"elevation_layer",
-       [&](const toml::node& n, const std::string& k) { s.elevationLayer = text(file, n, k); }},
-  };
-  applyKeys(file, t, "[scene]", schema);
+  detail::readSceneTables(file, t, s, detail::SceneForm::PathScene);
   try {
     validateScene(s, "");
   } catch (const InputError& e) {
@@ -336,64 +252,6 @@ void readOrbit(const fs::path& file, const toml::table& t, CameraPath& path) {
   }
 }
 
-// JSON has the same structure as the TOML form; convert it so one reader checks both.
-toml::table fromJson(const nlohmann::json& j, const fs::path& file);
-
-void insertJson(toml::table& t, const std::string& key, const nlohmann::json& v, const fs::path& file);
-
-toml::array arrayFromJson(const nlohmann::json& j, const fs::path& file) {
-  toml::array a;
-  for (const auto& v : j) {
-    if (v.is_object()) a.push_back(fromJson(v, file));
-    else if (v.is_string()) a.push_back(v.get<std::string>());
-    else if (v.is_number_integer()) a.push_back(v.get<std::int64_t>());
-    else if (v.is_number()) a.push_back(v.get<double>());
-    else if (v.is_boolean()) a.push_back(v.get<bool>());
-    else throw InputError(file.string() + ": unsupported JSON array element " + v.dump());
-  }
-  return a;
-}
-
-void insertJson(toml::table& t, const std::string& key, const nlohmann::json& v, const fs::path& file) {
-  if (v.is_object()) t.insert(key, fromJson(v, file));
-  else if (v.is_array()) t.insert(key, arrayFromJson(v, file));
-  else if (v.is_string()) t.insert(key, v.get<std::string>());
-  else if (v.is_number_integer()) t.insert(key, v.get<std::int64_t>());
-  else if (v.is_number()) t.insert(key, v.get<double>());
-  else if (v.is_boolean()) t.insert(key, v.get<bool>());
-  else throw InputError(file.string() + ": '" + key + "' has an unsupported JSON value (null?)");
-}
-
-toml::table fromJson(const nlohmann::json& j, const fs::path& file) {
-  if (!j.is_object()) throw InputError(file.string() + ": expected a JSON object");
-  toml::table t;
-  for (const auto& [key, value] : j.items()) insertJson(t, key, value, file);
-  return t;
-}
-
-toml::table parseFile(const fs::path& file) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (ext == ".json") {
-    std::ifstream in(file);
-    if (!in) throw InputError(file.string() + ": cannot open for reading");
-    try {
-      return fromJson(nlohmann::json::parse(in), file);
-    } catch (const nlohmann::json::parse_error& e) {
-      throw InputError(file.string() + ": JSON syntax error at byte " + std::to_string(e.byte));
-    }
-  }
-  try {
-    return toml::parse_file(file.string());
-  } catch (const toml::parse_error& e) {
-    throw InputError(file.string() + ":" + std::to_string(e.source().begin.line) + ": " +
-                     std::string(e.description()));
-  }
-}
-
-}  // namespace
-
-namespace {
 CameraPath readPathTable(const toml::table& root, const fs::path& file, bool needKeyframes) {
   CameraPath path;
   const toml::node* keyframes = nullptr;
@@ -442,35 +300,16 @@ CameraPath readPathTable(const toml::table& root, const fs::path& file, bool nee
 }  // namespace
 
 CameraPath readCameraPath(const fs::path& file, bool needKeyframes) {
-  return readPathTable(parseFile(file), file, needKeyframes);
+  return readPathTable(detail::parseTomlOrJson(file), file, needKeyframes);
 }
 
 CameraPath readCameraPathText(const std::string& text, const fs::path& file, int firstLine,
                               bool needKeyframes) {
-  // Blank lines in front make toml++'s line numbers those of the enclosing file.
-  const std::string shifted = std::string(static_cast<std::size_t>(std::max(firstLine - 1, 0)), '\n') + text;
-  try {
-    return readPathTable(toml::parse(shifted, file.string()), file, needKeyframes);
-  } catch (const toml::parse_error& e) {
-    throw InputError(file.string() + ":" + std::to_string(e.source().begin.line) + ": " +
-                     std::string(e.description()));
-  }
+  return readPathTable(detail::parseTomlText(text, file, firstLine), file, needKeyframes);
 }
 
 void writeCameraPathJson(const fs::path& file, const CameraPath& path) {
-  const SceneSettings& s = path.scene;
-  nlohmann::json scene = {{"width", s.width},
-                          {"height", s.height},
-                          {"exposure", s.exposure},
-                          {"ocean_model", s.oceanModel},
-                          {"wind_speed_ms", s.windSpeedMs},
-                          {"wind_direction_deg", s.windFromDeg},
-                          {"wind_layers", s.windLayers}};
-  if (s.time) scene["time"] = s.time->toIso8601();
-  if (s.sunElevationDeg) scene["sun_elevation_deg"] = *s.sunElevationDeg;
-  if (s.sunAzimuthDeg) scene["sun_azimuth_deg"] = *s.sunAzimuthDeg;
-  if (!s.elevationLayer.empty()) scene["elevation_layer"] = s.elevationLayer;
-  nlohmann::json root = {{"scene", scene}};
+  nlohmann::json root = {{"scene", detail::sceneJson(path.scene, false)}};
   nlohmann::json video = nlohmann::json::object();
   if (path.fps) video["fps"] = *path.fps;
   if (path.crf) video["crf"] = *path.crf;
@@ -493,57 +332,15 @@ void writeCameraPathJson(const fs::path& file, const CameraPath& path) {
                 {"easing", geo::easingName(k.easing)}});
     root["keyframe"].push_back(key);
   }
-  writeFileAtomically(file, [&](const fs::path& tmp) {
-    std::ofstream out(tmp);
-    out << root.dump(2) << "\n";
-    if (!out.flush()) throw InputError(file.string() + ": cannot write");
-  });
+  detail::writeTextFile(file, root.dump(2) + "\n");
 }
 
-namespace {
-// Shortest decimal that reads back to the same double; TOML takes "1e+07" as a float.
-std::string tomlNumber(double v) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
-  return std::string(buffer, result.ptr);
-}
-
-std::string tomlString(const std::string& v) {
-  std::string out = "\"";
-  for (const char c : v) {
-    const auto u = static_cast<unsigned char>(c);
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (u < 0x20 || u == 0x7F) {
-      char esc[8];
-      std::snprintf(esc, sizeof esc, "\\u%04X", static_cast<unsigned>(u));
-      out += esc;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-}  // namespace
+using detail::tomlNumber;
+using detail::tomlString;
 
 std::string pathSettingsToml(const CameraPath& path) {
-  const SceneSettings& s = path.scene;
   std::ostringstream t;
-  t << "[scene]\n";
-  if (s.time) t << "time = " << tomlString(s.time->toIso8601()) << "\n";
-  if (s.sunElevationDeg) t << "sun_elevation_deg = " << tomlNumber(*s.sunElevationDeg) << "\n";
-  if (s.sunAzimuthDeg) t << "sun_azimuth_deg = " << tomlNumber(*s.sunAzimuthDeg) << "\n";
-  t << "width = " << s.width << "\nheight = " << s.height << "\n";
-  t << "exposure = " << tomlNumber(s.exposure) << "\n";
-  t << "ocean_model = " << tomlString(s.oceanModel) << "\n";
-  t << "wind_speed_ms = " << tomlNumber(s.windSpeedMs) << "\n";
-  t << "wind_direction_deg = " << tomlNumber(s.windFromDeg) << "\n";
-  t << "wind_layers = [";
-  for (std::size_t i = 0; i < s.windLayers.size(); ++i)
-    t << (i ? ", " : "") << tomlString(s.windLayers[i]);
-  t << "]\n";
-  if (!s.elevationLayer.empty()) t << "elevation_layer = " << tomlString(s.elevationLayer) << "\n";
+  t << sceneToml(path.scene, "scene.", false);
   if (path.fps || path.crf) {
     t << "\n[video]\n";
     if (path.fps) t << "fps = " << tomlNumber(*path.fps) << "\n";
@@ -580,11 +377,7 @@ void writeCameraPathToml(const fs::path& file, const CameraPath& path) {
       << "time_s = " << tomlNumber(k.timeS) << "\n"
       << "easing = " << tomlString(geo::easingName(k.easing)) << "\n";
   }
-  writeFileAtomically(file, [&](const fs::path& tmp) {
-    std::ofstream out(tmp);
-    out << t.str();
-    if (!out.flush()) throw InputError(file.string() + ": cannot write");
-  });
+  detail::writeTextFile(file, t.str());
 }
 
 }  // namespace og::io

@@ -1,19 +1,20 @@
 #pragma once
 // Camera path files for `oceanglobe record`: keyframes plus the scene they fly through.
 //
-//   [scene]           all optional; flags on the command line override them
-//   time = "2024-06-20T18:30:00Z"        # UTC of the first frame (the Sun moves with the clock), or
-//   sun_elevation_deg = 8                # the Sun's angles at the LAST keyframe's ground point
-//   sun_azimuth_deg = 270
-//   width = 1280                         # pixels, [1, 16384]
-//   height = 720
-//   exposure = 6
-//   samples = 4                          # per pixel: "auto", 1, 2, 4 or 8
-//   ocean_model = "bruneton"             # or "classic"
-//   wind_speed_ms = 7                    # [0, 50]
-//   wind_direction_deg = 270             # from (meteorological), clockwise from north
-//   wind_layers = ["winds.nc:UWND,VWND"]
-//   elevation_layer = "relief.nc:ROSE"
+//   [scene.sun]        all optional: the tables of a scene file (io/SceneFile.hpp, the keys,
+//   time = "2024-06-20T18:30:00Z"   units and ranges of io/SceneSchema.hpp) under [scene], all
+//                                   but [camera] (the keyframes give it); flags override them.
+//                                   time: UTC of the first frame (the Sun moves with the clock),
+//                                   or elevation_deg / azimuth_deg: the Sun's angles at the LAST
+//                                   keyframe's ground point
+//   [scene.image]      width = 1280, height = 720, exposure = 6, samples = 4 ("auto", 1, 2, 4, 8)
+//   [scene.ocean]      model = "bruneton", wind_speed_ms = 7, wind_from_deg = 270, time_s, seed
+//   [scene.layers]     wind = ["winds.nc:UWND,VWND"], elevation = "relief.nc:ROSE"
+//   [scene.gl]         backend = "auto"
+//   [scene.atmosphere] as in a scene file
+//   Older path files put flat keys in [scene]; they are still read: time, sun_elevation_deg,
+//   sun_azimuth_deg, width, height, exposure, samples, ocean_model, wind_speed_ms,
+//   wind_direction_deg (from), wind_layers, elevation_layer.
 //
 //   [video]
 //   fps = 30                             # frames per second, (0, 240]
@@ -50,7 +51,8 @@
 //   degrees = 360                        # how far round, negative = anticlockwise (default 360)
 //   duration_s = 30                      # fov_deg, roll_deg, easing (of the start and end)
 //
-// The same structure in JSON (.json: {"scene": {...}, "video": {...}, "keyframe": [{...}]})
+// The same structure in JSON (.json: {"scene": {"image": {...}, ...}, "video": {...},
+// "keyframe": [{...}]})
 // is read and written too. Heights are only checked against -500 m here: the check against
 // the terrain under the path needs the elevation layer and is left to the renderer.
 #include <filesystem>
@@ -96,7 +98,8 @@ CameraPath readCameraPathText(const std::string& text, const std::filesystem::pa
 /// writes before the keyframes).
 std::string pathSettingsToml(const CameraPath& path);
 
-/// Writes a path as JSON (all keys explicit, keyframe times as time_s), atomically.
+/// Writes a path as JSON (all keys explicit, keyframe times as time_s; the scene by the scene
+/// schema, nothing of it dropped), atomically.
 void writeCameraPathJson(const std::filesystem::path& file, const CameraPath& path);
 
 /// Writes a path as TOML in the form readCameraPath reads (all keys explicit, keyframe times

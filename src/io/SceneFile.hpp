@@ -1,11 +1,12 @@
 #pragma once
-// Scene settings shared by render (and later record/view), and their TOML file form.
+// Scene settings shared by render, record, view and bench, and their file form (TOML, or JSON
+// by extension; the keys, units and ranges are those of the scene schema, io/SceneSchema.hpp):
 //
 //   [camera]  latitude_deg, longitude_deg, height_m, heading_deg, pitch_deg, roll_deg, fov_deg
 //   [sun]     time = "2024-06-20T12:00:00Z"  |  elevation_deg, azimuth_deg
 //   [image]   width, height, exposure, samples (per pixel: "auto", 1, 2, 4 or 8)
-//   [ocean]   model = "bruneton" | "classic", wind_speed_ms, wind_direction_deg (from, meteorological),
-//             time_s (wave clock), seed
+//   [ocean]   model = "bruneton" | "classic", wind_speed_ms, wind_from_deg (where it comes from,
+//             meteorological; older name wind_direction_deg), time_s (wave clock), seed
 //   [layers]  wind = ["FILE[:U,V]", ...] (first is the bottom of the stack), elevation = "FILE[:VAR]"
 //   [gl]      backend = "auto" | "egl" | "osmesa"
 //   [atmosphere] solar_irradiance, rayleigh_scattering, mie_scattering, mie_extinction,
@@ -22,6 +23,7 @@
 #include "atmosphere/Parameters.hpp"
 #include "core/Time.hpp"
 #include "geo/Camera.hpp"
+#include "geo/Wind.hpp"
 
 namespace og::io {
 
@@ -40,6 +42,8 @@ struct SceneSettings {
   /// Where the wind comes from, degrees clockwise from north (meteorological: 270 = a westerly,
   /// blowing towards the east).
   double windFromDeg = 270.0;
+  /// The constant wind (speed, and the direction it blows towards) of windSpeedMs/windFromDeg.
+  [[nodiscard]] geo::Wind wind() const { return geo::Wind::blowingFrom(windSpeedMs, windFromDeg); }
   std::vector<std::string> windLayers;    ///< "FILE[:U,V]" specs, bottom of the stack first
   std::string elevationLayer;             ///< "FILE[:VAR]", empty = embedded default
   double simulationTimeS = 0.0;           ///< wave clock at the image (record: at frame 0), s
@@ -47,11 +51,19 @@ struct SceneSettings {
   atmosphere::Parameters atmosphere;      ///< [atmosphere]: Earth defaults
 };
 
-/// Reads a scene file over `base` (keys absent from the file keep base's values).
-/// Throws og::InputError "FILE:LINE: problem" for unknown keys, wrong types, bad values.
+/// Reads a scene file (TOML, or JSON by extension) over `base` (keys absent from the file keep
+/// base's values). Throws og::InputError "FILE:LINE: problem" for unknown keys, wrong types,
+/// bad values.
 SceneSettings readSceneFile(const std::filesystem::path& file, SceneSettings base);
 
-/// Throws og::InputError naming the first invalid setting (`origin` prefixes the message).
+/// Writes every setting (optional ones when given; [atmosphere] where it differs from Earth's
+/// defaults) as TOML, or JSON by extension, atomically: readSceneFile gives the same settings
+/// back. Throws og::InputError when the file cannot be written.
+void writeSceneFile(const std::filesystem::path& file, const SceneSettings& scene);
+
+/// Throws og::InputError naming the first invalid setting (`origin` prefixes the message):
+/// each setting against its range in the scene schema, the pose, the Sun given once, the
+/// atmosphere as a whole.
 void validateScene(const SceneSettings& scene, const std::string& origin);
 
 }  // namespace og::io

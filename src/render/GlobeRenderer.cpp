@@ -8,6 +8,7 @@
 
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "gl/DriverProfile.hpp"
 #include "gl/Readback.hpp"
 #include "render/WaterVolume.hpp"
 
@@ -76,7 +77,7 @@ void GlobeRenderer::ensureTargets(int width, int height, int requested, bool aux
     return;
   if (!isValidSampleCount(requested))
     throw InternalError("FrameInput::samples must be 0 (auto), 1, 2, 4 or 8, not " + std::to_string(requested));
-  const int wanted = requested == kAutoSamples ? (gl::isSoftwareRenderer() ? 1 : 4) : requested;
+  const int wanted = requested == kAutoSamples ? gl::driverProfile().autoSamples : requested;
   const int samples = std::min(wanted, maxSamples_);
   if (samples < wanted && warnedSamples_ != requested) {
     log::warn(std::to_string(wanted) + " samples per pixel asked for, but this OpenGL device "
@@ -138,8 +139,8 @@ void GlobeRenderer::render(const FrameInput& f) {
   if (timer_ != nullptr) timer_->beginFrame();
   // The waves hold the strongest wind of the scene; every point scales and turns them to its
   // own wind (ocean/patterns.glsl).
-  wind_->setConstantWind(f.windSpeedMs, f.windDirectionDeg);
-  patternsFor(std::max(f.windSpeedMs, wind_->maxLayerSpeedMs()), f.waveSeed);
+  wind_->setConstantWind(f.wind);
+  patternsFor(std::max(f.wind.speedMs, wind_->maxLayerSpeedMs()), f.waveSeed);
   const bool grid = view.position.heightM < kOceanGridMaxHeightM;
 
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);

@@ -10,10 +10,12 @@
 #include "atmosphere/Parameters.hpp"
 #include "data/LatLonGrid.hpp"
 #include "geo/Camera.hpp"
+#include "geo/Wind.hpp"
 #include "gl/Objects.hpp"
 #include "gl/PassTimer.hpp"
 #include "gl/Shader.hpp"
 #include "io/Image.hpp"
+#include "io/SceneSchema.hpp"
 #include "ocean/OceanFrame.hpp"
 #include "render/Atmosphere.hpp"
 #include "render/OceanPatterns.hpp"
@@ -25,7 +27,7 @@ namespace og::render {
 
 /// FrameInput::samples: 4 on a GPU; 1 on a software renderer (llvmpipe shades every fragment
 /// of a multisampled target, hidden ones too: 4 samples cost it 1.3-2x per frame).
-inline constexpr int kAutoSamples = 0;
+inline constexpr int kAutoSamples = io::kAutoSamples;
 
 struct FrameInput {
   geo::CameraPose camera;
@@ -38,10 +40,9 @@ struct FrameInput {
   int height = 256;
   double simulationTimeS = 0.0;  ///< seconds since the start of the sequence (wave animation)
   OceanModel oceanModel = OceanModel::Bruneton;
-  /// The 10 m wind, [0, 50] m/s, and the direction it blows towards (clockwise from north),
-  /// everywhere unless GlobeRenderer::setWindLayers gave local winds.
-  double windSpeedMs = 7.0;
-  double windDirectionDeg = 90.0;
+  /// The 10 m wind, [0, 50] m/s, everywhere unless GlobeRenderer::setWindLayers gave local
+  /// winds (the fallback of render::WindTextures).
+  geo::Wind wind;
   /// The ocean frame carried from earlier frames (waves fixed to the Earth while the camera
   /// moves); nullptr starts a fresh frame under the camera.
   const ocean::OceanFrame* oceanFrame = nullptr;
@@ -56,10 +57,8 @@ struct FrameInput {
   bool auxiliaryOutputs = false;
 };
 
-/// The sample counts FrameInput::samples accepts.
-[[nodiscard]] constexpr bool isValidSampleCount(int n) {
-  return n == kAutoSamples || n == 1 || n == 2 || n == 4 || n == 8;
-}
+/// The sample counts FrameInput::samples accepts (the scene schema's list).
+using io::isValidSampleCount;
 
 /// Below this camera height the sea is the projected grid with waves; above, the ellipsoid with
 /// the BRDF of the whole slope distribution. The grid's waves fade out towards it

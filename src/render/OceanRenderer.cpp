@@ -68,12 +68,15 @@ std::vector<std::string> skyDefines(const Atmosphere* atmosphere) {
   return atmosphere ? std::vector<std::string>{} : std::vector<std::string>{"OCEAN_SIMPLE_SKY"};
 }
 
-// The validation variants' defines (shaders/ocean/patterns.glsl, lighting.glsl, ocean.frag).
+// The validation variants' defines (shaders/ocean/patterns.glsl, lighting.glsl, ocean.frag);
+// OCEAN_LIGHTING_TERMS: the terms' weights uLightingTerms (lighting.glsl).
 std::vector<std::string> oceanDefines(const Atmosphere* atmosphere, ValidationMode mode) {
   std::vector<std::string> d = skyDefines(atmosphere);
   for (const std::string& define : OceanPatterns::shaderDefines()) d.push_back(define);
+  d.emplace_back("OCEAN_LIGHTING_TERMS");
   if (mode == ValidationMode::Reference) d.emplace_back("OCEAN_VALIDATION_REFERENCE");
-  if (mode == ValidationMode::ConstantBrdf) d.emplace_back("OCEAN_VALIDATION_CONSTANT");
+  if (mode == ValidationMode::ConstantBrdf) d.emplace_back("OCEAN_VALIDATION_CONSTANT_BRDF");
+  if (mode == ValidationMode::BrdfOnly) d.emplace_back("OCEAN_VALIDATION_BRDF_ONLY");
   return d;
 }
 }  // namespace
@@ -182,6 +185,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
   } else {
     patterns.bind();
     patterns.setUniforms(p, &frame, amplitudeScale);
+    p.set("uLightingTerms", lightingTerms_);
     wind.bind(p);
   }
   p.use();

@@ -37,7 +37,9 @@ enum class OceanModel {
 enum class ValidationMode {
   Filtered,      ///< the normal model (geometry, normals and BRDF by footprint)
   Reference,     ///< every pattern at full resolution, mirror reflection: supersample it
-  ConstantBrdf,  ///< flat sea, the whole slope variance in the BRDF ("BRDF only")
+  ConstantBrdf,  ///< the paper's baseline: filtered geometry and normals, the BRDF held at the
+                 ///< unresolved tail's variance at every distance
+  BrdfOnly,      ///< flat sea, the whole slope variance in the BRDF
 };
 
 class OceanRenderer {
@@ -55,6 +57,9 @@ class OceanRenderer {
     elevationWraps_ = wraps;
   }
 
+  /// Weights of the Bruneton model's lighting terms (Sun, sky, refracted light, whitecaps), 1
+  /// each by default; `validate` renders them one at a time (paper §7.2).
+  void setLightingTerms(const glm::vec4& weights) { lightingTerms_ = weights; }
   /// Grid cell size in pixels (the paper's ~8 px); smaller = finer geometry, slower.
   void setCellPixels(int pixels) { cellPixels_ = pixels; }
 
@@ -81,6 +86,7 @@ class OceanRenderer {
   int gridColumns_ = 0, gridRows_ = 0;
   int indexCount_ = 0;
   int cellPixels_ = 8;
+  glm::vec4 lightingTerms_{1.0f};
   glm::vec4 elevationMap_{0.0f};
   glm::vec2 elevationSize_{0.0f};
   int elevationWraps_ = 0;

@@ -7,22 +7,32 @@
 
 namespace og::render {
 
-WindTextures::WindTextures() {
-  // A 1x1 calm texture keeps the sampler valid before any layer is set.
-  wind_ = gl::createTexture(GL_TEXTURE_2D);
-  glTextureStorage2D(wind_.id(), 1, GL_RG32F, 1, 1);
-  const float zero[2] = {0.0f, 0.0f};
-  glTextureSubImage2D(wind_.id(), 0, 0, 0, 1, 1, GL_RG, GL_FLOAT, zero);
-}
+WindTextures::WindTextures() { setConstantWind(constant_); }
 
 void WindTextures::setLayers(std::shared_ptr<const data::WindLayers> layers, int width, int height) {
   layers_ = std::move(layers);
   maxSpeedMs_ = 0.0;
-  if (!layers_) return;
+  constantUploaded_ = false;
+  if (!layers_) {
+    setConstantWind(constant_);
+    return;
+  }
   const data::WindRaster raster = layers_->rasterize(width, height);
-  maxSpeedMs_ = 0.0;
   for (std::size_t i = 0; i + 1 < raster.uv.size(); i += 2)
     maxSpeedMs_ = std::max(maxSpeedMs_, static_cast<double>(std::hypot(raster.uv[i], raster.uv[i + 1])));
+  upload(raster);
+}
+
+void WindTextures::setConstantWind(const geo::Wind& wind) {
+  const bool same = constantUploaded_ && wind.speedMs == constant_.speedMs && wind.towardsDeg == constant_.towardsDeg;
+  constant_ = wind;
+  if (layers_ || same) return;
+  // One cell: a stack with no layers is its fallback everywhere.
+  upload(data::WindLayers(wind.vector()).rasterize(1, 1));
+  constantUploaded_ = true;
+}
+
+void WindTextures::upload(const data::WindRaster& raster) {
   wind_ = gl::createTexture(GL_TEXTURE_2D);
   glTextureStorage2D(wind_.id(), 1, GL_RG32F, raster.width, raster.height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
@@ -35,11 +45,6 @@ void WindTextures::setLayers(std::shared_ptr<const data::WindLayers> layers, int
   glTextureParameteri(wind_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
-void WindTextures::bind(const gl::Program& program) const {
-  glBindTextureUnit(1, wind_.id());
-  program.set("uLocalWind", layers_ ? 1 : 0);
-  program.set("uConstantWind", glm::vec2(static_cast<float>(constantSpeedMs_),
-                                         static_cast<float>(constantTowardsDeg_ * std::numbers::pi / 180.0)));
-}
+void WindTextures::bind(const gl::Program&) const { glBindTextureUnit(1, wind_.id()); }
 
 }  // namespace og::render

@@ -1,7 +1,9 @@
 #pragma once
-// The wind on the GPU (shaders/ocean/wind.glsl): the data layers rasterised to a global
+// The wind on the GPU (shaders/ocean/wind.glsl): a data::WindLayers stack rasterised to a global
 // texture, so the sea's waves, roughness and whitecaps follow the local wind everywhere on the
-// globe (the per-wind tables of the waves are render/OceanPatterns').
+// globe (the per-wind tables of the waves are render/OceanPatterns'). The texture is the
+// shaders' only wind: without layers it holds the constant wind (a stack with no layers, whose
+// fallback is that wind), so there is no separate constant-wind path.
 #include <memory>
 
 #include "data/WindLayers.hpp"
@@ -12,7 +14,7 @@ namespace og::render {
 
 class WindTextures {
  public:
-  /// Needs a current GL context. Starts with a constant wind (no layers).
+  /// Needs a current GL context. Starts with the constant default wind (no layers).
   WindTextures();
 
   /// Local winds from data layers (nullptr: the constant wind of each frame). Rasterised to a
@@ -24,23 +26,21 @@ class WindTextures {
   /// The strongest wind of the layers, m/s (0 without layers): the waves must hold it.
   [[nodiscard]] double maxLayerSpeedMs() const { return maxSpeedMs_; }
 
-  /// The wind where there are no layers: speed m/s, direction it blows towards, degrees
-  /// clockwise from north.
-  void setConstantWind(double speedMs, double towardsDeg) {
-    constantSpeedMs_ = speedMs;
-    constantTowardsDeg_ = towardsDeg;
-  }
-  [[nodiscard]] double constantSpeedMs() const { return constantSpeedMs_; }
+  /// The wind everywhere while no layers are set (the layers carry their own fallback).
+  void setConstantWind(const geo::Wind& wind);
+  [[nodiscard]] double constantSpeedMs() const { return constant_.speedMs; }
 
-  /// Binds the texture (unit 1) and sets the uniforms of wind.glsl on `program`.
+  /// Binds the texture to its unit (wind.glsl's uWind).
   void bind(const gl::Program& program) const;
 
  private:
+  void upload(const data::WindRaster& raster);
+
   std::shared_ptr<const data::WindLayers> layers_;
   gl::Texture wind_;
   double maxSpeedMs_ = 0.0;
-  double constantSpeedMs_ = 7.0;
-  double constantTowardsDeg_ = 90.0;
+  geo::Wind constant_;
+  bool constantUploaded_ = false;  ///< wind_ holds constant_ (no layers)
 };
 
 }  // namespace og::render

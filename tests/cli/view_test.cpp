@@ -1,6 +1,6 @@
 // CLI tier: `oceanglobe view` in a real window on a private Xvfb server (llvmpipe), driven by
 // xdotool: the view moves when keys are held, P writes a screenshot (PNG + EXR), K appends the
-// view to a path file `record` accepts, Esc exits 0. Skipped where Xvfb or xdotool is missing
+// view to a path file `record` accepts (with the whole scene: --seed, --t), Esc exits 0. Skipped where Xvfb or xdotool is missing
 // (scripts/install-deps.sh installs both).
 #include <gtest/gtest.h>
 
@@ -137,7 +137,7 @@ TEST(View, FliesTakesScreenshotsWritesKeyframesAndQuitsOnEscape) {
   // Looking straight down from 2000 km: holding W descends towards the sea.
   Child viewer;
   viewer.pid = spawn(std::string(OG_BINARY) + " view --width 320 --height 180 --lat 36 --lon -9 "
-                     "--alt 2000000 --time 2024-06-20T15:00Z --screenshot-dir " + dir.string() +
+                     "--alt 2000000 --time 2024-06-20T15:00Z --seed 7 --t 2.5 --screenshot-dir " + dir.string() +
                      " --keyframes " + flight.string() + " >" + (dir / "view.stdout").string() +
                      " 2>" + (dir / "view.stderr").string());
   const std::string window = capture("timeout 30 xdotool search --sync --name 'oceanglobe view' | head -1");
@@ -170,6 +170,9 @@ TEST(View, FliesTakesScreenshotsWritesKeyframesAndQuitsOnEscape) {
   ASSERT_EQ(path.keyframes.size(), 2u);
   EXPECT_LT(path.keyframes[1].pose.position.heightM, 0.9 * path.keyframes[0].pose.position.heightM);
   EXPECT_GT(path.keyframes[1].timeS, path.keyframes[0].timeS);
+  // The viewer's scene is the one given (view --seed, --t), and K writes all of it.
+  EXPECT_EQ(path.scene.waveSeed, 7u);
+  EXPECT_EQ(path.scene.simulationTimeS, 2.5);
 
   send("key --window " + window + " Escape");
   EXPECT_EQ(viewer.waitExit(20s), 0) << "view did not exit 0 on Esc";

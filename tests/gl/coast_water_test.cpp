@@ -42,8 +42,8 @@ render::FrameInput downView(double heightM, double timeS) {
   f.camera.verticalFovDeg = 30.0;
   f.width = kW;
   f.height = kH;
-  f.windSpeedMs = 5.0;
-  f.windDirectionDeg = 45.0;
+  f.wind.speedMs = 5.0;
+  f.wind.towardsDeg = 45.0;
   f.simulationTimeS = timeS;
   // Sun 55° up in the south: its glint lies ~35° off the vertical, outside the 30° view.
   f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 55.0, 180.0);
@@ -166,7 +166,7 @@ glm::dvec3 orbitColour(render::GlobeRenderer& r, double lat, double lon, const s
   f.camera.verticalFovDeg = 10.0;
   f.width = 96;
   f.height = 96;
-  f.windSpeedMs = 5.0;
+  f.wind.speedMs = 5.0;
   f.sunDirectionEcef = geo::sunDirectionFromHorizontal({lat, lon, 0.0}, 60.0, 135.0);
   r.render(f);
   save(r, name);
@@ -233,7 +233,7 @@ TEST(CoastWater, RadianceIsFiniteAtTheShore) {
           f.camera.headingDeg = 10.0;  // towards the land
           f.width = 32;
           f.height = 18;
-          f.windSpeedMs = 8.0;
+          f.wind.speedMs = 8.0;
           f.simulationTimeS = 2.3;
           f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, sun, 200.0);
           r.render(f);
@@ -261,8 +261,8 @@ TEST(CoastWater, SwitchAtTwentyKilometresIsInvisibleOverABank) {
     f.camera.verticalFovDeg = 60;
     f.width = 192;
     f.height = 108;
-    f.windSpeedMs = 9.0;
-    f.windDirectionDeg = 60.0;
+    f.wind.speedMs = 9.0;
+    f.wind.towardsDeg = 60.0;
     f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 30, 100);
     return f;
   };

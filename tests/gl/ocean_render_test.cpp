@@ -33,7 +33,7 @@ class OceanFixture : public ::testing::Test {
     p.referenceWindMs = 8.0;
     patterns_ = std::make_unique<render::OceanPatterns>(
         std::make_shared<const ocean::WavePatterns>(ocean::makeWavePatterns(p)));
-    wind_->setConstantWind(8.0, 250.0);
+    wind_->setConstantWind(og::geo::Wind::blowingTowards(8.0, 250.0));
   }
 
   // Linear radiance, RGBA, top row first.

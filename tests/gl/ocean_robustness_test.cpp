@@ -29,7 +29,7 @@ TEST(OceanRobustness, RadianceIsFiniteEverywhere) {
           f.camera.headingDeg = 30.0;
           f.width = 32;
           f.height = 18;
-          f.windSpeedMs = wind;
+          f.wind.speedMs = wind;
           f.simulationTimeS = 3.7;
           f.sunDirectionEcef = geo::sunDirectionFromHorizontal(where, sunElevation, 40.0);
           r.render(f);
@@ -56,7 +56,7 @@ TEST(OceanRobustness, OrbitGlintIsBrighterAndTighterInLightWind) {
     f.camera.verticalFovDeg = 40;
     f.width = 121;
     f.height = 61;
-    f.windSpeedMs = winds[k];
+    f.wind.speedMs = winds[k];
     f.sunDirectionEcef = geo::sunDirectionFromHorizontal({0.0, -30.0, 0.0}, 90.0, 0.0);
     r.render(f);
     const io::ImageRgbaF img = r.radiance();

@@ -121,7 +121,7 @@ TEST(OceanSeaState, WhitecapCoverageIsTheSameNearAndFromOrbit) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(data::defaultElevation());
   render::FrameInput far = straightDown(0.0, -140.0, 1.5e6, 96);
-  far.windSpeedMs = 13.0;
+  far.wind.speedMs = 13.0;
   far.camera.verticalFovDeg = 10;  // open Pacific only
   r.render(far);
   const double orbit = mean(r.whitecap());
@@ -129,7 +129,7 @@ TEST(OceanSeaState, WhitecapCoverageIsTheSameNearAndFromOrbit) {
   int patches = 0;
   for (int i = 0; i < 16; ++i) {
     render::FrameInput near = straightDown(0.0 + 0.02 * i, -140.0 + 0.013 * i, 200.0, 128);
-    near.windSpeedMs = 13.0;
+    near.wind.speedMs = 13.0;
     near.simulationTimeS = 7.3 * i;
     near.camera.verticalFovDeg = 90;
     r.render(near);
@@ -142,7 +142,7 @@ TEST(OceanSeaState, WhitecapCoverageIsTheSameNearAndFromOrbit) {
   EXPECT_LT(orbit, 0.06);
   EXPECT_NEAR(nearMean / orbit, 1.0, 0.35);
   // Calm: no whitecaps anywhere.
-  far.windSpeedMs = 3.0;
+  far.wind.speedMs = 3.0;
   r.render(far);
   EXPECT_LT(mean(r.whitecap()), 0.002);
 }

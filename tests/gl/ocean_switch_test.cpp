@@ -19,8 +19,8 @@ render::FrameInput view(double heightM) {
   f.camera.verticalFovDeg = 60;
   f.width = 192;
   f.height = 108;
-  f.windSpeedMs = 9.0;
-  f.windDirectionDeg = 60.0;
+  f.wind.speedMs = 9.0;
+  f.wind.towardsDeg = 60.0;
   f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 30, 100);
   return f;
 }
@@ -48,7 +48,7 @@ TEST(OceanSwitch, GridDrawsWavesBelowAndFadesThemOut) {
   r.render(low);
   const io::ImageRgba8 waves = r.display();
   low.oceanCellPixels = 8;
-  low.windSpeedMs = 0.0;  // ...which a calm sea (no resolved waves) approaches.
+  low.wind.speedMs = 0.0;  // ...which a calm sea (no resolved waves) approaches.
   r.render(low);
   const io::ImageRgba8 calm = r.display();
   EXPECT_GT(test::compareRgb(waves, calm, 2).meanDiff, 1.0);

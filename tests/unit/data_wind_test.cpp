@@ -394,10 +394,10 @@ TEST(DataWind, GribGarbageTruncatedAndHostileLengthsAreRefused) {
 // Layer stack
 
 TEST(DataWindLayers, FallbackAndSpeedDirection) {
-  const WindVector east = og::data::windFromSpeedDirection(10.0, 90.0);
+  const WindVector east = og::geo::Wind::blowingTowards(10.0, 90.0).vector();
   EXPECT_NEAR(east.uMs, 10.0, 1e-12);
   EXPECT_NEAR(east.vMs, 0.0, 1e-12);
-  const WindVector north = og::data::windFromSpeedDirection(4.0, 0.0);
+  const WindVector north = og::geo::Wind::blowingTowards(4.0, 0.0).vector();
   EXPECT_NEAR(north.vMs, 4.0, 1e-12);
   const WindLayers none(east);
   EXPECT_DOUBLE_EQ(none.sample(12.0, 34.0).uMs, 10.0);

@@ -1,0 +1,33 @@
+#pragma once
+// What differs between GL drivers, decided once per context from the driver itself and read
+// everywhere else: no other folder compares renderer names. The measurements behind each
+// choice: docs/architecture.md, "Driver profile".
+#include <string_view>
+
+namespace og::gl {
+
+struct DriverProfile {
+  /// Renders on the CPU (Mesa's llvmpipe, softpipe, swrast; lavapipe).
+  bool software = false;
+  /// Samples per pixel that "auto" means: 1 on a software renderer (it shades every fragment
+  /// of a multisampled target, hidden ones too: 4 samples cost 1.3-2x a frame), else 4.
+  int autoSamples = 4;
+  /// The anisotropy samplers may ask for: 1 on a software renderer (llvmpipe's anisotropic
+  /// filtering is ~20x slower and wrong), else what the device offers.
+  float maxAnisotropy = 1.0f;
+  /// GL timestamp queries time the work (a GPU); on a software renderer they mark when commands
+  /// were queued, so pass timers finish (glFinish) at each mark instead.
+  bool timestampsTimeWork = true;
+};
+
+/// Whether a GL_RENDERER string names a software renderer: the one list of their names.
+[[nodiscard]] bool isSoftwareRendererName(std::string_view renderer);
+
+/// The profile of a driver from its GL_RENDERER string and its largest anisotropy.
+[[nodiscard]] DriverProfile makeDriverProfile(std::string_view renderer, float deviceMaxAnisotropy);
+
+/// The profile of the current context (built when it was made; see Context::info()). Throws
+/// og::InternalError when no context of ours is current.
+[[nodiscard]] const DriverProfile& driverProfile();
+
+}  // namespace og::gl
