@@ -162,7 +162,7 @@ class Viewer {
   [[nodiscard]] double pathTimeS() const { return flight_ ? playS_ : 0.0; }
   [[nodiscard]] std::optional<UtcTime> currentTime() const {
     if (!baseTime_) return std::nullopt;
-    return UtcTime{baseTime_->unixSeconds + timeOffsetS_ + pathTimeS()};
+    return UtcTime{baseTime_->unixSeconds + timeOffsetS_ + pathTimeS() * scene_.timeLapse};
   }
   [[nodiscard]] glm::dvec3 sunDirection() const {
     if (const auto t = currentTime()) return geo::sunEphemeris(*t).directionEcef;
@@ -174,7 +174,10 @@ class Viewer {
   }
   [[nodiscard]] data::WindVector windHere() const {
     const auto& g = controller_.pose().position;
-    return layersOn_ ? wind_.sample(g.latitudeDeg, g.longitudeDeg) : wind_.fallback();
+    if (!layersOn_) return wind_.fallback();
+    const auto t = currentTime();  // layers with a time axis follow the clock
+    return t && wind_.timeVarying() ? wind_.at(*t).sample(g.latitudeDeg, g.longitudeDeg)
+                                    : wind_.sample(g.latitudeDeg, g.longitudeDeg);
   }
 
   // --- input ----------------------------------------------------------------------------
@@ -371,6 +374,7 @@ class Viewer {
     frame.height = height;
     frame.samples = scene_.samples;
     frame.simulationTimeS = wallS_;
+    frame.utcTime = currentTime();
     frame.oceanModel = oceanModel_;
     frame.windSpeedMs = std::clamp(std::hypot(wind.uMs, wind.vMs), 0.0, 50.0);
     frame.windDirectionDeg = std::atan2(wind.uMs, wind.vMs) * 180.0 / kPi;

@@ -120,6 +120,7 @@ void readScene(const fs::path& file, const toml::table& t, SceneSettings& s) {
        }},
       {"elevation_layer",
        [&](const toml::node& n, const std::string& k) { s.elevationLayer = text(file, n, k); }},
+      {"time_lapse", num(s.timeLapse)},
   };
   applyKeys(file, t, "[scene]", schema);
   try {
@@ -470,6 +471,7 @@ void writeCameraPathJson(const fs::path& file, const CameraPath& path) {
   if (s.sunElevationDeg) scene["sun_elevation_deg"] = *s.sunElevationDeg;
   if (s.sunAzimuthDeg) scene["sun_azimuth_deg"] = *s.sunAzimuthDeg;
   if (!s.elevationLayer.empty()) scene["elevation_layer"] = s.elevationLayer;
+  if (s.timeLapse != 1.0) scene["time_lapse"] = s.timeLapse;
   nlohmann::json root = {{"scene", scene}};
   nlohmann::json video = nlohmann::json::object();
   if (path.fps) video["fps"] = *path.fps;
@@ -544,6 +546,7 @@ std::string pathSettingsToml(const CameraPath& path) {
     t << (i ? ", " : "") << tomlString(s.windLayers[i]);
   t << "]\n";
   if (!s.elevationLayer.empty()) t << "elevation_layer = " << tomlString(s.elevationLayer) << "\n";
+  if (s.timeLapse != 1.0) t << "time_lapse = " << tomlNumber(s.timeLapse) << "\n";
   if (path.fps || path.crf) {
     t << "\n[video]\n";
     if (path.fps) t << "fps = " << tomlNumber(*path.fps) << "\n";

@@ -14,6 +14,8 @@
 //   wind_direction_deg = 270             # from (meteorological), clockwise from north
 //   wind_layers = ["winds.nc:UWND,VWND"]
 //   elevation_layer = "relief.nc:ROSE"
+//   time_lapse = 1080                    # UTC seconds per second of path (default 1): the Sun
+//                                        #   and timed wind layers; the waves keep real time
 //
 //   [video]
 //   fps = 30                             # frames per second, (0, 240]

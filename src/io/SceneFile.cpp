@@ -201,6 +201,8 @@ void validateScene(const SceneSettings& s, const std::string& origin) {
     throw InputError(prefix + "[atmosphere]: " + *problem);
   if (!std::isfinite(s.simulationTimeS) || std::abs(s.simulationTimeS) > 1e9)
     throw InputError(prefix + "simulation time must be a finite number of seconds within [-1e9, 1e9]");
+  if (!std::isfinite(s.timeLapse) || s.timeLapse < 0.0 || s.timeLapse > 1e6)
+    throw InputError(prefix + "time lapse must be within [0, 1e6] UTC seconds per second");
   if (s.glBackend != "auto" && s.glBackend != "egl" && s.glBackend != "osmesa")
     throw InputError(prefix + "GL backend must be auto, egl or osmesa, not '" + s.glBackend + "'");
 }
