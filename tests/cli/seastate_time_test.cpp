@@ -117,3 +117,27 @@ TEST(SeaStateTime, AovChannelsWhitecapAndDepth) {
   const auto bad = run("render" + view + " --aov normals -o " + (dir / "y.exr").string(), "bad");
   EXPECT_EQ(bad.exitCode, 2) << bad.err;
 }
+
+TEST(SeaStateTime, UnsupportedCalendarExitsTwoNamingFileAndAxis) {
+  const fs::path dir = og::test::scratchDir("seastate_time");
+  const fs::path file = dir / "lunar.nc";
+  {
+    og::test::NcWriter nc(file, NC_NETCDF4);
+    const auto [td, tv] = nc.axis("time", {0.0, 1.0}, "days since 2024-01-01");
+    nc.text(tv, "calendar", "lunar");
+    const auto [latD, latV] = nc.axis("lat", og::test::steps(-90.0, 30.0, 7), "degrees_north");
+    const auto [lonD, lonV] = nc.axis("lon", og::test::steps(0.0, 30.0, 12), "degrees_east");
+    for (const char* n : {"uwnd", "vwnd"}) {
+      const int v = nc.var(n, NC_FLOAT, {td, latD, lonD});
+      nc.text(v, "units", "m/s");
+      nc.values(v, std::vector<double>(2 * 7 * 12, 5.0));
+    }
+    nc.close();
+  }
+  const auto r = run("render --width 16 --height 16 --wind-layer " + file.string() + " -o " +
+                     (dir / "x.png").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find(file.string() + ": time axis 'time' uses calendar 'lunar', which is not supported"),
+            std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "x.png"));
+}
