@@ -2,6 +2,8 @@
 // layers' steps or quantised weights change, and the frame's UTC time drives the sea's wind.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <vector>
 
@@ -82,4 +84,24 @@ TEST(OceanWindTime, TextureFollowsTheFrameTimeAndUploadsOnlyOnAChange) {
   EXPECT_GT(storm, 0.02);
   EXPECT_GT(half, calm);
   EXPECT_LT(half, storm);
+}
+
+TEST(OceanWindTime, EveryChangeOfTheRoundedWeightUploadsOnce) {
+  auto ctx = gl::createHeadlessContext();
+  const UtcTime start = *UtcTime::parseIso8601("2024-06-20T00:00:00Z");
+  auto layers = std::make_shared<const data::WindLayers>(
+      data::WindLayers::load({writeTwoSteps().string()}, data::WindVector{}, start));
+  render::WindTextures wind;
+  wind.setLayers(layers);
+  // A 6-hour lapse in 20 s at 30 fps: 600 frames, 36 s of UTC each, over one pair of 6-hourly
+  // steps: the texture changes once per 216 s of UTC (every 6th frame), 100 times in all.
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int i = 1; i <= 600; ++i) wind.setTime(UtcTime{start.unixSeconds + i * 36.0});
+  glFinish();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(wind.uploads(), 1 + 100);
+  std::printf("600 frames of a 6 h time lapse: %d uploads of the 720x360 wind texture, %.1f ms per frame\n",
+              wind.uploads() - 1, 1000.0 * seconds / 600.0);
+  wind.setTime(std::nullopt);  // no time: the winds stay
+  EXPECT_EQ(wind.uploads(), 101);
 }
