@@ -75,6 +75,11 @@ TEST(SeaStateTime, RecordedWindFollowsTheClockWithTimeLapse) {
   EXPECT_GT(storm, 0.02);          // 20 m/s: Monahan's ~10 %
   EXPECT_GT(half, calm);           // 11.5 m/s at 01:00: some
   EXPECT_LT(half, storm);
+  // --aov needs EXR frames: an MP4 exits 2 before rendering anything.
+  const auto mp4 = run("record " + path.string() + " --aov depth -o " + (dir / "v.mp4").string(), "mp4");
+  EXPECT_EQ(mp4.exitCode, 2);
+  EXPECT_NE(mp4.err.find("--aov needs an OpenEXR frame pattern"), std::string::npos) << mp4.err;
+  EXPECT_FALSE(fs::exists(dir / "v.mp4"));
   // Real time (time_lapse 1): 2 s later the wind has not changed.
   const fs::path realTime = writeStillPath(dir, layer, 1.0);
   ASSERT_EQ(run("record " + realTime.string() + " --frames 2:3 --aov whitecap -o " +
