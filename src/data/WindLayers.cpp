@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "core/Error.hpp"
+#include "core/Log.hpp"
 
 namespace og::data {
 
@@ -162,7 +163,13 @@ WindLayers WindLayers::load(const std::vector<std::string>& specs, WindVector fa
       continue;
     }
     std::shared_ptr<const WindSeries> series = WindSeries::open(spec);
-    if (series->axis().steps() > 1)
+    const FieldDescription& axis = series->axis();
+    if (time && !axis.climatology && axis.times.size() > 1 &&
+        (time->unixSeconds < axis.times.front().unixSeconds || time->unixSeconds > axis.times.back().unixSeconds))
+      log::warn(series->label() + ": " + time->toIso8601() + " is outside the file's time steps (" +
+                axis.times.front().toIso8601() + " to " + axis.times.back().toIso8601() +
+                "); the wind holds the nearest step until the clock reaches the file");
+    if (axis.steps() > 1)
       layers.push(std::move(series), time);
     else
       layers.push(series->readStep(0));
