@@ -218,3 +218,33 @@ TEST(DataWindLayers, ClimatologyLayerWrapsAtTheYearEnd) {
   EXPECT_LT(endOfYear, 8.0);
   EXPECT_NEAR(stack.at(iso("1987-07-16T00:00Z")).sample(0.0, 0.0).uMs, 7.0, 0.2);
 }
+
+TEST(DataCalendars, EveryCalendarLoadsFromANetcdfFile) {
+  // Steps one model day apart from 2000-03-01 (after any leap day, so every calendar's day 1
+  // is within a day of the real one); noon of the first day lies between the two winds.
+  for (const char* c : {"standard", "gregorian", "proleptic_gregorian", "julian", "noleap", "365_day",
+                        "all_leap", "366_day", "360_day", ""}) {
+    const fs::path file = writeUniformWind(og::test::fixtureDir("data_timeaxis") / (std::string("cal_") + c + ".nc"),
+                                           {0.0, 1.0}, "days since 2000-03-01", {4.0, 8.0}, c);
+    const auto grid = og::data::openGridFile(file);
+    const og::data::FieldDescription d = grid->describe("uwnd");
+    ASSERT_EQ(d.times.size(), 2u) << c;
+    EXPECT_FALSE(d.climatology) << c;
+    const double t0 = d.times[0].unixSeconds;
+    const double dayS = d.times[1].unixSeconds - t0;
+    EXPECT_NEAR(dayS, 86400.0, 86400.0 * 0.02) << c;  // model days are real days within 2 %
+    const auto w = og::data::readWind(*grid, {}, UtcTime{t0 + 0.5 * dayS});
+    EXPECT_NEAR(w.u.sample(0.0, 0.0), 6.0, 1e-4) << c;
+  }
+}
+
+TEST(DataClimatology, CfClimatologyAttributeMarksAnyYear) {
+  // CF 7.4: mid-January and mid-February of a 1961-1990 climatology, `climatology` attribute.
+  const fs::path file = writeUniformWind(og::test::fixtureDir("data_timeaxis") / "cf_clim.nc", {15.0, 45.0},
+                                         "days since 1961-01-01", {2.0, 10.0}, "", "climatology");
+  const auto grid = og::data::openGridFile(file);
+  EXPECT_TRUE(grid->describe("uwnd").climatology);
+  // 31 January of any year: halfway between the two steps, not clamped to 1961's last step.
+  for (const char* t : {"1975-01-31T00:00Z", "2024-01-31T00:00Z"})
+    EXPECT_NEAR(og::data::readWind(*grid, {}, iso(t)).u.sample(0.0, 0.0), 6.0, 0.3) << t;
+}
