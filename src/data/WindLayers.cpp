@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <thread>
 #include <utility>
 #include <numbers>
 
@@ -302,17 +303,26 @@ WindRaster WindLayers::rasterize(int width, int height) const {
   raster.width = width;
   raster.height = height;
   raster.uv.resize(2 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
-  for (int r = 0; r < height; ++r) {
-    const double lat = -90.0 + (r + 0.5) * 180.0 / height;
-    for (int c = 0; c < width; ++c) {
-      const double lon = -180.0 + (c + 0.5) * 360.0 / width;
-      const WindVector w = sample(lat, lon);
-      const std::size_t i =
-          2 * (static_cast<std::size_t>(r) * static_cast<std::size_t>(width) +
-               static_cast<std::size_t>(c));
-      raster.uv[i] = static_cast<float>(w.uMs);
-      raster.uv[i + 1] = static_cast<float>(w.vMs);
+  // Rows in parallel (sample() only reads): a timed layer re-rasterises while a recording runs.
+  const auto rows = [&](int first, int last) {
+    for (int r = first; r < last; ++r) {
+      const double lat = -90.0 + (r + 0.5) * 180.0 / height;
+      for (int c = 0; c < width; ++c) {
+        const double lon = -180.0 + (c + 0.5) * 360.0 / width;
+        const WindVector w = sample(lat, lon);
+        const std::size_t i =
+            2 * (static_cast<std::size_t>(r) * static_cast<std::size_t>(width) +
+                 static_cast<std::size_t>(c));
+        raster.uv[i] = static_cast<float>(w.uMs);
+        raster.uv[i + 1] = static_cast<float>(w.vMs);
+      }
     }
+  };
+  const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, std::min(8, height));
+  {
+    std::vector<std::jthread> pool;  // joined at the end of the scope, also on an exception
+    for (int t = 1; t < threads; ++t) pool.emplace_back(rows, height * t / threads, height * (t + 1) / threads);
+    rows(0, height / threads);
   }
   return raster;
 }
