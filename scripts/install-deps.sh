@@ -19,6 +19,8 @@ packages=(
   xvfb xdotool
   # real data: ETOPO relief/bathymetry and monthly winds (used by tests when present)
   ferret-datasets
+  # ncgen: builds the small wind file of the docs' time-lapse pictures from its CDL text
+  netcdf-bin
   # the Slurm test: a private single-node Slurm (slurmctld + slurmd) and its MUNGE daemon
   slurm-wlm munge
 )

@@ -39,6 +39,9 @@ void SceneOptions::add(CLI::App& cmd) {
   cmd.add_option("--ocean", flags_.oceanModel, "ocean model: bruneton (filtered) or classic");
   cmd.add_option("--t", flags_.simulationTimeS, "simulation time of the waves, seconds");
   cmd.add_option("--seed", flags_.waveSeed, "seed of the wave directions and phases");
+  cmd.add_option("--time-lapse", flags_.timeLapse,
+                 "record/view: UTC seconds per second of path, [0, 1e6] (default 1): the Sun and "
+                 "wind layers with a time axis follow this clock, the waves keep real time");
   cmd.add_option("--wind", wind_,
                  "wind where no layer covers: SPEED[,FROM] in m/s and the direction it comes from, "
                  "degrees clockwise from north (meteorological; default 7,270)");
@@ -69,6 +72,7 @@ io::SceneSettings SceneOptions::resolve(io::SceneSettings s) const {
   if (given("--ocean")) s.oceanModel = flags_.oceanModel;
   if (given("--t")) s.simulationTimeS = flags_.simulationTimeS;
   if (given("--seed")) s.waveSeed = flags_.waveSeed;
+  if (given("--time-lapse")) s.timeLapse = flags_.timeLapse;
   if (given("--wind-layer")) s.windLayers = flags_.windLayers;
   if (given("--elevation-layer")) s.elevationLayer = flags_.elevationLayer;
   if (given("--wind")) {
@@ -108,6 +112,7 @@ render::FrameInput frameInputOf(const io::SceneSettings& s) {
   frame.wind = s.wind();
   frame.simulationTimeS = s.simulationTimeS;
   frame.waveSeed = s.waveSeed;
+  frame.utcTime = s.time;  // layers with a time axis follow it
   return frame;
 }
 

@@ -149,7 +149,7 @@ class Viewer {
   [[nodiscard]] double pathTimeS() const { return flight_ ? playS_ : 0.0; }
   [[nodiscard]] std::optional<UtcTime> currentTime() const {
     if (!baseTime_) return std::nullopt;
-    return UtcTime{baseTime_->unixSeconds + timeOffsetS_ + pathTimeS()};
+    return UtcTime{baseTime_->unixSeconds + timeOffsetS_ + pathTimeS() * scene_.timeLapse};
   }
   [[nodiscard]] glm::dvec3 sunDirection() const {
     if (const auto t = currentTime()) return geo::sunEphemeris(*t).directionEcef;
@@ -162,7 +162,10 @@ class Viewer {
   // The wind under the camera (the layers', or the constant wind with L off).
   [[nodiscard]] geo::Wind windHere() const {
     const auto& g = controller_.pose().position;
-    return geo::Wind::ofVector(layersOn_ ? wind_.sample(g.latitudeDeg, g.longitudeDeg) : wind_.fallback());
+    if (!layersOn_) return geo::Wind::ofVector(wind_.fallback());
+    const auto t = currentTime();  // layers with a time axis follow the clock
+    return geo::Wind::ofVector(t && wind_.timeVarying() ? wind_.at(*t).sample(g.latitudeDeg, g.longitudeDeg)
+                                                        : wind_.sample(g.latitudeDeg, g.longitudeDeg));
   }
 
   // --- input ----------------------------------------------------------------------------
@@ -357,6 +360,7 @@ class Viewer {
     frame.width = width;
     frame.height = height;
     frame.simulationTimeS = scene_.simulationTimeS + wallS_;
+    frame.utcTime = currentTime();
     frame.oceanModel = oceanModel_;
     frame.wind = windHere();
     frame.wind.speedMs = std::min(frame.wind.speedMs, 50.0);

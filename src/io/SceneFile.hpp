@@ -47,6 +47,9 @@ struct SceneSettings {
   std::vector<std::string> windLayers;    ///< "FILE[:U,V]" specs, bottom of the stack first
   std::string elevationLayer;             ///< "FILE[:VAR]", empty = embedded default
   double simulationTimeS = 0.0;           ///< wave clock at the image (record: at frame 0), s
+  /// record/view: UTC seconds that pass per second of path (or of viewing), [0, 1e6]; the Sun
+  /// and the wind layers follow this clock, the waves keep real time. 1 = real time.
+  double timeLapse = 1.0;
   std::uint64_t waveSeed = 1;             ///< wave directions and phases are reproducible from it
   atmosphere::Parameters atmosphere;      ///< [atmosphere]: Earth defaults
 };

@@ -116,7 +116,19 @@ std::vector<SceneField> sunFields() {
   SceneField azimuth = ranged(
       optionalNumber("sun", "azimuth_deg", "deg", "Sun azimuth", &SceneSettings::sunAzimuthDeg), -720, 720);
   azimuth.legacyPathKey = "sun_azimuth_deg";
-  return {time, elevation, azimuth};
+  // record/view: UTC seconds per second of path; the Sun and timed wind layers follow this
+  // clock, the waves keep real time. Written only when not real time (1).
+  SceneField lapse = ranged(number("sun", "time_lapse", "", "time lapse", &SceneSettings::timeLapse), 0, 1e6);
+  lapse.legacyPathKey = "time_lapse";
+  lapse.get = [](const SceneSettings& s) -> FieldValue {
+    if (s.timeLapse == 1.0) return std::monostate{};
+    return s.timeLapse;
+  };
+  lapse.set = [](SceneSettings& s, const FieldValue& v) {
+    const double* d = std::get_if<double>(&v);
+    s.timeLapse = d ? *d : 1.0;
+  };
+  return {time, elevation, azimuth, lapse};
 }
 
 std::vector<SceneField> imageFields() {

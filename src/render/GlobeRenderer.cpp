@@ -140,6 +140,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   // The waves hold the strongest wind of the scene; every point scales and turns them to its
   // own wind (ocean/patterns.glsl).
   wind_->setConstantWind(f.wind);
+  wind_->setTime(f.utcTime);  // layers that follow the clock (uploads only on a change)
   patternsFor(std::max(f.wind.speedMs, wind_->maxLayerSpeedMs()), f.waveSeed);
   const bool grid = view.position.heightM < kOceanGridMaxHeightM;
 

@@ -5,9 +5,11 @@
 #include <glm/glm.hpp>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "atmosphere/Parameters.hpp"
+#include "core/Time.hpp"
 #include "data/LatLonGrid.hpp"
 #include "geo/Camera.hpp"
 #include "geo/Wind.hpp"
@@ -39,6 +41,9 @@ struct FrameInput {
   int width = 256;
   int height = 256;
   double simulationTimeS = 0.0;  ///< seconds since the start of the sequence (wave animation)
+  /// The UTC instant the frame shows: wind layers with a time axis are sampled at it
+  /// (WindTextures::setTime); nullopt keeps them at the time they were loaded for.
+  std::optional<UtcTime> utcTime;
   OceanModel oceanModel = OceanModel::Bruneton;
   /// The 10 m wind, [0, 50] m/s, everywhere unless GlobeRenderer::setWindLayers gave local
   /// winds (the fallback of render::WindTextures).
@@ -81,6 +86,9 @@ class GlobeRenderer {
   /// Local winds from data layers for every following frame (nullptr: each frame's constant
   /// wind everywhere). The sea's slopes, glint and waves then follow the wind point by point.
   void setWindLayers(std::shared_ptr<const data::WindLayers> layers) { wind_->setLayers(std::move(layers)); }
+
+  /// The wind on the GPU (its uploads count tells how often a time-varying wind changed).
+  [[nodiscard]] const WindTextures& wind() const { return *wind_; }
 
   /// Draws a frame into the internal targets (resized as needed).
   void render(const FrameInput& frame);
