@@ -120,6 +120,13 @@ void readScene(const fs::path& file, const toml::table& t, SceneSettings& s) {
        }},
       {"elevation_layer",
        [&](const toml::node& n, const std::string& k) { s.elevationLayer = text(file, n, k); }},
+      {"imagery_layers",
+       [&](const toml::node& n, const std::string& k) {
+         const toml::array* list = n.as_array();
+         if (list == nullptr) throw InputError(where(file, n) + "'" + k + "' must be an array of strings");
+         s.imageryLayers.clear();
+         for (const toml::node& item : *list) s.imageryLayers.push_back(text(file, item, k));
+       }},
   };
   applyKeys(file, t, "[scene]", schema);
   try {
@@ -470,6 +477,7 @@ void writeCameraPathJson(const fs::path& file, const CameraPath& path) {
   if (s.sunElevationDeg) scene["sun_elevation_deg"] = *s.sunElevationDeg;
   if (s.sunAzimuthDeg) scene["sun_azimuth_deg"] = *s.sunAzimuthDeg;
   if (!s.elevationLayer.empty()) scene["elevation_layer"] = s.elevationLayer;
+  if (!s.imageryLayers.empty()) scene["imagery_layers"] = s.imageryLayers;
   nlohmann::json root = {{"scene", scene}};
   nlohmann::json video = nlohmann::json::object();
   if (path.fps) video["fps"] = *path.fps;
@@ -544,6 +552,12 @@ std::string pathSettingsToml(const CameraPath& path) {
     t << (i ? ", " : "") << tomlString(s.windLayers[i]);
   t << "]\n";
   if (!s.elevationLayer.empty()) t << "elevation_layer = " << tomlString(s.elevationLayer) << "\n";
+  if (!s.imageryLayers.empty()) {
+    t << "imagery_layers = [";
+    for (std::size_t i = 0; i < s.imageryLayers.size(); ++i)
+      t << (i ? ", " : "") << tomlString(s.imageryLayers[i]);
+    t << "]\n";
+  }
   if (path.fps || path.crf) {
     t << "\n[video]\n";
     if (path.fps) t << "fps = " << tomlNumber(*path.fps) << "\n";

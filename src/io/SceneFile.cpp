@@ -130,7 +130,15 @@ SceneSettings readSceneFile(const std::filesystem::path& file, SceneSettings s) 
            for (const toml::node& item : *list) s.windLayers.push_back(text(file, item, k));
          }},
         {"elevation",
-         [&](const toml::node& n, const std::string& k) { s.elevationLayer = text(file, n, k); }}}},
+         [&](const toml::node& n, const std::string& k) { s.elevationLayer = text(file, n, k); }},
+        {"imagery",
+         [&](const toml::node& n, const std::string& k) {
+           const toml::array* list = n.as_array();
+           if (list == nullptr)
+             throw InputError(where(file, n.source()) + "'" + k + "' must be an array of strings");
+           s.imageryLayers.clear();
+           for (const toml::node& item : *list) s.imageryLayers.push_back(text(file, item, k));
+         }}}},
       {"atmosphere",
        {{"solar_irradiance", rgb(atm.solarIrradiance)},
         {"rayleigh_scattering", rgb(atm.rayleighScattering)},
