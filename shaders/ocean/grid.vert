@@ -23,6 +23,15 @@ uniform float uCellAngle;     // angular size of a grid cell, radians
 out vec2 vOceanXY;            // undisplaced position in the ocean frame, m
 out vec3 vRelative;           // displaced position relative to the eye, ECEF axes, m
 
+#ifndef OCEAN_SIMPLE_SKY
+// Aerial perspective per vertex: smooth over a cell of a few pixels, and the costliest part
+// of the sea's shading when evaluated per pixel (docs/performance.md).
+#include "render/aerial.glsl"
+uniform vec3 uSunDirEcef;
+out vec3 vTransmittance;      // of the eye-to-vertex path
+out vec3 vInscatter;          // light scattered towards the eye along it (units of the Sun's irradiance)
+#endif
+
 void main() {
   int ix = gl_VertexID % uGridSize.x;
   int iy = gl_VertexID / uGridSize.x;
@@ -52,4 +61,8 @@ void main() {
   vRelative = rel + transpose(uEcefToOcean) * d;
   vOceanXY = local.xy;
   gl_Position = uViewProjection * vec4(vRelative, 1.0);
+#ifndef OCEAN_SIMPLE_SKY
+  float dist = length(vRelative);
+  aerialPerspective(vRelative / dist, dist, uSunDirEcef, vTransmittance, vInscatter);
+#endif
 }

@@ -78,11 +78,9 @@ vec3 seaRefracted(SeaPoint p, vec3 upE, float fresnel) {
          (1.0 - fresnel);
 }
 
-// vE: to the eye; nE: mean (resolved) normal; windE: the wind's direction (any vector with a
-// horizontal component along it); sigma2: unresolved slope variances along/across the wind;
-// upE: the ellipsoid normal at the point; sunE: towards the Sun. All unit, ECEF axes.
-vec3 seaRadiance(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE) {
-  SeaPoint p = seaPoint(vE, nE, windE, upE, sunE);
+// The clear sea at a shading point (Algorithm 5.1): sigma2 the unresolved slope variances
+// along/across the wind, upE the ellipsoid normal (ECEF axes).
+vec3 seaRadianceAt(SeaPoint p, vec2 sigma2, vec3 upE) {
   // Sky: filtered reflection (Eqs. 9-10): the gradient lookup integrates the sky map over the
   // unresolved slopes' footprint, U(zeta) the stereographic coordinate of a facet's mirror ray.
   float sigmaV = sqrt(azimuthVariance(p.v, p.tx, p.ty, sigma2));
@@ -97,15 +95,21 @@ vec3 seaRadiance(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE)
   return seaSunGlint(p, sigma2) + sky + seaRefracted(p, upE, fbar);
 }
 
+// vE: to the eye; nE: mean (resolved) normal; windE: the wind's direction (any vector with a
+// horizontal component along it); sigma2: unresolved slope variances along/across the wind;
+// upE: the ellipsoid normal at the point; sunE: towards the Sun. All unit, ECEF axes.
+vec3 seaRadiance(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE) {
+  return seaRadianceAt(seaPoint(vE, nE, windE, upE, sunE), sigma2, upE);
+}
+
 // Whitecap foam (Dupuy & Bruneton 2012 Eq. 2): a Lambertian surface of reflectance 0.4
 // (Koepke 1984) over the fraction `coverage` of the footprint, the clear sea over the rest:
 // R = W R_foam + (1 - W) R_sea.
 const float FOAM_REFLECTANCE = 0.4;
 vec3 seaRadianceWithFoam(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE,
                          float coverage) {
-  vec3 clear = seaRadiance(vE, nE, windE, sigma2, upE, sunE);
-  if (coverage <= 0.0) return clear;
   SeaPoint p = seaPoint(vE, nE, windE, upE, sunE);
+  vec3 clear = seaRadianceAt(p, sigma2, upE);
   vec3 foam = FOAM_REFLECTANCE / PI * (p.eSun * max(p.l.z, 0.0) + p.eSky);
   return mix(clear, foam, coverage);
 }

@@ -79,9 +79,7 @@ void main() {
 #ifdef OCEAN_SIMPLE_SKY
 vec3 oceanSurfaceRadiance(vec3 relative, vec3 radiance) { return radiance; }
 #else
-#include "render/aerial.glsl"
-vec3 oceanSurfaceRadiance(vec3 relative, vec3 radiance) {
-  float t = length(relative);
-  return withAerialPerspective(radiance, relative / t, t, uSunDirEcef);
-}
+in vec3 vTransmittance;  // aerial perspective, per vertex (ocean/grid.vert)
+in vec3 vInscatter;
+vec3 oceanSurfaceRadiance(vec3 relative, vec3 radiance) { return radiance * vTransmittance + vInscatter; }
 #endif

@@ -35,6 +35,12 @@
 
 in vec2 vNdc;
 #include "render/outputs.glsl"
+#ifdef GLOBE_BEHIND
+// Below 20 km the globe is drawn last, behind the terrain and the grid (GlobeRenderer): only
+// the pixels they left empty (sky, far land, the grid's horizon gaps) pass the depth test, and
+// they pass it before this shader runs. It writes no depth then.
+layout(early_fragment_tests) in;
+#endif
 
 uniform vec3 uRight;       // camera basis, ECEF axes
 uniform vec3 uUp;
@@ -88,8 +94,9 @@ vec3 shadeSea(vec3 v, vec3 n) {
   return seaRadianceWithFoam(v, n, wind, seaSlopeVarianceTotal(w.x), n, uSunDir, foam);
 }
 
-// Light leaving the globe's surface at distance t along dir, towards the viewer.
-vec3 surfaceRadiance(vec3 dir, float t) {
+// Light leaving the globe's surface at distance t along dir, towards the viewer; `sea` says
+// which of the two the point is (the caller has tested it).
+vec3 surfaceRadiance(vec3 dir, float t, bool sea) {
   gSeaFoam = 0.0;
   vec3 n = ellipsoidNormal(dir, t);
   vec2 latLon = latLonOfNormal(n);
@@ -98,7 +105,7 @@ vec3 surfaceRadiance(vec3 dir, float t) {
   vec3 skyIrr;
   vec3 sunIrr = sunAndSkyIrradiance(uAtmosphere, uAtmTransmittance, uAtmIrradiance,
                                     uAtmosphere.bottomRadius, muSP, skyIrr);
-  if (elevation <= 0.0) return shadeSea(-dir, n);
+  if (sea) return shadeSea(-dir, n);
   // A pixel's footprint on the ground (radians of arc), widened at grazing incidence.
   float footprint = t * uPixelNdc.y * uTanHalfFov.y / (WGS84_A * max(dot(n, -dir), 0.2));
   return shadeLand(landColour(latLon, elevation, footprint), muSP, sunIrr, skyIrr) +
@@ -107,7 +114,7 @@ vec3 surfaceRadiance(vec3 dir, float t) {
 
 void main() {
   // 4 rotated-grid samples per pixel: an anti-aliased limb, horizon and coastline. The surface
-  // is shaded per sample; the atmosphere, smooth across a pixel, once per pixel for the
+  // is shaded per sample at edges, once inside (below); the atmosphere, smooth across a pixel, once per pixel for the
   // samples on the globe (at their mean distance) and once for those in the sky. Loops run
   // only as many times as needed: llvmpipe skips a loop's remaining trips for a whole quad
   // but evaluates both sides of a divergent if.
@@ -116,9 +123,10 @@ void main() {
   vec3 dirs[4];
   float ts[4];
   int hits[4];
+  bool seas[4];
   vec3 hitDir = vec3(0.0), skyDir = vec3(0.0);
   float hitT = 0.0;
-  int nHit = 0;
+  int nHit = 0, nSea = 0;
   float nearestT = 1e30;
   float sunDisc = 0.0;
   float seaHoles = 0.0;
@@ -129,14 +137,16 @@ void main() {
     vec2 ndc = vNdc + offsets[i] * uPixelNdc;
     dirs[i] = normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp);
     ts[i] = intersectEllipsoid(dirs[i]);
+    bool sea = ts[i] >= 0.0 && elevationAt(latLonOfNormal(ellipsoidNormal(dirs[i], ts[i]))) <= 0.0;
     // Below 20 km the grid pass draws the sea: leave sea samples to it (no colour, no depth).
-    if (ts[i] >= 0.0 && uSeaByGrid == 1 &&
-        elevationAt(latLonOfNormal(ellipsoidNormal(dirs[i], ts[i]))) <= 0.0) {
+    if (sea && uSeaByGrid == 1) {
       seaHoles += 1.0;
       seaHoleDir = dirs[i];
       seaHoleT = ts[i];
       continue;
     }
+    nSea += sea ? 1 : 0;
+    seas[i] = sea;
     if (ts[i] < 0.0) {
       skyDir += dirs[i];
       sunDisc += dot(dirs[i], uSunDir) > cosSun ? 1.0 : 0.0;
@@ -149,9 +159,17 @@ void main() {
   }
   vec3 surface = vec3(0.0);
   float foam = 0.0;  // whitecap coverage summed over the samples
-  for (int k = 0; k < nHit; ++k) {
-    surface += surfaceRadiance(dirs[hits[k]], ts[hits[k]]);
-    foam += gSeaFoam;
+  // Inside the globe's silhouette and away from coasts (four samples on the globe, all land or
+  // all sea) the surface varies little across a pixel: shaded once, at the samples' mean ray.
+  // Edges keep their four samples.
+  bool interior = nHit == 4 && (nSea == 0 || nSea == 4);
+  int nShade = interior ? 1 : nHit;
+  float weight = interior ? 4.0 : 1.0;
+  for (int k = 0; k < nShade; ++k) {
+    vec3 dir = interior ? normalize(hitDir) : dirs[hits[k]];
+    float t = interior ? intersectEllipsoid(dir) : ts[hits[k]];
+    surface += weight * surfaceRadiance(dir, t, interior ? nSea == 4 : seas[hits[k]]);
+    foam += weight * gSeaFoam;
   }
 
   float coverage = float(nHit);
@@ -161,30 +179,32 @@ void main() {
   float rho2 = h * (2.0 * R + h);
   float muS = dot(uSunDir, uCamUp);
   float skyCount = 4.0 - coverage - seaHoles;
-  int passes = (nHit > 0 ? 1 : 0) + (skyCount > 0.0 ? 1 : 0);
   vec3 radiance = vec3(0.0);
-  for (int k = 0; k < passes; ++k) {
-    bool globe = k == 0 && nHit > 0;
-    vec3 dir = normalize(globe ? hitDir : skyDir);
-    float mu, d;
-    if (globe) {
-      // Aerial perspective over the camera-to-surface path (see the header).
-      d = min(hitT / coverage, sqrt(rho2));
-      mu = -(rho2 + d * d) / (2.0 * r * max(d, 1e-3));
-    } else {
-      // The sky: past the top of the atmosphere, above the sphere's horizon.
-      d = 1e9;
-      mu = max(dot(dir, uCamUp), -sqrt(rho2) / r + 1e-5);
-    }
+  // Two loops of 0 or 1 trips rather than one if/else (see above): the globe's samples through
+  // the aerial perspective of their mean path, the sky's through the sky to the boundary.
+  for (int k = 0; k < (nHit > 0 ? 1 : 0); ++k) {
+    vec3 dir = normalize(hitDir);
+    // Aerial perspective over the camera-to-surface path (see the header).
+    float d = min(hitT / coverage, sqrt(rho2));
+    float mu = -(rho2 + d * d) / (2.0 * r * max(d, 1e-3));
     vec3 transmittance;
     vec3 inscatter = skyRadianceToPoint(uAtmosphere, uAtmTransmittance, uAtmScattering,
                                         uAtmSingleMie, r, mu, muS, dot(dir, uSunDir), d,
                                         transmittance);
-    if (globe)
-      radiance += surface * transmittance + inscatter * coverage;
-    else
-      radiance += inscatter * skyCount +
-                  sunDisc * transmittance * sunDiscRadiance(uAtmosphere);
+    radiance += surface * transmittance + inscatter * coverage;
+  }
+  // The sky: to the top of the atmosphere, above the sphere's horizon. Rays from space that
+  // miss the atmosphere see only the Sun's disc (no table lookups: most of an orbit view).
+  vec3 skyDirection = normalize(skyDir);
+  float skyMu = max(dot(skyDirection, uCamUp), -sqrt(rho2) / r + 1e-5);
+  float top = uAtmosphere.topRadius;
+  bool space = r > top && (skyMu >= 0.0 || r * r * (skyMu * skyMu - 1.0) + top * top < 0.0);
+  if (skyCount > 0.0 && space) radiance += sunDisc * sunDiscRadiance(uAtmosphere);
+  for (int k = 0; k < (skyCount > 0.0 && !space ? 1 : 0); ++k) {
+    vec3 transmittance;
+    vec3 inscatter = skyRadiance(uAtmosphere, uAtmTransmittance, uAtmScattering, uAtmSingleMie,
+                                 r, skyMu, muS, dot(skyDirection, uSunDir), transmittance);
+    radiance += inscatter * skyCount + sunDisc * transmittance * sunDiscRadiance(uAtmosphere);
   }
   // Sea holes: the grid pass paints over them; where it leaves a gap (between its horizon
   // vertices, where the chord falls short of the curved horizon) this far-field sea shows,
@@ -210,5 +230,7 @@ void main() {
     // (from orbit) the depth stays exact, so the sea surface hides the bathymetry.
     if (elevationAt(latLonOfNormal(ellipsoidNormal(centreDir, centreT))) > 0.0) depthZ += 20000.0;
   }
+#ifndef GLOBE_BEHIND
   gl_FragDepth = nHit > 0 ? clamp(uNear / depthZ, 0.0, 1.0) : 0.0;
+#endif
 }

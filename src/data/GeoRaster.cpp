@@ -35,6 +35,8 @@ void registerGdal() {
     // Never look for sidecar files on the network or spend time on .aux.xml statistics files.
     CPLSetConfigOption("GDAL_PAM_ENABLED", "NO");
     CPLSetConfigOption("GDAL_DISABLE_READDIR_ON_OPEN", "NO");
+    // A truncated or corrupt JPEG is an error, not a warning with grey pixels.
+    CPLSetConfigOption("GDAL_ERROR_ON_LIBJPEG_WARNING", "TRUE");
   });
 }
 

@@ -15,6 +15,11 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 glm::vec3 toFloat(const glm::dvec3& v) { return glm::vec3(v); }
+
+std::vector<std::string> withDefine(std::vector<std::string> defines, std::string define) {
+  defines.push_back(std::move(define));
+  return defines;
+}
 }  // namespace
 
 GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
@@ -27,6 +32,9 @@ GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
       globe_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
               {GL_FRAGMENT_SHADER, "render/globe.frag"}},
              OceanPatterns::shaderDefines()),
+      globeBehind_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
+                    {GL_FRAGMENT_SHADER, "render/globe.frag"}},
+                   withDefine(OceanPatterns::shaderDefines(), "GLOBE_BEHIND")),
       tonemap_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
                 {GL_FRAGMENT_SHADER, "render/tonemap.frag"}}),
       tonemapMs_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
@@ -149,14 +157,20 @@ void GlobeRenderer::render(const FrameInput& f) {
   glClearNamedFramebufferfv(hdr_.fbo.id(), GL_DEPTH, 0, &clearDepth);
   glEnable(GL_DEPTH_TEST);
   landMask_->bind();  // unit 18 for every pass (render/elevation.glsl)
-  drawGlobe(view, f, grid);
+  if (!grid) drawGlobe(view, f, grid);
 
   // Terrain over the globe's land (its far fallback), depth-tested; the ocean below is then
-  // depth-tested against it, so the shoreline is where sea surface and ground meet.
+  // depth-tested against it, so the shoreline is where sea surface and ground meet. Below
+  // 20 km the globe comes last, shading only what the two left empty (no pixel twice).
   terrain_->draw(view, f.width, f.height, f.sunDirectionEcef, !grid);
   glBindTextureUnit(0, elevation_.id());
   glBindVertexArray(emptyVao_.id());
-  if (grid) drawOcean(view, f);
+  if (grid) {
+    drawOcean(view, f);
+    glDepthMask(GL_FALSE);
+    drawGlobe(view, f, grid);
+    glDepthMask(GL_TRUE);
+  }
 
   if (timer_ != nullptr) timer_->mark("tone mapping");
   glDisable(GL_DEPTH_TEST);
@@ -180,31 +194,32 @@ void GlobeRenderer::drawGlobe(const geo::CameraView& view, const FrameInput& f, 
                        glm::dvec3(geo::kWgs84SemiMajorM, geo::kWgs84SemiMajorM,
                                   geo::kWgs84SemiMinorM);
   const double tanY = std::tan(0.5 * view.verticalFovRad);
-  glDepthFunc(GL_ALWAYS);
-  globe_.set("uRight", toFloat(view.right));
-  globe_.set("uUp", toFloat(view.up));
-  globe_.set("uForward", toFloat(view.forward));
-  globe_.set("uTanHalfFov", glm::vec2(static_cast<float>(tanY * view.aspect), static_cast<float>(tanY)));
-  globe_.set("uPixelNdc", glm::vec2(2.0f / static_cast<float>(f.width), 2.0f / static_cast<float>(f.height)));
-  globe_.set("uNear", static_cast<float>(view.nearM));
-  globe_.set("uSunDir", toFloat(glm::normalize(f.sunDirectionEcef)));
-  globe_.set("uEyeScaled", toFloat(o));
-  globe_.set("uEyeC", static_cast<float>(glm::dot(o, o) - 1.0));
-  globe_.set("uCamUp", toFloat(view.enu.up));
-  globe_.set("uCamAltitude", static_cast<float>(view.position.heightM));
-  wind_->bind(globe_);
+  glDepthFunc(grid ? GL_GEQUAL : GL_ALWAYS);
+  const gl::Program& globe = grid ? globeBehind_ : globe_;
+  globe.set("uRight", toFloat(view.right));
+  globe.set("uUp", toFloat(view.up));
+  globe.set("uForward", toFloat(view.forward));
+  globe.set("uTanHalfFov", glm::vec2(static_cast<float>(tanY * view.aspect), static_cast<float>(tanY)));
+  globe.set("uPixelNdc", glm::vec2(2.0f / static_cast<float>(f.width), 2.0f / static_cast<float>(f.height)));
+  globe.set("uNear", static_cast<float>(view.nearM));
+  globe.set("uSunDir", toFloat(glm::normalize(f.sunDirectionEcef)));
+  globe.set("uEyeScaled", toFloat(o));
+  globe.set("uEyeC", static_cast<float>(glm::dot(o, o) - 1.0));
+  globe.set("uCamUp", toFloat(view.enu.up));
+  globe.set("uCamAltitude", static_cast<float>(view.position.heightM));
+  wind_->bind(globe);
   patterns_->bind();
-  patterns_->setUniforms(globe_, nullptr, 0.0);
-  globe_.set("uSeaByGrid", grid ? 1 : 0);
-  globe_.set("uSeaColor", OceanLighting{}.seaColor);
-  globe_.set("uElevationMap", elevationMap_);
-  globe_.set("uElevationSize", elevationSize_);
-  globe_.set("uElevationWraps", elevationWraps_);
+  patterns_->setUniforms(globe, nullptr, 0.0);
+  globe.set("uSeaByGrid", grid ? 1 : 0);
+  globe.set("uSeaColor", OceanLighting{}.seaColor);
+  globe.set("uElevationMap", elevationMap_);
+  globe.set("uElevationSize", elevationSize_);
+  globe.set("uElevationWraps", elevationWraps_);
   glBindTextureUnit(0, elevation_.id());
-  imagery_->bind(globe_);
-  atmosphere_->bind(globe_);
+  imagery_->bind(globe);
+  atmosphere_->bind(globe);
   atmosphere_->bindSkyMaps();
-  globe_.use();
+  globe.use();
   glBindVertexArray(emptyVao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }

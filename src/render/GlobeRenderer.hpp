@@ -143,6 +143,7 @@ class GlobeRenderer {
 
   std::shared_ptr<const Atmosphere> atmosphere_;
   gl::Program globe_;
+  gl::Program globeBehind_;  ///< globe.frag drawn after the terrain and the grid (GLOBE_BEHIND)
   gl::Program tonemap_;
   gl::Program tonemapMs_;  ///< per-sample tone mapping of a multisampled target
   gl::VertexArray emptyVao_;

@@ -207,6 +207,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   params_.widthPx = width;
   params_.heightPx = height;
   terrain::SelectionStats sel;
+  if (timer_ != nullptr) timer_->mark("terrain selection");
   const auto tiles = terrain::selectTiles(cache_, view, params_, &sel);
   for (const std::uint64_t key : cache_.takeEvicted()) gpu_.erase(key);
 
@@ -218,7 +219,12 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   p.set("uSeaFromGlobe", seaFromGlobe ? 1 : 0);
   setDetailUniforms(view);
   if (timer_ != nullptr) timer_->mark("terrain shadows");
-  renderShadowMap(view, tiles, sunDirectionEcef);
+  // Casters: tiles that reach above the sea. Deep sea-floor tiles shadow nothing seen, so
+  // over the open ocean no shadow map is drawn at all.
+  std::vector<const terrain::Tile*> casters;
+  for (const terrain::Tile* t : tiles)
+    if (!t->coveredBySea()) casters.push_back(t);
+  renderShadowMap(view, casters, sunDirectionEcef);
   if (timer_ != nullptr) timer_->mark("terrain");
   glBindTextureUnit(11, shadowMap_.id());
   if (atmosphere_ != nullptr) atmosphere_->bind(p);
