@@ -72,7 +72,18 @@ double LandMask::constrainHeightM(double heightM, double latitudeDeg, double lon
 }
 
 bool LandMask::refines(const LatLonGrid& layer) const {
-  return layer.wrapsLongitude && layer.dLatDeg > 1.5 * cellDeg_;
+  if (!layer.wrapsLongitude || layer.dLatDeg <= 1.5 * cellDeg_) return false;
+  // Earth's relief or not: on a 1° grid between ±80°, how often the layer's sign agrees with
+  // the mask (ETOPO20: 0.95; a synthetic or foreign globe: about Earth's land or sea fraction).
+  int agree = 0, total = 0;
+  for (double lat = -79.5; lat < 80.0; lat += 1.0)
+    for (double lon = -179.5; lon < 180.0; lon += 1.0) {
+      const float h = layer.sample(lat, lon);
+      if (!std::isfinite(h)) continue;
+      ++total;
+      agree += (h > 0.0f) == isLand(lat, lon) ? 1 : 0;
+    }
+  return total > 0 && agree >= kEarthAgreement * total;
 }
 
 const LandMask& defaultLandMask() {

@@ -35,8 +35,11 @@ class LandMask {
   static constexpr double kCoastRampM = 20.0;
 
   /// True when the mask should decide the coast for `layer`: a global layer coarser than the
-  /// mask (regional layers and fine DEMs keep their own zero contour).
+  /// mask whose land and sea agree with it on at least kEarthAgreement of a 1° grid (Earth's
+  /// relief; ETOPO20 agrees on 0.95). Regional layers, fine DEMs and synthetic globes keep
+  /// their own zero contour.
   [[nodiscard]] bool refines(const LatLonGrid& layer) const;
+  static constexpr double kEarthAgreement = 0.85;
 
   [[nodiscard]] int width() const { return width_; }
   [[nodiscard]] int height() const { return height_; }

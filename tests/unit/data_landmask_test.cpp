@@ -72,3 +72,18 @@ TEST(LandMask, FractionIsBilinearAcrossCells) {
   // Longitude wraps: column 15 and column 0 are neighbours.
   EXPECT_FLOAT_EQ(m.landFraction(lat, lon + 360.0), 1.0f);
 }
+
+TEST(LandMask, SyntheticGlobesKeepTheirOwnCoast) {
+  // A global 0.25° layer that is land everywhere: not Earth's relief, so no mask.
+  og::data::LatLonGrid flat;
+  flat.width = 1440;
+  flat.height = 720;
+  flat.lon0Deg = -179.875;
+  flat.lat0Deg = -89.875;
+  flat.dLonDeg = flat.dLatDeg = 0.25;
+  flat.wrapsLongitude = true;
+  flat.values.assign(1440u * 720u, 300.0f);
+  EXPECT_FALSE(og::data::defaultLandMask().refines(flat));
+  const og::terrain::Heightfield ground(flat);
+  EXPECT_NEAR(ground.layerHeightM(0.3, 0.0), 300.0, 1e-3);  // the Gulf of Guinea in the mask
+}
