@@ -182,6 +182,7 @@ RecordResult runRecording(const RecordJob& job) {
   // Data layers before the GL context (as `render` does): a bad file exits 2 at once.
   const data::LatLonGrid elevation = data::loadElevationLayer(scene.elevationLayer);
   const std::shared_ptr<const data::WindLayers> wind = loadWindLayers(scene);
+  const std::vector<data::GeoImage> imagery = loadImageryLayers(scene);
 
   auto context = gl::createHeadlessContext(*gl::parseBackend(scene.glBackend));
   result.glRenderer = context->info().renderer;
@@ -190,6 +191,7 @@ RecordResult runRecording(const RecordJob& job) {
             context->info().renderer + ")");
   render::GlobeRenderer renderer(elevation, scene.atmosphere);
   renderer.setWindLayers(wind);
+  renderer.imagery().setLayers(imagery);
 
   // With Sun angles, they hold at the last keyframe (usually the close-up, where a low Sun
   // matters); the direction is then fixed in ECEF for the whole flight.
