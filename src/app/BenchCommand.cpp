@@ -206,7 +206,8 @@ Run addBenchCommand(CLI::App& parent) {
   cmd->add_option("--size", o->sizes, "image sizes WIDTHxHEIGHT (repeatable)");
   cmd->add_option("--view", o->views, "only these views (repeatable; default: all)")
       ->check(CLI::IsMember({"orbit-20000km", "limb-400km", "sea-2m-horizon", "sea-4m", "sea-1km",
-                             "sea-8km", "mountain-15km", "coast-30km"}));
+                             "sea-8km", "coast-2m-bank", "coast-2m-deep", "mountain-15km",
+                             "coast-30km"}));
   cmd->add_option("--samples", o->samples,
                   "samples per pixel: auto (default), 1, 2, 4 or 8; several (--samples 1 4) time each "
                   "case at each count, frames interleaved so that machine load hits all alike");
