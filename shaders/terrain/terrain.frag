@@ -9,6 +9,7 @@
 #include "atmosphere/model.glsl"
 #include "render/aerial.glsl"
 #include "terrain/material.glsl"
+#include "terrain/imagery.glsl"
 #include "terrain/detail.glsl"
 #include "terrain/shadow.glsl"
 
@@ -115,10 +116,13 @@ void main() {
   vec3 sunIrr = sunAndSkyIrradiance(uAtmosphere, uAtmTransmittance, uAtmIrradiance,
                                     uAtmosphere.bottomRadius + hP, dot(up, uSunDir), skyIrr);
   vec3 albedo = terrainAlbedo(heightM, slope, lat);
+  if (uImageryEnabled == 1 && heightM >= 0.0)
+    albedo = terrainAlbedoOverImagery(imageryAlbedo(vec2(lat, lon), footprint), albedo, heightM, slope, lat);
   // Sky light on a tilted surface: the part of the sky dome it sees.
   float skyView = 0.5 + 0.5 * dot(n, up);
   float sunSeen = dot(n, uSunDir) > 0.0 ? sunVisibility(vRelative, nGeometric) : 0.0;
   vec3 surface = albedo / PI * (sunIrr * (max(dot(n, uSunDir), 0.0) * sunSeen) + skyIrr * skyView);
+  if (heightM >= 0.0) surface += nightLightsRadiance(vec2(lat, lon), footprint, dot(up, uSunDir));
   fragRadiance = vec4(aerialToAltitude(surface, dir, t, hP), 1.0);
   fragAux = vec4(0.0);
 }

@@ -324,7 +324,9 @@ Run addBenchCommand(CLI::App& parent) {
                                      {"min_ms", t.front()}, {"max_ms", t.back()},
                                      {"frames", t.size()}, {"terrain_tiles", ts.tiles},
                                      {"terrain_cpu_bytes", ts.cpuBytes},
-                                     {"terrain_gpu_bytes", ts.gpuBytes}});
+                                     {"terrain_gpu_bytes", ts.gpuBytes},
+                                     {"imagery_gpu_bytes", renderers[k]->imagery().gpuBytes() +
+                                                               renderers[k]->landMask().gpuBytes()}});
           if (!o->json)
             std::printf("%-16s %10s %7d %7.2fms %7.2fms %7.2fms  terrain %d tiles, %.1f MiB CPU + %.1f MiB GPU\n",
                         view.name, size.c_str(), renderers[k]->samples(), median, t.front(),

@@ -186,6 +186,7 @@ RecordResult runRecording(const RecordJob& job) {
   // Data layers before the GL context (as `render` does): a bad file exits 2 at once.
   const data::LatLonGrid elevation = data::loadElevationLayer(scene.elevationLayer);
   const std::shared_ptr<const data::WindLayers> wind = loadWindLayers(scene);
+  const std::vector<data::GeoImage> imagery = loadImageryLayers(scene);
 
   auto context = gl::createHeadlessContext(*gl::parseBackend(scene.glBackend));
   result.glRenderer = context->info().renderer;
@@ -197,6 +198,7 @@ RecordResult runRecording(const RecordJob& job) {
   if (wind && wind->timeVarying() && !scene.time)
     log::warn("the wind layers have a time axis but the path has no UTC time ([scene] time or "
               "--time): the winds stay at their first step");
+  renderer.imagery().setLayers(imagery);
 
   // With Sun angles, they hold at the last keyframe (usually the close-up, where a low Sun
   // matters); the direction is then fixed in ECEF for the whole flight.

@@ -59,6 +59,7 @@ Run addRenderCommand(CLI::App& parent) {
     // Data layers before the GL context: a bad file exits 2 without rendering anything.
     const data::LatLonGrid elevation = data::loadElevationLayer(scene.elevationLayer);
     const std::shared_ptr<const data::WindLayers> wind = loadWindLayers(scene);
+    const std::vector<data::GeoImage> imagery = loadImageryLayers(scene);
 
     const auto backend = gl::parseBackend(scene.glBackend);
     auto context = gl::createHeadlessContext(*backend);
@@ -66,6 +67,7 @@ Run addRenderCommand(CLI::App& parent) {
               " with " + context->info().backend + " (" + context->info().renderer + ")");
     render::GlobeRenderer renderer(elevation, scene.atmosphere);
     renderer.setWindLayers(wind);
+    renderer.imagery().setLayers(imagery);
     render::FrameInput frame = frameInputOf(scene);
     frame.auxiliaryOutputs = needsAuxiliaryOutputs(opts->aovs);
     renderer.render(frame);

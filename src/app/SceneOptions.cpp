@@ -49,7 +49,12 @@ void SceneOptions::add(CLI::App& cmd) {
                  "wind field FILE[:U,V] (NetCDF or GRIB2); repeat to stack a regional layer over "
                  "a global one");
   cmd.add_option("--elevation-layer", flags_.elevationLayer,
-                 "relief/bathymetry FILE[:VAR] in metres (default: embedded ETOPO20)");
+                 "relief/bathymetry FILE[:VAR] in metres: NetCDF, GRIB or GeoTIFF (default: "
+                 "embedded ETOPO20)");
+  cmd.add_option("--imagery-layer", flags_.imageryLayers,
+                 "georeferenced imagery FILE draped over the land (GeoTIFF/COG, JPEG/PNG with a "
+                 "world file, ... in EPSG:4326, 3857 or any CRS PROJ knows); repeat, later on top "
+                 "(default: the embedded Blue Marble)");
 }
 
 io::SceneSettings SceneOptions::resolve(io::SceneSettings s) const {
@@ -75,6 +80,7 @@ io::SceneSettings SceneOptions::resolve(io::SceneSettings s) const {
   if (given("--time-lapse")) s.timeLapse = flags_.timeLapse;
   if (given("--wind-layer")) s.windLayers = flags_.windLayers;
   if (given("--elevation-layer")) s.elevationLayer = flags_.elevationLayer;
+  if (given("--imagery-layer")) s.imageryLayers = flags_.imageryLayers;
   if (given("--wind")) {
     const geo::Wind wind = geo::parseWindFlag(wind_, s.windFromDeg);
     s.windSpeedMs = wind.speedMs;
@@ -120,6 +126,11 @@ glm::dvec3 sunDirectionOf(const io::SceneSettings& s) {
   if (s.time) return geo::sunEphemeris(*s.time).directionEcef;
   return geo::sunDirectionFromHorizontal(s.camera.position, s.sunElevationDeg.value_or(50.0),
                                          s.sunAzimuthDeg.value_or(150.0));
+}
+
+std::vector<data::GeoImage> loadImageryLayers(const io::SceneSettings& s) {
+  std::vector<std::filesystem::path> files(s.imageryLayers.begin(), s.imageryLayers.end());
+  return data::loadImageryLayers(files);
 }
 
 std::shared_ptr<const data::WindLayers> loadWindLayers(const io::SceneSettings& s) {

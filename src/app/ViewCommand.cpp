@@ -79,6 +79,7 @@ class Viewer {
       : options_(options),
         scene_(std::move(scene)),
         ground_(data::loadElevationLayer(scene_.elevationLayer)),
+        imagery_(loadImageryLayers(scene_)),
         wind_(data::WindLayers::load(scene_.windLayers, scene_.wind().vector(), scene_.time)),
         controller_(scene_.camera, [this](double lat, double lon) {
           // The sea is at the ellipsoid; land lifts the floor to the terrain's height, detail
@@ -110,6 +111,8 @@ class Viewer {
     renderer_ = std::make_unique<render::GlobeRenderer>(ground_.layer(), scene_.atmosphere);
     // Progressive terrain: missing tiles are built in the background, never stalling a frame.
     renderer_->terrain().selection().wait = false;
+    renderer_->imagery().setLayers(imagery_);
+    imagery_ = {};  // on the GPU now: release the CPU copy
     // The renderer reads the layers point by point (wind texture); L switches them off.
     if (wind_.size() > 0) windShared_ = std::make_shared<const data::WindLayers>(wind_);
     renderer_->setWindLayers(layersOn_ ? windShared_ : nullptr);
@@ -458,6 +461,7 @@ class Viewer {
   ViewOptions options_;
   io::SceneSettings scene_;
   terrain::Heightfield ground_;  // the elevation layer and its detail: the floor to fly over
+  std::vector<data::GeoImage> imagery_;  // --imagery-layer: read before the window opens
   data::WindLayers wind_;
   std::shared_ptr<const data::WindLayers> windShared_;  // the same, for the renderer
   viewer::FlightController controller_;

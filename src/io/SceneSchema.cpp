@@ -181,8 +181,19 @@ std::vector<SceneField> layerFields() {
     const std::string* t = std::get_if<std::string>(&v);
     s.elevationLayer = t ? *t : std::string();
   };
+  // Georeferenced imagery draped over the land, bottom first; empty: the embedded Blue Marble.
+  SceneField imagery = field("layers", "imagery", FieldType::TextList, "", "imagery layers");
+  imagery.legacyPathKey = "imagery_layers";
+  imagery.get = [](const SceneSettings& s) -> FieldValue {
+    if (s.imageryLayers.empty()) return std::monostate{};
+    return s.imageryLayers;
+  };
+  imagery.set = [](SceneSettings& s, const FieldValue& v) {
+    const auto* list = std::get_if<std::vector<std::string>>(&v);
+    s.imageryLayers = list ? *list : std::vector<std::string>();
+  };
   SceneField backend = text("gl", "backend", "GL backend", &SceneSettings::glBackend, {"auto", "egl", "osmesa"});
-  return {wind, elevation, backend};
+  return {wind, elevation, imagery, backend};
 }
 
 std::vector<SceneField> atmosphereFields() {

@@ -67,6 +67,12 @@ GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
   elevationWraps_ = elevation.wrapsLongitude ? 1 : 0;
   ocean_->setElevationLayer(elevationMap_, elevationSize_, elevationWraps_);
   terrain_ = std::make_unique<TerrainRenderer>(elevation, atmosphere_.get());
+  imagery_ = std::make_unique<ImageryTextures>();
+  terrain_->setImagery(imagery_.get());
+  // The same rule as the terrain's heights (terrain::Heightfield): the mask decides the coast
+  // of a global layer coarser than it.
+  const data::LandMask& mask = data::defaultLandMask();
+  landMask_ = std::make_unique<LandMaskTexture>(mask.refines(elevation) ? &mask : nullptr);
   maxSamples_ = gl::maxSamples(GL_RGBA32F);
   gl::checkErrors("GlobeRenderer setup");
 }
@@ -153,6 +159,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   if (auxiliary_) glClearNamedFramebufferfv(hdr_.fbo.id(), GL_COLOR, 1, clearColor);
   glClearNamedFramebufferfv(hdr_.fbo.id(), GL_DEPTH, 0, &clearDepth);
   glEnable(GL_DEPTH_TEST);
+  landMask_->bind();  // unit 18 for every pass (render/elevation.glsl)
   if (!grid) drawGlobe(view, f, grid);
 
   // Terrain over the globe's land (its far fallback), depth-tested; the ocean below is then
@@ -213,6 +220,7 @@ void GlobeRenderer::drawGlobe(const geo::CameraView& view, const FrameInput& f, 
   globe.set("uElevationSize", elevationSize_);
   globe.set("uElevationWraps", elevationWraps_);
   glBindTextureUnit(0, elevation_.id());
+  imagery_->bind(globe);
   atmosphere_->bind(globe);
   atmosphere_->bindSkyMaps();
   globe.use();

@@ -20,6 +20,8 @@
 #include "io/SceneSchema.hpp"
 #include "ocean/OceanFrame.hpp"
 #include "render/Atmosphere.hpp"
+#include "render/ImageryTextures.hpp"
+#include "render/LandMaskTexture.hpp"
 #include "render/OceanPatterns.hpp"
 #include "render/OceanRenderer.hpp"
 #include "render/TerrainRenderer.hpp"
@@ -129,6 +131,12 @@ class GlobeRenderer {
   [[nodiscard]] const TerrainRenderer& terrain() const { return *terrain_; }
   TerrainRenderer& terrain() { return *terrain_; }
 
+  /// The imagery draped over the land (day colour, night lights, `--imagery-layer`s).
+  [[nodiscard]] const ImageryTextures& imagery() const { return *imagery_; }
+  ImageryTextures& imagery() { return *imagery_; }
+  /// The GSHHG land mask deciding the coast (active for global layers coarser than it).
+  [[nodiscard]] const LandMaskTexture& landMask() const { return *landMask_; }
+
  private:
   void ensureTargets(int width, int height, int samples, bool auxiliary);
   void drawGlobe(const geo::CameraView& view, const FrameInput& f, bool grid);
@@ -152,6 +160,8 @@ class GlobeRenderer {
   int elevationWraps_ = 0;
   std::unique_ptr<OceanRenderer> ocean_;
   std::unique_ptr<TerrainRenderer> terrain_;
+  std::unique_ptr<ImageryTextures> imagery_;
+  std::unique_ptr<LandMaskTexture> landMask_;
   std::unique_ptr<WindTextures> wind_;
   std::unique_ptr<OceanPatterns> patterns_;
   gl::RenderTarget hdr_;

@@ -228,6 +228,8 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   if (timer_ != nullptr) timer_->mark("terrain");
   glBindTextureUnit(11, shadowMap_.id());
   if (atmosphere_ != nullptr) atmosphere_->bind(p);
+  if (imagery_ != nullptr) imagery_->bind(p);
+  p.set("uImageryEnabled", imagery_ != nullptr && imagery_->enabled() ? 1 : 0);
   p.use();
   glBindVertexArray(vao_.id());
   glEnable(GL_DEPTH_TEST);
