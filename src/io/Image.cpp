@@ -199,17 +199,25 @@ void writeExr(const fs::path& file, const ImageRgbaF& image, ExrPixelType type,
   });
 }
 
+namespace {
+// The data window's width and height, refused outside 1..kMaxSide. Computed in 64 bits: a
+// hostile header can hold any int32 corners.
+std::pair<long long, long long> exrWindowSize(const fs::path& file, const Imath::Box2i& window) {
+  const long long w = static_cast<long long>(window.max.x) - window.min.x + 1;
+  const long long h = static_cast<long long>(window.max.y) - window.min.y + 1;
+  if (w <= 0 || h <= 0 || w > kMaxSide || h > kMaxSide)
+    fail(file, "OpenEXR data window " + std::to_string(w) + "x" + std::to_string(h) +
+                   " is outside 1.." + std::to_string(kMaxSide) + " pixels per side");
+  return {w, h};
+}
+}  // namespace
+
 ImageRgbaF readExr(const fs::path& file) {
   checkReadable(file);
   try {
     Imf::InputFile in(file.c_str());
     const Imath::Box2i window = in.header().dataWindow();
-    // Compute in 64 bits: a hostile header can hold any int32 corners.
-    const long long w = static_cast<long long>(window.max.x) - window.min.x + 1;
-    const long long h = static_cast<long long>(window.max.y) - window.min.y + 1;
-    if (w <= 0 || h <= 0 || w > kMaxSide || h > kMaxSide)
-      fail(file, "OpenEXR data window " + std::to_string(w) + "x" + std::to_string(h) +
-                     " is outside 1.." + std::to_string(kMaxSide) + " pixels per side");
+    const auto [w, h] = exrWindowSize(file, window);
     const Imf::ChannelList& channels = in.header().channels();
     for (std::size_t c = 0; c < 3; ++c)
       if (channels.findChannel(kChannelNames[c]) == nullptr)
@@ -262,11 +270,7 @@ std::vector<float> readExrChannel(const fs::path& file, const std::string& name)
   try {
     Imf::InputFile in(file.c_str());
     const Imath::Box2i window = in.header().dataWindow();
-    const long long w = static_cast<long long>(window.max.x) - window.min.x + 1;
-    const long long h = static_cast<long long>(window.max.y) - window.min.y + 1;
-    if (w <= 0 || h <= 0 || w > kMaxSide || h > kMaxSide)
-      fail(file, "OpenEXR data window " + std::to_string(w) + "x" + std::to_string(h) +
-                     " is outside 1.." + std::to_string(kMaxSide) + " pixels per side");
+    const auto [w, h] = exrWindowSize(file, window);
     const Imf::Channel* channel = in.header().channels().findChannel(name);
     if (channel == nullptr) fail(file, "OpenEXR file has no '" + name + "' channel");
     if (channel->xSampling != 1 || channel->ySampling != 1)
