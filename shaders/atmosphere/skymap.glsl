@@ -31,8 +31,8 @@
 //       at sea level (multiply by max(cos(angle to the Sun), 0)); reddened at low Sun.
 #include "atmosphere/skymap_common.glsl"
 
-layout(binding = 6) uniform sampler2DArray uSkyMap;         // rgb radiance, mip-mapped
-layout(binding = 7) uniform sampler1DArray uSkyIrradiance;  // layer 0 sky, layer 1 Sun
+layout(binding = OG_UNIT_SKY_MAP) uniform sampler2DArray uSkyMap;         // rgb radiance, mip-mapped
+layout(binding = OG_UNIT_SKY_IRRADIANCE) uniform sampler1DArray uSkyIrradiance;  // layer 0 sky, layer 1 Sun
 
 vec2 skyMapStereo(vec3 dirLocal) { return dirLocal.xy / max(1.0 + dirLocal.z, 1e-4); }
 

@@ -1,7 +1,8 @@
-// Shared numeric constants (mirrors src/geo/Wgs84.hpp).
-const float PI = 3.14159265358979;
-const float WGS84_A = 6378137.0;          // semi-major axis, m
-const float WGS84_B = 6356752.314245179;  // semi-minor axis, m
+// Shared numeric constants: named once in C++ (src/gl/ShaderContract.hpp from src/geo/Wgs84.hpp)
+// and injected into every shader as #defines.
+const float PI = OG_PI;
+const float WGS84_A = OG_WGS84_A;  // semi-major axis, m
+const float WGS84_B = OG_WGS84_B;  // semi-minor axis, m
 
 // atan(y, x) is undefined at (0, 0) in GLSL (llvmpipe returns NaN): directions straight up,
 // points exactly at a pole and calm winds all land there. Any angle will do at that point.

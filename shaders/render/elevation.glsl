@@ -1,6 +1,6 @@
 // The elevation layer (relief and bathymetry, metres) as a lat/lon texture: shared by the globe
 // pass (land/sea, land colours) and the ocean passes (no sea over land).
-layout(binding = 0) uniform sampler2D uElevation;  // metres, rows south to north
+layout(binding = OG_UNIT_ELEVATION) uniform sampler2D uElevation;  // metres, rows south to north
 uniform vec4 uElevationMap;  // (lon0, lat0, dLon, dLat) in radians, cell centres
 uniform vec2 uElevationSize; // (columns, rows)
 uniform int uElevationWraps; // 1 when the columns cover 360 degrees

@@ -1,5 +1,7 @@
 #include "render/WindTextures.hpp"
 
+#include "gl/ShaderContract.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -45,6 +47,6 @@ void WindTextures::upload(const data::WindRaster& raster) {
   glTextureParameteri(wind_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
-void WindTextures::bind(const gl::Program&) const { glBindTextureUnit(1, wind_.id()); }
+void WindTextures::bind(const gl::Program&) const { glBindTextureUnit(gl::kUnitWind, wind_.id()); }
 
 }  // namespace og::render

@@ -6,7 +6,9 @@ namespace og::app::viewer {
 
 TextOverlay::TextOverlay()
     : program_({{GL_VERTEX_SHADER, "viewer/text.vert"}, {GL_FRAGMENT_SHADER, "viewer/text.frag"}}),
-      vao_(gl::createVertexArray()) {}
+      vao_(gl::createVertexArray()) {
+  program_.requireUniforms({"uRect", "uText"});  // what draw() sets
+}
 
 void TextOverlay::draw(const std::vector<std::string>& lines, int fbWidth, int fbHeight, int scale,
                        int marginPx) {
