@@ -14,10 +14,13 @@ bool seaAt(vec3 relative) {
 // No sea over land, sample by sample: keeps the pixel's sea samples in gl_SampleMask and drops
 // the fragment when it has none. A macro because interpolateAtSample takes the shader's input
 // variable itself (`RELATIVE`, the camera-relative position), not a copy.
+// With no land in view (uCoastTest = 0: every terrain tile deep under the sea) the loop runs
+// no trip, which on llvmpipe skips its cost (an `if` would not).
+uniform int uCoastTest;
 #define KEEP_SEA_SAMPLES(RELATIVE)                                     \
   {                                                                    \
-    int seaSamples = 0;                                                \
-    for (int i = 0; i < gl_NumSamples; ++i)                            \
+    int seaSamples = uCoastTest == 1 ? 0 : (1 << gl_NumSamples) - 1;   \
+    for (int i = 0; i < gl_NumSamples * uCoastTest; ++i)               \
       if (seaAt(interpolateAtSample(RELATIVE, i))) seaSamples |= 1 << i; \
     if (seaSamples == 0) discard;                                      \
     gl_SampleMask[0] = seaSamples;                                     \

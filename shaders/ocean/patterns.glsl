@@ -143,15 +143,18 @@ SeaSurface oceanSurface(vec2 xy, float footprintM, vec2 wind) {
   vec2 mean = vec2(0.0);            // field axes
   vec3 cov = vec3(0.0);             // local wind frame
   vec2 jac = vec2(1.0, 0.0);
-  for (int i = 0; i < PATTERN_COUNT; ++i) {
+  // The footprint resolves a prefix of the patterns (largest first; lod grows along the list);
+  // the rest it averages out entirely. Two loops rather than an if in one (llvmpipe runs both
+  // sides of an if, but no loop trip that no pixel of a block needs).
+  int resolved = 0;
+  while (resolved < PATTERN_COUNT && patternLod(footprintM, resolved) < uPatternTopLod) ++resolved;
+  for (int i = resolved; i < PATTERN_COUNT; ++i) {
+    // Averaged out entirely: the band's statistics at this wind, analytic.
+    cov.xy += patternTable(i, wind.x).zw;
+    jac.y += patternTable(PATTERN_COUNT + 1 + i, wind.x).x;
+  }
+  for (int i = 0; i < resolved; ++i) {
     float lod = patternLod(footprintM, i);
-    if (lod >= uPatternTopLod) {
-      // Averaged out entirely: the band's statistics at this wind, analytic.
-      vec4 band = patternTable(i, wind.x);
-      cov.xy += band.zw;
-      jac.y += patternTable(PATTERN_COUNT + 1 + i, wind.x).x;
-      continue;
-    }
     float s = patternTable(i, wind.x).y;
     bool choppy = uPatternChoppiness[i] > 0.0;
     for (int k = 0; k < 2; ++k) {
@@ -165,7 +168,7 @@ SeaSurface oceanSurface(vec2 xy, float footprintM, vec2 wind) {
       // slope and ~0 where it averages many (m ~ 0), so the covariance is diagonal either way.
       vec3 c = vec3(max(m.z - m.x * m.x, 0.0), max(m.w - m.y * m.y, 0.0), 0.0);
       cov += w * w * rotateCovariance(c, binAngle - windField);
-      if (choppy) {
+      for (int c = 0; c < (choppy ? 1 : 0); ++c) {  // a loop, not an if: skipped on llvmpipe
         vec2 j = textureLod(uPatternJacobian, coord, lod).xy;
         jac += vec2(w * s * j.x, w * w * s * s * max(j.y - j.x * j.x, 0.0));
       }

@@ -9,9 +9,8 @@ uniform float uShadowTexelM[SHADOW_CASCADES]; // texel size, m
 uniform float uShadowSplitM;  // distance from the eye where the near cascade hands over, m
 uniform int uShadowOn;        // 0: no maps this frame (Sun down, or seen from far out)
 
-// Fraction of the Sun seen from a point (camera-relative `rel`) with geometric normal `n`.
-float sunVisibility(vec3 rel, vec3 n) {
-  if (uShadowOn == 0) return 1.0;
+// The maps' answer for a point (camera-relative `rel`) with geometric normal `n`.
+float sunVisibilityFromMaps(vec3 rel, vec3 n) {
   int c = length(rel) < uShadowSplitM ? 0 : 1;
   // Offset along the normal by a texel and a half: a surface never shadows itself.
   vec4 s = uShadowMatrix[c] * vec4(rel + n * (1.5 * uShadowTexelM[c]), 1.0);
@@ -24,4 +23,13 @@ float sunVisibility(vec3 rel, vec3 n) {
   lit += texture(uShadowMap, vec4(s.xy + vec2(-0.5, 0.5) * texel, layer, s.z));
   lit += texture(uShadowMap, vec4(s.xy + vec2(0.5, 0.5) * texel, layer, s.z));
   return 0.25 * lit;
+}
+
+// Fraction of the Sun seen from a point (camera-relative `rel`) with geometric normal `n`.
+// The lookups sit in a loop of uShadowOn trips: with no maps, no cost on llvmpipe (which
+// evaluates both sides of an `if` but skips a loop nobody enters).
+float sunVisibility(vec3 rel, vec3 n) {
+  float visible = 1.0;
+  for (int on = 0; on < uShadowOn; ++on) visible = sunVisibilityFromMaps(rel, n);
+  return visible;
 }

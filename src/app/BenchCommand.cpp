@@ -66,7 +66,12 @@ struct BenchOptions {
   std::vector<std::string> samples{"auto"};
   bool breakdown = false;
   std::string timer = "auto";  // how passes are timed: auto, queries, finish
+  std::vector<std::string> views;  // only these views (all when empty)
 };
+
+bool wanted(const BenchOptions& o, const char* view) {
+  return o.views.empty() || std::find(o.views.begin(), o.views.end(), view) != o.views.end();
+}
 
 /// How --breakdown times the passes: GL timestamp queries on a GPU; on a software renderer
 /// (llvmpipe), whose queries mark when commands are queued rather than run, a glFinish and the
@@ -195,6 +200,9 @@ Run addBenchCommand(CLI::App& parent) {
   cmd->add_option("--frames", o->frames, "timed frames per case (after 2 warm-up frames)")
       ->check(CLI::Range(1, 10000));
   cmd->add_option("--size", o->sizes, "image sizes WIDTHxHEIGHT (repeatable)");
+  cmd->add_option("--view", o->views, "only these views (repeatable; default: all)")
+      ->check(CLI::IsMember({"orbit-20000km", "limb-400km", "sea-2m-horizon", "sea-4m", "sea-1km",
+                             "sea-8km", "mountain-15km", "coast-30km"}));
   cmd->add_option("--samples", o->samples,
                   "samples per pixel: auto (default), 1, 2, 4 or 8; several (--samples 1 4) time each "
                   "case at each count, frames interleaved so that machine load hits all alike");
@@ -274,6 +282,7 @@ Run addBenchCommand(CLI::App& parent) {
     for (std::size_t k = 0; k < renderers.size(); ++k)
       renderers[k]->setPassTimer(o->breakdown ? &timers[k] : nullptr);
     for (const auto& view : benchViews()) {
+      if (!wanted(*o, view.name)) continue;
       for (const auto& [w, h] : sizes) {
         render::FrameInput f = frameInputOf(io::SceneSettings{});  // the default scene's settings
         f.camera = view.pose;
@@ -333,10 +342,10 @@ Run addBenchCommand(CLI::App& parent) {
       }
     }
     for (const auto& view : benchViews())
-      if (std::string(view.name) == "mountain-15km" && !sizes.empty())
+      if (std::string(view.name) == "mountain-15km" && wanted(*o, view.name) && !sizes.empty())
         benchTerrainFirstFrame(elevation, view, sizes.front().first, sizes.front().second, report,
                                o->json);
-    benchWindData(report, o->json);
+    if (o->views.empty()) benchWindData(report, o->json);
     if (o->json) std::printf("%s\n", report.dump(2).c_str());
     return static_cast<int>(kExitOk);
   };

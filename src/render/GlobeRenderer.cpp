@@ -225,6 +225,9 @@ void GlobeRenderer::drawOcean(const geo::CameraView& view, const FrameInput& f) 
   OceanLighting lighting;
   lighting.sunDirectionEcef = f.sunDirectionEcef;
   lighting.shadows = &terrain_->shadows();
+  // Over the open ocean (every tile in view deep under the sea) no pixel needs the coast test.
+  const TerrainStats& ts = terrain_->stats();
+  lighting.landInView = ts.landTiles > 0 || ts.tiles == 0;
   // Waves fade out on the way up so the grid meets the orbit model at the switch.
   const double h = view.position.heightM;
   const double x = std::clamp((h - kOceanFadeStartM) / (kOceanGridMaxHeightM - kOceanFadeStartM), 0.0, 1.0);

@@ -133,6 +133,7 @@ void OceanRenderer::setCommon(const gl::Program& p, const geo::CameraView& view,
   p.set("uElevationMap", elevationMap_);
   p.set("uElevationSize", elevationSize_);
   p.set("uElevationWraps", elevationWraps_);
+  p.set("uCoastTest", lighting.landInView ? 1 : 0);
   p.set("uCamUp", toFloat(view.enu.up));
   p.set("uCamAltitude", static_cast<float>(view.position.heightM));
   if (lighting.shadows != nullptr)

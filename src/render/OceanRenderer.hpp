@@ -23,6 +23,8 @@ struct OceanLighting {
   glm::vec3 skyHorizon{0.07f, 0.09f, 0.12f};
   /// The terrain's Sun shadows to cast on the sea (maps bound to unit 11), or none.
   const SunShadows* shadows = nullptr;
+  /// Whether land may be in view: false skips the per-pixel coast test (ocean/coast.glsl).
+  bool landInView = true;
 };
 
 enum class OceanModel {

@@ -253,6 +253,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
                    reinterpret_cast<const void*>(static_cast<std::uintptr_t>(gridIndices) * sizeof(std::uint32_t)));
   }
   stats_.tiles = static_cast<int>(tiles.size());
+  stats_.landTiles = static_cast<int>(casters.size());
   stats_.finestLevel = sel.finestLevel;
   stats_.tilesPending = sel.pending;
   stats_.cpuBytes = cache_.bytes();
