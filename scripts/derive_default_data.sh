@@ -107,3 +107,35 @@ ncatted -O -h -a _FillValue,UWND,c,s,-32768 -a _FillValue,VWND,c,s,-32768 "$tmp/
 nccopy -k nc7 -d 9 -s "$tmp/wshort.nc" "$tmp/wout.nc"
 mv "$tmp/wout.nc" "$wout"
 echo "wrote $wout ($(wc -c <"$wout") bytes)"
+
+# --- Default imagery: NASA Visible Earth day ("Blue Marble") and night ("Earth at night")
+# images as Debian's xplanet-images ships them (2048 x 1024 JPEG, plate carree, -180..180 E,
+# -90..90 N, public domain), copied byte for byte, each with a world file (pixel-centre
+# registration, 360/2048 degrees per pixel) so GDAL reads them like any user imagery.
+ximages=${XPLANET_IMAGES:-/usr/share/xplanet/images}
+for pair in "earth.jpg:blue_marble_2048x1024" "night.jpg:night_lights_2048x1024"; do
+  src="$ximages/${pair%%:*}"
+  dst="$(dirname "$0")/../data/${pair##*:}"
+  [ -r "$src" ] || { echo "derive_default_data.sh: $src missing (apt-get install xplanet-images)" >&2; exit 1; }
+  cp "$src" "$dst.jpg"
+  printf '0.17578125\n0\n0\n-0.17578125\n-179.912109375\n89.912109375\n' >"$dst.jgw"
+  echo "wrote $dst.jpg ($(wc -c <"$dst.jpg") bytes) and $dst.jgw"
+done
+
+# --- Land/water mask from the GSHHG shorelines (Debian gmt-gshhg-*, LGPL-3+ / public domain
+# data, see data/README.md): 2' (about 3.7 km) cells, pixel registration, 1 = land (lakes,
+# islands in lakes and ponds in those honoured: GMT levels 1 and 3 are land, 2 and 4 water),
+# from the intermediate-resolution shorelines, written as a 1-bit PNG with a world file.
+# Needs gmt (only here, not to build).
+if command -v gmt >/dev/null 2>&1; then
+  mdir=$(mktemp -d)
+  gmt grdlandmask -Rd -I2m -Di -N0/1/0/1/0 -r -G"$mdir/mask.nc"
+  gdal_translate -q -ot Byte -of PNG -co NBITS=1 -a_nodata none "$mdir/mask.nc" "$mdir/mask.png"
+  mout="$(dirname "$0")/../data/gshhg_landmask_2m"
+  cp "$mdir/mask.png" "$mout.png"
+  printf '0.033333333333333333\n0\n0\n-0.033333333333333333\n-179.98333333333333\n89.983333333333333\n' >"$mout.pgw"
+  rm -rf "$mdir"
+  echo "wrote $mout.png ($(wc -c <"$mout.png") bytes)"
+else
+  echo "derive_default_data.sh: gmt not found; data/gshhg_landmask_2m.png not rebuilt (apt-get install gmt gmt-gshhg-low)" >&2
+fi

@@ -17,8 +17,17 @@ packages=(
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg
   # the viewer's test: a private X server and synthetic key presses
   xvfb xdotool
+  # GDAL/PROJ: georeferenced imagery (GeoTIFF/COG, JPEG/PNG + world file) and GeoTIFF DEMs;
+  # gdal-bin for the tests' synthetic GeoTIFFs and scripts/derive_default_data.sh
+  libgdal-dev gdal-bin
+  # the default day/night imagery (NASA Visible Earth, public domain), derived into data/
+  xplanet-images
+  # GSHHG shorelines (the land/water mask derived into data/; -high for finer local masks)
+  gmt-gshhg-low gmt-gshhg-high
   # real data: ETOPO relief/bathymetry and monthly winds (used by tests when present)
   ferret-datasets
+  # ncgen: builds the small wind file of the docs' time-lapse pictures from its CDL text
+  netcdf-bin
   # the Slurm test: a private single-node Slurm (slurmctld + slurmd) and its MUNGE daemon
   slurm-wlm munge
 )

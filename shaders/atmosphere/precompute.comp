@@ -7,7 +7,8 @@
 //   4 scattering density -> uOut3D                (J of order uOrder)
 //   5 indirect irradiance-> uOut2D (delta), uAccum2D += delta   (E[L_{uOrder}])
 //   6 multiple scattering-> uOut3D (delta), uAccum3D += delta / Rayleigh phase
-//   7 sky maps           -> uSkyMap layers        (stereographic, per Sun zenith)
+//   7 sky maps           -> uSkyMap layers        (stereographic, per Sun zenith; below the
+//                           horizon 0.17 E_sky / pi: atmosphere/skymap_common.glsl)
 //   8 sea-level sky and Sun irradiance per Sun zenith -> uOut1DArray
 #include "atmosphere/definitions.glsl"
 #include "atmosphere/functions.glsl"
@@ -83,6 +84,8 @@ void main() {
   vec3 t;
   vec3 l = skyRadiance(uAtmosphere, uTransmittance, uScattering, uSingleMie,
                        uAtmosphere.bottomRadius, dir.z, muS, dot(dir, sun), t);
+  if (skyMapIsBelowHorizon(centre.xy / vec2(uSize.xy)))
+    l = skyMapBelowHorizon(sampleIrradiance(uAtmosphere, uIrradianceTotal, uAtmosphere.bottomRadius, muS));
   imageStore(uSkyMap, id, vec4(l, 1.0));
 #elif PASS == 8
   float muS = cos(skyIrradianceZenith(id.x, uSize.x));

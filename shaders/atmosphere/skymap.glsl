@@ -13,13 +13,14 @@
 //       Sky radiance arriving from direction reflectedDirLocal (unit, local frame as above),
 //       filtered over the footprint given by the two stereographic-space gradients dUdx, dUdy
 //       (the axes of the filter ellipse, e.g. Bruneton 2010 Fig. 9: 2 sigma_x dU/dzeta_x and
-//       2 sigma_y dU/dzeta_y; pass zeros for a point sample), with textureGrad (trilinear; the
-//       sampler's anisotropy is 1, see docs/atmosphere.md). sunZenith: the Sun's zenith angle
+//       2 sigma_y dU/dzeta_y; pass zeros for a point sample), with textureGrad: hardware
+//       anisotropy on a GPU, 9 lookups along the ellipse on llvmpipe (uSkyFilterProbes,
+//       Atmosphere::chooseSkyFilter). sunZenith: the Sun's zenith angle
 //       at the surface point, radians [0, pi] (beyond 105° the last, dark layer is used);
 //       sunAzimuth: the Sun's azimuth in the same local frame, radians, counter-clockwise from
-//       +x towards +y (atan(sun.y, sun.x)). Directions below the horizon return the horizon's
-//       radiance in that azimuth. The Sun's disc is NOT in the maps (add it with the Sun's
-//       BRDF term). Layers are blended linearly in the Sun zenith angle.
+//       +x towards +y (atan(sun.y, sun.x)). Directions below the horizon return the light the
+//       waves reflect from there, 0.17 E_sky / pi (atmosphere/skymap_common.glsl). The Sun's
+//       disc is NOT in the maps (add it with the Sun's BRDF term). Layers are blended linearly in the Sun zenith angle.
 //       Units: radiance relative to the solar irradiance at the top of the atmosphere, the
 //       renderer's unit (a white Lambertian plate facing the unattenuated Sun has radiance 1/pi).
 //
@@ -28,13 +29,41 @@
 //       units (so a Lambertian surface of albedo a has radiance a / pi * skyIrradiance).
 //   vec3 sunIrradiance(float sunZenith)
 //       Irradiance by the Sun's disc, attenuated by the atmosphere, on a surface facing the Sun
-//       at sea level (multiply by max(cos(angle to the Sun), 0)); reddened at low Sun.
+//       at sea level (multiply by max(cos(angle to the Sun), 0)); reddened at low Sun. Per
+//       point from the transmittance table (atmosphere/model.glsl, bound by Atmosphere::bind):
+//       functions.glsl's transmittanceToSun, the code the CPU reference compiles, so the
+//       sunset's colour is exact to the table's resolution near the horizon (the table's
+//       mu parameterisation concentrates texels there), not a zenith-linear 1D table.
 #include "atmosphere/skymap_common.glsl"
+#include "atmosphere/model.glsl"
 
 layout(binding = OG_UNIT_SKY_MAP) uniform sampler2DArray uSkyMap;         // rgb radiance, mip-mapped
-layout(binding = OG_UNIT_SKY_IRRADIANCE) uniform sampler1DArray uSkyIrradiance;  // layer 0 sky, layer 1 Sun
+layout(binding = OG_UNIT_SKY_IRRADIANCE) uniform sampler1DArray uSkyIrradiance;  // layer 0 sky (layer 1 Sun: unused)
 
 vec2 skyMapStereo(vec3 dirLocal) { return dirLocal.xy / max(1.0 + dirLocal.z, 1e-4); }
+
+// The sky filter (og::render::Atmosphere::chooseSkyFilter, set by Atmosphere::bind): 1 = one
+// textureGrad over the footprint ellipse (the sampler's hardware anisotropy on a GPU); 9 =
+// Bruneton 2010 §7.3, "an average of nine texture2D samples inside the elliptical filter
+// support", for CPU rasterisers whose anisotropic filtering is slow and blurs wrongly.
+uniform int uSkyFilterProbes;
+
+// One sky-map layer over the footprint with axes gx, gy (texture space, a pixel's extent).
+vec3 skyMapLayerFiltered(vec2 tc, float layer, vec2 gx, vec2 gy) {
+  if (uSkyFilterProbes <= 1) return textureGrad(uSkyMap, vec3(tc, layer), gx, gy).rgb;
+  // Up to nine isotropic lookups spread along the major axis, each over 1/n of it and the
+  // minor axis: together they tile the ellipse's extent. n follows the ellipse's elongation
+  // (major / minor, at most uSkyFilterProbes), so near-round footprints cost one lookup.
+  bool xMajor = dot(gx, gx) >= dot(gy, gy);
+  vec2 major = xMajor ? gx : gy, minor = xMajor ? gy : gx;
+  float ratio = length(major) / max(length(minor), 1e-8);
+  int n = int(clamp(ceil(ratio), 1.0, float(uSkyFilterProbes)));
+  vec2 step = major / float(n);
+  vec3 sum = vec3(0.0);
+  for (int k = 0; k < n; ++k)
+    sum += textureGrad(uSkyMap, vec3(tc + (float(k) + 0.5 - 0.5 * float(n)) * step, layer), step, minor).rgb;
+  return sum / float(n);
+}
 
 vec3 skyMapRadianceStereo(vec2 u, float sunZenith, float sunAzimuth, vec2 dUdx, vec2 dUdy) {
   // Rotate by -sunAzimuth so the Sun lies along +x, as in the stored maps.
@@ -46,16 +75,14 @@ vec3 skyMapRadianceStereo(vec2 u, float sunZenith, float sunAzimuth, vec2 dUdx, 
   int layers = textureSize(uSkyMap, 0).z;
   float f = clamp(sunZenith / SKYMAP_MAX_ZENITH, 0.0, 1.0) * float(layers - 1);
   float l0 = min(floor(f), float(layers - 2));
-  vec3 a = textureGrad(uSkyMap, vec3(tc, l0), gx, gy).rgb;
-  vec3 b = textureGrad(uSkyMap, vec3(tc, l0 + 1.0), gx, gy).rgb;
+  vec3 a = skyMapLayerFiltered(tc, l0, gx, gy);
+  vec3 b = skyMapLayerFiltered(tc, l0 + 1.0, gx, gy);
   return mix(a, b, f - l0);
 }
 
 vec3 skyMapRadiance(vec3 reflectedDirLocal, float sunZenith, float sunAzimuth, vec2 dUdx,
                     vec2 dUdy) {
-  vec3 d = reflectedDirLocal;
-  if (d.z < 0.0) d = vec3(normalize(d.xy + vec2(1e-9, 0.0)), 0.0);
-  return skyMapRadianceStereo(skyMapStereo(d), sunZenith, sunAzimuth, dUdx, dUdy);
+  return skyMapRadianceStereo(skyMapStereo(reflectedDirLocal), sunZenith, sunAzimuth, dUdx, dUdy);
 }
 
 float skyIrradianceCoord(float sunZenith) {
@@ -66,5 +93,6 @@ vec3 skyIrradiance(float sunZenith) {
   return texture(uSkyIrradiance, vec2(skyIrradianceCoord(sunZenith), 0.0)).rgb;
 }
 vec3 sunIrradiance(float sunZenith) {
-  return texture(uSkyIrradiance, vec2(skyIrradianceCoord(sunZenith), 1.0)).rgb;
+  return uAtmosphere.solarIrradiance * transmittanceToSun(uAtmosphere, uAtmTransmittance,
+                                                          uAtmosphere.bottomRadius, cos(sunZenith));
 }

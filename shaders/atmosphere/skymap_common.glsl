@@ -3,8 +3,15 @@
 // src/render/Atmosphere.hpp.
 
 // The maps cover the stereographic square u in [-EXTENT, EXTENT]^2 (the horizon is the unit
-// circle); texels beyond the horizon hold the horizon's radiance in their azimuth.
+// circle). Below the horizon, as in the sky-map shader of Bruneton's ocean lighting demo (2010)
+// and Proland 4.0's ocean: a thin band |u|² <= SKYMAP_HORIZON_BAND holds the horizon's radiance
+// (so that bilinear filtering does not pull the horizon's value inwards), and beyond it the
+// texels hold the light reflected by waves from below the horizon, approximated by "average
+// Fresnel x average sky radiance" = SEA_MEAN_FRESNEL * E_sky / pi (skyMapBelowHorizon). Rough
+// seas at grazing angles reflect facets that see the sea, not the horizon's bright sky.
 const float SKYMAP_EXTENT = 1.1;
+const float SKYMAP_HORIZON_BAND = 1.02;  // |u|² of the band's outer edge
+const float SEA_MEAN_FRESNEL = 0.17;     // Bruneton's demo / Proland: avgFresnel
 // Layer k of L holds the Sun at zenith angle k / (L - 1) * SKYMAP_MAX_ZENITH (radians, 105°).
 const float SKYMAP_MAX_ZENITH = 1.8325957;
 
@@ -16,7 +23,19 @@ float skyIrradianceZenith(int entry, int entries) {
   return float(entry) / float(entries - 1) * 3.14159265358979;
 }
 
-// Unit direction (local frame, z up) of texture coordinates uv in [0, 1]^2 of a sky map.
+// Radiance stored below the horizon: SEA_MEAN_FRESNEL * E_sky / pi, E_sky the sky's irradiance of
+// a horizontal surface at sea level (same units as the maps' radiance).
+vec3 skyMapBelowHorizon(vec3 skyIrradianceHorizontal) {
+  return SEA_MEAN_FRESNEL / 3.14159265358979 * skyIrradianceHorizontal;
+}
+// Whether texture coordinates uv in [0, 1]^2 of a sky map lie beyond the horizon band.
+bool skyMapIsBelowHorizon(vec2 uv) {
+  vec2 u = (uv * 2.0 - 1.0) * SKYMAP_EXTENT;
+  return dot(u, u) > SKYMAP_HORIZON_BAND;
+}
+
+// Unit direction (local frame, z up) of texture coordinates uv in [0, 1]^2 of a sky map (on the
+// horizon, in its azimuth, for the horizon band and beyond).
 vec3 skyMapDirection(vec2 uv) {
   vec2 u = (uv * 2.0 - 1.0) * SKYMAP_EXTENT;
   float s = dot(u, u);

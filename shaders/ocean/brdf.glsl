@@ -83,3 +83,68 @@ Vec3 reflectedBySlope(Vec3 v, Vec3 n, Vec3 tx, Vec3 ty, Vec2 zeta) {
 Vec2 stereographic(Vec3 r) {
   return Vec2(r.x, r.y) / (1.0 + max(r.z, -0.999));
 }
+
+// Principal axes of a slope covariance (xx, yy, xy) given in the (tx, ty) frame: the variances
+// sigma2 along the axes (largest first, >= 0) and the first axis as (cos, sin) in (tx, ty).
+// Lets the axis-aligned Ross BRDF above take any covariance, e.g. resolved slopes carried in
+// the local wind's frame with their cross term (Bruneton 2010 Eq. 4 keeps the full matrix).
+struct SlopeFrame {
+  Vec2 sigma2;
+  Vec2 axis;
+};
+SlopeFrame slopePrincipalAxes(Vec3 cov) {
+  Number a = cov.x, b = cov.y, c = cov.z;
+  Number mean = 0.5 * (a + b);
+  Number radius = sqrt(0.25 * (a - b) * (a - b) + c * c);
+  SlopeFrame f;
+  f.sigma2 = Vec2(max(mean + radius, 0.0), max(mean - radius, 0.0));
+  // Eigenvector of the largest eigenvalue, from the better-conditioned row.
+  Vec2 e = a >= b ? Vec2(f.sigma2.x - b, c) : Vec2(c, f.sigma2.x - a);
+  Number len2 = dot(e, e);
+  f.axis = len2 > 1e-30 ? e / sqrt(len2) : Vec2(1.0, 0.0);
+  return f;
+}
+
+// Covariance (xx, yy, xy) in the (tx, ty) frame of a 2x2 diagonal one (d.x along axis, d.y
+// across), axis = (cos, sin) in (tx, ty).
+Vec3 covarianceFromAxes(Vec2 d, Vec2 axis) {
+  Number c = axis.x, s = axis.y;
+  return Vec3(c * c * d.x + s * s * d.y, s * s * d.x + c * c * d.y, c * s * (d.x - d.y));
+}
+
+// The Sun's disc as a slope covariance, to add to the facets' (a convolution: the Sun's glint
+// through a Gaussian facet distribution becomes the disc's reflection). A disc of angular
+// radius alpha has per-axis angular variance alpha²/4. A facet reflects l into v when its
+// normal is h = (v + l)/|v + l|; moving l by dl moves h by the part of dl normal to h over
+// |v + l| = 2 (v.h): by 1/2 dl in the plane of incidence, by 1/(2 v.h) across it. Hence the
+// facet slope variance that the disc spans: alpha²/16 in the plane of incidence and
+// alpha²/(16 (v.h)²) across (slopes ~ tilts for the near-normal h of a glint). Returned in the
+// (tx, ty) frame.
+Vec3 sunDiscSlopeCovariance(Vec3 v, Vec3 l, Vec3 tx, Vec3 ty, Number alpha) {
+  Vec3 h = normalize(v + l);
+  Number vh = max(dot(v, h), 0.05);
+  Vec2 d = Vec2(dot(l - v, tx), dot(l - v, ty));  // the plane of incidence, in the tangent plane
+  Number len2 = dot(d, d);
+  Vec2 axis = len2 > 1e-12 ? d / sqrt(len2) : Vec2(1.0, 0.0);
+  Number inPlane = alpha * alpha / 16.0;
+  return covarianceFromAxes(Vec2(inPlane, inPlane / (vh * vh)), axis);
+}
+
+// The slopes the eye sees along the view's azimuth: a facet of slope zeta (towards the eye's
+// side, in units of that azimuth's sigma) covers a share of the pixel proportional to its area
+// projected towards the eye, 1 - zeta / k with k = cot(theta_v) / sigma_phi, and none beyond k
+// (it faces away). Mean and variance of that weighted Gaussian, in units of sigma and sigma²
+// (phi, Phi: the unit normal's density and distribution):
+// M0 = Phi(k) + phi(k) / k, M1 = -Phi(k) / k, M2 = Phi(k) + 2 phi(k) / k.
+// At grazing angles (small k) the visible facets lean towards the eye and spread less: the sky
+// they reflect is higher above the horizon than the full Gaussian's (Bruneton 2010 Eq. 9 filters
+// with the full distribution, the paper's largest error, its §7.2).
+Vec2 visibleSlopeMoments(Number k) {
+  if (k > 6.0) return Vec2(0.0, 1.0);
+  Number kk = max(k, 1e-3);
+  Number pdf = exp(-0.5 * kk * kk) / sqrt(2.0 * BRDF_PI);
+  Number cdf = 1.0 - 0.5 * brdfErfc(kk / sqrt(2.0));
+  Number m0 = cdf + pdf / kk;
+  Number mean = -cdf / kk / m0;
+  return Vec2(mean, max((cdf + 2.0 * pdf / kk) / m0 - mean * mean, 0.0));
+}

@@ -25,3 +25,18 @@ uniform int uCoastTest;
     if (seaSamples == 0) discard;                                      \
     gl_SampleMask[0] = seaSamples;                                     \
   }
+
+// The shore: a wave breaks once its height reaches ~0.78 of the water's depth (McCowan 1894's
+// breaker index), so over shoaling water the waves' displacement is scaled down to what that
+// depth holds, reaching 0 at the shoreline: the sea surface meets the land at sea level and
+// waves never cross onto it. `waveHeightM`: the sea's significant wave height there.
+const float BREAKER_INDEX = 0.78;
+float shoreWaveFactor(vec2 latLon, float waveHeightM) {
+  if (uElevationSize.x <= 0.0) return 1.0;
+  float depthM = max(-elevationAt(latLon), 0.0);
+  return clamp(BREAKER_INDEX * depthM / max(waveHeightM, 1e-3), 0.0, 1.0);
+}
+
+// Significant wave height of a fully developed sea under a 10 m wind of `speedMs`, m
+// (Pierson & Moskowitz 1964: H_s = 0.21 U_19.5² / g, U_19.5 ~ 1.075 U_10).
+float seaStateWaveHeightM(float speedMs) { return 0.0247 * speedMs * speedMs; }

@@ -8,6 +8,7 @@
 #include "geo/ellipsoid.glsl"
 #include "ocean/wind.glsl"
 #include "ocean/patterns.glsl"
+#include "ocean/coast.glsl"  // waves shrink over shoaling water (the shore)
 
 uniform ivec2 uGridSize;      // vertices per row, rows
 uniform vec4 uGridMarginNdc;  // overshoot (left, right, bottom, top) so displaced edges stay covered
@@ -55,7 +56,9 @@ void main() {
   vec3 n = uEcefToOcean * ellipsoidNormal(dir, t);
   float cosIncidence = max(abs(dot(uEcefToOcean * dir, n)), 0.02);
   float cell = t * uCellAngle / cosIncidence;
-  vec3 d = oceanDisplacement(local.xy, cell, localWind(latLonOfNormal(ellipsoidNormal(dir, t))));
+  vec2 latLon = latLonOfNormal(ellipsoidNormal(dir, t));
+  vec2 wind = localWind(latLon);
+  vec3 d = oceanDisplacement(local.xy, cell, wind) * shoreWaveFactor(latLon, seaStateWaveHeightM(wind.x));
   // Displacement along the frame's axes; near the camera (where waves are resolved at all)
   // they coincide with the local tangent frame.
   vRelative = rel + transpose(uEcefToOcean) * d;

@@ -12,16 +12,26 @@
 // sky instead (tests of the ocean alone).
 
 #include "common/constants.glsl"
+// Outside the #ifdef: files are included once, before the preprocessor runs.
+#include "atmosphere/skymap_common.glsl"
 
 #ifdef OCEAN_SIMPLE_SKY
 uniform vec3 uSkyZenith;   // radiance at the zenith
 uniform vec3 uSkyHorizon;  // radiance at the horizon
+vec3 skyIrradiance(float sunZenith) { return vec3(0.1, 0.13, 0.18) * clamp(cos(sunZenith) * 2.0, 0.0, 1.0); }
 vec3 skyMapRadianceStereo(vec2 u, float sunZenith, float sunAzimuth, vec2 dUdx, vec2 dUdy) {
   float q = dot(u, u);
   float z = (1.0 - q) / (1.0 + q);  // inverse stereographic: cos(zenith angle)
-  return mix(uSkyHorizon, uSkyZenith, sqrt(clamp(z, 0.0, 1.0))) * clamp(cos(sunZenith) * 4.0, 0.0, 1.0);
+  vec3 sky = mix(uSkyHorizon, uSkyZenith, sqrt(clamp(z, 0.0, 1.0))) * clamp(cos(sunZenith) * 4.0, 0.0, 1.0);
+  // Below the horizon as the maps (skymap_common.glsl), the step filtered over the footprint
+  // (the maps' textureGrad does that): the share beyond the band of a Gaussian footprint whose
+  // axes dUdx, dUdy are 2 sigma, sigma_r its spread across the horizon (Phi as a linear ramp of
+  // the same slope at 0).
+  vec2 radial = u / max(sqrt(q), 1e-6);
+  float sigmaR = 0.5 * length(vec2(dot(dUdx, radial), dot(dUdy, radial)));
+  float below = clamp(0.5 + (sqrt(q) - sqrt(SKYMAP_HORIZON_BAND)) / max(2.5 * sigmaR, 1e-4), 0.0, 1.0);
+  return mix(sky, skyMapBelowHorizon(skyIrradiance(sunZenith)), below);
 }
-vec3 skyIrradiance(float sunZenith) { return vec3(0.1, 0.13, 0.18) * clamp(cos(sunZenith) * 2.0, 0.0, 1.0); }
 vec3 sunIrradiance(float sunZenith) { return vec3(1.0) * step(0.0, cos(sunZenith)); }
 #else
 #include "atmosphere/skymap.glsl"
@@ -29,7 +39,12 @@ vec3 sunIrradiance(float sunZenith) { return vec3(1.0) * step(0.0, cos(sunZenith
 
 uniform vec3 uSeaColor;  // upwelling radiance per unit irradiance (sr^-1)
 #include "terrain/shallow.glsl"  // shallow water: the sea floor seen through the water
-const float SUN_SIGMA2_MIN = 2e-5;  // slope variance of the Sun's disc (radius 0.27°)
+// The Sun's apparent angular radius, rad (0.267°, atmosphere::Parameters::sunAngularRadiusRad):
+// its disc is convolved into the glint (sunDiscSlopeCovariance, ocean/brdf.glsl), so a glassy
+// sea shows the disc, not a lobe of an arbitrary variance floor.
+const float SUN_ANGULAR_RADIUS_RAD = 0.004675;
+// Smallest slope variance handed to the BRDF's divisions (a mirror, for the sky's lookups).
+const float SEA_SIGMA2_MIN = 1e-9;
 
 // Unit local frame at a point with vertical upE: columns east, north, up (ECEF axes).
 mat3 localFrame(vec3 upE) {
@@ -44,6 +59,14 @@ struct SeaPoint {
   float sunZenith, sunAzimuth;
   vec3 eSun, eSky;       // Sun and sky irradiance at sea level for this Sun zenith
 };
+
+#ifdef OCEAN_LIGHTING_TERMS
+// Weights of the terms (Sun, sky, refracted, whitecaps): 1 each, but `validate` renders them
+// one at a time (paper §7.2 compares them separately).
+uniform vec4 uLightingTerms;
+#else
+const vec4 uLightingTerms = vec4(1.0);
+#endif
 
 // Fraction of the Sun's disc seen from the sea point being shaded (the terrain's shadows:
 // terrain/shadow.glsl); the grid's shaders set it before shading, elsewhere the Sun is open.
@@ -65,10 +88,22 @@ SeaPoint seaPoint(vec3 vE, vec3 nE, vec3 windE, vec3 upE, vec3 sunE) {
   return p;
 }
 
-// The Sun through the Ross BRDF, variance clamped so a flat sea still shows the Sun's disc
-// (Eq. 6).
-vec3 seaSunGlint(SeaPoint p, vec2 sigma2) {
-  return p.eSun * rossSun(p.v, p.l, p.n, p.tx, p.ty, max(sigma2, vec2(SUN_SIGMA2_MIN)));
+// Turns p's tangents (tx, ty) onto the principal axes of the slope covariance cov = (xx, yy, xy)
+// given in them, and returns the variances along the new axes (ocean/brdf.glsl).
+vec2 alignToSlopeAxes(inout SeaPoint p, vec3 cov) {
+  SlopeFrame f = slopePrincipalAxes(cov);
+  vec3 tx = f.axis.x * p.tx + f.axis.y * p.ty;
+  p.tx = tx;
+  p.ty = cross(p.n, tx);
+  return max(f.sigma2, vec2(SEA_SIGMA2_MIN));
+}
+
+// The Sun through the Ross BRDF (Eq. 6) of the facets' slope covariance cov (xx, yy, xy in p's
+// tx, ty) convolved with the Sun's disc: a flat sea shows the disc's reflection.
+vec3 seaSunGlint(SeaPoint p, vec3 cov) {
+  cov += sunDiscSlopeCovariance(p.v, p.l, p.tx, p.ty, SUN_ANGULAR_RADIUS_RAD);
+  vec2 sigma2 = alignToSlopeAxes(p, cov);
+  return p.eSun * rossSun(p.v, p.l, p.n, p.tx, p.ty, sigma2);
 }
 
 // Light refracted from below the surface, L_sea (1 - F) (§5.3), F the Fresnel factor used for
@@ -78,54 +113,89 @@ vec3 seaRefracted(SeaPoint p, vec3 upE, float fresnel) {
          (1.0 - fresnel);
 }
 
-// The clear sea at a shading point (Algorithm 5.1): sigma2 the unresolved slope variances
-// along/across the wind, upE the ellipsoid normal (ECEF axes).
-vec3 seaRadianceAt(SeaPoint p, vec2 sigma2, vec3 upE) {
+// vE: to the eye; nE: mean (resolved) normal; windE: the wind's direction (any vector with a
+// horizontal component along it); cov: unresolved slope covariance (xx, yy, xy) in the frame
+// along/across the wind (its principal axes need not be the wind's: the resolved waves taken
+// out of it are those of the local wind bins, Bruneton 2010 Eq. 4 with the full matrix);
+// upE: the ellipsoid normal at the point; sunE: towards the Sun. All unit, ECEF axes.
+vec3 seaRadianceAt(SeaPoint p, vec3 cov, vec3 upE) {
+  vec3 glint = seaSunGlint(p, cov);
+  vec2 sigma2 = alignToSlopeAxes(p, cov);
   // Sky: filtered reflection (Eqs. 9-10): the gradient lookup integrates the sky map over the
   // unresolved slopes' footprint, U(zeta) the stereographic coordinate of a facet's mirror ray.
   float sigmaV = sqrt(azimuthVariance(p.v, p.tx, p.ty, sigma2));
   float fbar = effectiveFresnel(dot(p.v, p.n), sigmaV);
+  // The footprint in the view's azimuth (a towards the eye's side, b across) of the visible
+  // slopes: along a the moments of visibleSlopeMoments (brdf.glsl), across b the Gaussian's.
+  vec2 a = vec2(dot(p.v, p.tx), dot(p.v, p.ty));
+  float sinV = length(a);
+  a = sinV > 1e-6 ? a / sinV : vec2(1.0, 0.0);
+  vec2 b = vec2(-a.y, a.x);
+  float sigmaB = sqrt(dot(b * b, sigma2));
+  vec2 visible = visibleSlopeMoments(max(dot(p.v, p.n), 0.0) / max(sinV * sigmaV, 1e-6));
+  vec2 zeta0 = visible.x * sigmaV * a;  // mean < 0: the visible facets lean towards the eye
   const float eps = 1e-3;
-  vec2 u0 = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, vec2(0.0)));
-  vec2 ux = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, vec2(eps, 0.0)));
-  vec2 uy = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, vec2(0.0, eps)));
-  vec2 sigma = sqrt(sigma2);
+  vec2 u0 = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, zeta0));
+  vec2 ua = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, zeta0 + eps * a));
+  vec2 ub = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, zeta0 + eps * b));
   vec3 sky = fbar * skyMapRadianceStereo(u0, p.sunZenith, p.sunAzimuth,
-                                         2.0 * sigma.x * (ux - u0) / eps, 2.0 * sigma.y * (uy - u0) / eps);
-  return seaSunGlint(p, sigma2) + sky + seaRefracted(p, upE, fbar);
+                                         2.0 * sigmaV * sqrt(visible.y) * (ua - u0) / eps,
+                                         2.0 * sigmaB * (ub - u0) / eps);
+  return uLightingTerms.x * glint + uLightingTerms.y * sky + uLightingTerms.z * seaRefracted(p, upE, fbar);
 }
-
-// vE: to the eye; nE: mean (resolved) normal; windE: the wind's direction (any vector with a
-// horizontal component along it); sigma2: unresolved slope variances along/across the wind;
-// upE: the ellipsoid normal at the point; sunE: towards the Sun. All unit, ECEF axes.
+vec3 seaRadiance(vec3 vE, vec3 nE, vec3 windE, vec3 cov, vec3 upE, vec3 sunE) {
+  return seaRadianceAt(seaPoint(vE, nE, windE, upE, sunE), cov, upE);
+}
+// sigma2: variances along/across the wind, no cross term.
 vec3 seaRadiance(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE) {
-  return seaRadianceAt(seaPoint(vE, nE, windE, upE, sunE), sigma2, upE);
+  return seaRadiance(vE, nE, windE, vec3(sigma2, 0.0), upE, sunE);
 }
 
 // Whitecap foam (Dupuy & Bruneton 2012 Eq. 2): a Lambertian surface of reflectance 0.4
 // (Koepke 1984) over the fraction `coverage` of the footprint, the clear sea over the rest:
 // R = W R_foam + (1 - W) R_sea.
 const float FOAM_REFLECTANCE = 0.4;
-vec3 seaRadianceWithFoam(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE,
+vec3 seaRadianceWithFoam(vec3 vE, vec3 nE, vec3 windE, vec3 cov, vec3 upE, vec3 sunE,
                          float coverage) {
-  SeaPoint p = seaPoint(vE, nE, windE, upE, sunE);
-  vec3 clear = seaRadianceAt(p, sigma2, upE);
+  SeaPoint p = seaPoint(vE, nE, windE, upE, sunE);  // once for the sea and the foam
+  vec3 clear = seaRadianceAt(p, cov, upE);
+  coverage *= uLightingTerms.w;
   vec3 foam = FOAM_REFLECTANCE / PI * (p.eSun * max(p.l.z, 0.0) + p.eSky);
   return mix(clear, foam, coverage);
+}
+vec3 seaRadianceWithFoam(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE,
+                         float coverage) {
+  return seaRadianceWithFoam(vE, nE, windE, vec3(sigma2, 0.0), upE, sunE, coverage);
 }
 
 #ifdef OCEAN_VALIDATION_REFERENCE
 // The brute-force reference of the validation (paper §7.2, docs/validation.md): each sample is a
 // perfect mirror with its exact facet normal n (every wave), the pixel's average coming from
 // supersampling, not from a slope distribution. Sky: a point lookup in the mirror direction with
-// the exact per-facet Fresnel F(v.n) (no F̄ fit, Eq. 10). The Sun: the Ross lobe of sigma2, the
-// spectrum's tail below the shortest wave, which no wave carries; it also lets a few dozen
-// samples per pixel find the Sun's 0.27° disc.
-vec3 seaRadianceMirror(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE) {
+// the exact per-facet Fresnel F(v.n) (no F̄ fit, Eq. 10). The Sun: a true disc, no tail lobe.
+// A mirror sample would find the 0.27° disc only with the paper's hundreds of samples per pixel,
+// so each sample stands for its patch of mirror surface, over which the facet slope varies
+// linearly (its screen derivatives), and the disc's reflection is integrated over the patch in
+// closed form, the patch's slopes and the disc taken as Gaussians of their second moments: the
+// Ross lobe of the patch's covariance plus the disc's (seaSunGlint). Same expectation as point
+// samples of the disc, far less noise.
+
+// Covariance (along, across the wind, cross) of the slopes over a sample's patch: a slope
+// varying linearly by dSlopeDx, dSlopeDy (frame axes x east, y north) across the sample spreads
+// like a box, variance d²/12 per direction. windAzimuth: radians clockwise from north.
+vec3 referencePatchCovariance(vec2 dSlopeDx, vec2 dSlopeDy, float windAzimuth) {
+  vec2 along = vec2(sin(windAzimuth), cos(windAzimuth)), across = vec2(-along.y, along.x);
+  vec2 gx = vec2(dot(dSlopeDx, along), dot(dSlopeDx, across));
+  vec2 gy = vec2(dot(dSlopeDy, along), dot(dSlopeDy, across));
+  return vec3(gx.x * gx.x + gy.x * gy.x, gx.y * gx.y + gy.y * gy.y, gx.x * gx.y + gy.x * gy.y) / 12.0;
+}
+
+vec3 seaRadianceMirror(vec3 vE, vec3 nE, vec3 windE, vec3 patchCov, vec3 upE, vec3 sunE) {
   SeaPoint p = seaPoint(vE, nE, windE, upE, sunE);
   float f = fresnelSchlick(dot(p.v, p.n));
   vec3 sky = f * skyMapRadianceStereo(stereographic(reflect(-p.v, p.n)), p.sunZenith, p.sunAzimuth,
                                       vec2(0.0), vec2(0.0));
-  return seaSunGlint(p, sigma2) + sky + seaRefracted(p, upE, f);
+  return uLightingTerms.x * seaSunGlint(p, patchCov) + uLightingTerms.y * sky +
+         uLightingTerms.z * seaRefracted(p, upE, f);
 }
 #endif

@@ -13,6 +13,7 @@
 #include "render/elevation.glsl"
 #include "ocean/coast.glsl"
 #include "terrain/shadow.glsl"
+#include "ocean/water_volume.glsl"  // the sea floor seen through the water (seed 001)
 
 in vec2 vOceanXY;
 in vec3 vRelative;
@@ -43,6 +44,9 @@ void main() {
   gSeaSunVisibility = sunVisibility(vRelative, up);  // mountains shade the sea at their feet
   vec2 wind = localWind(latLon);  // speed, azimuth
   SeaSurface sea = oceanSurface(vOceanXY, max(footprint, 1e-4), wind);
+#ifdef OCEAN_VALIDATION_CONSTANT_BRDF
+  sea.covariance = vec3(patternTable(PATTERN_COUNT, wind.x).xy, 0.0);  // the paper's constant BRDF
+#endif
   // Waves live in the frame's tangent plane; tilt their normal onto the ellipsoid's curvature
   // so that with the waves faded out the normal is exactly the ellipsoid's (as in orbit).
   vec3 nFrame = oceanToEcef * normalize(vec3(-sea.meanSlope, 1.0));
@@ -61,16 +65,17 @@ void main() {
   mat3 local = localFrame(up);
   vec3 windDir = sin(wind.y) * local[0] + cos(wind.y) * local[1];
 #ifdef OCEAN_VALIDATION_REFERENCE
-  // Validation reference: a mirror per sample; the variance is only the tail below the finest
-  // pattern (sea.variance at lod 0 holds just that plus the texels' own spread).
-  vec3 radiance = seaRadianceMirror(v, n, windDir, sea.variance, up, uSunDirEcef);
+  // Validation reference: a mirror per sample, the Sun's disc integrated over the sample's patch.
+  vec3 patchCov = referencePatchCovariance(dFdx(sea.meanSlope), dFdy(sea.meanSlope), wind.y);
+  vec3 radiance = seaRadianceMirror(v, n, windDir, patchCov, up, uSunDirEcef);
   // Weighted sample: premultiplied radiance, weight in alpha (never 0, alpha also marks sea).
   fragRadiance = vec4(oceanSurfaceRadiance(vRelative, radiance) * sampleWeight, max(sampleWeight, 1e-6));
   fragAux = vec4(0.0);
   return;
 #else
   float foam = whitecapCoverage(sea.jacobian);
-  vec3 radiance = seaRadianceWithFoam(v, n, windDir, sea.variance, up, uSunDirEcef, foam);
+  prepareWaterVolume(vRelative, v, n, up, latLon, vOceanXY, uEcefToOcean, max(footprint, 1e-4), wind, uSunDirEcef);
+  vec3 radiance = seaRadianceWithFoam(v, n, windDir, sea.covariance, up, uSunDirEcef, foam);
   fragRadiance = vec4(oceanSurfaceRadiance(vRelative, radiance), 1.0);
   fragAux = vec4(foam, 0.0, 0.0, 0.0);
 #endif

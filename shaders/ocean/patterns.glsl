@@ -86,11 +86,11 @@ vec3 patternCoord(vec2 p, int bin, int i) {
 // Level of detail at which pattern i's texels match a footprint (m). Validation variants
 // (`oceanglobe validate`, docs/validation.md): OCEAN_VALIDATION_REFERENCE resolves every
 // pattern fully whatever the footprint (the brute-force reference supersamples instead);
-// OCEAN_VALIDATION_CONSTANT resolves none (a flat sea, the whole slope variance in the BRDF).
+// OCEAN_VALIDATION_BRDF_ONLY resolves none (a flat sea, the whole slope variance in the BRDF).
 float patternLod(float footprintM, int i) {
 #if defined(OCEAN_VALIDATION_REFERENCE)
   return 0.0;
-#elif defined(OCEAN_VALIDATION_CONSTANT)
+#elif defined(OCEAN_VALIDATION_BRDF_ONLY)
   return uPatternTopLod;
 #else
   return log2(max(footprintM, 1e-6) * uPatternFftSize / uPatternSizeM[i]);
@@ -133,6 +133,7 @@ vec3 rotateCovariance(vec3 c, float angle) {
 struct SeaSurface {
   vec2 meanSlope;   // dz/dx, dz/dy of the footprint's mean surface, frame axes
   vec2 variance;    // unresolved slope variance along/across the local wind (BRDF)
+  vec3 covariance;  // the same with its cross term: (xx, yy, xy) in the local wind's frame
   vec2 jacobian;    // mean and variance of the whitecaps' Jacobian in the footprint
 };
 
@@ -179,10 +180,11 @@ SeaSurface oceanSurface(vec2 xy, float footprintM, vec2 wind) {
   // Faded-out waves (12-20 km): what the mean normal no longer shows goes into the BRDF.
   float a = uPatternAmplitude;
   vec2 meanWind = rotate2(mean, -windField);
-  cov.xy += (1.0 - a * a) * meanWind * meanWind;
+  cov += (1.0 - a * a) * vec3(meanWind * meanWind, meanWind.x * meanWind.y);
   SeaSurface r;
   r.meanSlope = frameVector(a * mean);
   r.variance = max(cov.xy, vec2(0.0));
+  r.covariance = vec3(r.variance, cov.z);
   r.jacobian = jac;
   return r;
 }

@@ -31,6 +31,7 @@
 #include "ocean/patterns.glsl"
 #include "render/elevation.glsl"
 #include "render/aerial.glsl"
+#include "terrain/imagery.glsl"
 
 in vec2 vNdc;
 #include "render/outputs.glsl"
@@ -61,6 +62,16 @@ vec3 landAlbedo(float elevation, float latitude) {
   return mix(c, snow, smoothstep(snowLine - 300.0, snowLine + 300.0, elevation));
 }
 
+// Land's albedo: the imagery (terrain/imagery.glsl), the ramp where it shows water (its coarse
+// pixels blur the sea onto the shore) or when imagery is off. footprintRad: the sample's
+// footprint on the ground, radians of arc.
+vec3 landColour(vec2 latLon, float elevation, float footprintRad) {
+  vec3 ramp = landAlbedo(elevation, latLon.x);
+  if (uImageryEnabled == 0) return ramp;
+  vec3 a = imageryAlbedo(latLon, footprintRad);
+  return mix(a, ramp, imageryWaterness(a));
+}
+
 // Land: Lambertian, lit by the attenuated Sun (irradiance sunIrr on a surface facing it) and
 // the sky (irradiance skyIrr on the horizontal surface).
 vec3 shadeLand(vec3 albedo, float muS, vec3 sunIrr, vec3 skyIrr) {
@@ -80,6 +91,7 @@ vec3 shadeSea(vec3 v, vec3 n) {
   vec3 wind = sin(w.y) * east + cos(w.y) * north;
   float foam = whitecapCoverage(vec2(1.0, seaJacobianVarianceTotal(w.x)));
   gSeaFoam = foam;
+  prepareWaterColumn(v, n, uSunDir, 1.0);  // the floor through the water (terrain/shallow.glsl)
   return seaRadianceWithFoam(v, n, wind, seaSlopeVarianceTotal(w.x), n, uSunDir, foam);
 }
 
@@ -94,7 +106,11 @@ vec3 surfaceRadiance(vec3 dir, float t, bool sea) {
   vec3 skyIrr;
   vec3 sunIrr = sunAndSkyIrradiance(uAtmosphere, uAtmTransmittance, uAtmIrradiance,
                                     uAtmosphere.bottomRadius, muSP, skyIrr);
-  return sea ? shadeSea(-dir, n) : shadeLand(landAlbedo(elevation, latLon.x), muSP, sunIrr, skyIrr);
+  if (sea) return shadeSea(-dir, n);
+  // A pixel's footprint on the ground (radians of arc), widened at grazing incidence.
+  float footprint = t * uPixelNdc.y * uTanHalfFov.y / (WGS84_A * max(dot(n, -dir), 0.2));
+  return shadeLand(landColour(latLon, elevation, footprint), muSP, sunIrr, skyIrr) +
+         nightLightsRadiance(latLon, footprint, muSP);
 }
 
 void main() {

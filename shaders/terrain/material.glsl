@@ -30,3 +30,20 @@ vec3 terrainAlbedo(float heightM, float slope, float latitudeRad) {
   float snowy = smoothstep(snowLine - 250.0, snowLine + 250.0, heightM) * (1.0 - smoothstep(0.35, 0.55, slope));
   return mix(c, snow, snowy);
 }
+
+// The albedo where imagery covers the ground: the imagery's colour, with the procedural
+// material's structure below the imagery's resolution keyed to it: rock on steep faces takes
+// the imagery's brightness, snow stays above the snow line on gentle slopes (the imagery's
+// ~20 km pixels blur alpine snow away); where the imagery shows water
+// (its coarse pixels spill the sea onto land) the procedural material stands in.
+vec3 terrainAlbedoOverImagery(vec3 imagery, vec3 procedural, float heightM, float slope, float latitudeRad) {
+  float water = smoothstep(0.0, 0.04, imagery.b - max(imagery.r, imagery.g));
+  vec3 c = mix(imagery, procedural, water);
+  float luma = dot(c, vec3(0.2126, 0.7152, 0.0722));
+  vec3 rock = vec3(1.05, 1.0, 0.93) * max(luma, 0.12);
+  c = mix(c, rock, 0.6 * smoothstep(0.25, 0.45, slope));
+  float latDeg = abs(latitudeRad) * (180.0 / PI);
+  float snowLine = mix(5600.0, 0.0, smoothstep(20.0, 75.0, latDeg));
+  float snowy = smoothstep(snowLine - 250.0, snowLine + 250.0, heightM) * (1.0 - smoothstep(0.35, 0.55, slope));
+  return mix(c, vec3(0.72, 0.74, 0.78), 0.8 * snowy);
+}

@@ -1,17 +1,28 @@
 // Shallow water (Baboud & Decoret 2006, seed 001 §4.1): light seen through the sea is the deep
-// water's upwelling plus the sea floor, attenuated per channel as alpha(d) = exp(-a_lambda d)
-// over the distance d through water. Here d = 2 x depth (down to the floor and back up, the
-// vertical path: refraction keeps rays steep under the surface), the depth from the elevation
-// layer's bathymetry. Hook for ocean/lighting.glsl's refracted term, shared by the globe's sea
-// (orbit) and the projected grid, so shelves, banks and coasts read from orbit and up close.
+// water's upwelling plus the sea floor, both through the water column's absorption and
+// in-scattering (ocean/water_optics.glsl, the C++ twin's physics), the floor's depth from the
+// elevation layer's bathymetry. Hook for ocean/lighting.glsl's refracted term, shared by the
+// globe's sea (orbit: prepareWaterColumn, a vertical column under the point) and the projected
+// grid (ocean/water_volume.glsl: the refracted ray marched to the floor per pixel), so
+// shelves, banks and coasts read the same from orbit and up close.
 #include "geo/ellipsoid.glsl"
 #include "render/elevation.glsl"
+#include "ocean/water_optics.glsl"
 
-// Diffuse attenuation of clear coastal water, m^-1 (red, green, blue): pure water absorption
-// (Pope & Fry 1997: ~0.35, 0.06, 0.01) raised for the dissolved and suspended matter of coasts.
-const vec3 WATER_ATTENUATION = vec3(0.40, 0.075, 0.045);
-// A sandy sea floor's reflectance (the terrain's stand-in material under water is sand too).
-const vec3 SEA_FLOOR_ALBEDO = vec3(0.30, 0.27, 0.19);
+uniform vec3 uWaterAttenuation;  // diffuse attenuation K_d per RGB, 1/m (ocean::jerlovWater)
+uniform vec3 uFloorAlbedo;       // the sea floor's reflectance (ocean::kCoralSandAlbedo)
+// The march's epsilon (seed 001 Eq. 6; ocean::kWaterEpsilon).
+const float WATER_EPSILON = 1.0 / 256.0;
+// Fresnel reflectance of the surface for diffuse sky light entering the water (~6.6 %).
+const float SKY_FRESNEL_MEAN = 0.066;
+
+// What the water under the shaded point sends up: radiance leaving the sea per unit of the
+// irradiance the lighting multiplies it by (sr^-1), set by the caller before lighting.
+struct WaterVolume {
+  bool set;
+  vec3 reflectance;
+};
+WaterVolume gWater = WaterVolume(false, vec3(0.0));
 
 // Depth of the sea floor below mean sea level at a point with geodetic normal upE, m; without
 // an elevation layer the sea is deep everywhere.
@@ -20,9 +31,31 @@ float seaFloorDepthM(vec3 upE) {
   return max(-elevationAt(latLonOfNormal(upE)), 0.0);
 }
 
-// Upwelling radiance per unit irradiance (sr^-1) over water `depthM` deep, from the deep sea's
-// `deepColor`.
+// The water column under a point seen from afar (the globe's sea): a flat floor at the layer's
+// depth, the view (vE, to the eye) and the Sun (sunE) refracted by the mean surface, lit by
+// the Sun (irradiances from the sky model, `sunSeen` of its disc) and the sky.
+void prepareWaterColumn(vec3 vE, vec3 upE, vec3 sunE, float sunSeen) {
+  float depthM = seaFloorDepthM(upE);
+  vec3 k = uWaterAttenuation;
+  if (depthM > waterMaxPathM(k, WATER_EPSILON)) {
+    gWater = WaterVolume(true, uSeaColor);
+    return;
+  }
+  float muS = dot(sunE, upE);
+  float sunZenith = acos(clamp(muS, -1.0, 1.0));
+  vec3 eSun = sunIrradiance(sunZenith) * sunSeen, eSky = skyIrradiance(sunZenith);
+  vec3 sunBelow = eSun * max(muS, 0.0) * (1.0 - fresnelSchlick(max(muS, 0.0)));
+  float cosSunWater = waterRefractedCosine(max(muS, 0.0));
+  vec3 floorIrr = floorIrradiance(k, depthM, cosSunWater, sunBelow, 1.0, eSky * (1.0 - SKY_FRESNEL_MEAN));
+  float viewPathM = depthM / waterRefractedCosine(clamp(dot(vE, upE), 0.0, 1.0));
+  vec3 surfaceIrr = eSun * max(muS, 0.0) + eSky;
+  vec3 radiance = waterColumnRadiance(k, uSeaColor, uFloorAlbedo, floorIrr, depthM, viewPathM, surfaceIrr);
+  gWater = WaterVolume(true, radiance / max(surfaceIrr, vec3(1e-6)));
+}
+
+// Upwelling radiance per unit irradiance (sr^-1) over water `depthM` deep: what the caller
+// prepared (gWater), else the deep sea's `deepColor` (the validation variants, which model the
+// open sea only).
 vec3 shallowSeaColor(vec3 deepColor, float depthM) {
-  vec3 floorSeen = exp(-WATER_ATTENUATION * (2.0 * depthM));
-  return mix(deepColor, SEA_FLOOR_ALBEDO / PI, floorSeen);
+  return gWater.set ? gWater.reflectance : deepColor;
 }

@@ -9,6 +9,7 @@
 #include "atmosphere/model.glsl"
 #include "render/aerial.glsl"
 #include "terrain/material.glsl"
+#include "terrain/imagery.glsl"
 #include "terrain/detail.glsl"
 #include "terrain/shadow.glsl"
 
@@ -86,7 +87,10 @@ void main() {
   // From high up the globe pass's sea covers the bathymetry: leave it to it rather than to a
   // depth test a few kilometres deep at thousands of kilometres (which llvmpipe's multisample
   // depth interpolation does not resolve).
-  if (uSeaFromGlobe == 1 && heightM < 0.0) discard;
+  // Below the grid's ceiling the sea pass draws the floor itself, through the water
+  // (ocean/water_volume.glsl): drop the floor deeper than a metre, which the sea's chords
+  // would otherwise let show through far away over shallow banks (issue 15).
+  if (heightM < (uSeaFromGlobe == 1 ? 0.0 : -1.0)) discard;
   float lat = vInfo.y, lon = vInfo.z;
   vec3 up = vec3(cos(lat) * cos(lon), cos(lat) * sin(lon), sin(lat));
   // Triangles that collapse at a pole give no normal (zero or NaN): the vertical stands in.
@@ -112,10 +116,13 @@ void main() {
   vec3 sunIrr = sunAndSkyIrradiance(uAtmosphere, uAtmTransmittance, uAtmIrradiance,
                                     uAtmosphere.bottomRadius + hP, dot(up, uSunDir), skyIrr);
   vec3 albedo = terrainAlbedo(heightM, slope, lat);
+  if (uImageryEnabled == 1 && heightM >= 0.0)
+    albedo = terrainAlbedoOverImagery(imageryAlbedo(vec2(lat, lon), footprint), albedo, heightM, slope, lat);
   // Sky light on a tilted surface: the part of the sky dome it sees.
   float skyView = 0.5 + 0.5 * dot(n, up);
   float sunSeen = dot(n, uSunDir) > 0.0 ? sunVisibility(vRelative, nGeometric) : 0.0;
   vec3 surface = albedo / PI * (sunIrr * (max(dot(n, uSunDir), 0.0) * sunSeen) + skyIrr * skyView);
+  if (heightM >= 0.0) surface += nightLightsRadiance(vec2(lat, lon), footprint, dot(up, uSunDir));
   fragRadiance = vec4(aerialToAltitude(surface, dir, t, hP), 1.0);
   fragAux = vec4(0.0);
 }

@@ -52,6 +52,10 @@ std::vector<BenchView> benchViews() {
           {"sea-4m", pose(20, -40, 4.0, 270, -10)},
           {"sea-1km", pose(20, -40, 1000.0, 270, -20)},
           {"sea-8km", pose(20, -40, 8000.0, 270, -30)},
+          // Coastal water (issue 15): 2 m over the Great Bahama Bank with the floor in view,
+          // and the same view over deep water; their ratio is the water volume's cost.
+          {"coast-2m-bank", pose(24.2, -78.2, 2.0, 270, -10)},
+          {"coast-2m-deep", pose(20, -40, 2.0, 270, -10)},
           // Terrain: the Himalaya towards the horizon, and the Strait of Gibraltar's coasts.
           {"mountain-15km", pose(27.3, 86.9, 15000.0, 10, -2)},
           {"coast-30km", pose(35.6, -5.6, 30000.0, 0, -30)}};
@@ -202,7 +206,8 @@ Run addBenchCommand(CLI::App& parent) {
   cmd->add_option("--size", o->sizes, "image sizes WIDTHxHEIGHT (repeatable)");
   cmd->add_option("--view", o->views, "only these views (repeatable; default: all)")
       ->check(CLI::IsMember({"orbit-20000km", "limb-400km", "sea-2m-horizon", "sea-4m", "sea-1km",
-                             "sea-8km", "mountain-15km", "coast-30km"}));
+                             "sea-8km", "coast-2m-bank", "coast-2m-deep", "mountain-15km",
+                             "coast-30km"}));
   cmd->add_option("--samples", o->samples,
                   "samples per pixel: auto (default), 1, 2, 4 or 8; several (--samples 1 4) time each "
                   "case at each count, frames interleaved so that machine load hits all alike");
@@ -319,7 +324,9 @@ Run addBenchCommand(CLI::App& parent) {
                                      {"min_ms", t.front()}, {"max_ms", t.back()},
                                      {"frames", t.size()}, {"terrain_tiles", ts.tiles},
                                      {"terrain_cpu_bytes", ts.cpuBytes},
-                                     {"terrain_gpu_bytes", ts.gpuBytes}});
+                                     {"terrain_gpu_bytes", ts.gpuBytes},
+                                     {"imagery_gpu_bytes", renderers[k]->imagery().gpuBytes() +
+                                                               renderers[k]->landMask().gpuBytes()}});
           if (!o->json)
             std::printf("%-16s %10s %7d %7.2fms %7.2fms %7.2fms  terrain %d tiles, %.1f MiB CPU + %.1f MiB GPU\n",
                         view.name, size.c_str(), renderers[k]->samples(), median, t.front(),

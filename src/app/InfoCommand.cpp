@@ -132,7 +132,8 @@ Run addInfoCommand(CLI::App& parent) {
                    {"covers_poles", g.coversPoles()}};
       nlohmann::ordered_json times = nlohmann::ordered_json::array();
       for (const UtcTime& t : first.times) times.push_back(t.toIso8601());
-      j["time"] = {{"axis", first.timeAxisName}, {"steps", first.steps()}, {"values", times}};
+      j["time"] = {{"axis", first.timeAxisName}, {"steps", first.steps()}, {"values", times},
+                   {"climatology", first.climatology}};
       nlohmann::ordered_json vars = nlohmann::ordered_json::array();
       for (const VariableReport& v : variables) {
         nlohmann::ordered_json o = {{"name", v.summary.name},
@@ -174,6 +175,8 @@ Run addInfoCommand(CLI::App& parent) {
       out << "time        " << first.times.size() << " step" << (first.times.size() == 1 ? "" : "s")
           << " on '" << first.timeAxisName << "': " << first.times.front().toIso8601();
       if (first.times.size() > 1) out << " .. " << first.times.back().toIso8601();
+      // A climatology's steps are positions in any year (shown in year 2001).
+      if (first.climatology) out << " (climatology: repeats every year)";
       out << "\n";
       constexpr std::size_t kListed = 8;
       if (first.times.size() > 1) {

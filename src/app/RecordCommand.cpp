@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include "app/Aovs.hpp"
 #include "app/Commands.hpp"
 #include "app/PathFiles.hpp"
 #include "app/Recording.hpp"
@@ -101,6 +102,7 @@ struct RecordOptions {
   bool resume = false;
   bool countFrames = false;
   std::string exrType = "half";
+  std::vector<std::string> aovs;
 };
 
 /// "A:B" (B exclusive), "A:" or ":B" against `total` frames. B is clamped to total so a fixed
@@ -149,6 +151,8 @@ RecordResult runRecording(const RecordJob& job) {
   const Sink sink = job.output.empty() ? Sink::None : ext == ".mp4" ? Sink::Mp4 : ext == ".png" ? Sink::Png : ext == ".exr" ? Sink::Exr
       : throw InputError(job.output + ": unsupported output '" + ext +
                          "' (use .mp4, or an image pattern like frames/frame_%05d.png or .exr)");
+  if (!job.aovs.empty() && sink != Sink::Exr)
+    throw InputError(job.output + ": --aov needs an OpenEXR frame pattern (frames/frame_%05d.exr)");
   std::optional<FramePattern> pattern;
   io::VideoOptions video;
   if (sink == Sink::Mp4) {
@@ -182,6 +186,7 @@ RecordResult runRecording(const RecordJob& job) {
   // Data layers before the GL context (as `render` does): a bad file exits 2 at once.
   const data::LatLonGrid elevation = data::loadElevationLayer(scene.elevationLayer);
   const std::shared_ptr<const data::WindLayers> wind = loadWindLayers(scene);
+  const std::vector<data::GeoImage> imagery = loadImageryLayers(scene);
 
   auto context = gl::createHeadlessContext(*gl::parseBackend(scene.glBackend));
   result.glRenderer = context->info().renderer;
@@ -190,6 +195,10 @@ RecordResult runRecording(const RecordJob& job) {
             context->info().renderer + ")");
   render::GlobeRenderer renderer(elevation, scene.atmosphere);
   renderer.setWindLayers(wind);
+  if (wind && wind->timeVarying() && !scene.time)
+    log::warn("the wind layers have a time axis but the path has no UTC time ([scene] time or "
+              "--time): the winds stay at their first step");
+  renderer.imagery().setLayers(imagery);
 
   // With Sun angles, they hold at the last keyframe (usually the close-up, where a low Sun
   // matters); the direction is then fixed in ECEF for the whole flight.
@@ -224,17 +233,19 @@ RecordResult runRecording(const RecordJob& job) {
     oceanFrameAt = i;
   };
 
-  // Frame i: the path at startS + i / fps and the same simulation clock for the waves and,
-  // with a UTC time, for the Sun.
+  // Frame i: the path at startS + i / fps, the waves' clock in real time and, with a UTC time,
+  // the Sun and wind layers at time + (i / fps) * time_lapse.
   auto renderFrame = [&](std::int64_t i) {
     const double t = static_cast<double>(i) / job.fps;
     advanceOceanFrame(i);
     render::FrameInput frame = frameInputOf(scene);
     frame.camera = poseAt(i);
     frame.oceanFrame = &oceanFrame;
-    frame.sunDirectionEcef =
-        scene.time ? geo::sunEphemeris(UtcTime{scene.time->unixSeconds + t}).directionEcef : fixedSun;
+    // The UTC clock runs time_lapse times faster than the path (Sun, timed wind layers).
+    if (scene.time) frame.utcTime = UtcTime{scene.time->unixSeconds + t * scene.timeLapse};
+    frame.sunDirectionEcef = frame.utcTime ? geo::sunEphemeris(*frame.utcTime).directionEcef : fixedSun;
     frame.simulationTimeS = scene.simulationTimeS + t;
+    frame.auxiliaryOutputs = needsAuxiliaryOutputs(job.aovs);
     renderer.render(frame);
   };
 
@@ -271,7 +282,8 @@ RecordResult runRecording(const RecordJob& job) {
         io::writePng(pattern->at(i), renderer.display());
       else
         io::writeExr(pattern->at(i), renderer.radiance(),
-                     job.exrFloat ? io::ExrPixelType::Float : io::ExrPixelType::Half);
+                     job.exrFloat ? io::ExrPixelType::Float : io::ExrPixelType::Half,
+                     aovChannels(renderer, job.aovs));
     });
   }
   result.wallS = std::chrono::duration<double>(Clock::now() - start).count();
@@ -363,6 +375,7 @@ Run addRecordCommand(CLI::App& parent) {
                 "image sequences: skip frames whose files already exist (they are complete)");
   cmd->add_option("--exr-type", o->exrType, "EXR pixel type: half or float")
       ->check(CLI::IsMember({"half", "float"}));
+  addAovOption(*cmd, o->aovs);
   return [o, cmd]() {
     refuseCameraFlags(*cmd, "record");
     RecordJob job;
@@ -374,6 +387,7 @@ Run addRecordCommand(CLI::App& parent) {
     job.output = o->output;
     job.resume = o->resume;
     job.exrFloat = o->exrType == "float";
+    job.aovs = o->aovs;
     if (o->countFrames) {
       std::printf("%lld\n", static_cast<long long>(
                                  frameCount(job.path.flight().durationS(), job.fps)));

@@ -23,6 +23,7 @@ struct RecordJob {
   std::int64_t stride = 1;      ///< render every stride-th frame (bench samples the path)
   bool resume = false;          ///< image sequences: skip frames whose files exist
   bool exrFloat = false;        ///< 32-bit float EXR instead of half
+  std::vector<std::string> aovs;  ///< extra EXR channels (app/Aovs.hpp); EXR outputs only
   bool progress = true;         ///< show the progress bar / lines
 };
 

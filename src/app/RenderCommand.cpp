@@ -2,7 +2,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <vector>
 
+#include "app/Aovs.hpp"
 #include "app/Commands.hpp"
 #include "app/SceneOptions.hpp"
 #include "core/AtomicFile.hpp"
@@ -32,6 +35,7 @@ struct RenderOptions {
   SceneOptions scene;
   std::string output;
   std::string exrType = "half";
+  std::vector<std::string> aovs;
 };
 
 }  // namespace
@@ -44,14 +48,18 @@ Run addRenderCommand(CLI::App& parent) {
       ->required();
   cmd->add_option("--exr-type", opts->exrType, "EXR pixel type: half or float")
       ->check(CLI::IsMember({"half", "float"}));
+  addAovOption(*cmd, opts->aovs);
   return [opts]() {
     const io::SceneSettings scene = opts->scene.resolve();
     const std::filesystem::path out = opts->output;
     const Format format = formatOf(out);
+    if (!opts->aovs.empty() && format != Format::Exr)
+      throw InputError(out.string() + ": --aov needs an OpenEXR output (.exr): PNG has no extra channels");
     checkOutputWritable(out);  // fail before the (long) render, not after
     // Data layers before the GL context: a bad file exits 2 without rendering anything.
     const data::LatLonGrid elevation = data::loadElevationLayer(scene.elevationLayer);
     const std::shared_ptr<const data::WindLayers> wind = loadWindLayers(scene);
+    const std::vector<data::GeoImage> imagery = loadImageryLayers(scene);
 
     const auto backend = gl::parseBackend(scene.glBackend);
     auto context = gl::createHeadlessContext(*backend);
@@ -59,13 +67,16 @@ Run addRenderCommand(CLI::App& parent) {
               " with " + context->info().backend + " (" + context->info().renderer + ")");
     render::GlobeRenderer renderer(elevation, scene.atmosphere);
     renderer.setWindLayers(wind);
-    const render::FrameInput frame = frameInputOf(scene);
+    renderer.imagery().setLayers(imagery);
+    render::FrameInput frame = frameInputOf(scene);
+    frame.auxiliaryOutputs = needsAuxiliaryOutputs(opts->aovs);
     renderer.render(frame);
     if (format == Format::Png)
       io::writePng(out, renderer.display());
     else
       io::writeExr(out, renderer.radiance(),
-                   opts->exrType == "float" ? io::ExrPixelType::Float : io::ExrPixelType::Half);
+                   opts->exrType == "float" ? io::ExrPixelType::Float : io::ExrPixelType::Half,
+                   aovChannels(renderer, opts->aovs));
     log::info("wrote " + out.string());
     return static_cast<int>(kExitOk);
   };

@@ -39,6 +39,9 @@ void SceneOptions::add(CLI::App& cmd) {
   cmd.add_option("--ocean", flags_.oceanModel, "ocean model: bruneton (filtered) or classic");
   cmd.add_option("--t", flags_.simulationTimeS, "simulation time of the waves, seconds");
   cmd.add_option("--seed", flags_.waveSeed, "seed of the wave directions and phases");
+  cmd.add_option("--time-lapse", flags_.timeLapse,
+                 "record/view: UTC seconds per second of path, [0, 1e6] (default 1): the Sun and "
+                 "wind layers with a time axis follow this clock, the waves keep real time");
   cmd.add_option("--wind", wind_,
                  "wind where no layer covers: SPEED[,FROM] in m/s and the direction it comes from, "
                  "degrees clockwise from north (meteorological; default 7,270)");
@@ -46,7 +49,12 @@ void SceneOptions::add(CLI::App& cmd) {
                  "wind field FILE[:U,V] (NetCDF or GRIB2); repeat to stack a regional layer over "
                  "a global one");
   cmd.add_option("--elevation-layer", flags_.elevationLayer,
-                 "relief/bathymetry FILE[:VAR] in metres (default: embedded ETOPO20)");
+                 "relief/bathymetry FILE[:VAR] in metres: NetCDF, GRIB or GeoTIFF (default: "
+                 "embedded ETOPO20)");
+  cmd.add_option("--imagery-layer", flags_.imageryLayers,
+                 "georeferenced imagery FILE draped over the land (GeoTIFF/COG, JPEG/PNG with a "
+                 "world file, ... in EPSG:4326, 3857 or any CRS PROJ knows); repeat, later on top "
+                 "(default: the embedded Blue Marble)");
 }
 
 io::SceneSettings SceneOptions::resolve(io::SceneSettings s) const {
@@ -69,8 +77,10 @@ io::SceneSettings SceneOptions::resolve(io::SceneSettings s) const {
   if (given("--ocean")) s.oceanModel = flags_.oceanModel;
   if (given("--t")) s.simulationTimeS = flags_.simulationTimeS;
   if (given("--seed")) s.waveSeed = flags_.waveSeed;
+  if (given("--time-lapse")) s.timeLapse = flags_.timeLapse;
   if (given("--wind-layer")) s.windLayers = flags_.windLayers;
   if (given("--elevation-layer")) s.elevationLayer = flags_.elevationLayer;
+  if (given("--imagery-layer")) s.imageryLayers = flags_.imageryLayers;
   if (given("--wind")) {
     const geo::Wind wind = geo::parseWindFlag(wind_, s.windFromDeg);
     s.windSpeedMs = wind.speedMs;
@@ -108,6 +118,7 @@ render::FrameInput frameInputOf(const io::SceneSettings& s) {
   frame.wind = s.wind();
   frame.simulationTimeS = s.simulationTimeS;
   frame.waveSeed = s.waveSeed;
+  frame.utcTime = s.time;  // layers with a time axis follow it
   return frame;
 }
 
@@ -115,6 +126,11 @@ glm::dvec3 sunDirectionOf(const io::SceneSettings& s) {
   if (s.time) return geo::sunEphemeris(*s.time).directionEcef;
   return geo::sunDirectionFromHorizontal(s.camera.position, s.sunElevationDeg.value_or(50.0),
                                          s.sunAzimuthDeg.value_or(150.0));
+}
+
+std::vector<data::GeoImage> loadImageryLayers(const io::SceneSettings& s) {
+  std::vector<std::filesystem::path> files(s.imageryLayers.begin(), s.imageryLayers.end());
+  return data::loadImageryLayers(files);
 }
 
 std::shared_ptr<const data::WindLayers> loadWindLayers(const io::SceneSettings& s) {

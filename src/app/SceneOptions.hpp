@@ -5,7 +5,9 @@
 #include <glm/glm.hpp>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "data/Imagery.hpp"
 #include "data/WindLayers.hpp"
 #include "io/SceneFile.hpp"
 #include "render/GlobeRenderer.hpp"
@@ -51,6 +53,9 @@ glm::dvec3 sunDirectionOf(const io::SceneSettings& scene);
 /// The scene's wind layers, loaded and validated (og::InputError for a bad file), or nullptr
 /// when it names none: then the constant wind holds everywhere.
 std::shared_ptr<const data::WindLayers> loadWindLayers(const io::SceneSettings& scene);
+/// The scene's imagery layers (data::loadImageryLayers), read before any GL context so a bad
+/// file exits 2 at once.
+std::vector<data::GeoImage> loadImageryLayers(const io::SceneSettings& scene);
 
 /// The scene's ocean model ("bruneton" or "classic", validated by io::validateScene).
 render::OceanModel oceanModelOf(const io::SceneSettings& scene);

@@ -79,6 +79,7 @@ class Viewer {
       : options_(options),
         scene_(std::move(scene)),
         ground_(data::loadElevationLayer(scene_.elevationLayer)),
+        imagery_(loadImageryLayers(scene_)),
         wind_(data::WindLayers::load(scene_.windLayers, scene_.wind().vector(), scene_.time)),
         controller_(scene_.camera, [this](double lat, double lon) {
           // The sea is at the ellipsoid; land lifts the floor to the terrain's height, detail
@@ -110,6 +111,8 @@ class Viewer {
     renderer_ = std::make_unique<render::GlobeRenderer>(ground_.layer(), scene_.atmosphere);
     // Progressive terrain: missing tiles are built in the background, never stalling a frame.
     renderer_->terrain().selection().wait = false;
+    renderer_->imagery().setLayers(imagery_);
+    imagery_ = {};  // on the GPU now: release the CPU copy
     // The renderer reads the layers point by point (wind texture); L switches them off.
     if (wind_.size() > 0) windShared_ = std::make_shared<const data::WindLayers>(wind_);
     renderer_->setWindLayers(layersOn_ ? windShared_ : nullptr);
@@ -149,7 +152,7 @@ class Viewer {
   [[nodiscard]] double pathTimeS() const { return flight_ ? playS_ : 0.0; }
   [[nodiscard]] std::optional<UtcTime> currentTime() const {
     if (!baseTime_) return std::nullopt;
-    return UtcTime{baseTime_->unixSeconds + timeOffsetS_ + pathTimeS()};
+    return UtcTime{baseTime_->unixSeconds + timeOffsetS_ + pathTimeS() * scene_.timeLapse};
   }
   [[nodiscard]] glm::dvec3 sunDirection() const {
     if (const auto t = currentTime()) return geo::sunEphemeris(*t).directionEcef;
@@ -162,7 +165,10 @@ class Viewer {
   // The wind under the camera (the layers', or the constant wind with L off).
   [[nodiscard]] geo::Wind windHere() const {
     const auto& g = controller_.pose().position;
-    return geo::Wind::ofVector(layersOn_ ? wind_.sample(g.latitudeDeg, g.longitudeDeg) : wind_.fallback());
+    if (!layersOn_) return geo::Wind::ofVector(wind_.fallback());
+    const auto t = currentTime();  // layers with a time axis follow the clock
+    return geo::Wind::ofVector(t && wind_.timeVarying() ? wind_.at(*t).sample(g.latitudeDeg, g.longitudeDeg)
+                                                        : wind_.sample(g.latitudeDeg, g.longitudeDeg));
   }
 
   // --- input ----------------------------------------------------------------------------
@@ -357,6 +363,7 @@ class Viewer {
     frame.width = width;
     frame.height = height;
     frame.simulationTimeS = scene_.simulationTimeS + wallS_;
+    frame.utcTime = currentTime();
     frame.oceanModel = oceanModel_;
     frame.wind = windHere();
     frame.wind.speedMs = std::min(frame.wind.speedMs, 50.0);
@@ -454,6 +461,7 @@ class Viewer {
   ViewOptions options_;
   io::SceneSettings scene_;
   terrain::Heightfield ground_;  // the elevation layer and its detail: the floor to fly over
+  std::vector<data::GeoImage> imagery_;  // --imagery-layer: read before the window opens
   data::WindLayers wind_;
   std::shared_ptr<const data::WindLayers> windShared_;  // the same, for the renderer
   viewer::FlightController controller_;

@@ -1,5 +1,7 @@
 #include "data/GridFile.hpp"
 
+#include "data/TimeAxis.hpp"
+
 #include <algorithm>
 #include <array>
 #include <fstream>
@@ -79,6 +81,11 @@ StepChoice chooseSteps(const std::vector<UtcTime>& times, std::optional<UtcTime>
   c.weight = (t - t0) / (t1 - t0);
   if (c.weight == 0.0) c.second = c.first;
   return c;
+}
+
+StepChoice chooseFieldSteps(const FieldDescription& field, std::optional<UtcTime> time) {
+  return field.climatology ? detail::chooseClimatologySteps(field.times, time)
+                           : chooseSteps(field.times, time);
 }
 
 std::string chooseField(const GridFile& file, const std::string& requested,

@@ -31,6 +31,9 @@ struct FieldDescription {
   LatLonGrid geometry;          ///< normalised geometry; `values` is empty
   std::vector<UtcTime> times;   ///< one per step, strictly increasing; empty: one untimed step
   std::string timeAxisName;     ///< e.g. "time", "valid_time"; empty without a time axis
+  /// A climatology: the steps repeat every year; `times` are their positions in the year,
+  /// placed in year detail::kClimatologyYear, distinct but not necessarily in order.
+  bool climatology = false;
   [[nodiscard]] std::size_t steps() const { return times.empty() ? 1 : times.size(); }
 };
 
@@ -78,6 +81,9 @@ struct StepChoice {
 /// No time, or an untimed field: step 0. Before the first or after the last step: that end step
 /// (clamped, no extrapolation). Otherwise the two steps around `time`, linearly weighted.
 StepChoice chooseSteps(const std::vector<UtcTime>& times, std::optional<UtcTime> time);
+/// Same for a field: cyclic through the year end for a climatology (by the position of `time`
+/// in its year), else as above.
+StepChoice chooseFieldSteps(const FieldDescription& field, std::optional<UtcTime> time);
 
 /// Picks a single field for a scalar layer: `requested` if given, else the only field on
 /// latitude/longitude axes, else the first of `preferredNames` present. Throws otherwise.

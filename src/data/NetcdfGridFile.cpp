@@ -302,7 +302,8 @@ void NetcdfGridFile::planLeadingDimensions(FieldPlan& p) const {
       units = parseTimeUnits(unitsText);
       calendar = nc_.textAttribute(coordinate->id, "calendar").value_or("");
     }
-    const bool looksLikeTime = units.has_value() || lower(dimName).find("time") != std::string::npos;
+    const bool looksLikeTime = units.has_value() || lower(dimName).find("time") != std::string::npos ||
+                               lower(unitsText).find(" since ") != std::string::npos;
     if (length == 0) nc_.fail(quoted + " has no steps along '" + dimName + "'");
     if (length == 1 && !units) continue;  // a single level/ensemble member/untimed step
     if (length > 1 && !looksLikeTime)
@@ -314,12 +315,6 @@ void NetcdfGridFile::planLeadingDimensions(FieldPlan& p) const {
     if (length > 1 && coordinate == nullptr)
       nc_.fail(quoted + " has " + std::to_string(length) + " steps along '" + dimName +
                "' but no time coordinate variable '" + dimName + "' to tell them apart");
-    if (!units)
-      nc_.fail("time axis '" + dimName + "' has units '" + unitsText +
-               "' that are not understood (expected e.g. 'hours since 1900-01-01 00:00:00')");
-    if (!isRealCalendar(calendar))
-      nc_.fail("time axis '" + dimName + "' uses calendar '" + calendar +
-               "'; only standard, gregorian and proleptic_gregorian dates are supported");
     if (length > kMaxTimeSteps)
       nc_.fail("time axis '" + dimName + "' has " + std::to_string(length) + " steps (limit " +
                std::to_string(kMaxTimeSteps) + ")");
@@ -328,7 +323,12 @@ void NetcdfGridFile::planLeadingDimensions(FieldPlan& p) const {
               "cannot read time axis '" + dimName + "'");
     p.timeDim = static_cast<int>(d);
     p.description.timeAxisName = dimName;
-    p.description.times = toInstants(nc_.label(), dimName, values, *units);
+    // Calendars, climatologies (CF `climatology`, Ferret `modulo`) and unit errors: TimeAxis.
+    const bool climatology = nc_.textAttribute(coordinate->id, "climatology").has_value() ||
+                             nc_.textAttribute(coordinate->id, "modulo").has_value();
+    AxisTimes axis = decodeTimeAxis(nc_.label(), dimName, values, unitsText, calendar, climatology);
+    p.description.times = std::move(axis.times);
+    p.description.climatology = axis.climatology;
   }
 }
 

@@ -51,7 +51,7 @@ void checkPair(const GridFile& file, const FieldDescription& u, const FieldDescr
     throw InputError(file.label() + ": '" + u.summary.name + "' and '" + v.summary.name +
                      "' are on different grids");
   const bool sameTimes =
-      u.times.size() == v.times.size() &&
+      u.times.size() == v.times.size() && u.climatology == v.climatology &&
       std::equal(u.times.begin(), u.times.end(), v.times.begin(),
                  [](const UtcTime& x, const UtcTime& y) { return x.unixSeconds == y.unixSeconds; });
   if (!sameTimes)
@@ -113,48 +113,100 @@ WindVariables chooseWindVariables(const GridFile& file, const std::vector<std::s
                    " (name them: FILE:U,V)");
 }
 
-WindGrid readWind(const GridFile& file, const std::vector<std::string>& variables,
-                  std::optional<UtcTime> time) {
-  const WindVariables names = chooseWindVariables(file, variables);
-  const FieldDescription u = file.describe(names.u);
-  const FieldDescription v = file.describe(names.v);
-  checkPair(file, u, v);
-  const double uFactor = unitFactor(file, u.summary);
-  const double vFactor = unitFactor(file, v.summary);
+WindSeries::WindSeries(const GridFile& file, const std::vector<std::string>& variables) : borrowed_(&file) {
+  describe(file, variables);
+}
 
-  const StepChoice steps = chooseSteps(u.times, time);
-  if (time && !u.times.empty() &&
-      (time->unixSeconds < u.times.front().unixSeconds ||
-       time->unixSeconds > u.times.back().unixSeconds) &&
-      u.times.size() > 1)
-    log::warn(file.label() + ": " + time->toIso8601() + " is outside the file's time steps (" +
-              u.times.front().toIso8601() + " to " + u.times.back().toIso8601() +
-              "); using the nearest step");
+void WindSeries::describe(const GridFile& file, const std::vector<std::string>& variables) {
+  label_ = file.label();
+  names_ = chooseWindVariables(file, variables);
+  u_ = file.describe(names_.u);
+  const FieldDescription v = file.describe(names_.v);
+  checkPair(file, u_, v);
+  uFactor_ = unitFactor(file, u_.summary);
+  vFactor_ = unitFactor(file, v.summary);
+}
 
-  WindGrid out;
-  out.label = file.label();
-  const auto load = [&](const std::string& name, double factor) {
-    LatLonGrid grid = file.read(name, steps.first);
-    if (steps.second != steps.first) {
-      const LatLonGrid next = file.read(name, steps.second);
-      const auto w = static_cast<float>(steps.weight);
-      // NaN in either step stays NaN: no data is never blended into data.
-      for (std::size_t i = 0; i < grid.values.size(); ++i)
-        grid.values[i] = grid.values[i] * (1.0f - w) + next.values[i] * w;
+std::shared_ptr<const WindSeries> WindSeries::open(const std::string& spec) {
+  const LayerSpec layer = parseLayerSpec(spec);
+  std::shared_ptr<WindSeries> series(new WindSeries());
+  series->path_ = layer.file;
+  const auto file = openGridFile(layer.file);  // closed at the end of this scope
+  series->describe(*file, layer.variables);
+  return series;
+}
+
+template <class F>
+auto WindSeries::withFile(F&& f) const {
+  if (borrowed_ != nullptr) return f(*borrowed_);
+  const auto file = openGridFile(path_);
+  return f(*file);
+}
+
+WindGrid WindSeries::readStep(std::size_t step) const {
+  return withFile([&](const GridFile& file) { return readStep(file, step); });
+}
+
+double WindSeries::maxSpeedMs() const {
+  return withFile([&](const GridFile& file) {
+    double strongest = 0.0;
+    for (std::size_t i = 0; i < u_.steps(); ++i) {
+      const WindGrid g = readStep(file, i);
+      for (std::size_t k = 0; k < g.u.values.size(); ++k) {
+        const double speed = std::hypot(static_cast<double>(g.u.values[k]), static_cast<double>(g.v.values[k]));
+        if (std::isfinite(speed)) strongest = std::max(strongest, speed);
+      }
     }
+    return strongest;
+  });
+}
+
+WindGrid WindSeries::readStep(const GridFile& file, std::size_t step) const {
+  const auto load = [&](const std::string& name, double factor) {
+    LatLonGrid grid = file.read(name, step);
     if (factor != 1.0) {
       for (float& x : grid.values) x = static_cast<float>(static_cast<double>(x) * factor);
     }
     grid.units = std::string("m s-1");  // (a literal trips GCC 12's false -Wrestrict)
     return grid;
   };
-  out.u = load(names.u, uFactor);
-  out.v = load(names.v, vFactor);
-  if (!u.times.empty()) {
-    const double t0 = u.times[steps.first].unixSeconds;
-    const double t1 = u.times[steps.second].unixSeconds;
-    out.time = UtcTime{t0 + steps.weight * (t1 - t0)};
-  }
+  WindGrid out;
+  out.label = file.label();
+  out.u = load(names_.u, uFactor_);
+  out.v = load(names_.v, vFactor_);
+  if (!u_.times.empty() && !u_.climatology) out.time = u_.times.at(step);
+  return out;
+}
+
+WindGrid blendWind(const WindGrid& a, const WindGrid& b, double weight) {
+  WindGrid out = a;
+  const auto w = static_cast<float>(weight);
+  const auto mix = [w](std::vector<float>& x, const std::vector<float>& y) {
+    for (std::size_t i = 0; i < x.size(); ++i) x[i] = x[i] * (1.0f - w) + y[i] * w;
+  };
+  mix(out.u.values, b.u.values);
+  mix(out.v.values, b.v.values);
+  if (a.time && b.time)
+    out.time = UtcTime{a.time->unixSeconds + weight * (b.time->unixSeconds - a.time->unixSeconds)};
+  return out;
+}
+
+WindGrid readWind(const GridFile& file, const std::vector<std::string>& variables,
+                  std::optional<UtcTime> time) {
+  // A non-owning handle: the caller keeps `file` alive for this call.
+  const WindSeries series(file, variables);
+  const FieldDescription& u = series.axis();
+  const StepChoice steps = series.choose(time);
+  if (time && !u.climatology && !u.times.empty() &&
+      (time->unixSeconds < u.times.front().unixSeconds ||
+       time->unixSeconds > u.times.back().unixSeconds) &&
+      u.times.size() > 1)
+    log::warn(file.label() + ": " + time->toIso8601() + " is outside the file's time steps (" +
+              u.times.front().toIso8601() + " to " + u.times.back().toIso8601() +
+              "); using the nearest step");
+  WindGrid out = series.readStep(steps.first);
+  if (steps.second != steps.first) out = blendWind(out, series.readStep(steps.second), steps.weight);
+  if (!u.times.empty() && u.climatology) out.time = time;  // a climatology holds for any year
   return out;
 }
 

@@ -2,6 +2,7 @@
 // Wind fields: the 10 m wind's eastward (u) and northward (v) components in m/s on a regular
 // latitude/longitude grid, at one instant, read from NetCDF or GRIB files.
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -39,6 +40,49 @@ std::optional<double> metresPerSecondPerUnit(const std::string& units);
 /// Values are converted to m/s; fields without units are taken as m/s with a warning.
 WindGrid readWind(const GridFile& file, const std::vector<std::string>& variables,
                   std::optional<UtcTime> time);
+
+/// A wind file to read any of its time steps from (a layer whose wind follows the clock).
+/// The file is opened for each read and closed after it: an open NetCDF file holds netCDF-C's
+/// process-wide lock (NetcdfFile), so a file kept open would block every other file.
+class WindSeries {
+ public:
+  /// Over an open file that outlives the series (readWind). Chooses and validates the u/v
+  /// pair as readWind does. Throws og::InputError.
+  WindSeries(const GridFile& file, const std::vector<std::string>& variables);
+  /// Opens a `--wind-layer` spec "FILE[:U,V]", validates it and closes it again.
+  static std::shared_ptr<const WindSeries> open(const std::string& spec);
+
+  [[nodiscard]] const std::string& label() const { return label_; }
+  /// The u field's geometry and time axis (v has the same).
+  [[nodiscard]] const FieldDescription& axis() const { return u_; }
+  /// The steps and weight that make up `time` (clamped; cyclic for a climatology).
+  [[nodiscard]] StepChoice choose(std::optional<UtcTime> time) const { return chooseFieldSteps(u_, time); }
+  /// Step `step`, in m/s; NaN = no data. `time` is the step's instant (nullopt for a
+  /// climatology or an untimed file). Throws og::InputError (e.g. the file changed).
+  [[nodiscard]] WindGrid readStep(std::size_t step) const;
+  /// The strongest wind of any step, m/s (the file opened once for all steps).
+  [[nodiscard]] double maxSpeedMs() const;
+
+ private:
+  WindSeries() = default;
+  void describe(const GridFile& file, const std::vector<std::string>& variables);
+  [[nodiscard]] WindGrid readStep(const GridFile& file, std::size_t step) const;
+  /// Calls f(file) with the borrowed file, or the file reopened for the call.
+  template <class F>
+  auto withFile(F&& f) const;
+
+  const GridFile* borrowed_ = nullptr;
+  std::filesystem::path path_;  ///< reopened for each read when nothing is borrowed
+  std::string label_;
+  WindVariables names_;
+  FieldDescription u_;
+  double uFactor_ = 1.0;
+  double vFactor_ = 1.0;
+};
+
+/// `a` and `b` blended, (1 - weight)·a + weight·b per cell; NaN in either stays NaN (no data is
+/// never blended into data). Same geometry required (WindSeries steps have it).
+WindGrid blendWind(const WindGrid& a, const WindGrid& b, double weight);
 
 /// A `--wind-layer` spec "FILE[:U,V]" (NetCDF or GRIB), read as by readWind.
 WindGrid readWindLayer(const std::string& spec, std::optional<UtcTime> time);

@@ -33,7 +33,13 @@ std::vector<std::string> contractDefines() {
           define("OG_UNIT_SHADOW_MAP", kUnitShadowMap),
           define("OG_UNIT_PATTERN_DISPLACEMENT", kUnitPatternDisplacement),
           define("OG_UNIT_PATTERN_SLOPES", kUnitPatternSlopes),
-          define("OG_UNIT_PATTERN_JACOBIAN", kUnitPatternJacobian)};
+          define("OG_UNIT_PATTERN_JACOBIAN", kUnitPatternJacobian),
+          define("OG_UNIT_IMAGERY_DAY", kUnitImageryDay),
+          define("OG_UNIT_IMAGERY_NIGHT", kUnitImageryNight),
+          define("OG_UNIT_IMAGERY_LAYERS", kUnitImageryLayers),
+          define("OG_UNIT_LAND_MASK", kUnitLandMask),
+          define("OG_UNIT_TONE_RADIANCE", kUnitToneRadiance),
+          define("OG_UNIT_OVERLAY_TEXT", kUnitOverlayText)};
 }
 
 }  // namespace og::gl

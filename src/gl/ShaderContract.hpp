@@ -11,7 +11,7 @@ namespace og::gl {
 
 /// Texture units of the frame's samplers (GLSL: OG_UNIT_<NAME>).
 enum TextureUnit : unsigned {
-  kUnitElevation = 0,            ///< render/elevation.glsl uElevation; tone mapping's uRadiance
+  kUnitElevation = 0,            ///< render/elevation.glsl uElevation
   kUnitWind = 1,                 ///< ocean/wind.glsl uWind (render/WindTextures)
   kUnitAtmTransmittance = 2,     ///< atmosphere/model.glsl
   kUnitAtmScattering = 3,
@@ -26,6 +26,13 @@ enum TextureUnit : unsigned {
   kUnitPatternDisplacement = 12,
   kUnitPatternSlopes = 13,
   kUnitPatternJacobian = 14,
+  kUnitImageryDay = 15,          ///< terrain/imagery.glsl (render/ImageryTextures)
+  kUnitImageryNight = 16,
+  kUnitImageryLayers = 17,
+  kUnitLandMask = 18,            ///< terrain/landmask.glsl (render/LandMaskTexture)
+  // Passes of their own, which bind nothing else, reuse unit 0:
+  kUnitToneRadiance = 0,         ///< render/tonemap.frag uRadiance (the HDR target)
+  kUnitOverlayText = 0,          ///< viewer/text.frag uText (the viewer's text overlay)
 };
 
 /// The contract as "NAME value" #define bodies, in full double precision.

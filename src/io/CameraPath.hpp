@@ -6,7 +6,9 @@
 //                                   but [camera] (the keyframes give it); flags override them.
 //                                   time: UTC of the first frame (the Sun moves with the clock),
 //                                   or elevation_deg / azimuth_deg: the Sun's angles at the LAST
-//                                   keyframe's ground point
+//                                   keyframe's ground point; time_lapse = 1080: UTC seconds
+//                                   per second of path (default 1): the Sun and timed wind
+//                                   layers follow this clock, the waves keep real time
 //   [scene.image]      width = 1280, height = 720, exposure = 6, samples = 4 ("auto", 1, 2, 4, 8)
 //   [scene.ocean]      model = "bruneton", wind_speed_ms = 7, wind_from_deg = 270, time_s, seed
 //   [scene.layers]     wind = ["winds.nc:UWND,VWND"], elevation = "relief.nc:ROSE"
@@ -14,7 +16,7 @@
 //   [scene.atmosphere] as in a scene file
 //   Older path files put flat keys in [scene]; they are still read: time, sun_elevation_deg,
 //   sun_azimuth_deg, width, height, exposure, samples, ocean_model, wind_speed_ms,
-//   wind_direction_deg (from), wind_layers, elevation_layer.
+//   wind_direction_deg (from), wind_layers, elevation_layer, time_lapse.
 //
 //   [video]
 //   fps = 30                             # frames per second, (0, 240]

@@ -145,8 +145,20 @@ constexpr const char* kChannelNames[4] = {"R", "G", "B", "A"};
 constexpr std::size_t kFloatPixelBytes = 4 * sizeof(float);
 }  // namespace
 
-void writeExr(const fs::path& file, const ImageRgbaF& image, ExrPixelType type) {
+void writeExr(const fs::path& file, const ImageRgbaF& image, ExrPixelType type,
+              const std::vector<ExrChannel>& extra) {
   checkImage(file, image);
+  const std::size_t pixels = pixelCount(image.width, image.height);
+  for (std::size_t i = 0; i < extra.size(); ++i) {
+    const ExrChannel& c = extra[i];
+    if (c.values.size() != pixels)
+      fail(file, "OpenEXR channel '" + c.name + "' has " + std::to_string(c.values.size()) +
+                     " values for " + std::to_string(pixels) + " pixels");
+    bool taken = c.name.empty();
+    for (const char* rgba : kChannelNames) taken = taken || c.name == rgba;
+    for (std::size_t j = 0; j < i; ++j) taken = taken || extra[j].name == c.name;
+    if (taken) fail(file, "OpenEXR channel name '" + c.name + "' is empty or already used");
+  }
   // OpenEXR converts pixel types when reading but not when writing: the frame buffer must
   // hold the channel type, so half output goes through a converted copy.
   std::vector<half> halves;
@@ -171,6 +183,12 @@ void writeExr(const fs::path& file, const ImageRgbaF& image, ExrPixelType type) 
       for (std::size_t c = 0; c < 4; ++c)
         frame.insert(kChannelNames[c],
                      Imf::Slice(pixelType, base + c * valueBytes, pixelBytes, rowBytes));
+      for (const ExrChannel& c : extra) {
+        header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
+        char* values = const_cast<char*>(reinterpret_cast<const char*>(c.values.data()));
+        frame.insert(c.name, Imf::Slice(Imf::FLOAT, values, sizeof(float),
+                                        sizeof(float) * static_cast<std::size_t>(image.width)));
+      }
 
       Imf::OutputFile out(tmp.c_str(), header);
       out.setFrameBuffer(frame);
@@ -181,17 +199,25 @@ void writeExr(const fs::path& file, const ImageRgbaF& image, ExrPixelType type) 
   });
 }
 
+namespace {
+// The data window's width and height, refused outside 1..kMaxSide. Computed in 64 bits: a
+// hostile header can hold any int32 corners.
+std::pair<long long, long long> exrWindowSize(const fs::path& file, const Imath::Box2i& window) {
+  const long long w = static_cast<long long>(window.max.x) - window.min.x + 1;
+  const long long h = static_cast<long long>(window.max.y) - window.min.y + 1;
+  if (w <= 0 || h <= 0 || w > kMaxSide || h > kMaxSide)
+    fail(file, "OpenEXR data window " + std::to_string(w) + "x" + std::to_string(h) +
+                   " is outside 1.." + std::to_string(kMaxSide) + " pixels per side");
+  return {w, h};
+}
+}  // namespace
+
 ImageRgbaF readExr(const fs::path& file) {
   checkReadable(file);
   try {
     Imf::InputFile in(file.c_str());
     const Imath::Box2i window = in.header().dataWindow();
-    // Compute in 64 bits: a hostile header can hold any int32 corners.
-    const long long w = static_cast<long long>(window.max.x) - window.min.x + 1;
-    const long long h = static_cast<long long>(window.max.y) - window.min.y + 1;
-    if (w <= 0 || h <= 0 || w > kMaxSide || h > kMaxSide)
-      fail(file, "OpenEXR data window " + std::to_string(w) + "x" + std::to_string(h) +
-                     " is outside 1.." + std::to_string(kMaxSide) + " pixels per side");
+    const auto [w, h] = exrWindowSize(file, window);
     const Imf::ChannelList& channels = in.header().channels();
     for (std::size_t c = 0; c < 3; ++c)
       if (channels.findChannel(kChannelNames[c]) == nullptr)
@@ -219,6 +245,44 @@ ImageRgbaF readExr(const fs::path& file) {
     in.setFrameBuffer(frame);
     in.readPixels(window.min.y, window.max.y);
     return image;
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    fail(file, "not a readable OpenEXR file: " + oneLine(e.what()));
+  }
+}
+
+std::vector<std::string> readExrChannelNames(const fs::path& file) {
+  checkReadable(file);
+  try {
+    Imf::InputFile in(file.c_str());
+    std::vector<std::string> names;
+    const Imf::ChannelList& channels = in.header().channels();
+    for (auto it = channels.begin(); it != channels.end(); ++it) names.emplace_back(it.name());
+    return names;
+  } catch (const std::exception& e) {
+    fail(file, "not a readable OpenEXR file: " + oneLine(e.what()));
+  }
+}
+
+std::vector<float> readExrChannel(const fs::path& file, const std::string& name) {
+  checkReadable(file);
+  try {
+    Imf::InputFile in(file.c_str());
+    const Imath::Box2i window = in.header().dataWindow();
+    const auto [w, h] = exrWindowSize(file, window);
+    const Imf::Channel* channel = in.header().channels().findChannel(name);
+    if (channel == nullptr) fail(file, "OpenEXR file has no '" + name + "' channel");
+    if (channel->xSampling != 1 || channel->ySampling != 1)
+      fail(file, "OpenEXR channel '" + name + "' is subsampled, which is not supported");
+    if (!in.isComplete()) fail(file, "OpenEXR file is incomplete (truncated?)");
+    std::vector<float> values(pixelCount(static_cast<int>(w), static_cast<int>(h)));
+    Imf::FrameBuffer frame;
+    frame.insert(name, Imf::Slice::Make(Imf::FLOAT, values.data(), window, sizeof(float),
+                                        sizeof(float) * static_cast<std::size_t>(w)));
+    in.setFrameBuffer(frame);
+    in.readPixels(window.min.y, window.max.y);
+    return values;
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {

@@ -3,6 +3,7 @@
 // Every writer goes through og::writeFileAtomically: a file appears complete or not at all.
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace og::io {
@@ -30,9 +31,26 @@ void writePng(const std::filesystem::path& file, const ImageRgba8& image, bool k
 /// Reads any PNG as 8-bit RGBA. Throws og::InputError "FILE: problem" on a bad file.
 ImageRgba8 readPng(const std::filesystem::path& file);
 
-/// Writes a scanline OpenEXR with R, G, B (and A) channels, ZIP compressed.
+/// An extra named channel of an EXR (an AOV, e.g. "whitecap", "depth"): one value per pixel,
+/// rows top to bottom, the image's size. Always stored as 32-bit float (depths in metres
+/// overflow half's 65504).
+struct ExrChannel {
+  std::string name;
+  std::vector<float> values;
+};
+
+/// Writes a scanline OpenEXR with R, G, B, A channels (`type`) and the `extra` channels
+/// (float), ZIP compressed. Throws og::InputError naming the file for a bad size or name (empty,
+/// duplicate, or one of R, G, B, A).
 void writeExr(const std::filesystem::path& file, const ImageRgbaF& image,
-              ExrPixelType type = ExrPixelType::Half);
+              ExrPixelType type = ExrPixelType::Half, const std::vector<ExrChannel>& extra = {});
+
+/// The names of an OpenEXR's channels, in the file's (alphabetical) order.
+std::vector<std::string> readExrChannelNames(const std::filesystem::path& file);
+
+/// Reads one channel of an OpenEXR as float, rows top to bottom. Throws og::InputError
+/// "FILE: problem" on a bad file or a missing channel.
+std::vector<float> readExrChannel(const std::filesystem::path& file, const std::string& name);
 
 /// Reads an OpenEXR's R, G, B, A channels as float (missing A = 1).
 /// Throws og::InputError "FILE: problem" on a bad file.

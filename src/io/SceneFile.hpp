@@ -46,7 +46,13 @@ struct SceneSettings {
   [[nodiscard]] geo::Wind wind() const { return geo::Wind::blowingFrom(windSpeedMs, windFromDeg); }
   std::vector<std::string> windLayers;    ///< "FILE[:U,V]" specs, bottom of the stack first
   std::string elevationLayer;             ///< "FILE[:VAR]", empty = embedded default
+  /// Georeferenced imagery draped over the land (GDAL rasters), bottom first; the embedded
+  /// Blue Marble is always underneath.
+  std::vector<std::string> imageryLayers;
   double simulationTimeS = 0.0;           ///< wave clock at the image (record: at frame 0), s
+  /// record/view: UTC seconds that pass per second of path (or of viewing), [0, 1e6]; the Sun
+  /// and the wind layers follow this clock, the waves keep real time. 1 = real time.
+  double timeLapse = 1.0;
   std::uint64_t waveSeed = 1;             ///< wave directions and phases are reproducible from it
   atmosphere::Parameters atmosphere;      ///< [atmosphere]: Earth defaults
 };

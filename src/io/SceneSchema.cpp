@@ -116,7 +116,19 @@ std::vector<SceneField> sunFields() {
   SceneField azimuth = ranged(
       optionalNumber("sun", "azimuth_deg", "deg", "Sun azimuth", &SceneSettings::sunAzimuthDeg), -720, 720);
   azimuth.legacyPathKey = "sun_azimuth_deg";
-  return {time, elevation, azimuth};
+  // record/view: UTC seconds per second of path; the Sun and timed wind layers follow this
+  // clock, the waves keep real time. Written only when not real time (1).
+  SceneField lapse = ranged(number("sun", "time_lapse", "", "time lapse", &SceneSettings::timeLapse), 0, 1e6);
+  lapse.legacyPathKey = "time_lapse";
+  lapse.get = [](const SceneSettings& s) -> FieldValue {
+    if (s.timeLapse == 1.0) return std::monostate{};
+    return s.timeLapse;
+  };
+  lapse.set = [](SceneSettings& s, const FieldValue& v) {
+    const double* d = std::get_if<double>(&v);
+    s.timeLapse = d ? *d : 1.0;
+  };
+  return {time, elevation, azimuth, lapse};
 }
 
 std::vector<SceneField> imageFields() {
@@ -169,8 +181,19 @@ std::vector<SceneField> layerFields() {
     const std::string* t = std::get_if<std::string>(&v);
     s.elevationLayer = t ? *t : std::string();
   };
+  // Georeferenced imagery draped over the land, bottom first; empty: the embedded Blue Marble.
+  SceneField imagery = field("layers", "imagery", FieldType::TextList, "", "imagery layers");
+  imagery.legacyPathKey = "imagery_layers";
+  imagery.get = [](const SceneSettings& s) -> FieldValue {
+    if (s.imageryLayers.empty()) return std::monostate{};
+    return s.imageryLayers;
+  };
+  imagery.set = [](SceneSettings& s, const FieldValue& v) {
+    const auto* list = std::get_if<std::vector<std::string>>(&v);
+    s.imageryLayers = list ? *list : std::vector<std::string>();
+  };
   SceneField backend = text("gl", "backend", "GL backend", &SceneSettings::glBackend, {"auto", "egl", "osmesa"});
-  return {wind, elevation, backend};
+  return {wind, elevation, imagery, backend};
 }
 
 std::vector<SceneField> atmosphereFields() {

@@ -31,5 +31,14 @@ glm::dvec3 reflectedBySlope(const glm::dvec3& v, const glm::dvec3& n, const glm:
   return glsl::reflectedBySlope(v, n, tx, ty, z);
 }
 glm::dvec2 stereographic(const glm::dvec3& r) { return glsl::stereographic(r); }
+glm::dvec2 visibleSlopeMoments(double k) { return glsl::visibleSlopeMoments(k); }
+SlopeAxes slopePrincipalAxes(const glm::dvec3& c) {
+  const glsl::SlopeFrame f = glsl::slopePrincipalAxes(c);
+  return {f.sigma2, f.axis};
+}
+glm::dvec3 sunDiscSlopeCovariance(const glm::dvec3& v, const glm::dvec3& l, const glm::dvec3& tx,
+                                  const glm::dvec3& ty, double alphaRad) {
+  return glsl::sunDiscSlopeCovariance(v, l, tx, ty, alphaRad);
+}
 
 }  // namespace og::ocean::brdf

@@ -153,6 +153,19 @@ WavePatterns makeWavePatterns(const WavePatternParams& params) {
   return w;
 }
 
+namespace {
+// How much a band's amplitudes grow from the reference wind to another: sqrt of the ratio of
+// their variances. A band (nearly) empty at the reference wind — the longest patterns under a
+// 1–3 m/s reference, ~1e-187 m² — stays empty: its texels underflow to 0 in float, and the
+// ratio would overflow float (inf × 0 = NaN where the GPU interpolates between two winds).
+double bandScale(double variance, double referenceVariance) {
+  constexpr double kEmpty = 1e-24;  // m², or (rad)² for slopes: far below anything visible
+  constexpr double kMaxScale = 1e4;
+  if (!(referenceVariance > kEmpty)) return 0.0;
+  return std::min(std::sqrt(variance / referenceVariance), kMaxScale);
+}
+}  // namespace
+
 PatternTables makePatternTables(const WavePatterns& w) {
   PatternTables t{};
   const double uRef = w.params.referenceWindMs;
@@ -165,8 +178,8 @@ PatternTables makePatternTables(const WavePatterns& w) {
     for (int i = 0; i < kPatternCount; ++i) {
       const BandIntegral b = bandIntegral(std::max(w.kEdge[i], 1e-4), w.kEdge[i + 1], u);
       PatternTableEntry& e = t.pattern[s][i];
-      e.heightScale = ref[i].height > 0.0 ? std::sqrt(b.height / ref[i].height) : 0.0;
-      e.slopeScale = ref[i].slope.total() > 0.0 ? std::sqrt(b.slope.total() / ref[i].slope.total()) : 0.0;
+      e.heightScale = bandScale(b.height, ref[i].height);
+      e.slopeScale = bandScale(b.slope.total(), ref[i].slope.total());
       e.slope = b.slope;
       // The Jacobian's (linear) term scales like the slopes.
       double variance = 0.0;

@@ -1,5 +1,6 @@
 #include "render/Atmosphere.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdlib>
@@ -11,6 +12,7 @@
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "gl/ShaderContract.hpp"
 
 namespace og::render {
 namespace {
@@ -119,8 +121,24 @@ std::filesystem::path Atmosphere::defaultCacheDirectory() {
   return std::filesystem::temp_directory_path() / "oceanglobe-cache";
 }
 
+SkyFilter Atmosphere::chooseSkyFilter() {
+  std::string forced;
+  if (const char* e = std::getenv("OCEANGLOBE_SKY_FILTER"); e && *e) forced = e;
+  if (!forced.empty() && forced != "hardware" && forced != "probes" && forced != "single")
+    throw InputError("OCEANGLOBE_SKY_FILTER: '" + forced + "' is not hardware, probes or single");
+  const bool software = gl::isSoftwareRenderer();
+  if (forced == "single") return {1, 1.0f, "forced single lookup (OCEANGLOBE_SKY_FILTER)"};
+  if (forced == "probes" || (forced.empty() && software))
+    return {9, 1.0f, forced.empty() ? "CPU rasteriser: 9 isotropic lookups (Bruneton 2010 7.3)"
+                                    : "forced 9 lookups (OCEANGLOBE_SKY_FILTER)"};
+  GLfloat most = 1.0f;
+  glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &most);
+  glGetError();  // a driver without the (GL 4.6 / EXT) anisotropy leaves `most` at 1
+  return {1, std::clamp(most, 1.0f, 16.0f), "GPU: hardware anisotropic filtering"};
+}
+
 Atmosphere::Atmosphere(const atmosphere::Parameters& parameters, const AtmosphereOptions& options)
-    : parameters_(parameters) {
+    : parameters_(parameters), skyFilter_(chooseSkyFilter()) {
   if (auto problem = atmosphere::validate(parameters_))
     throw InputError("atmosphere: " + *problem);
   const auto t0 = Clock::now();
@@ -152,6 +170,7 @@ Atmosphere::Atmosphere(const atmosphere::Parameters& parameters, const Atmospher
   glFinish();
   timing_.skyMapsMs = msSince(t1);
   gl::checkErrors("Atmosphere");
+  log::debug("atmosphere: sky filter: " + skyFilter_.reason);
   log::debug("atmosphere: tables " + std::to_string(timing_.tablesMs) + " ms" +
              (timing_.fromCache ? " (cached)" : "") + ", sky maps " +
              std::to_string(timing_.skyMapsMs) + " ms");
@@ -270,8 +289,10 @@ void Atmosphere::computeSkyMaps() {
   glTextureParameteri(skyMaps_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(skyMaps_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(skyMaps_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  // Anisotropy stays 1: on llvmpipe anisotropic filtering is ~20x slower and wrong
-  // (docs/atmosphere.md); textureGrad still selects the mip level from the gradients.
+  // Anisotropy per chooseSkyFilter(): hardware on a GPU, 1 on llvmpipe (where skymap.glsl
+  // averages 9 lookups instead); textureGrad selects the mip level from the gradients.
+  if (skyFilter_.maxAnisotropy > 1.0f)
+    glTextureParameterf(skyMaps_.id(), GL_TEXTURE_MAX_ANISOTROPY, skyFilter_.maxAnisotropy);
   skyIrradiance_ = gl::createTexture(GL_TEXTURE_1D_ARRAY);
   glTextureStorage2D(skyIrradiance_.id(), 1, GL_RGBA32F, s.skyIrradianceEntries, 2);
   glTextureParameteri(skyIrradiance_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -297,15 +318,16 @@ void Atmosphere::computeSkyMaps() {
 
 void Atmosphere::bind(const gl::Program& program) const {
   setParameters(program, parameters_);
-  glBindTextureUnit(2, transmittance_.id());
-  glBindTextureUnit(3, scattering_.id());
-  glBindTextureUnit(4, singleMie_.id());
-  glBindTextureUnit(5, irradiance_.id());
+  program.set("uSkyFilterProbes", skyFilter_.probes);
+  glBindTextureUnit(gl::kUnitAtmTransmittance, transmittance_.id());
+  glBindTextureUnit(gl::kUnitAtmScattering, scattering_.id());
+  glBindTextureUnit(gl::kUnitAtmSingleMie, singleMie_.id());
+  glBindTextureUnit(gl::kUnitAtmIrradiance, irradiance_.id());
 }
 
 void Atmosphere::bindSkyMaps() const {
-  glBindTextureUnit(6, skyMaps_.id());
-  glBindTextureUnit(7, skyIrradiance_.id());
+  glBindTextureUnit(gl::kUnitSkyMap, skyMaps_.id());
+  glBindTextureUnit(gl::kUnitSkyIrradiance, skyIrradiance_.id());
 }
 
 // Cache file: magic, key, sizes, the four tables as float32 RGBA, FNV-1a of the payload.
@@ -408,6 +430,28 @@ std::vector<float> Atmosphere::readSkyMap(int layer) const {
   glGetTextureSubImage(skyMaps_.id(), 0, 0, 0, layer, n, n, 1, GL_RGBA, GL_FLOAT,
                        static_cast<GLsizei>(v.size() * sizeof(float)), v.data());
   return v;
+}
+
+std::vector<glm::dvec3> Atmosphere::probeSunIrradiance(const std::vector<double>& zenithRad) const {
+  if (zenithRad.empty()) return {};
+  std::vector<glm::vec4> values;
+  for (const double z : zenithRad) values.emplace_back(static_cast<float>(z), 0.0f, 0.0f, 0.0f);
+  const auto bytes = static_cast<GLsizeiptr>(values.size() * sizeof(glm::vec4));
+  gl::Buffer buffer = gl::createBuffer();
+  glNamedBufferStorage(buffer.id(), bytes, values.data(), GL_DYNAMIC_STORAGE_BIT);
+  gl::Program probe({{GL_COMPUTE_SHADER, "atmosphere/probe.comp"}});
+  bind(probe);
+  bindSkyMaps();
+  probe.use();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer.id());
+  glDispatchCompute(static_cast<GLuint>(values.size()), 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(buffer.id(), 0, bytes, values.data());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  gl::checkErrors("Atmosphere::probeSunIrradiance");
+  std::vector<glm::dvec3> out;
+  for (const glm::vec4& v : values) out.emplace_back(v.x, v.y, v.z);
+  return out;
 }
 
 }  // namespace og::render

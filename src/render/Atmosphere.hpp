@@ -20,6 +20,15 @@ struct AtmosphereOptions {
   std::filesystem::path cacheDirectory;
 };
 
+/// How the ocean's sky reflection is filtered over its footprint ellipse (Bruneton 2010 §5.2:
+/// textureGrad with the axes 2 sigma dU/dzeta; §7.3: "an average of nine texture2D samples
+/// inside the elliptical filter support"). Chosen in one place, Atmosphere::chooseSkyFilter.
+struct SkyFilter {
+  int probes = 1;             ///< most textureGrad lookups along the ellipse's major axis (1 or 9)
+  float maxAnisotropy = 1.0f; ///< the sky maps' sampler anisotropy (hardware filtering)
+  std::string reason;         ///< why, for logs and `info`
+};
+
 class Atmosphere {
  public:
   /// What start-up cost and where the tables came from.
@@ -36,9 +45,20 @@ class Atmosphere {
   /// $OCEANGLOBE_CACHE_DIR, else $XDG_CACHE_HOME/oceanglobe, else ~/.cache/oceanglobe.
   static std::filesystem::path defaultCacheDirectory();
 
-  /// Sets `program`'s uAtmosphere uniforms and binds the tables to units 2-5 (model.glsl).
+  /// The sky filter for the current context: on a GPU the sampler's hardware anisotropy (up to
+  /// 16x), which filters the ellipse in one lookup; on a CPU rasteriser (llvmpipe: anisotropic
+  /// filtering there is ~20x slower and blurs wrongly, docs/atmosphere.md) the paper's §7.3
+  /// average of isotropic lookups spread along the ellipse's major axis (as many as its
+  /// elongation, at most 9: SkyFilter::probes). The environment
+  /// variable OCEANGLOBE_SKY_FILTER = hardware | probes | single forces one (for measurements);
+  /// any other value throws og::InputError.
+  static SkyFilter chooseSkyFilter();
+  [[nodiscard]] const SkyFilter& skyFilter() const { return skyFilter_; }
+
+  /// Sets `program`'s uAtmosphere uniforms and the sky filter's uSkyFilterProbes
+  /// (skymap.glsl) and binds the tables to units 2-5 (model.glsl).
   void bind(const gl::Program& program) const;
-  /// Binds the sky maps (unit 6) and the sea-level irradiance table (unit 7) (skymap.glsl).
+  /// Binds the sky maps (gl::kUnitSkyMap) and the sea-level irradiance table (gl::kUnitSkyIrradiance) (skymap.glsl).
   void bindSkyMaps() const;
 
   [[nodiscard]] const atmosphere::Parameters& parameters() const { return parameters_; }
@@ -48,6 +68,9 @@ class Atmosphere {
   [[nodiscard]] atmosphere::ReferenceTables readTables() const;
   /// Level-0 texels of sky map `layer` (rgba, rows from v = 0), for tests and pictures.
   [[nodiscard]] std::vector<float> readSkyMap(int layer) const;
+  /// skymap.glsl's sunIrradiance (the Sun's irradiance at sea level, per point from the
+  /// transmittance table) evaluated on the GPU at each Sun zenith angle (radians), for tests.
+  [[nodiscard]] std::vector<glm::dvec3> probeSunIrradiance(const std::vector<double>& zenithRad) const;
 
   /// Sets uAtmosphere.* of `program` (also used by the precomputation passes).
   static void setParameters(const gl::Program& program, const atmosphere::Parameters& p);
@@ -61,6 +84,7 @@ class Atmosphere {
 
   atmosphere::Parameters parameters_;
   Timing timing_;
+  SkyFilter skyFilter_;
   gl::Texture transmittance_;
   gl::Texture irradiance_;
   gl::Texture scattering_;

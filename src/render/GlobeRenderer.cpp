@@ -10,6 +10,8 @@
 #include "core/Log.hpp"
 #include "gl/DriverProfile.hpp"
 #include "gl/Readback.hpp"
+#include "gl/ShaderContract.hpp"
+#include "render/WaterVolume.hpp"
 
 namespace og::render {
 namespace {
@@ -66,6 +68,12 @@ GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
   elevationWraps_ = elevation.wrapsLongitude ? 1 : 0;
   ocean_->setElevationLayer(elevationMap_, elevationSize_, elevationWraps_);
   terrain_ = std::make_unique<TerrainRenderer>(elevation, atmosphere_.get());
+  imagery_ = std::make_unique<ImageryTextures>();
+  terrain_->setImagery(imagery_.get());
+  // The same rule as the terrain's heights (terrain::Heightfield): the mask decides the coast
+  // of a global layer coarser than it.
+  const data::LandMask& mask = data::defaultLandMask();
+  landMask_ = std::make_unique<LandMaskTexture>(mask.refines(elevation) ? &mask : nullptr);
   maxSamples_ = gl::maxSamples(GL_RGBA32F);
   gl::checkErrors("GlobeRenderer setup");
 }
@@ -139,6 +147,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   // The waves hold the strongest wind of the scene; every point scales and turns them to its
   // own wind (ocean/patterns.glsl).
   wind_->setConstantWind(f.wind);
+  wind_->setTime(f.utcTime);  // layers that follow the clock (uploads only on a change)
   patternsFor(std::max(f.wind.speedMs, wind_->maxLayerSpeedMs()), f.waveSeed);
   const bool grid = view.position.heightM < kOceanGridMaxHeightM;
 
@@ -151,13 +160,14 @@ void GlobeRenderer::render(const FrameInput& f) {
   if (auxiliary_) glClearNamedFramebufferfv(hdr_.fbo.id(), GL_COLOR, 1, clearColor);
   glClearNamedFramebufferfv(hdr_.fbo.id(), GL_DEPTH, 0, &clearDepth);
   glEnable(GL_DEPTH_TEST);
+  landMask_->bind();  // gl::kUnitLandMask for every pass (render/elevation.glsl)
   if (!grid) drawGlobe(view, f, grid);
 
   // Terrain over the globe's land (its far fallback), depth-tested; the ocean below is then
   // depth-tested against it, so the shoreline is where sea surface and ground meet. Below
   // 20 km the globe comes last, shading only what the two left empty (no pixel twice).
   terrain_->draw(view, f.width, f.height, f.sunDirectionEcef, !grid);
-  glBindTextureUnit(0, elevation_.id());
+  glBindTextureUnit(gl::kUnitElevation, elevation_.id());
   glBindVertexArray(emptyVao_.id());
   if (grid) {
     drawOcean(view, f);
@@ -171,7 +181,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   glBindFramebuffer(GL_FRAMEBUFFER, ldr_.fbo.id());
   const gl::Program& tonemap = hdr_.samples > 1 ? tonemapMs_ : tonemap_;
   tonemap.set("uExposure", static_cast<float>(f.exposure));
-  glBindTextureUnit(0, hdr_.color.id());
+  glBindTextureUnit(gl::kUnitToneRadiance, hdr_.color.id());
   tonemap.use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -206,10 +216,12 @@ void GlobeRenderer::drawGlobe(const geo::CameraView& view, const FrameInput& f, 
   patterns_->setUniforms(globe, nullptr, 0.0);
   globe.set("uSeaByGrid", grid ? 1 : 0);
   globe.set("uSeaColor", OceanLighting{}.seaColor);
+  setWaterOptics(globe, ocean::jerlovWater(ocean::kDefaultWater));
   globe.set("uElevationMap", elevationMap_);
   globe.set("uElevationSize", elevationSize_);
   globe.set("uElevationWraps", elevationWraps_);
-  glBindTextureUnit(0, elevation_.id());
+  glBindTextureUnit(gl::kUnitElevation, elevation_.id());
+  imagery_->bind(globe);
   atmosphere_->bind(globe);
   atmosphere_->bindSkyMaps();
   globe.use();

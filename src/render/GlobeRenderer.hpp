@@ -5,9 +5,11 @@
 #include <glm/glm.hpp>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "atmosphere/Parameters.hpp"
+#include "core/Time.hpp"
 #include "data/LatLonGrid.hpp"
 #include "geo/Camera.hpp"
 #include "geo/Wind.hpp"
@@ -18,6 +20,8 @@
 #include "io/SceneSchema.hpp"
 #include "ocean/OceanFrame.hpp"
 #include "render/Atmosphere.hpp"
+#include "render/ImageryTextures.hpp"
+#include "render/LandMaskTexture.hpp"
 #include "render/OceanPatterns.hpp"
 #include "render/OceanRenderer.hpp"
 #include "render/TerrainRenderer.hpp"
@@ -39,6 +43,9 @@ struct FrameInput {
   int width = 256;
   int height = 256;
   double simulationTimeS = 0.0;  ///< seconds since the start of the sequence (wave animation)
+  /// The UTC instant the frame shows: wind layers with a time axis are sampled at it
+  /// (WindTextures::setTime); nullopt keeps them at the time they were loaded for.
+  std::optional<UtcTime> utcTime;
   OceanModel oceanModel = OceanModel::Bruneton;
   /// The 10 m wind, [0, 50] m/s, everywhere unless GlobeRenderer::setWindLayers gave local
   /// winds (the fallback of render::WindTextures).
@@ -82,6 +89,9 @@ class GlobeRenderer {
   /// wind everywhere). The sea's slopes, glint and waves then follow the wind point by point.
   void setWindLayers(std::shared_ptr<const data::WindLayers> layers) { wind_->setLayers(std::move(layers)); }
 
+  /// The wind on the GPU (its uploads count tells how often a time-varying wind changed).
+  [[nodiscard]] const WindTextures& wind() const { return *wind_; }
+
   /// Draws a frame into the internal targets (resized as needed).
   void render(const FrameInput& frame);
 
@@ -121,6 +131,12 @@ class GlobeRenderer {
   [[nodiscard]] const TerrainRenderer& terrain() const { return *terrain_; }
   TerrainRenderer& terrain() { return *terrain_; }
 
+  /// The imagery draped over the land (day colour, night lights, `--imagery-layer`s).
+  [[nodiscard]] const ImageryTextures& imagery() const { return *imagery_; }
+  ImageryTextures& imagery() { return *imagery_; }
+  /// The GSHHG land mask deciding the coast (active for global layers coarser than it).
+  [[nodiscard]] const LandMaskTexture& landMask() const { return *landMask_; }
+
  private:
   void ensureTargets(int width, int height, int samples, bool auxiliary);
   void drawGlobe(const geo::CameraView& view, const FrameInput& f, bool grid);
@@ -144,6 +160,8 @@ class GlobeRenderer {
   int elevationWraps_ = 0;
   std::unique_ptr<OceanRenderer> ocean_;
   std::unique_ptr<TerrainRenderer> terrain_;
+  std::unique_ptr<ImageryTextures> imagery_;
+  std::unique_ptr<LandMaskTexture> landMask_;
   std::unique_ptr<WindTextures> wind_;
   std::unique_ptr<OceanPatterns> patterns_;
   gl::RenderTarget hdr_;

@@ -5,6 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "gl/ShaderContract.hpp"
+#include "render/WaterVolume.hpp"
+
 namespace og::render {
 namespace {
 glm::vec3 toFloat(const glm::dvec3& v) { return glm::vec3(v); }
@@ -66,12 +69,15 @@ std::vector<std::string> skyDefines(const Atmosphere* atmosphere) {
   return atmosphere ? std::vector<std::string>{} : std::vector<std::string>{"OCEAN_SIMPLE_SKY"};
 }
 
-// The validation variants' defines (shaders/ocean/patterns.glsl, lighting.glsl, ocean.frag).
+// The validation variants' defines (shaders/ocean/patterns.glsl, lighting.glsl, ocean.frag);
+// OCEAN_LIGHTING_TERMS: the terms' weights uLightingTerms (lighting.glsl).
 std::vector<std::string> oceanDefines(const Atmosphere* atmosphere, ValidationMode mode) {
   std::vector<std::string> d = skyDefines(atmosphere);
   for (const std::string& define : OceanPatterns::shaderDefines()) d.push_back(define);
+  d.emplace_back("OCEAN_LIGHTING_TERMS");
   if (mode == ValidationMode::Reference) d.emplace_back("OCEAN_VALIDATION_REFERENCE");
-  if (mode == ValidationMode::ConstantBrdf) d.emplace_back("OCEAN_VALIDATION_CONSTANT");
+  if (mode == ValidationMode::ConstantBrdf) d.emplace_back("OCEAN_VALIDATION_CONSTANT_BRDF");
+  if (mode == ValidationMode::BrdfOnly) d.emplace_back("OCEAN_VALIDATION_BRDF_ONLY");
   return d;
 }
 }  // namespace
@@ -130,6 +136,8 @@ void OceanRenderer::setCommon(const gl::Program& p, const geo::CameraView& view,
   p.set("uSunDirOcean", ecefToOcean * toFloat(glm::normalize(lighting.sunDirectionEcef)));
   p.set("uSunDirEcef", toFloat(glm::normalize(lighting.sunDirectionEcef)));
   p.set("uSeaColor", lighting.seaColor);
+  setWaterOptics(p, ocean::jerlovWater(ocean::kDefaultWater));
+  setFloorDetail(p, view);
   p.set("uElevationMap", elevationMap_);
   p.set("uElevationSize", elevationSize_);
   p.set("uElevationWraps", elevationWraps_);
@@ -173,11 +181,12 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     p.set("uFieldOffset", glm::vec2(static_cast<float>(std::fmod(off.x, 800.0)),
                                     static_cast<float>(std::fmod(off.y, 800.0))));
     p.set("uTime", static_cast<float>(std::fmod(timeS, 1000.0)));
-    glBindTextureUnit(8, bumpMap_.id());
-    glBindTextureUnit(9, fresnelRamp_.id());
+    glBindTextureUnit(gl::kUnitBumpMap, bumpMap_.id());
+    glBindTextureUnit(gl::kUnitFresnelRamp, fresnelRamp_.id());
   } else {
     patterns.bind();
     patterns.setUniforms(p, &frame, amplitudeScale);
+    p.set("uLightingTerms", lightingTerms_);
     wind.bind(p);
   }
   p.use();

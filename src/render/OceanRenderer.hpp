@@ -21,7 +21,7 @@ struct OceanLighting {
   // Used without an atmosphere only (tests of the ocean alone): a simple analytic sky.
   glm::vec3 skyZenith{0.02f, 0.045f, 0.11f};
   glm::vec3 skyHorizon{0.07f, 0.09f, 0.12f};
-  /// The terrain's Sun shadows to cast on the sea (maps bound to unit 11), or none.
+  /// The terrain's Sun shadows to cast on the sea (maps bound to gl::kUnitShadowMap), or none.
   const SunShadows* shadows = nullptr;
   /// Whether land may be in view: false skips the per-pixel coast test (ocean/coast.glsl).
   bool landInView = true;
@@ -37,7 +37,9 @@ enum class OceanModel {
 enum class ValidationMode {
   Filtered,      ///< the normal model (geometry, normals and BRDF by footprint)
   Reference,     ///< every pattern at full resolution, mirror reflection: supersample it
-  ConstantBrdf,  ///< flat sea, the whole slope variance in the BRDF ("BRDF only")
+  ConstantBrdf,  ///< the paper's baseline: filtered geometry and normals, the BRDF held at the
+                 ///< unresolved tail's variance at every distance
+  BrdfOnly,      ///< flat sea, the whole slope variance in the BRDF
 };
 
 class OceanRenderer {
@@ -48,13 +50,16 @@ class OceanRenderer {
                          ValidationMode mode = ValidationMode::Filtered);
 
   /// The elevation layer's mapping (see render/elevation.glsl); its texture must be bound to
-  /// unit 0 when drawing. Without it the sea is drawn everywhere.
+  /// gl::kUnitElevation when drawing. Without it the sea is drawn everywhere.
   void setElevationLayer(const glm::vec4& map, const glm::vec2& size, int wraps) {
     elevationMap_ = map;
     elevationSize_ = size;
     elevationWraps_ = wraps;
   }
 
+  /// Weights of the Bruneton model's lighting terms (Sun, sky, refracted light, whitecaps), 1
+  /// each by default; `validate` renders them one at a time (paper §7.2).
+  void setLightingTerms(const glm::vec4& weights) { lightingTerms_ = weights; }
   /// Grid cell size in pixels (the paper's ~8 px); smaller = finer geometry, slower.
   void setCellPixels(int pixels) { cellPixels_ = pixels; }
 
@@ -81,6 +86,7 @@ class OceanRenderer {
   int gridColumns_ = 0, gridRows_ = 0;
   int indexCount_ = 0;
   int cellPixels_ = 8;
+  glm::vec4 lightingTerms_{1.0f};
   glm::vec4 elevationMap_{0.0f};
   glm::vec2 elevationSize_{0.0f};
   int elevationWraps_ = 0;

@@ -84,12 +84,14 @@ OceanValidator::OceanValidator(const ValidationSettings& settings) : settings_(s
   p.seed = settings.seed;
   patterns_ = std::make_unique<OceanPatterns>(std::make_shared<const ocean::WavePatterns>(ocean::makeWavePatterns(p)));
   patterns_->update(settings.timeS);
-  filtered_ = std::make_unique<OceanRenderer>(nullptr, ValidationMode::Filtered);
   reference_ = std::make_unique<OceanRenderer>(nullptr, ValidationMode::Reference);
-  constant_ = std::make_unique<OceanRenderer>(nullptr, ValidationMode::ConstantBrdf);
-  filtered_->setCellPixels(settings.cellPixels);
-  constant_->setCellPixels(settings.cellPixels);
   reference_->setCellPixels(settings.referenceCellPixels);
+  const ValidationMode modes[kValidationModels] = {ValidationMode::Filtered, ValidationMode::ConstantBrdf,
+                                                   ValidationMode::BrdfOnly};
+  for (int m = 0; m < kValidationModels; ++m) {
+    models_[static_cast<std::size_t>(m)] = std::make_unique<OceanRenderer>(nullptr, modes[m]);
+    models_[static_cast<std::size_t>(m)]->setCellPixels(settings.cellPixels);
+  }
   wind_ = std::make_unique<WindTextures>();
   wind_->setConstantWind(geo::Wind::blowingTowards(settings.windSpeedMs, settings.windDirectionDeg));
 }
@@ -123,13 +125,56 @@ io::ImageRgbaF OceanValidator::render(OceanRenderer& renderer, const ValidationV
   return image;
 }
 
+std::array<io::ImageRgbaF, 3> OceanValidator::renderTerms(OceanRenderer& renderer,
+                                                          const ValidationView& view, int s,
+                                                          bool weighted) {
+  const glm::vec4 weights[3] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};  // whitecaps off
+  std::array<io::ImageRgbaF, 3> out;
+  for (std::size_t t = 0; t < 3; ++t) {
+    renderer.setLightingTerms(weights[t]);
+    out[t] = render(renderer, view, settings_.width * s, settings_.height * s);
+    if (weighted) out[t] = weightedDownsample(out[t], s);
+  }
+  renderer.setLightingTerms(glm::vec4(1.0f));
+  return out;
+}
+
+namespace {
+// The sum of the term images (alpha: the first's coverage).
+io::ImageRgbaF sumOfTerms(const std::array<io::ImageRgbaF, 3>& terms) {
+  io::ImageRgbaF sum = terms[0];
+  for (std::size_t i = 0; i < sum.pixels.size(); ++i)
+    if (i % 4 != 3) sum.pixels[i] = terms[0].pixels[i] + terms[1].pixels[i] + terms[2].pixels[i];
+  return sum;
+}
+
+// |error| statistics of rows [begin, end) (stored far first).
+void summarize(const std::vector<RowError>& rows, BandError& b, std::size_t begin, std::size_t end) {
+  b.rows = static_cast<int>(end - begin);
+  if (b.rows == 0) return;
+  b.nearM = rows[end - 1].distanceM;
+  b.farM = rows[begin].distanceM;
+  for (std::size_t i = begin; i < end; ++i)
+    for (std::size_t t = 0; t < kValidationTerms; ++t)
+      for (std::size_t m = 0; m < kValidationModels; ++m) {
+        const double e = std::abs(rows[i].error[t][m]);
+        b.mean[t][m] += e / b.rows;
+        b.max[t][m] = std::max(b.max[t][m], e);
+      }
+}
+}  // namespace
+
 ValidationResult OceanValidator::run(const ValidationView& v) {
   const int w = settings_.width, h = settings_.height, s = std::max(1, settings_.supersample);
   ValidationResult r;
   r.view = v;
-  r.filtered = render(*filtered_, v, w, h);
-  r.constant = render(*constant_, v, w, h);
-  r.reference = weightedDownsample(render(*reference_, v, w * s, h * s), s);
+  std::array<std::array<io::ImageRgbaF, 3>, kValidationModels> modelTerms;
+  for (std::size_t m = 0; m < kValidationModels; ++m) {
+    modelTerms[m] = renderTerms(*models_[m], v, 1, false);
+    r.models[m] = sumOfTerms(modelTerms[m]);
+  }
+  const std::array<io::ImageRgbaF, 3> referenceTerms = renderTerms(*reference_, v, s, true);
+  r.reference = sumOfTerms(referenceTerms);
 
   const geo::CameraPose pose = poseOf(settings_, v);
   const geo::CameraView view = geo::makeCameraView(pose, w, h);
@@ -139,47 +184,37 @@ ValidationResult OceanValidator::run(const ValidationView& v) {
     double cover = 1.0;
     for (int x = 0; x < w; ++x) {
       const auto i = static_cast<std::size_t>(4 * (y * w + x));
-      e.reference += luminance(&r.reference.pixels[i]);
-      e.filtered += luminance(&r.filtered.pixels[i]);
-      e.constant += luminance(&r.constant.pixels[i]);
-      cover = std::min({cover, double(r.reference.pixels[i + 3]), double(r.filtered.pixels[i + 3]),
-                        double(r.constant.pixels[i + 3])});
+      cover = std::min(cover, double(r.reference.pixels[i + 3]));
+      for (std::size_t m = 0; m < kValidationModels; ++m) cover = std::min(cover, double(r.models[m].pixels[i + 3]));
+      for (std::size_t t = 1; t < kValidationTerms; ++t) {
+        e.reference[t] += luminance(&referenceTerms[t - 1].pixels[i]) / w;
+        for (std::size_t m = 0; m < kValidationModels; ++m)
+          e.model[t][m] += luminance(&modelTerms[m][t - 1].pixels[i]) / w;
+      }
     }
-    // Only rows all sea in all three: at the horizon the models' coverage differs by design.
-    if (cover < 0.999 || e.reference <= 0.0) continue;
-    e.reference /= w;
-    e.filtered /= w;
-    e.constant /= w;
-    e.errorFiltered = (e.filtered - e.reference) / e.reference;
-    e.errorConstant = (e.constant - e.reference) / e.reference;
+    for (std::size_t t = 1; t < kValidationTerms; ++t) {
+      e.reference[0] += e.reference[t];
+      for (std::size_t m = 0; m < kValidationModels; ++m) e.model[0][m] += e.model[t][m];
+    }
+    // Only rows all sea in all images: at the horizon the models' coverage differs by design.
+    if (cover < 0.999 || e.reference[0] <= 0.0) continue;
+    for (std::size_t t = 0; t < kValidationTerms; ++t)
+      for (std::size_t m = 0; m < kValidationModels; ++m)
+        e.error[t][m] = (e.model[t][m] - e.reference[t]) / e.reference[0];
     e.distanceM = seaDistance(view, view.rayDirection(0.0, 1.0 - 2.0 * (y + 0.5) / h));
     r.rows.push_back(e);
   }
   // Bands by row: the bottom third of the sea rows is "near", the third at the horizon "far".
-  const auto summarize = [&](BandError& b, std::size_t begin, std::size_t end) {
-    b.rows = static_cast<int>(end - begin);
-    if (b.rows == 0) return;
-    b.nearM = r.rows[end - 1].distanceM;
-    b.farM = r.rows[begin].distanceM;
-    for (std::size_t i = begin; i < end; ++i) {
-      const RowError& e = r.rows[i];
-      b.meanFiltered += std::abs(e.errorFiltered) / b.rows;
-      b.meanConstant += std::abs(e.errorConstant) / b.rows;
-      b.maxFiltered = std::max(b.maxFiltered, std::abs(e.errorFiltered));
-      b.maxConstant = std::max(b.maxConstant, std::abs(e.errorConstant));
-    }
-  };
   const std::size_t n = r.rows.size();
   const char* names[3] = {"near", "mid", "far"};
   for (int b = 0; b < 3; ++b) {
-    r.bands[static_cast<std::size_t>(b)].name = names[b];
+    BandError& band = r.bands[static_cast<std::size_t>(b)];
+    band.name = names[b];
     // Rows are stored top (far) first: band b covers the (2 - b)-th third.
-    const std::size_t begin = n * static_cast<std::size_t>(2 - b) / 3;
-    const std::size_t end = n * static_cast<std::size_t>(3 - b) / 3;
-    summarize(r.bands[static_cast<std::size_t>(b)], begin, end);
+    summarize(r.rows, band, n * static_cast<std::size_t>(2 - b) / 3, n * static_cast<std::size_t>(3 - b) / 3);
   }
   r.all.name = "all";
-  summarize(r.all, 0, n);
+  summarize(r.rows, r.all, 0, n);
   return r;
 }
 
@@ -196,13 +231,14 @@ io::ImageRgba8 validationPreview(const io::ImageRgbaF& image, double exposure) {
 }
 
 io::ImageRgba8 validationStrip(const ValidationResult& result, double exposure) {
-  const io::ImageRgbaF* parts[3] = {&result.reference, &result.filtered, &result.constant};
+  const io::ImageRgbaF* parts[4] = {&result.reference, &result.models[0], &result.models[1],
+                                    &result.models[2]};
   const int w = result.reference.width, h = result.reference.height, gap = 2;
   io::ImageRgba8 out;
-  out.width = 3 * w + 2 * gap;
+  out.width = 4 * w + 3 * gap;
   out.height = h;
   out.pixels.assign(static_cast<std::size_t>(4 * out.width * out.height), 255);
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < 4; ++k) {
     const io::ImageRgba8 p = validationPreview(*parts[k], exposure);
     for (int y = 0; y < h; ++y)
       std::copy_n(p.pixels.begin() + 4 * y * w, 4 * w,
@@ -213,7 +249,7 @@ io::ImageRgba8 validationStrip(const ValidationResult& result, double exposure) 
 
 double validationExposure(const ValidationResult& result) {
   double sum = 0.0;
-  for (const RowError& e : result.rows) sum += e.reference;
+  for (const RowError& e : result.rows) sum += e.reference[0];
   const double mean = result.rows.empty() ? 0.0 : sum / double(result.rows.size());
   return mean > 0.0 ? 0.18 / mean : 1.0;
 }

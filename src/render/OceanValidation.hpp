@@ -1,11 +1,14 @@
 #pragma once
-// Validation of the filtered ocean in the spirit of Bruneton et al. 2010 §7.2 (docs/validation.md):
-// each view is rendered three times, alone (no atmosphere: the analytic sky of lighting.glsl) -
-//   reference: every pattern at full resolution as geometry and normal, a mirror per sample, supersampled S x S and
-//              box-filtered down (the brute force that filtering should reproduce),
-//   filtered:  the model as it renders (OceanRenderer, ValidationMode::Filtered),
-//   constant:  a flat sea with the whole slope variance in the BRDF ("BRDF only"),
-// and the mean radiance of every image row of the two models is compared with the reference's.
+// Validation of the filtered ocean as Bruneton et al. 2010 §7.2 (docs/validation.md): each view
+// is rendered by OceanRenderer alone (no atmosphere: the analytic sky of lighting.glsl) as
+//   reference: every pattern at full resolution as geometry and normal, a mirror per sample (the
+//              Sun a true disc), supersampled S x S and averaged down (the brute force),
+//   filtered:  the model as it renders (ValidationMode::Filtered),
+//   constant:  the paper's baseline: the same filtered geometry and normals, the BRDF held at
+//              the unresolved tail's variance at every distance (ValidationMode::ConstantBrdf),
+//   brdf_only: a flat sea with the whole slope variance in the BRDF (ValidationMode::BrdfOnly),
+// once per lighting term (Sun, sky, refracted light; whitecaps off), and the mean luminance of
+// every image row of each model is compared with the reference's, per term and in total.
 #include <array>
 #include <memory>
 #include <string>
@@ -44,29 +47,40 @@ struct ValidationSettings {
   geo::Geodetic where{30.0, -40.0, 0.0};  ///< open Atlantic; height from the view
 };
 
-/// One image row's mean luminance (linear, units of the Sun's irradiance per sr).
+/// The compared models and lighting terms, in the order of the arrays below.
+inline constexpr int kValidationModels = 3;  ///< filtered, constant, brdf_only
+inline constexpr int kValidationTerms = 4;   ///< total, sun, sky, refracted
+inline constexpr std::array<const char*, kValidationModels> kValidationModelNames{"filtered", "constant",
+                                                                                  "brdf_only"};
+inline constexpr std::array<const char*, kValidationTerms> kValidationTermNames{"total", "sun", "sky",
+                                                                                "refracted"};
+using PerModel = std::array<double, kValidationModels>;
+
+/// One image row: mean luminance (linear, units of the Sun's irradiance per sr) per term.
 struct RowError {
   int row = 0;               ///< from the top
   double distanceM = 0.0;    ///< eye to the sea along the row's central ray (spherical Earth)
-  double reference = 0.0, filtered = 0.0, constant = 0.0;
-  double errorFiltered = 0.0, errorConstant = 0.0;  ///< (model - reference) / reference
+  std::array<double, kValidationTerms> reference{};
+  std::array<PerModel, kValidationTerms> model{};
+  /// (model - reference) / reference total, per term: the terms' errors add up to the total's.
+  std::array<PerModel, kValidationTerms> error{};
 };
 
-/// |relative error| over a band of rows.
+/// |row error| over a band of rows, per term and model.
 struct BandError {
   std::string name;
   int rows = 0;
   double nearM = 0.0, farM = 0.0;
-  double meanFiltered = 0.0, maxFiltered = 0.0;
-  double meanConstant = 0.0, maxConstant = 0.0;
+  std::array<PerModel, kValidationTerms> mean{}, max{};
 };
 
 struct ValidationResult {
   ValidationView view;
-  std::vector<RowError> rows;     ///< rows entirely covered by sea in all three images
+  std::vector<RowError> rows;     ///< rows entirely covered by sea in all images
   std::array<BandError, 3> bands; ///< near (bottom third of the rows), mid, far (at the horizon)
   BandError all;
-  io::ImageRgbaF reference, filtered, constant;  ///< linear radiance, width x height
+  io::ImageRgbaF reference;       ///< linear radiance (all terms), width x height
+  std::array<io::ImageRgbaF, kValidationModels> models;
 };
 
 class OceanValidator {
@@ -83,16 +97,22 @@ class OceanValidator {
  private:
   io::ImageRgbaF render(OceanRenderer& renderer, const ValidationView& view, int width, int height);
 
+  /// The term images (sun, sky, refracted) of one renderer at s x s the size; `weighted`: the
+  /// reference's weighted samples, averaged down by s.
+  std::array<io::ImageRgbaF, 3> renderTerms(OceanRenderer& renderer, const ValidationView& view, int s,
+                                            bool weighted);
+
   ValidationSettings settings_;
   std::unique_ptr<OceanPatterns> patterns_;
-  std::unique_ptr<OceanRenderer> filtered_, reference_, constant_;
+  std::unique_ptr<OceanRenderer> reference_;
+  std::array<std::unique_ptr<OceanRenderer>, kValidationModels> models_;
   std::unique_ptr<WindTextures> wind_;
 };
 
 /// Tone maps linear radiance for viewing: exposure, then sRGB (clamped), sea-less pixels black.
 io::ImageRgba8 validationPreview(const io::ImageRgbaF& image, double exposure);
 
-/// The three images side by side (reference | filtered | constant) with 2-px gaps.
+/// The four images side by side (reference | filtered | constant | brdf_only) with 2-px gaps.
 io::ImageRgba8 validationStrip(const ValidationResult& result, double exposure);
 
 /// Exposure putting the reference's mean sea luminance at 0.18.

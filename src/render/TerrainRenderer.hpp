@@ -18,13 +18,14 @@
 #include "gl/PassTimer.hpp"
 #include "gl/Shader.hpp"
 #include "render/Atmosphere.hpp"
+#include "render/ImageryTextures.hpp"
 #include "terrain/Selection.hpp"
 #include "terrain/TileCache.hpp"
 
 namespace og::render {
 
 /// The terrain's Sun shadow maps of the last frame, for other passes to look up
-/// (terrain/shadow.glsl's uniforms; the maps stay bound to texture unit 11).
+/// (terrain/shadow.glsl's uniforms; the maps stay bound to gl::kUnitShadowMap).
 struct SunShadows {
   static constexpr int kCascades = 2;  // SHADOW_CASCADES in terrain/shadow.glsl
   bool on = false;
@@ -61,6 +62,8 @@ class TerrainRenderer {
   void setPassTimer(gl::PassTimer* timer) { timer_ = timer; }
   /// The shadow maps drawn by the last draw() (off when there were none).
   [[nodiscard]] const SunShadows& shadows() const { return shadows_; }
+  /// The imagery draped as the terrain's albedo (nullptr: the stand-in materials). Not owned.
+  void setImagery(const ImageryTextures* imagery) { imagery_ = imagery; }
   /// Selection settings; `wait = false` (progressive) never stalls a frame on tile builds.
   terrain::SelectionParams& selection() { return params_; }
 
@@ -81,6 +84,7 @@ class TerrainRenderer {
   };
 
   const Atmosphere* atmosphere_;
+  const ImageryTextures* imagery_ = nullptr;
   terrain::TileCache cache_;
   terrain::SelectionParams params_;
   gl::Program program_;

@@ -23,7 +23,16 @@ class WindTextures {
   [[nodiscard]] bool hasLayers() const { return layers_ != nullptr; }
   [[nodiscard]] const data::WindLayers* layers() const { return layers_.get(); }
 
-  /// The strongest wind of the layers, m/s (0 without layers): the waves must hold it.
+  /// Moves layers that follow the clock to `time` (nullopt: leaves them as they are). The texture is
+  /// rebuilt and uploaded only when the layers' steps or quantised blend weights change
+  /// (data::WindLayers::timeKey), not every frame.
+  void setTime(std::optional<UtcTime> time);
+  /// Layer textures uploaded so far (setLayers and each change of setTime; not the one-cell
+  /// constant wind), for tests.
+  [[nodiscard]] int uploads() const { return uploads_; }
+
+  /// The strongest wind of the layers, m/s (0 without layers), at any of their time steps: the
+  /// waves must hold it, and it stays the same while the layers follow the clock.
   [[nodiscard]] double maxLayerSpeedMs() const { return maxSpeedMs_; }
 
   /// The wind everywhere while no layers are set (the layers carry their own fallback).
@@ -34,10 +43,17 @@ class WindTextures {
   void bind(const gl::Program& program) const;
 
  private:
-  void upload(const data::WindRaster& raster);
+  /// Uploads `raster` (a new texture only when its size changes); returns its strongest wind, m/s.
+  double upload(const data::WindRaster& raster);
 
   std::shared_ptr<const data::WindLayers> layers_;
+  data::WindTimeKey key_;  ///< of the winds in the texture
+  int width_ = 720;
+  int height_ = 360;
+  int uploads_ = 0;
   gl::Texture wind_;
+  int textureWidth_ = 0;  ///< of wind_ (0: none yet)
+  int textureHeight_ = 0;
   double maxSpeedMs_ = 0.0;
   geo::Wind constant_;
   bool constantUploaded_ = false;  ///< wind_ holds constant_ (no layers)

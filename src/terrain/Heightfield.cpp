@@ -62,6 +62,7 @@ double detailSum(const DetailOctaves& o, const glm::dvec3& unitUp, int count, in
 }
 
 Heightfield::Heightfield(data::LatLonGrid layer) : layer_(std::move(layer)) {
+  if (layer_.wrapsLongitude && data::defaultLandMask().refines(layer_)) mask_ = &data::defaultLandMask();
   cellM_ = layer_.dLatDeg * kDeg * geo::kWgs84SemiMajorM;
   // Octaves from two layer cells (what the bilinear layer cannot show) down to the shortest.
   octaves_.longestM = 2.0 * cellM_;
@@ -80,7 +81,8 @@ Heightfield::Heightfield(data::LatLonGrid layer) : layer_(std::move(layer)) {
 
 double Heightfield::layerHeightM(double latitudeDeg, double longitudeDeg) const {
   const float v = layer_.sample(std::clamp(latitudeDeg, -90.0, 90.0), longitudeDeg);
-  return std::isfinite(v) ? static_cast<double>(v) : -1.0;
+  const double h = std::isfinite(v) ? static_cast<double>(v) : -1.0;
+  return mask_ != nullptr ? mask_->constrainHeightM(h, latitudeDeg, longitudeDeg) : h;
 }
 
 double Heightfield::detailAmplitudeM(double latitudeDeg, double longitudeDeg) const {

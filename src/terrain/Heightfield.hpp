@@ -11,6 +11,7 @@
 
 #include <memory>
 
+#include "data/LandMask.hpp"
 #include "data/LatLonGrid.hpp"
 
 namespace og::terrain {
@@ -48,7 +49,8 @@ class Heightfield {
   /// heightM() bit for bit.
   [[nodiscard]] HeightSample sample(double latitudeDeg, double longitudeDeg, int normalOctaves,
                                     double stepDeg) const;
-  /// The layer alone (bilinear, no detail), metres.
+  /// The layer alone (bilinear, no detail), metres; for a global layer coarser than the GSHHG
+  /// land mask (data::LandMask::refines), constrained to it so its coast is the mask's.
   [[nodiscard]] double layerHeightM(double latitudeDeg, double longitudeDeg) const;
   /// The detail's amplitude at a point, m: the layer's local relief (height differences over
   /// one cell), at least 3 % of |h| and at most 80 % of it, so detail never crosses sea level.
@@ -69,6 +71,7 @@ class Heightfield {
   [[nodiscard]] double detailAmplitudeM(double latitudeDeg, double longitudeDeg, double h) const;
 
   data::LatLonGrid layer_;
+  const data::LandMask* mask_ = nullptr;  ///< decides the coast when the layer is coarser
   double cellM_ = 0.0;
   DetailOctaves octaves_;
 };

@@ -65,8 +65,9 @@ struct Tile {
   int normalOctaves = 0;                 ///< detail octaves in the vertex normals (the rest per pixel)
   std::uint64_t lastUsedFrame = 0;
 
-  /// Wholly under 50 m of water: the sea covers it (drawn by the sea, split with less care).
-  [[nodiscard]] bool coveredBySea() const { return maxHeightM < -50.0; }
+  /// Wholly under a metre of water or more: the sea covers it (the sea pass draws the floor
+  /// through the water itself, ocean/water_volume.glsl; split with less care).
+  [[nodiscard]] bool coveredBySea() const { return maxHeightM < -1.0; }
 
   /// Memory held by the tile's CPU arrays, bytes.
   [[nodiscard]] std::size_t bytes() const {

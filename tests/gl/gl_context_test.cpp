@@ -53,7 +53,9 @@ TEST(GlContext, ParseBackend) {
 
 TEST(GlShader, IncludesExpandWithLineDirectives) {
   const gl::ExpandedSource src = gl::expandShader("render/globe.frag", {"TEST_DEFINE 1"});
-  EXPECT_EQ(src.text.rfind("#version 450 core\n#define TEST_DEFINE 1\n", 0), 0u);
+  // #version first, then the contract's defines (gl/ShaderContract), then the caller's.
+  EXPECT_EQ(src.text.rfind("#version 450 core\n#define OG_PI ", 0), 0u);
+  EXPECT_NE(src.text.find("\n#define TEST_DEFINE 1\n#line 2 0\n"), std::string::npos);
   EXPECT_EQ(src.files.at(0), "shaders/render/globe.frag");
   // common/constants.glsl is included by globe.frag and by geo/ellipsoid.glsl: once only.
   std::size_t count = 0;

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <regex>
+#include <set>
 #include <string>
 
 #include "core/Error.hpp"
@@ -30,6 +32,37 @@ TEST(ShaderContract, ConstantsAndUnitsAreInjectedFromCpp) {
   const std::string constants = og::gl::readShaderFile("common/constants.glsl");
   EXPECT_EQ(constants.find("3.14159"), std::string::npos);
   EXPECT_EQ(og::gl::readShaderFile("ocean/wind.glsl").find("binding = 1"), std::string::npos);
+}
+
+// Every sampler of the frame's passes takes its unit from the contract: no literal number in the
+// GLSL, and no two of the frame's samplers on one unit (the passes of their own aside).
+TEST(ShaderContract, EverySamplerOfTheFrameIsNamedInTheContract) {
+  static const std::regex literalSampler(R"(layout\s*\(\s*binding\s*=\s*[0-9]+\s*\)\s*uniform\s+\w*sampler)");
+  static const std::regex namedSampler(R"(layout\s*\(\s*binding\s*=\s*(OG_UNIT_\w+)\s*\)\s*uniform\s+\w*sampler)");
+  std::set<std::string> named;
+  for (const char* file : {"render/elevation.glsl", "ocean/wind.glsl", "atmosphere/model.glsl",
+                           "atmosphere/skymap.glsl", "ocean/classic.frag", "ocean/patterns.glsl",
+                           "terrain/shadow.glsl", "terrain/imagery.glsl", "terrain/landmask.glsl",
+                           "render/tonemap.frag", "viewer/text.frag"}) {
+    const std::string text = og::gl::readShaderFile(file);
+    EXPECT_FALSE(std::regex_search(text, literalSampler)) << file << " binds a sampler to a literal unit";
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), namedSampler); it != std::sregex_iterator(); ++it)
+      named.insert((*it)[1].str());
+  }
+  std::set<std::string> defined;
+  for (const std::string& d : og::gl::contractDefines()) defined.insert(d.substr(0, d.find(' ')));
+  for (const std::string& n : named) EXPECT_TRUE(defined.count(n) == 1) << n << " is not in the contract";
+  EXPECT_EQ(named.size(), 21u);  // the land mask, imagery, sky, patterns... all of them
+  // The frame's units are distinct (tone mapping and the overlay are passes of their own).
+  std::set<unsigned> units;
+  for (unsigned u : {og::gl::kUnitElevation, og::gl::kUnitWind, og::gl::kUnitAtmTransmittance,
+                     og::gl::kUnitAtmScattering, og::gl::kUnitAtmSingleMie, og::gl::kUnitAtmIrradiance,
+                     og::gl::kUnitSkyMap, og::gl::kUnitSkyIrradiance, og::gl::kUnitBumpMap,
+                     og::gl::kUnitFresnelRamp, og::gl::kUnitPatternTable, og::gl::kUnitShadowMap,
+                     og::gl::kUnitPatternDisplacement, og::gl::kUnitPatternSlopes,
+                     og::gl::kUnitPatternJacobian, og::gl::kUnitImageryDay, og::gl::kUnitImageryNight,
+                     og::gl::kUnitImageryLayers, og::gl::kUnitLandMask})
+    EXPECT_TRUE(units.insert(u).second) << "unit " << u << " named twice";
 }
 
 TEST(ShaderContract, MissingUniformsAreReportedAtStartUp) {

@@ -300,12 +300,19 @@ TEST(DataWind, TimeAxisVariantsAndRefusals) {
   const fs::path days = write("days.nc", "days since 2024-01-01", "gregorian", {0.0, 1.0});
   const WindGrid w = og::data::readWindLayer(days.string(), iso("2024-01-01T18:00Z"));
   EXPECT_NEAR(w.u.at(1, 1), 7.5f, 1e-5);
+  // A model calendar: day 1 of a 365-day year is 366/365 real days into leap year 2024.
   const fs::path noleap = write("noleap.nc", "days since 2024-01-01", "noleap", {0.0, 1.0});
-  expectInputError(noleap.string(), "calendar 'noleap'",
-                   [&] { (void)og::data::readWindLayer(noleap.string(), std::nullopt); });
+  EXPECT_NEAR(og::data::readWindLayer(noleap.string(), iso("2024-01-01T18:00Z")).u.at(1, 1),
+              10.0 * 0.75 * 365.0 / 366.0, 1e-4);
+  const fs::path none = write("none.nc", "days since 2024-01-01", "none", {0.0, 1.0});
+  expectInputError(none.string(), "calendar 'none'",
+                   [&] { (void)og::data::readWindLayer(none.string(), std::nullopt); });
   const fs::path months = write("months.nc", "months since 2024-01-01", "", {0.0, 1.0});
-  expectInputError(months.string(), "not understood",
+  expectInputError(months.string(), "only in calendar 360_day",
                    [&] { (void)og::data::readWindLayer(months.string(), std::nullopt); });
+  const fs::path months360 = write("months360.nc", "months since 2024-01-01", "360_day", {0.0, 1.0});
+  EXPECT_NEAR(og::data::readWindLayer(months360.string(), iso("2024-01-16T12:00Z")).u.at(1, 1),
+              10.0 * 15.5 / (30.0 * 366.0 / 360.0), 1e-4);
   const fs::path backwards = write("backwards.nc", "hours since 2024-01-01", "", {6.0, 0.0});
   expectInputError(backwards.string(), "not strictly increasing",
                    [&] { (void)og::data::readWindLayer(backwards.string(), std::nullopt); });

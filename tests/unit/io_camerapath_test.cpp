@@ -111,3 +111,19 @@ TEST(CameraPath, TheDemoFlightIsValid) {
   EXPECT_GE(duration, 15.0);
   EXPECT_LE(duration, 30.0);
 }
+
+TEST(CameraPath, TimeLapseReadWrittenAndChecked) {
+  const fs::path file = fs::path(OG_TEST_OUT_DIR) / "camerapath_timelapse.toml";
+  std::ofstream(file) << "[scene]\ntime = \"2024-06-20T06:00:00Z\"\ntime_lapse = 1080\n"
+                         "[[keyframe]]\nlatitude_deg = 1\nlongitude_deg = 2\nheight_m = 300\n"
+                         "[[keyframe]]\ntime_s = 20\n";
+  const CameraPath p = readCameraPath(file);
+  EXPECT_EQ(p.scene.timeLapse, 1080.0);  // 20 s of path = 6 h of UTC
+  const fs::path json = fs::path(OG_TEST_OUT_DIR) / "camerapath_timelapse.json";
+  og::io::writeCameraPathJson(json, p);
+  EXPECT_EQ(readCameraPath(json).scene.timeLapse, 1080.0);
+  EXPECT_NE(og::io::pathSettingsToml(p).find("time_lapse = 1080"), std::string::npos);
+  EXPECT_EQ(og::io::pathSettingsToml(readCameraPath(kPaths / "good.toml")).find("time_lapse"), std::string::npos);
+  std::ofstream(file) << "[scene]\ntime_lapse = -2\n[[keyframe]]\nlatitude_deg = 1\nlongitude_deg = 2\n";
+  EXPECT_NE(errorOf(file).find("'time_lapse' must be within [0, "), std::string::npos) << errorOf(file);
+}

@@ -64,6 +64,7 @@ SceneSettings unusualScene() {
   s.windLayers = {"a.nc:U,V", "b \"quoted\".grib2"};
   s.elevationLayer = "relief.nc:ROSE";
   s.simulationTimeS = 42.125;
+  s.timeLapse = 1080.0;
   s.waveSeed = 9007199254740993ull;  // above 2^53: must not pass through a double
   s.atmosphere.mieScattering = {1.5e-6, 2.5e-6, 3.5e-6};
   s.atmosphere.miePhaseG = 0.75;

@@ -178,3 +178,21 @@ TEST(OceanPatterns, RejectsBadParameters) {
   p.sizesM = {10, 20, 5, 2, 1};
   EXPECT_THROW(makeWavePatterns(p), og::InputError);
 }
+
+// Under a light reference wind the longest patterns hold ~1e-187 m²; their per-wind scales
+// must stay finite (an overflow to inf in float made the GPU's interpolation between two
+// wind columns inf × 0 = NaN: no sea at all at 1 and 3 m/s).
+TEST(OceanPatterns, TablesStayFiniteUnderLightReferenceWinds) {
+  for (double uRef : {0.5, 1.0, 1.5, 2.0, 3.0, 4.0}) {
+    const PatternTables t = makePatternTables(patternsFor(uRef));
+    for (int s = 0; s < PatternTables::kSpeeds; ++s)
+      for (int i = 0; i < kPatternCount; ++i) {
+        const PatternTableEntry& e = t.pattern[s][i];
+        EXPECT_TRUE(std::isfinite(static_cast<float>(e.heightScale)) && e.heightScale <= 1e4)
+            << "reference " << uRef << " m/s, wind " << s << ", pattern " << i;
+        EXPECT_TRUE(std::isfinite(static_cast<float>(e.slopeScale)) && e.slopeScale <= 1e4)
+            << "reference " << uRef << " m/s, wind " << s << ", pattern " << i;
+        EXPECT_TRUE(std::isfinite(static_cast<float>(e.jacobianVariance)));
+      }
+  }
+}

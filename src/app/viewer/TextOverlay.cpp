@@ -1,6 +1,7 @@
 #include "app/viewer/TextOverlay.hpp"
 
 #include "app/viewer/BitmapFont.hpp"
+#include "gl/ShaderContract.hpp"
 
 namespace og::app::viewer {
 
@@ -48,7 +49,7 @@ void TextOverlay::draw(const std::vector<std::string>& lines, int fbWidth, int f
   program_.use();
   program_.set("uRect", glm::vec4(x0, y0, x1, y1));
   program_.set("uText", 0);
-  glBindTextureUnit(0, texture_.id());
+  glBindTextureUnit(gl::kUnitOverlayText, texture_.id());
   glBindVertexArray(vao_.id());
   glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
   glBindVertexArray(0);

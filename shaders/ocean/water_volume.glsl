@@ -1,0 +1,178 @@
+// The water volume under the projected grid's sea, per pixel (seed 001, Baboud & Decoret 2006
+// §3): the view ray refracted through the footprint's mean surface normal, the sea floor found
+// by marching the elevation layer's heightfield along it (stopping at d_max, Eq. 6, where the
+// water leaves nothing of the floor), the floor lit by the Sun refracted and focused by the
+// waves (caustics) and shadowed by the terrain along its refracted path, plus the sky; the
+// water column's absorption and in-scattering from ocean/water_optics.glsl. The result goes to
+// gWater (terrain/shallow.glsl), which the lighting's refracted term reads (lighting.glsl).
+//
+// Needs (included first): ocean/patterns.glsl, ocean/brdf.glsl, ocean/lighting.glsl (which
+// brings terrain/shallow.glsl and ocean/water_optics.glsl), render/elevation.glsl,
+// terrain/shadow.glsl, common/types.glsl.
+#include "terrain/detail.glsl"
+
+// Sea-floor detail below the elevation layer (sand ripples, patches of rubble and weed):
+// octaves of the terrain's gradient noise (terrain/detail.glsl) from FLOOR_LONGEST_M down,
+// each faded out as its wavelength nears two pixels. The eye lies in lattice cell
+// uFloorCell[k] at uFloorFrac[k] of octave k (split in double on the CPU: render/WaterVolume).
+const int FLOOR_OCTAVES = 6;
+uniform ivec3 uFloorCell[FLOOR_OCTAVES];
+uniform vec3 uFloorFrac[FLOOR_OCTAVES];
+uniform float uFloorScale0;        // octave 0's lattice cells per unit of the sphere (a / wavelength)
+uniform float uFloorEyeFootScale;  // |diag(1, 1, a²/b²) F| for the eye's foot point F, m
+uniform vec3 uFloorEyeUp;          // geodetic normal under the eye, ECEF axes
+uniform float uFloorEyeHeightM;    // the eye's height above the ellipsoid, m
+const float FLOOR_RELIEF_M = 0.12;     // height of octave 0's ripples, m (weight 0.6^k below)
+const float FLOOR_ALBEDO_SPREAD = 0.45;  // relative albedo variation of the floor's patches
+const int FLOOR_MARCH_STEPS = 4;  // + a secant step: the layer is near-planar over d_max
+// Below this share of the floor in the pixel (transmission down and up x (1 - Fresnel)), its
+// detail, caustics and shadows are not worth their cost: a plain floor stands in.
+const float FLOOR_DETAIL_MIN_SHARE = 0.02;
+
+// Geodetic normal at a foot point minus the eye's, from the offset between the two foot points
+// (terrain.frag's normalOffsetFromEye, here with this pass's uniforms).
+vec3 floorOffsetFromEye(vec3 footOffset) {
+  vec3 g = footOffset * vec3(1.0, 1.0, (WGS84_A / WGS84_B) * (WGS84_A / WGS84_B)) / uFloorEyeFootScale;
+  vec3 e = uFloorEyeUp;
+  float small = 2.0 * dot(e, g) + dot(g, g);
+  float len = sqrt(1.0 + small);
+  return (g - e * (small / (1.0 + len))) / len;
+}
+
+// The floor's detail at a point (dUp: its geodetic normal minus the eye's) seen with a footprint
+// of `footprintM`: (albedo factor - 1, height gradient per metre in ECEF axes).
+vec4 floorDetail(vec3 dUp, float footprintM) {
+  float scale = uFloorScale0;
+  float value = 0.0;
+  vec3 grad = vec3(0.0);
+  for (int k = 0; k < FLOOR_OCTAVES; ++k) {
+    float w = 1.0 - smoothstep(0.25, 0.5, footprintM * scale / WGS84_A);  // cells per pixel
+    if (w <= 0.0) break;
+    vec3 q = uFloorFrac[k] + dUp * scale;
+    vec3 c = floor(q);
+    vec4 r = detailNoise(uFloorCell[k] + ivec3(c), q - c);
+    float weight = w * detailOctaveWeight(k);
+    value += weight * r.x;
+    grad += (weight * FLOOR_RELIEF_M * scale / WGS84_A) * r.yzw;
+    scale *= 2.0;
+  }
+  return vec4(FLOOR_ALBEDO_SPREAD * value, grad);
+}
+
+// Mean slope (frame axes) of the sea surface at xy over a footprint of `footprintM`, from the
+// two finest patterns only (the ones that focus light at these depths; ocean/patterns.glsl's
+// oceanSurface without the variances).
+vec2 causticSlope(vec2 xy, float footprintM, vec2 wind) {
+  vec2 p = fieldPosition(xy);
+  WindBins wb = windBins(fieldWindAngle(wind.y));
+  vec2 mean = vec2(0.0);
+  for (int i = max(PATTERN_COUNT - 2, 0); i < PATTERN_COUNT; ++i) {
+    float lod = patternLod(footprintM, i);
+    if (lod >= uPatternTopLod) break;
+    float s = patternTable(i, wind.x).y;
+    for (int k = 0; k < 2; ++k) {
+      if (wb.weight[k] < 1e-3) continue;
+      vec2 m = textureLod(uPatternSlopes, patternCoord(p, wb.bin[k], i), lod).xy * s;
+      mean += wb.weight[k] * rotate2(m, float(wb.bin[k]) * 0.25 * PI);
+    }
+  }
+  return frameVector(mean * uPatternAmplitude);
+}
+
+// Caustics: the Sun's irradiance on the floor relative to a flat sea. A ray entering where the
+// surface slope is s leaves the vertical towards the slope's rise by (1 - 1/n) s per metre of
+// path, so the map from surface to floor a path z below is J = I + z (1 - 1/n) H (H the
+// surface's height Hessian) and the irradiance 1 / det J ~ 1 - c, c = z (1 - 1/n) tr H
+// (DESIGN.md "Caustics"): crests focus, troughs spread. c is compressed to c / (1 + |c|), an
+// odd function, so the gain keeps a mean of 1 over the floor (energy is conserved) and stays in
+// (0, 2). H comes from finite differences of the slopes filtered over the blur of the Sun's
+// disc at that depth (0.53° in air, /n in water) or the pixel's footprint, whichever is
+// larger: caustics sharpen with depth up to the waves' focal depth, blur beyond it, and
+// average out with distance (no aliasing).
+float causticGain(vec2 xy, float pathM, float footprintM, vec2 wind) {
+  float blur = max(footprintM, pathM * (0.0093 / WATER_INDEX));
+  vec2 s0 = causticSlope(xy, blur, wind);
+  vec2 sx = causticSlope(xy + vec2(blur, 0.0), blur, wind);
+  vec2 sy = causticSlope(xy + vec2(0.0, blur), blur, wind);
+  float traceH = (sx.x - s0.x + sy.y - s0.y) / blur;
+  float c = pathM * (1.0 - 1.0 / WATER_INDEX) * traceH;
+  return 1.0 - c / (1.0 + abs(c));
+}
+
+// Height of the layer's floor (m, negative below sea level) along a ray leaving the surface at
+// (latitude, longitude) `latLon` with horizontal direction `east`/`north` components per metre.
+float floorHeightAlong(vec2 latLon, vec2 horizontal, float s) {
+  vec2 d = s * horizontal / WGS84_A;
+  return elevationAt(latLon + vec2(d.y, d.x / max(cos(latLon.x), 1e-3)));
+}
+
+// Prepares gWater for the sea pixel at camera-relative `rel` (to the eye `v`, mean normal `n`,
+// geodetic vertical `up`, at `latLon`, `oceanXY` in the ocean frame whose rows are
+// `ecefToOcean`), pixel footprint `footprintM` (m), local wind (speed, azimuth).
+void prepareWaterVolume(vec3 rel, vec3 v, vec3 n, vec3 up, vec2 latLon, vec2 oceanXY,
+                        mat3 ecefToOcean, float footprintM, vec2 wind, vec3 sunE) {
+  vec3 k = uWaterAttenuation;
+  float dMax = waterMaxPathM(k, WATER_EPSILON);
+  if (uElevationSize.x <= 0.0 || -elevationAt(latLon) > dMax) {
+    gWater = WaterVolume(true, uSeaColor);  // deep: the floor contributes less than epsilon
+    return;
+  }
+  // The view ray refracted into the water, kept going down (grazing views of a tilted facet).
+  vec3 t = refract(-v, n, 1.0 / WATER_INDEX);
+  float down = min(dot(t, up), -0.05);
+  t = normalize(t - (dot(t, up) - down) * up);
+  down = dot(t, up);
+  mat3 frame = localFrame(up);
+  vec2 horizontal = vec2(dot(t, frame[0]), dot(t, frame[1]));
+  // March (fixed steps to d_max), then a secant step between the last two samples.
+  float sPrev = 0.0, gapPrev = -elevationAt(latLon);  // ray height minus floor height (>= 0 above)
+  float sHit = -1.0;
+  float step = dMax / float(FLOOR_MARCH_STEPS);
+  for (int i = 1; i <= FLOOR_MARCH_STEPS; ++i) {
+    float s = step * float(i);
+    float gap = s * down - floorHeightAlong(latLon, horizontal, s);
+    if (gap <= 0.0) {
+      sHit = mix(sPrev, s, gapPrev / max(gapPrev - gap, 1e-6));
+      break;
+    }
+    sPrev = s;
+    gapPrev = gap;
+  }
+  if (sHit < 0.0) {
+    gWater = WaterVolume(true, uSeaColor);
+    return;
+  }
+  float depthM = max(-(sHit * down), 0.0);
+  vec3 floorRel = rel + sHit * t;
+  // The Sun refracted through the mean surface, its path down to the floor, and the point
+  // where it entered the water: caustics and the terrain's (refracted) shadows are taken there.
+  float muS = dot(sunE, up);
+  vec3 sunWater = refract(-sunE, up, 1.0 / WATER_INDEX);  // going down
+  float cosSunWater = waterRefractedCosine(max(muS, 0.0));
+  float sunPathM = depthM / max(cosSunWater, 0.05);
+  vec3 albedo = uFloorAlbedo;
+  vec3 nFloor = up;
+  float sunFactor = 1.0;
+  vec3 seen = waterTransmittance(k, sunPathM + sHit) * (1.0 - fresnelSchlick(max(dot(n, v), 0.0)));
+  if (max(seen.x, max(seen.y, seen.z)) > FLOOR_DETAIL_MIN_SHARE) {
+    // The floor's detail, filtered by the pixel's footprint there (refraction magnifies little).
+    vec3 dUp = floorOffsetFromEye(floorRel + depthM * up + uFloorEyeHeightM * uFloorEyeUp);
+    vec4 detail = floorDetail(dUp, footprintM * (1.0 + sHit / max(length(rel), 1.0)));
+    vec3 g = detail.yzw - dot(detail.yzw, up) * up;
+    nFloor = normalize(up - g);
+    albedo *= clamp(1.0 + detail.x, 0.3, 1.7);
+    vec3 entryRel = floorRel - sunPathM * sunWater;
+    vec2 entryXY = oceanXY + (ecefToOcean * (entryRel - rel)).xy;
+    sunFactor = sunVisibility(entryRel, up) * causticGain(entryXY, sunPathM, footprintM, wind) *
+                max(dot(nFloor, -sunWater), 0.0) / max(cosSunWater, 0.05);
+  }
+  float sunZenith = acos(clamp(muS, -1.0, 1.0));
+  vec3 eSun = sunIrradiance(sunZenith), eSky = skyIrradiance(sunZenith);
+  vec3 sunBelow = eSun * max(muS, 0.0) * (1.0 - fresnelSchlick(max(muS, 0.0)));
+  vec3 skyBelow = eSky * (1.0 - SKY_FRESNEL_MEAN) * (0.5 + 0.5 * dot(nFloor, up));
+  vec3 floorIrr = floorIrradiance(k, depthM, cosSunWater, sunBelow, sunFactor, skyBelow);
+  // Per unit of the irradiance the lighting multiplies by (lighting.glsl's seaRefracted).
+  vec3 surfaceIrr = eSun * gSeaSunVisibility * max(muS, 0.0) + eSky;
+  vec3 radiance = waterColumnRadiance(k, uSeaColor, albedo, floorIrr, depthM, sHit, surfaceIrr);
+  gWater = WaterVolume(true, radiance / max(surfaceIrr, vec3(1e-6)));
+}

@@ -1,0 +1,89 @@
+// The GSHHG land mask decides the coast where the DEM's zero contour is wrong: Flevoland
+// (reclaimed land below sea level; ETOPO's 20' cell is -2 m) is land, Lake Victoria (1128 m in
+// the DEM) and Lake Michigan are water; the terrain's heights follow it for the default layer
+// and keep their own zero contour for a regional layer.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "data/Elevation.hpp"
+#include "data/LandMask.hpp"
+#include "terrain/Heightfield.hpp"
+
+using og::data::LandMask;
+
+TEST(LandMask, DefaultMaskIsGlobalAtTwoArcMinutes) {
+  const LandMask& m = og::data::defaultLandMask();
+  EXPECT_EQ(m.width(), 10800);
+  EXPECT_EQ(m.height(), 5400);
+  EXPECT_NEAR(m.cellDeg(), 1.0 / 30.0, 1e-9);
+  EXPECT_NEAR(m.westDeg(), -180.0, 1e-6);
+  EXPECT_NEAR(m.southDeg(), -90.0, 1e-6);
+  EXPECT_TRUE(m.isLand(23.0, 12.0));     // Sahara
+  EXPECT_TRUE(m.isLand(-80.0, 0.0));     // Antarctica
+  EXPECT_FALSE(m.isLand(0.0, -150.0));   // Pacific
+  EXPECT_FALSE(m.isLand(36.0, -5.45));   // the Strait of Gibraltar (14 km wide)
+  EXPECT_TRUE(m.isLand(36.25, -5.75));   // Spain north of Tarifa
+}
+
+TEST(LandMask, DecidesTheCoastWhereTheDemIsWrong) {
+  const LandMask& m = og::data::defaultLandMask();
+  const auto& dem = og::data::defaultElevation();
+  ASSERT_TRUE(m.refines(dem));
+  const og::terrain::Heightfield ground(dem);
+  // Flevoland (Netherlands): land below sea level; the DEM's cell is at or below 0.
+  EXPECT_LE(dem.sample(52.5, 5.5), 0.0f);
+  EXPECT_TRUE(m.isLand(52.5, 5.5));
+  EXPECT_GT(ground.layerHeightM(52.5, 5.5), 0.0);
+  // Lake Victoria and Lake Michigan: lakes are water, whatever the DEM's height there.
+  EXPECT_GT(dem.sample(-1.0, 33.0), 1000.0f);
+  EXPECT_FALSE(m.isLand(-1.0, 33.0));
+  EXPECT_LT(ground.layerHeightM(-1.0, 33.0), 0.0);
+  EXPECT_FALSE(m.isLand(44.0, -87.0));
+  EXPECT_LT(ground.layerHeightM(44.0, -87.0), 0.0);
+  // The Everglades: land, never sea-speckled, across a transect of the southern tip.
+  for (double lon = -81.0; lon <= -80.5; lon += 0.05) EXPECT_GT(ground.layerHeightM(25.6, lon), 0.0) << lon;
+}
+
+TEST(LandMask, RegionalAndFineLayersKeepTheirOwnCoast) {
+  og::data::LatLonGrid regional;
+  regional.width = regional.height = 10;
+  regional.lon0Deg = 0.0;
+  regional.lat0Deg = 50.0;
+  regional.dLonDeg = regional.dLatDeg = 0.5;
+  regional.values.assign(100, -50.0f);
+  EXPECT_FALSE(og::data::defaultLandMask().refines(regional));
+  const og::terrain::Heightfield ground(regional);
+  EXPECT_NEAR(ground.layerHeightM(52.0, 2.0), -50.0, 1e-6);  // would be land (England) in the mask
+}
+
+TEST(LandMask, FractionIsBilinearAcrossCells) {
+  // A global 16 x 8 mask (22.5° cells) with one land cell at column 9, row 5.
+  std::vector<std::uint8_t> cells(16 * 8, 0);
+  cells[5 * 16 + 9] = 1;
+  const LandMask m(16, 8, -180.0, -90.0, 22.5, cells);
+  const double lon = -180.0 + 9.5 * 22.5, lat = -90.0 + 5.5 * 22.5;
+  EXPECT_FLOAT_EQ(m.landFraction(lat, lon), 1.0f);
+  EXPECT_FLOAT_EQ(m.landFraction(lat, lon + 22.5), 0.0f);
+  EXPECT_FLOAT_EQ(m.landFraction(lat, lon + 11.25), 0.5f);
+  EXPECT_FLOAT_EQ(m.landFraction(lat + 11.25, lon + 11.25), 0.25f);
+  EXPECT_NEAR(m.constrainHeightM(-100.0, lat, lon), LandMask::kCoastRampM * 0.5, 1e-9);
+  EXPECT_NEAR(m.constrainHeightM(300.0, lat, lon + 22.5), -LandMask::kCoastRampM * 0.5, 1e-9);
+  // Longitude wraps: column 15 and column 0 are neighbours.
+  EXPECT_FLOAT_EQ(m.landFraction(lat, lon + 360.0), 1.0f);
+}
+
+TEST(LandMask, SyntheticGlobesKeepTheirOwnCoast) {
+  // A global 0.25° layer that is land everywhere: not Earth's relief, so no mask.
+  og::data::LatLonGrid flat;
+  flat.width = 1440;
+  flat.height = 720;
+  flat.lon0Deg = -179.875;
+  flat.lat0Deg = -89.875;
+  flat.dLonDeg = flat.dLatDeg = 0.25;
+  flat.wrapsLongitude = true;
+  flat.values.assign(1440u * 720u, 300.0f);
+  EXPECT_FALSE(og::data::defaultLandMask().refines(flat));
+  const og::terrain::Heightfield ground(flat);
+  EXPECT_NEAR(ground.layerHeightM(0.3, 0.0), 300.0, 1e-3);  // the Gulf of Guinea in the mask
+}
