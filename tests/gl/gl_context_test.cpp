@@ -8,20 +8,12 @@
 #include "gl/Objects.hpp"
 #include "gl/Readback.hpp"
 #include "gl/Shader.hpp"
+#include "support/GlFixtures.hpp"
 
 using namespace og;
 
 namespace {
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const char* value) : name_(name) { setenv(name, value, 1); }
-  ~ScopedEnv() { unsetenv(name_); }
-  ScopedEnv(const ScopedEnv&) = delete;
-  ScopedEnv& operator=(const ScopedEnv&) = delete;
-
- private:
-  const char* name_;
-};
+using test::ScopedEnv;
 }  // namespace
 
 TEST(GlContext, EglAndOsMesaGiveCoreContexts) {
@@ -59,7 +51,7 @@ TEST(GlShader, IncludesExpandWithLineDirectives) {
   EXPECT_EQ(src.files.at(0), "shaders/render/globe.frag");
   // common/constants.glsl is included by globe.frag and by geo/ellipsoid.glsl: once only.
   std::size_t count = 0;
-  for (std::size_t p = 0; (p = src.text.find("const float WGS84_A", p)) != std::string::npos; ++p)
+  for (std::size_t p = 0; (p = src.text.find("const Number WGS84_A", p)) != std::string::npos; ++p)
     ++count;
   EXPECT_EQ(count, 1u);
   EXPECT_EQ(src.text.find("#include"), std::string::npos);
