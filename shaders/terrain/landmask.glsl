@@ -1,10 +1,10 @@
 // Land and water from real coastlines (data::LandMask, render/LandMaskTexture): a global mask
 // of 2′ cells from GSHHG, lakes as water, packed 8 cells per texel along a row (bit k of texel
 // x = column 8x + k), rows south to north, covering -180..180° E and -90..90° N. Bound to unit
-// 18 only where it decides the coast (a global elevation layer coarser than it); otherwise the
+// OG_UNIT_LAND_MASK only where it decides the coast (a global elevation layer coarser than it); otherwise the
 // unit holds a 1×1 texture and landMaskOn() is false. The coastal-water code reads it here.
 #include "common/constants.glsl"
-layout(binding = 18) uniform usampler2D uLandMask;
+layout(binding = OG_UNIT_LAND_MASK) uniform usampler2D uLandMask;
 
 bool landMaskOn() { return textureSize(uLandMask, 0).y > 1; }
 

@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "core/Error.hpp"
+#include "gl/ShaderContract.hpp"
 
 namespace og::render {
 
@@ -23,6 +24,6 @@ LandMaskTexture::LandMaskTexture(const data::LandMask* mask) {
   bytes_ = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
 }
 
-void LandMaskTexture::bind() const { glBindTextureUnit(18, texture_.id()); }
+void LandMaskTexture::bind() const { glBindTextureUnit(gl::kUnitLandMask, texture_.id()); }
 
 }  // namespace og::render

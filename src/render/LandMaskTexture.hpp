@@ -1,6 +1,6 @@
 #pragma once
 // The GSHHG land mask on the GPU (shaders/terrain/landmask.glsl): data::LandMask's packed bits
-// as an R8UI texture on unit 18 (1350 × 5400 texels, 7 MiB for the 2′ default), bound only
+// as an R8UI texture on gl::kUnitLandMask (1350 × 5400 texels, 7 MiB for the 2′ default), bound only
 // where the mask decides the coast (a global elevation layer coarser than it); a 1×1 texture
 // there otherwise, which landmask.glsl reads as "no mask".
 #include "data/LandMask.hpp"
@@ -12,7 +12,7 @@ class LandMaskTexture {
  public:
   /// Needs a current GL context. `mask` nullptr: no mask (the elevation layer's zero contour).
   explicit LandMaskTexture(const data::LandMask* mask);
-  /// Binds the mask (or the 1×1 stand-in) to unit 18.
+  /// Binds the mask (or the 1×1 stand-in) to gl::kUnitLandMask.
   void bind() const;
   [[nodiscard]] bool active() const { return active_; }
   [[nodiscard]] std::size_t gpuBytes() const { return bytes_; }
