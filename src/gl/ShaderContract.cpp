@@ -33,7 +33,6 @@ std::vector<std::string> contractDefines() {
           define("OG_UNIT_SHADOW_MAP", kUnitShadowMap),
           define("OG_UNIT_PATTERN_DISPLACEMENT", kUnitPatternDisplacement),
           define("OG_UNIT_PATTERN_SLOPES", kUnitPatternSlopes),
-          define("OG_UNIT_PATTERN_JACOBIAN", kUnitPatternJacobian),
           define("OG_UNIT_IMAGERY_DAY", kUnitImageryDay),
           define("OG_UNIT_IMAGERY_NIGHT", kUnitImageryNight),
           define("OG_UNIT_IMAGERY_LAYERS", kUnitImageryLayers),

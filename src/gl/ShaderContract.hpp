@@ -25,7 +25,6 @@ enum TextureUnit : unsigned {
   kUnitShadowMap = 11,           ///< terrain/shadow.glsl
   kUnitPatternDisplacement = 12,
   kUnitPatternSlopes = 13,
-  kUnitPatternJacobian = 14,
   kUnitImageryDay = 15,          ///< terrain/imagery.glsl (render/ImageryTextures)
   kUnitImageryNight = 16,
   kUnitImageryLayers = 17,
