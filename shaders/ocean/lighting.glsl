@@ -167,6 +167,7 @@ vec3 seaRadiance(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE)
 const Number FOAM_REFLECTANCE = 0.4;
 vec3 seaRadianceWithFoam(vec3 vE, vec3 nE, vec3 windE, vec3 cov, vec3 upE, vec3 sunE,
                          Number coverage) {
+  OG_EXPECT_RANGE(coverage, 0.0, 1.0);  // a share of the footprint (asserts in debug C++ only)
   SeaPoint p = seaPoint(vE, nE, windE, upE, sunE);  // once for the sea and the foam
   vec3 clear = seaRadianceAt(p, cov, upE);
   coverage *= uLightingTerms.w;

@@ -59,9 +59,8 @@ TEST(ShaderContract, EverySamplerOfTheFrameIsNamedInTheContract) {
                      og::gl::kUnitAtmScattering, og::gl::kUnitAtmSingleMie, og::gl::kUnitAtmIrradiance,
                      og::gl::kUnitSkyMap, og::gl::kUnitSkyIrradiance, og::gl::kUnitBumpMap,
                      og::gl::kUnitFresnelRamp, og::gl::kUnitPatternTable, og::gl::kUnitShadowMap,
-                     og::gl::kUnitPatternDisplacement, og::gl::kUnitPatternSlopes,
-                     og::gl::kUnitImageryDay, og::gl::kUnitImageryNight,
-                     og::gl::kUnitImageryLayers, og::gl::kUnitLandMask})
+                     og::gl::kUnitPatternDisplacement, og::gl::kUnitPatternSlopes, og::gl::kUnitImageryDay,
+                     og::gl::kUnitImageryNight, og::gl::kUnitImageryLayers, og::gl::kUnitLandMask})
     EXPECT_TRUE(units.insert(u).second) << "unit " << u << " named twice";
 }
 
