@@ -5,6 +5,8 @@
 // waves (caustics) and shadowed by the terrain along its refracted path, plus the sky; the
 // water column's absorption and in-scattering from ocean/water_optics.glsl. The result goes to
 // gWater (terrain/shallow.glsl), which the lighting's refracted term reads (lighting.glsl).
+// The water's K_d per RGB channel is Jerlov's (1976, Table XXVII) at 600, 550 and 450 nm
+// (uWaterAttenuation, terrain/shallow.glsl; the C++ twin's ocean::jerlovWater).
 //
 // Needs (included first): ocean/patterns.glsl, ocean/brdf.glsl, ocean/lighting.glsl (which
 // brings terrain/shallow.glsl and ocean/water_optics.glsl), render/elevation.glsl,
