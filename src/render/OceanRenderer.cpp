@@ -73,6 +73,7 @@ std::vector<std::string> skyDefines(const Atmosphere* atmosphere) {
 std::vector<std::string> oceanDefines(const Atmosphere* atmosphere, ValidationMode mode) {
   std::vector<std::string> d = skyDefines(atmosphere);
   for (const std::string& define : OceanPatterns::shaderDefines()) d.push_back(define);
+  for (const std::string& define : waterVolumeDefines()) d.push_back(define);
   d.emplace_back("OCEAN_LIGHTING_TERMS");
   if (mode == ValidationMode::Reference) d.emplace_back("OCEAN_VALIDATION_REFERENCE");
   if (mode == ValidationMode::ConstantBrdf) d.emplace_back("OCEAN_VALIDATION_CONSTANT_BRDF");
@@ -183,6 +184,8 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     glBindTextureUnit(8, bumpMap_.id());
     glBindTextureUnit(9, fresnelRamp_.id());
   } else {
+    caustics_.update(patterns, timeS);
+    caustics_.bind();
     patterns.bind();
     patterns.setUniforms(p, &frame, amplitudeScale);
     p.set("uLightingTerms", lightingTerms_);

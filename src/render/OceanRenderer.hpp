@@ -11,6 +11,7 @@
 #include "render/Atmosphere.hpp"
 #include "render/OceanPatterns.hpp"
 #include "render/TerrainRenderer.hpp"
+#include "render/WaterVolume.hpp"
 #include "render/WindTextures.hpp"
 
 namespace og::render {
@@ -78,6 +79,7 @@ class OceanRenderer {
 
   const Atmosphere* atmosphere_;
   gl::Program program_;
+  CausticCurvature caustics_;  ///< the water volume's caustics (render/WaterVolume)
   gl::Program classic_;
   gl::Texture bumpMap_;      ///< classic: tileable ripple normals, mip-mapped
   gl::Texture fresnelRamp_;  ///< classic: water colour and Fresnel by N.V
