@@ -101,6 +101,23 @@ float causticGain(vec2 xy, float pathM, float footprintM, vec2 wind) {
   return 1.0 - c / (1.0 + abs(c));
 }
 
+// The terrain's shadow on the floor: the Sun seen from the point `rel` where its refracted
+// ray to the floor entered the water (seed 001 §4.3), from the shadow maps (terrain/shadow.glsl)
+// with one 2x2 hardware comparison instead of the surface's four (a 2x2-texel soft edge: the
+// floor is seen through the moving surface, which blurs it more than that).
+float floorSunVisibility(vec3 rel, vec3 n) {
+  float visible = 1.0;
+#ifndef SHADOWS_OFF
+  for (int on = 0; on < uShadowOn; ++on) {
+    int c = length(rel) < uShadowSplitM ? 0 : 1;
+    vec4 s = uShadowMatrix[c] * vec4(rel + n * (1.5 * uShadowTexelM[c]), 1.0);
+    bool inside = all(greaterThanEqual(s.xy, vec2(0.0))) && all(lessThanEqual(s.xy, vec2(1.0))) && s.z > 0.0;
+    visible = inside ? texture(uShadowMap, vec4(s.xy, float(c), s.z)) : 1.0;
+  }
+#endif
+  return visible;
+}
+
 // Height of the layer's floor (m, negative below sea level) along a ray leaving the surface at
 // (latitude, longitude) `latLon` with horizontal direction `east`/`north` components per metre.
 float floorHeightAlong(vec2 latLon, vec2 horizontal, float s) {
@@ -165,7 +182,7 @@ void prepareWaterVolume(vec3 rel, vec3 v, vec3 n, vec3 up, vec2 latLon, vec2 oce
     albedo *= clamp(1.0 + detail.x, 0.3, 1.7);
     vec3 entryRel = floorRel - sunPathM * sunWater;
     vec2 entryXY = oceanXY + (ecefToOcean * (entryRel - rel)).xy;
-    sunFactor = sunVisibility(entryRel, up) * causticGain(entryXY, sunPathM, footprintM, wind) *
+    sunFactor = floorSunVisibility(entryRel, up) * causticGain(entryXY, sunPathM, footprintM, wind) *
                 max(dot(nFloor, -sunWater), 0.0) / max(cosSunWater, 0.05);
   }
   float sunZenith = acos(clamp(muS, -1.0, 1.0));
