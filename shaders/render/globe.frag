@@ -50,7 +50,15 @@ uniform vec2 uPixelNdc;    // size of one pixel in NDC
 uniform float uNear;       // near plane, m
 uniform vec3 uSunDir;      // unit, ECEF axes
 
-uniform int uSeaByGrid;      // 1 below 20 km: the projected-grid pass draws the sea
+// Below 20 km (GLOBE_BEHIND) the projected-grid pass draws the sea: the globe leaves its sea
+// samples to it (and shades the grid's horizon gaps); above, it shades the sea itself. A
+// constant, not a uniform: llvmpipe runs both sides of every `if`, so each variant compiles
+// only the sea shading it uses.
+#ifdef GLOBE_BEHIND
+const bool SEA_BY_GRID = true;
+#else
+const bool SEA_BY_GRID = false;
+#endif
 
 vec3 landAlbedo(float elevation, float latitude) {
   // Stand-in ramp until imagery/material layers exist: lowland green, upland brown, snow.
@@ -106,7 +114,7 @@ vec3 surfaceRadiance(vec3 dir, float t, bool sea) {
   vec3 skyIrr;
   vec3 sunIrr = sunAndSkyIrradiance(uAtmosphere, uAtmTransmittance, uAtmIrradiance,
                                     uAtmosphere.bottomRadius, muSP, skyIrr);
-  if (sea) return shadeSea(-dir, n);
+  if (sea && !SEA_BY_GRID) return shadeSea(-dir, n);
   // A pixel's footprint on the ground (radians of arc), widened at grazing incidence.
   float footprint = t * uPixelNdc.y * uTanHalfFov.y / (WGS84_A * max(dot(n, -dir), 0.2));
   return shadeLand(landColour(latLon, elevation, footprint), muSP, sunIrr, skyIrr) +
@@ -140,7 +148,7 @@ void main() {
     ts[i] = intersectEllipsoid(dirs[i]);
     bool sea = ts[i] >= 0.0 && elevationAt(latLonOfNormal(ellipsoidNormal(dirs[i], ts[i]))) <= 0.0;
     // Below 20 km the grid pass draws the sea: leave sea samples to it (no colour, no depth).
-    if (sea && uSeaByGrid == 1) {
+    if (sea && SEA_BY_GRID) {
       seaHoles += 1.0;
       seaHoleDir = dirs[i];
       seaHoleT = ts[i];
@@ -158,6 +166,23 @@ void main() {
       nearestT = min(nearestT, ts[i] * dot(dirs[i], uForward));
     }
   }
+  float R = uAtmosphere.bottomRadius;
+  float h = uCamAltitude;
+  float r = R + h;
+  float rho2 = h * (2.0 * R + h);
+  // The sky: to the top of the atmosphere, above the sphere's horizon. Rays from space that
+  // miss the atmosphere see only the Sun's disc (no table lookups: most of an orbit view).
+  vec3 skyDirection = normalize(skyDir);
+  float skyMu = max(dot(skyDirection, uCamUp), -sqrt(rho2) / r + 1e-5);
+  float top = uAtmosphere.topRadius;
+  bool space = r > top && (skyMu >= 0.0 || r * r * (skyMu * skyMu - 1.0) + top * top < 0.0);
+#ifndef GLOBE_BEHIND
+  // A pixel that sees nothing but space (no sample on the globe, the sky's rays miss the
+  // atmosphere, the Sun's disc not in it) would write what the target was cleared to: no
+  // radiance, no coverage, the far depth. Discarding it is the one way llvmpipe skips work:
+  // a block of such pixels leaves here, where an `if` would still run the shading below.
+  if (nHit == 0 && space && sunDisc == 0.0) discard;
+#endif
   vec3 surface = vec3(0.0);
   float foam = 0.0;  // whitecap coverage summed over the samples
   // Inside the globe's silhouette and away from coasts (four samples on the globe, all land or
@@ -174,10 +199,6 @@ void main() {
   }
 
   float coverage = float(nHit);
-  float R = uAtmosphere.bottomRadius;
-  float h = uCamAltitude;
-  float r = R + h;
-  float rho2 = h * (2.0 * R + h);
   float muS = dot(uSunDir, uCamUp);
   float skyCount = 4.0 - coverage - seaHoles;
   vec3 radiance = vec3(0.0);
@@ -194,12 +215,6 @@ void main() {
                                         transmittance);
     radiance += surface * transmittance + inscatter * coverage;
   }
-  // The sky: to the top of the atmosphere, above the sphere's horizon. Rays from space that
-  // miss the atmosphere see only the Sun's disc (no table lookups: most of an orbit view).
-  vec3 skyDirection = normalize(skyDir);
-  float skyMu = max(dot(skyDirection, uCamUp), -sqrt(rho2) / r + 1e-5);
-  float top = uAtmosphere.topRadius;
-  bool space = r > top && (skyMu >= 0.0 || r * r * (skyMu * skyMu - 1.0) + top * top < 0.0);
   if (skyCount > 0.0 && space) radiance += sunDisc * sunDiscRadiance(uAtmosphere);
   for (int k = 0; k < (skyCount > 0.0 && !space ? 1 : 0); ++k) {
     vec3 transmittance;
@@ -210,7 +225,7 @@ void main() {
   // Sea holes: the grid pass paints over them; where it leaves a gap (between its horizon
   // vertices, where the chord falls short of the curved horizon) this far-field sea shows,
   // which is what the grid converges to there anyway. Shaded once per pixel, no depth.
-  if (seaHoles > 0.0) {
+  if (SEA_BY_GRID && seaHoles > 0.0) {
     radiance += seaHoles * withAerialPerspective(shadeSea(-seaHoleDir, ellipsoidNormal(seaHoleDir, seaHoleT)),
                                                  seaHoleDir, seaHoleT, uSunDir);
     foam += seaHoles * gSeaFoam;

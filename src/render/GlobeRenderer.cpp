@@ -214,7 +214,6 @@ void GlobeRenderer::drawGlobe(const geo::CameraView& view, const FrameInput& f, 
   wind_->bind(globe);
   patterns_->bind();
   patterns_->setUniforms(globe, nullptr, 0.0);
-  globe.set("uSeaByGrid", grid ? 1 : 0);
   globe.set("uSeaColor", OceanLighting{}.seaColor);
   setWaterOptics(globe, ocean::jerlovWater(ocean::kDefaultWater));
   globe.set("uElevationMap", elevationMap_);
