@@ -9,7 +9,7 @@
 // at a footprint's level replaces seed 001's finite differences of three filtered slopes.
 // Layer (set * CAUSTIC_PATTERNS + j) holds pattern PATTERN_COUNT - CAUSTIC_PATTERNS + j of set.
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 13) uniform sampler2DArray uSlopes;  // (s_u, s_c, s_u², s_c²), render/OceanPatterns
+layout(binding = 13) uniform sampler2DArray uSlopes;  // (s_u, s_c, |s|², j), render/OceanPatterns
 layout(binding = 0, r16f) writeonly uniform image2DArray uCurvature;
 
 // Slope in the tile's axes at texel q (wrapped) of layer `layer`; set `set`'s wind runs at
