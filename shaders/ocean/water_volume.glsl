@@ -90,7 +90,7 @@ float causticCurvature(vec2 xy, float footprintM, vec2 wind) {
 // surface slope is s leaves the vertical towards the slope's rise by (1 - 1/n) s per metre of
 // path, so the map from surface to floor a path z below is J = I + z (1 - 1/n) H (H the
 // surface's height Hessian) and the irradiance 1 / det J ~ 1 - c, c = z (1 - 1/n) tr H
-// (DESIGN.md "Caustics"): crests focus, troughs spread. c is compressed to c / (1 + |c|), an
+// (docs/coast.md, "Caustics"): crests focus, troughs spread. c is compressed to c / (1 + |c|), an
 // odd function, so the gain keeps a mean of 1 over the floor (energy is conserved) and stays in
 // (0, 2). tr H is filtered over the blur of the Sun's disc at that depth (0.53° in air, /n in
 // water) or twice the pixel's footprint, whichever is larger: caustics sharpen with depth up to
