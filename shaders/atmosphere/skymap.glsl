@@ -37,7 +37,9 @@
 #include "atmosphere/skymap_common.glsl"
 #include "atmosphere/model.glsl"
 
-layout(binding = OG_UNIT_SKY_MAP) uniform sampler2DArray uSkyMap;         // rgb radiance, mip-mapped
+// rgb radiance, mip-mapped; one layer per Sun zenith angle, then the frame layer
+// (Atmosphere::prepareFrameSkyLayer: the maps at the camera's Sun zenith this frame).
+layout(binding = OG_UNIT_SKY_MAP) uniform sampler2DArray uSkyMap;
 layout(binding = OG_UNIT_SKY_IRRADIANCE) uniform sampler1DArray uSkyIrradiance;  // layer 0 sky (layer 1 Sun: unused)
 
 vec2 skyMapStereo(vec3 dirLocal) { return dirLocal.xy / max(1.0 + dirLocal.z, 1e-4); }
@@ -72,12 +74,19 @@ vec3 skyMapRadianceStereo(vec2 u, float sunZenith, float sunAzimuth, vec2 dUdx, 
   float scale = 0.5 / SKYMAP_EXTENT;
   vec2 tc = toMap * u * scale + 0.5;
   vec2 gx = toMap * dUdx * scale, gy = toMap * dUdy * scale;
-  int layers = textureSize(uSkyMap, 0).z;
+  int layers = textureSize(uSkyMap, 0).z - 1;  // the last is the frame layer
+#ifdef SKY_FRAME_LAYER
+  // A view whose Sun zenith angle hardly varies (the sea from a few metres: the horizon is a
+  // few km away) reads the two layers around the camera's, blended once per frame: one
+  // filtered lookup instead of two.
+  return skyMapLayerFiltered(tc, float(layers), gx, gy);
+#else
   float f = clamp(sunZenith / SKYMAP_MAX_ZENITH, 0.0, 1.0) * float(layers - 1);
   float l0 = min(floor(f), float(layers - 2));
   vec3 a = skyMapLayerFiltered(tc, l0, gx, gy);
   vec3 b = skyMapLayerFiltered(tc, l0 + 1.0, gx, gy);
   return mix(a, b, f - l0);
+#endif
 }
 
 vec3 skyMapRadiance(vec3 reflectedDirLocal, float sunZenith, float sunAzimuth, vec2 dUdx,

@@ -1,6 +1,7 @@
 #include "render/Atmosphere.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <cstdint>
 #include <cstdlib>
@@ -284,7 +285,8 @@ void Atmosphere::computeSkyMaps() {
   int levels = 1;
   while ((s.skyMapSize >> levels) > 0) ++levels;
   skyMaps_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
-  glTextureStorage3D(skyMaps_.id(), levels, GL_RGBA16F, s.skyMapSize, s.skyMapSize, s.skyMapLayers);
+  // One layer per Sun zenith angle, plus the frame layer (prepareFrameSkyLayer).
+  glTextureStorage3D(skyMaps_.id(), levels, GL_RGBA16F, s.skyMapSize, s.skyMapSize, s.skyMapLayers + 1);
   glTextureParameteri(skyMaps_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTextureParameteri(skyMaps_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(skyMaps_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -323,6 +325,29 @@ void Atmosphere::bind(const gl::Program& program) const {
   glBindTextureUnit(gl::kUnitAtmScattering, scattering_.id());
   glBindTextureUnit(gl::kUnitAtmSingleMie, singleMie_.id());
   glBindTextureUnit(gl::kUnitAtmIrradiance, irradiance_.id());
+}
+
+void Atmosphere::prepareFrameSkyLayer(double sunZenithRad) const {
+  const atmosphere::TableSizes& s = parameters_.tables;
+  if (frameLayer_.id() == 0) frameLayer_ = gl::Program({{GL_COMPUTE_SHADER, "atmosphere/skymap_frame.comp"}});
+  // The layer coordinate as skymap.glsl computes it (SKYMAP_MAX_ZENITH = 105°).
+  const double maxZenithRad = 1.8325957;
+  const double f = std::clamp(sunZenithRad / maxZenithRad, 0.0, 1.0) * (s.skyMapLayers - 1);
+  const int layer0 = std::min(static_cast<int>(std::floor(f)), s.skyMapLayers - 2);
+  frameLayer_.set("uLayer0", layer0);
+  frameLayer_.set("uWeight", static_cast<float>(f - layer0));
+  glBindTextureUnit(gl::kUnitSkyMap, skyMaps_.id());
+  frameLayer_.use();
+  for (int level = 0; (s.skyMapSize >> level) > 0; ++level) {
+    const int size = s.skyMapSize >> level;
+    frameLayer_.set("uLevel", level);
+    glBindImageTexture(0, skyMaps_.id(), level, GL_FALSE, s.skyMapLayers, GL_WRITE_ONLY, GL_RGBA16F);
+    const auto groups = static_cast<GLuint>((size + 7) / 8);
+    glDispatchCompute(groups, groups, 1);
+  }
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+  gl::checkErrors("Atmosphere::prepareFrameSkyLayer");
 }
 
 void Atmosphere::bindSkyMaps() const {

@@ -60,6 +60,10 @@ class Atmosphere {
   void bind(const gl::Program& program) const;
   /// Binds the sky maps (gl::kUnitSkyMap) and the sea-level irradiance table (gl::kUnitSkyIrradiance) (skymap.glsl).
   void bindSkyMaps() const;
+  /// Fills the sky maps' frame layer (the array's last) with the maps at Sun zenith angle
+  /// `sunZenithRad` (the two layers around it blended, every mip level), for shaders built with
+  /// SKY_FRAME_LAYER (skymap.glsl), which read it alone: views whose Sun zenith hardly varies.
+  void prepareFrameSkyLayer(double sunZenithRad) const;
 
   [[nodiscard]] const atmosphere::Parameters& parameters() const { return parameters_; }
   [[nodiscard]] const Timing& timing() const { return timing_; }
@@ -90,6 +94,7 @@ class Atmosphere {
   gl::Texture scattering_;
   gl::Texture singleMie_;
   gl::Texture skyMaps_;
+  mutable gl::Program frameLayer_;  ///< atmosphere/skymap_frame.comp, compiled on first use
   gl::Texture skyIrradiance_;
 };
 

@@ -100,6 +100,7 @@ const gl::Program& OceanRenderer::program(unsigned features) {
   if ((features & kFeatureWaterVolume) == 0) d.emplace_back("OCEAN_NO_WATER_VOLUME");
   if ((features & kFeatureCoastTest) == 0) d.emplace_back("SEA_NO_COAST_TEST");
   if ((features & kFeatureShadows) == 0) d.emplace_back("SHADOWS_OFF");
+  if ((features & kFeatureFrameSky) != 0) d.emplace_back("SKY_FRAME_LAYER");
   p = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}}, d);
   return p;
 }
@@ -195,6 +196,11 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     if (lighting.floorInReach) features |= kFeatureWaterVolume;
     if (lighting.landInView) features |= kFeatureCoastTest;
     if (lighting.shadows != nullptr && lighting.shadows->on) features |= kFeatureShadows;
+    if (atmosphere_ != nullptr && view.position.heightM < kFrameSkyMaxHeightM) {
+      features |= kFeatureFrameSky;
+      const double cosSun = glm::dot(glm::normalize(lighting.sunDirectionEcef), view.enu.up);
+      atmosphere_->prepareFrameSkyLayer(std::acos(std::clamp(cosSun, -1.0, 1.0)));
+    }
   }
   const gl::Program& p = model == OceanModel::Classic ? classic_ : program(features);
   setCommon(p, view, height, frame, lighting, features);

@@ -89,9 +89,14 @@ class OceanRenderer {
   const gl::Program& program(unsigned features);
 
   static constexpr unsigned kFeatureWaterVolume = 1, kFeatureCoastTest = 2, kFeatureShadows = 4;
+  /// The sky maps' frame layer alone (Atmosphere::prepareFrameSkyLayer) instead of two layers
+  /// blended per pixel: below kFrameSkyMaxHeightM, where the horizon is so near that the Sun's
+  /// zenith angle varies by under a quarter of a degree across the sea in view.
+  static constexpr unsigned kFeatureFrameSky = 8;
+  static constexpr double kFrameSkyMaxHeightM = 50.0;
   const Atmosphere* atmosphere_;
   std::vector<std::string> defines_;        ///< the filtered model's, whatever the features
-  std::array<gl::Program, 8> variants_;     ///< by feature bits; id() 0 until compiled
+  std::array<gl::Program, 16> variants_;    ///< by feature bits; id() 0 until compiled
   CausticCurvature caustics_;  ///< the water volume's caustics (render/WaterVolume)
   gl::Program classic_;
   gl::Texture bumpMap_;      ///< classic: tileable ripple normals, mip-mapped
