@@ -13,8 +13,9 @@ float landMaskCell(int column, int row) {
   return float((bits >> uint(column & 7)) & 1u);
 }
 
-// The fraction of land around (latitude, longitude) radians, [0, 1]: bilinear over the four
-// nearest cells, so the coast (the 0.5 contour) is a smooth curve (data::LandMask::landFraction).
+// The fraction of land around (latitude, longitude) radians, [0, 1]: the quadratic B-spline
+// of the 3 × 3 cells around the nearest centre, so the coast (the 0.5 contour) is a smooth
+// curve without the raster's staircase (data::LandMask::landFraction, its CPU twin).
 float landFraction(vec2 latLon) {
   int rows = textureSize(uLandMask, 0).y;
   int cols = 2 * rows;
@@ -22,13 +23,18 @@ float landFraction(vec2 latLon) {
   vec2 xy = vec2((latLon.y + PI) / cell - 0.5, (latLon.x + 0.5 * PI) / cell - 0.5);
   xy.y = clamp(xy.y, 0.0, float(rows - 1));
   xy.x = mod(xy.x, float(cols));
-  ivec2 c0 = ivec2(floor(xy));
-  c0.x = min(c0.x, cols - 1);
-  vec2 f = xy - vec2(c0);
-  int c1 = (c0.x + 1) % cols;
-  int r1 = min(c0.y + 1, rows - 1);
-  return mix(mix(landMaskCell(c0.x, c0.y), landMaskCell(c1, c0.y), f.x),
-             mix(landMaskCell(c0.x, r1), landMaskCell(c1, r1), f.x), f.y);
+  ivec2 c = ivec2(floor(xy + 0.5));
+  vec2 t = xy - vec2(c);
+  // Uniform quadratic B-spline weights of the cells at offsets -1, 0, +1.
+  vec2 wm = 0.5 * (0.5 - t) * (0.5 - t), w0 = 0.75 - t * t, wp = 0.5 * (0.5 + t) * (0.5 + t);
+  float v = 0.0;
+  for (int j = -1; j <= 1; ++j) {
+    int r = clamp(c.y + j, 0, rows - 1);
+    int cm = (c.x - 1 + cols) % cols, c0 = c.x % cols, cp = (c.x + 1) % cols;
+    float row = wm.x * landMaskCell(cm, r) + w0.x * landMaskCell(c0, r) + wp.x * landMaskCell(cp, r);
+    v += (j < 0 ? wm.y : (j == 0 ? w0.y : wp.y)) * row;
+  }
+  return v;
 }
 
 // A layer height (m) made to agree with the mask: at least / at most 20 m × (fraction − 0.5)

@@ -12,6 +12,7 @@
 #include "terrain/imagery.glsl"
 #include "terrain/detail.glsl"
 #include "terrain/shadow.glsl"
+#include "terrain/landmask.glsl"
 
 in vec3 vRelative;
 in vec3 vNormal;
@@ -90,8 +91,16 @@ void main() {
   // Below the grid's ceiling the sea pass draws the floor itself, through the water
   // (ocean/water_volume.glsl): drop the floor deeper than a metre, which the sea's chords
   // would otherwise let show through far away over shallow banks (issue 15).
-  if (heightM < (uSeaFromGlobe == 1 ? 0.0 : -1.0)) discard;
+  // Where the coastline mask decides the coast (terrain/landmask.glsl), it does so per pixel up
+  // here: the mesh's zero crossing is straight between vertices, which on far tiles are
+  // kilometres apart (a staircase of straight lines along the coast from 30 km).
   float lat = vInfo.y, lon = vInfo.z;
+  if (uSeaFromGlobe == 1 && landMaskOn()) {
+    if (landFraction(vec2(lat, lon)) < 0.5) discard;
+    heightM = max(heightM, 0.0);
+  } else if (heightM < (uSeaFromGlobe == 1 ? 0.0 : -1.0)) {
+    discard;
+  }
   vec3 up = vec3(cos(lat) * cos(lon), cos(lat) * sin(lon), sin(lat));
   // Triangles that collapse at a pole give no normal (zero or NaN): the vertical stands in.
   vec3 n = dot(vNormal, vNormal) > 1e-20 ? normalize(vNormal) : up;

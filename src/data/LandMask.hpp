@@ -25,8 +25,9 @@ class LandMask {
   static LandMask fromPackedBits(int width, int height, double westDeg, double southDeg, double cellDeg,
                                  std::vector<std::uint8_t> bits);
 
-  /// The fraction of land around a point, [0, 1]: the bilinear blend of the four nearest
-  /// cells (1 = land). The coast is the 0.5 contour: smooth curves at the cells' scale.
+  /// The fraction of land around a point, [0, 1]: the quadratic B-spline of the 3 × 3 nearest
+  /// cells (1 = land; shaders/terrain/landmask.glsl is its GPU twin). The coast is the 0.5
+  /// contour: smooth curves at the cells' scale, no raster staircase.
   [[nodiscard]] float landFraction(double latitudeDeg, double longitudeDeg) const;
   [[nodiscard]] bool isLand(double latitudeDeg, double longitudeDeg) const {
     return landFraction(latitudeDeg, longitudeDeg) >= 0.5f;
