@@ -15,7 +15,12 @@ bool seaAt(vec3 relative) {
 // the fragment when it has none. A macro because interpolateAtSample takes the shader's input
 // variable itself (`RELATIVE`, the camera-relative position), not a copy.
 // With no land in view (uCoastTest = 0: every terrain tile deep under the sea) the loop runs
-// no trip, which on llvmpipe skips its cost (an `if` would not).
+// no trip; the projected grid's program compiles the test out instead (SEA_NO_COAST_TEST, a
+// variant of render/OceanRenderer): llvmpipe runs a loop's first trip, masked, even when no
+// pixel enters it.
+#ifdef SEA_NO_COAST_TEST
+#define KEEP_SEA_SAMPLES(RELATIVE) {}
+#else
 uniform int uCoastTest;
 #define KEEP_SEA_SAMPLES(RELATIVE)                                     \
   {                                                                    \
@@ -25,6 +30,7 @@ uniform int uCoastTest;
     if (seaSamples == 0) discard;                                      \
     gl_SampleMask[0] = seaSamples;                                     \
   }
+#endif
 
 // The shore: a wave breaks once its height reaches ~0.78 of the water's depth (McCowan 1894's
 // breaker index), so over shoaling water the waves' displacement is scaled down to what that

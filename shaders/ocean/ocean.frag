@@ -74,7 +74,9 @@ void main() {
   return;
 #else
   float foam = whitecapCoverage(sea.jacobian);
+#ifndef OCEAN_NO_WATER_VOLUME  // compiled out when no sea floor in view is within reach
   prepareWaterVolume(vRelative, v, n, up, latLon, vOceanXY, uEcefToOcean, max(footprint, 1e-4), wind, uSunDirEcef);
+#endif
   vec3 radiance = seaRadianceWithFoam(v, n, windDir, sea.covariance, up, uSunDirEcef, foam);
   fragRadiance = vec4(oceanSurfaceRadiance(vRelative, radiance), 1.0);
   fragAux = vec4(foam, 0.0, 0.0, 0.0);

@@ -50,7 +50,15 @@ uniform vec2 uPixelNdc;    // size of one pixel in NDC
 uniform float uNear;       // near plane, m
 uniform vec3 uSunDir;      // unit, ECEF axes
 
-uniform int uSeaByGrid;      // 1 below 20 km: the projected-grid pass draws the sea
+// Below 20 km (GLOBE_BEHIND) the projected-grid pass draws the sea: the globe leaves its sea
+// samples to it (and shades the grid's horizon gaps); above, it shades the sea itself. A
+// constant, not a uniform: llvmpipe runs both sides of every `if`, so each variant compiles
+// only the sea shading it uses.
+#ifdef GLOBE_BEHIND
+const bool SEA_BY_GRID = true;
+#else
+const bool SEA_BY_GRID = false;
+#endif
 
 vec3 landAlbedo(float elevation, float latitude) {
   // Stand-in ramp until imagery/material layers exist: lowland green, upland brown, snow.
@@ -106,7 +114,7 @@ vec3 surfaceRadiance(vec3 dir, float t, bool sea) {
   vec3 skyIrr;
   vec3 sunIrr = sunAndSkyIrradiance(uAtmosphere, uAtmTransmittance, uAtmIrradiance,
                                     uAtmosphere.bottomRadius, muSP, skyIrr);
-  if (sea) return shadeSea(-dir, n);
+  if (sea && !SEA_BY_GRID) return shadeSea(-dir, n);
   // A pixel's footprint on the ground (radians of arc), widened at grazing incidence.
   float footprint = t * uPixelNdc.y * uTanHalfFov.y / (WGS84_A * max(dot(n, -dir), 0.2));
   return shadeLand(landColour(latLon, elevation, footprint), muSP, sunIrr, skyIrr) +
@@ -140,7 +148,7 @@ void main() {
     ts[i] = intersectEllipsoid(dirs[i]);
     bool sea = ts[i] >= 0.0 && elevationAt(latLonOfNormal(ellipsoidNormal(dirs[i], ts[i]))) <= 0.0;
     // Below 20 km the grid pass draws the sea: leave sea samples to it (no colour, no depth).
-    if (sea && uSeaByGrid == 1) {
+    if (sea && SEA_BY_GRID) {
       seaHoles += 1.0;
       seaHoleDir = dirs[i];
       seaHoleT = ts[i];
@@ -210,7 +218,7 @@ void main() {
   // Sea holes: the grid pass paints over them; where it leaves a gap (between its horizon
   // vertices, where the chord falls short of the curved horizon) this far-field sea shows,
   // which is what the grid converges to there anyway. Shaded once per pixel, no depth.
-  if (seaHoles > 0.0) {
+  if (SEA_BY_GRID && seaHoles > 0.0) {
     radiance += seaHoles * withAerialPerspective(shadeSea(-seaHoleDir, ellipsoidNormal(seaHoleDir, seaHoleT)),
                                                  seaHoleDir, seaHoleT, uSunDir);
     foam += seaHoles * gSeaFoam;

@@ -26,10 +26,13 @@ float sunVisibilityFromMaps(vec3 rel, vec3 n) {
 }
 
 // Fraction of the Sun seen from a point (camera-relative `rel`) with geometric normal `n`.
-// The lookups sit in a loop of uShadowOn trips: with no maps, no cost on llvmpipe (which
-// evaluates both sides of an `if` but skips a loop nobody enters).
+// The lookups sit in a loop of uShadowOn trips; a program that knows it has no maps this frame
+// compiles them out (SHADOWS_OFF: render/OceanRenderer's variants), since llvmpipe runs a
+// loop's first trip, masked, even when no pixel enters it.
 float sunVisibility(vec3 rel, vec3 n) {
   float visible = 1.0;
+#ifndef SHADOWS_OFF
   for (int on = 0; on < uShadowOn; ++on) visible = sunVisibilityFromMaps(rel, n);
+#endif
   return visible;
 }

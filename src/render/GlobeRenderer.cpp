@@ -10,6 +10,7 @@
 #include "core/Log.hpp"
 #include "gl/DriverProfile.hpp"
 #include "gl/Readback.hpp"
+#include "ocean/WaterOptics.hpp"
 #include "render/WaterVolume.hpp"
 
 namespace og::render {
@@ -213,7 +214,6 @@ void GlobeRenderer::drawGlobe(const geo::CameraView& view, const FrameInput& f, 
   wind_->bind(globe);
   patterns_->bind();
   patterns_->setUniforms(globe, nullptr, 0.0);
-  globe.set("uSeaByGrid", grid ? 1 : 0);
   globe.set("uSeaColor", OceanLighting{}.seaColor);
   setWaterOptics(globe, ocean::jerlovWater(ocean::kDefaultWater));
   globe.set("uElevationMap", elevationMap_);
@@ -239,6 +239,11 @@ void GlobeRenderer::drawOcean(const geo::CameraView& view, const FrameInput& f) 
   // Over the open ocean (every tile in view deep under the sea) no pixel needs the coast test.
   const TerrainStats& ts = terrain_->stats();
   lighting.landInView = ts.landTiles > 0 || ts.tiles == 0;
+  // The water volume only where a floor within the water's reach is in view (tiles sample the
+  // layer coarsely far away: twice the reach, so a shoal between samples is not missed).
+  const double reachM = ocean::waterMaxPathM(ocean::jerlovWater(ocean::kDefaultWater).attenuationPerM,
+                                             ocean::kWaterEpsilon);
+  lighting.floorInReach = ts.tiles == 0 || ts.maxHeightM > -2.0 * reachM;
   // Waves fade out on the way up so the grid meets the orbit model at the switch.
   const double h = view.position.heightM;
   const double x = std::clamp((h - kOceanFadeStartM) / (kOceanGridMaxHeightM - kOceanFadeStartM), 0.0, 1.0);

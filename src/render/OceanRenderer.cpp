@@ -83,14 +83,24 @@ std::vector<std::string> oceanDefines(const Atmosphere* atmosphere, ValidationMo
 
 OceanRenderer::OceanRenderer(const Atmosphere* atmosphere, ValidationMode mode)
     : atmosphere_(atmosphere),
-      program_({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}},
-               oceanDefines(atmosphere, mode)),
+      defines_(oceanDefines(atmosphere, mode)),
       classic_({{GL_VERTEX_SHADER, "ocean/classic.vert"}, {GL_FRAGMENT_SHADER, "ocean/classic.frag"}},
                skyDefines(atmosphere)),
       bumpMap_(makeBumpMap()),
       fresnelRamp_(makeFresnelRamp()),
       vao_(gl::createVertexArray()),
       indices_(gl::createBuffer()) {}
+
+const gl::Program& OceanRenderer::program(unsigned features) {
+  gl::Program& p = variants_.at(features);
+  if (p.id() != 0) return p;
+  std::vector<std::string> d = defines_;
+  if ((features & kFeatureWaterVolume) == 0) d.emplace_back("OCEAN_NO_WATER_VOLUME");
+  if ((features & kFeatureCoastTest) == 0) d.emplace_back("SEA_NO_COAST_TEST");
+  if ((features & kFeatureShadows) == 0) d.emplace_back("SHADOWS_OFF");
+  p = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}}, d);
+  return p;
+}
 
 void OceanRenderer::ensureGrid(int columns, int rows) {
   if (columns == gridColumns_ && rows == gridRows_) return;
@@ -111,7 +121,8 @@ void OceanRenderer::ensureGrid(int columns, int rows) {
 }
 
 void OceanRenderer::setCommon(const gl::Program& p, const geo::CameraView& view, int height,
-                              const ocean::OceanFrame& frame, const OceanLighting& lighting) const {
+                              const ocean::OceanFrame& frame, const OceanLighting& lighting,
+                              unsigned features) const {
   const geo::EnuFrame& axes = frame.axes();
   // Rows east, north, up: ECEF vector -> ocean frame components.
   const glm::mat3 ecefToOcean = glm::transpose(
@@ -135,18 +146,22 @@ void OceanRenderer::setCommon(const gl::Program& p, const geo::CameraView& view,
   p.set("uSunDirOcean", ecefToOcean * toFloat(glm::normalize(lighting.sunDirectionEcef)));
   p.set("uSunDirEcef", toFloat(glm::normalize(lighting.sunDirectionEcef)));
   p.set("uSeaColor", lighting.seaColor);
-  setWaterOptics(p, ocean::jerlovWater(ocean::kDefaultWater));
-  setFloorDetail(p, view);
+  if ((features & kFeatureWaterVolume) != 0) {
+    setWaterOptics(p, ocean::jerlovWater(ocean::kDefaultWater));
+    setFloorDetail(p, view);
+  }
   p.set("uElevationMap", elevationMap_);
   p.set("uElevationSize", elevationSize_);
   p.set("uElevationWraps", elevationWraps_);
-  p.set("uCoastTest", lighting.landInView ? 1 : 0);
+  if ((features & kFeatureCoastTest) != 0) p.set("uCoastTest", lighting.landInView ? 1 : 0);
   p.set("uCamUp", toFloat(view.enu.up));
   p.set("uCamAltitude", static_cast<float>(view.position.heightM));
-  if (lighting.shadows != nullptr)
-    lighting.shadows->apply(p);
-  else
-    p.set("uShadowOn", 0);
+  if ((features & kFeatureShadows) != 0) {
+    if (lighting.shadows != nullptr)
+      lighting.shadows->apply(p);
+    else
+      p.set("uShadowOn", 0);
+  }
   if (atmosphere_ != nullptr) {
     atmosphere_->bind(p);
     atmosphere_->bindSkyMaps();
@@ -171,8 +186,16 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
   ensureGrid(std::max(2, static_cast<int>(std::ceil(width * (1 + side) / cellPixels_)) + 1),
              std::max(2, static_cast<int>(std::ceil(height * (1 + 0.5 * (bottom + 0.1)) / cellPixels_)) + 1));
 
-  const gl::Program& p = model == OceanModel::Classic ? classic_ : program_;
-  setCommon(p, view, height, frame, lighting);
+  unsigned features = 0;
+  if (model == OceanModel::Classic) {
+    features = kFeatureCoastTest | kFeatureShadows;  // classic.frag has no variants: its uniforms
+  } else {
+    if (lighting.floorInReach) features |= kFeatureWaterVolume;
+    if (lighting.landInView) features |= kFeatureCoastTest;
+    if (lighting.shadows != nullptr && lighting.shadows->on) features |= kFeatureShadows;
+  }
+  const gl::Program& p = model == OceanModel::Classic ? classic_ : program(features);
+  setCommon(p, view, height, frame, lighting, features);
   p.set("uGridMarginNdc", margin);
   if (model == OceanModel::Classic) {
     // The classic pattern repeats every 800 m (see classic.vert/.frag): fold the offset there.

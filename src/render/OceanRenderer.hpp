@@ -2,6 +2,10 @@
 // The near ocean (below 20 km): the projected grid displaced by the FFT wave patterns and
 // shaded per pixel with the filtered BRDF (Bruneton 2010) and whitecaps (Dupuy 2012). Draws into the caller's HDR target with the
 // reversed-Z depth test, over the globe pass.
+#include <array>
+#include <string>
+#include <vector>
+
 #include <glm/glm.hpp>
 
 #include "geo/Camera.hpp"
@@ -23,8 +27,11 @@ struct OceanLighting {
   glm::vec3 skyHorizon{0.07f, 0.09f, 0.12f};
   /// The terrain's Sun shadows to cast on the sea (maps bound to unit 11), or none.
   const SunShadows* shadows = nullptr;
-  /// Whether land may be in view: false skips the per-pixel coast test (ocean/coast.glsl).
+  /// Whether land may be in view: false compiles the per-pixel coast test out (ocean/coast.glsl).
   bool landInView = true;
+  /// Whether a sea floor within the water's reach (ocean::waterMaxPathM) may be in view: false
+  /// compiles the water volume out (ocean/water_volume.glsl): the open ocean's colour is exact.
+  bool floorInReach = true;
 };
 
 enum class OceanModel {
@@ -74,10 +81,16 @@ class OceanRenderer {
   void ensureGrid(int columns, int rows);
 
   void setCommon(const gl::Program& p, const geo::CameraView& view, int height,
-                 const ocean::OceanFrame& frame, const OceanLighting& lighting) const;
+                 const ocean::OceanFrame& frame, const OceanLighting& lighting, unsigned features) const;
+  /// The filtered model's program with `features` (bits of kFeature*) compiled in, compiled
+  /// on first use. llvmpipe pays for code no pixel runs (it evaluates both sides of an `if`
+  /// and a loop's first trip, masked), so what a frame does not need is left out of it.
+  const gl::Program& program(unsigned features);
 
+  static constexpr unsigned kFeatureWaterVolume = 1, kFeatureCoastTest = 2, kFeatureShadows = 4;
   const Atmosphere* atmosphere_;
-  gl::Program program_;
+  std::vector<std::string> defines_;        ///< the filtered model's, whatever the features
+  std::array<gl::Program, 8> variants_;     ///< by feature bits; id() 0 until compiled
   gl::Program classic_;
   gl::Texture bumpMap_;      ///< classic: tileable ripple normals, mip-mapped
   gl::Texture fresnelRamp_;  ///< classic: water colour and Fresnel by N.V

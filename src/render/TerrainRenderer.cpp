@@ -256,6 +256,8 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   }
   stats_.tiles = static_cast<int>(tiles.size());
   stats_.landTiles = static_cast<int>(casters.size());
+  stats_.maxHeightM = tiles.empty() ? 0.0 : -1e30;
+  for (const terrain::Tile* t : tiles) stats_.maxHeightM = std::max(stats_.maxHeightM, t->maxHeightM);
   stats_.finestLevel = sel.finestLevel;
   stats_.tilesPending = sel.pending;
   stats_.cpuBytes = cache_.bytes();

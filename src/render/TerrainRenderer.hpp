@@ -42,7 +42,8 @@ struct TerrainStats {
   std::size_t cpuBytes = 0;     ///< tile cache (CPU), bytes
   std::size_t gpuBytes = 0;     ///< vertex buffers, bytes
   std::size_t tilesPending = 0; ///< being built in the background (selection().wait = false)
-  int landTiles = 0;            ///< drawn tiles reaching above the sea (-50 m); 0: open ocean
+  int landTiles = 0;            ///< drawn tiles reaching above the sea (-1 m); 0: open ocean
+  double maxHeightM = 0.0;      ///< highest point of the selected tiles, m (0 when none)
 };
 
 class TerrainRenderer {
