@@ -13,6 +13,18 @@ float landMaskCell(int column, int row) {
   return float((bits >> uint(column & 7)) & 1u);
 }
 
+// Cells (column - 1, column, column + 1) of a row as bits 0..2, longitude wrapping: two texel
+// fetches (the three bits lie in one texel or straddle two), no branches. Needs the row length
+// to be a multiple of 8 cells (the 2′ mask: 10800).
+uint landMaskTriple(int column, int row, int cols) {
+  int first = (column - 1 + cols) % cols;
+  int texels = textureSize(uLandMask, 0).x;
+  int t = first >> 3;
+  uint word = texelFetch(uLandMask, ivec2(t, row), 0).r |
+              (texelFetch(uLandMask, ivec2((t + 1) % texels, row), 0).r << 8u);
+  return (word >> uint(first & 7)) & 7u;
+}
+
 // The fraction of land around (latitude, longitude) radians, [0, 1]: the quadratic B-spline
 // of the 3 × 3 cells around the nearest centre, so the coast (the 0.5 contour) is a smooth
 // curve without the raster's staircase (data::LandMask::landFraction, its CPU twin).
@@ -27,12 +39,12 @@ float landFraction(vec2 latLon) {
   vec2 t = xy - vec2(c);
   // Uniform quadratic B-spline weights of the cells at offsets -1, 0, +1.
   vec2 wm = 0.5 * (0.5 - t) * (0.5 - t), w0 = 0.75 - t * t, wp = 0.5 * (0.5 + t) * (0.5 + t);
+  vec3 wx = vec3(wm.x, w0.x, wp.x);
+  vec3 wy = vec3(wm.y, w0.y, wp.y);
   float v = 0.0;
-  for (int j = -1; j <= 1; ++j) {
-    int r = clamp(c.y + j, 0, rows - 1);
-    int cm = (c.x - 1 + cols) % cols, c0 = c.x % cols, cp = (c.x + 1) % cols;
-    float row = wm.x * landMaskCell(cm, r) + w0.x * landMaskCell(c0, r) + wp.x * landMaskCell(cp, r);
-    v += (j < 0 ? wm.y : (j == 0 ? w0.y : wp.y)) * row;
+  for (int j = 0; j < 3; ++j) {
+    uint bits = landMaskTriple(c.x % cols, clamp(c.y + j - 1, 0, rows - 1), cols);
+    v += wy[j] * dot(wx, vec3(uvec3(bits, bits >> 1u, bits >> 2u) & 1u));
   }
   return v;
 }
