@@ -1,28 +1,24 @@
 // Land and water from real coastlines (data::LandMask, render/LandMaskTexture): a global mask
-// of 2′ cells from GSHHG, lakes as water, packed 8 cells per texel along a row (bit k of texel
-// x = column 8x + k), rows south to north, covering -180..180° E and -90..90° N. Bound to unit
-// 18 only where it decides the coast (a global elevation layer coarser than it); otherwise the
+// of 2′ cells from GSHHG, lakes as water, covering -180..180° E and -90..90° N, rows south to
+// north. Texel x of a row (16 bits) holds columns 8x - 4 ... 8x + 11 (bit k = column 8x - 4 + k,
+// wrapping in longitude), so any three neighbouring cells lie in one texel. Bound to unit 18
+// only where it decides the coast (a global elevation layer coarser than it); otherwise the
 // unit holds a 1×1 texture and landMaskOn() is false. The coastal-water code reads it here.
 #include "common/constants.glsl"
 layout(binding = 18) uniform usampler2D uLandMask;
 
 bool landMaskOn() { return textureSize(uLandMask, 0).y > 1; }
 
-float landMaskCell(int column, int row) {
-  uint bits = texelFetch(uLandMask, ivec2(column >> 3, row), 0).r;
-  return float((bits >> uint(column & 7)) & 1u);
+// The texel holding columns first ... first + 2 of a row (wrapping), shifted so that column
+// `first` is bit 0. `first` in [0, cols).
+uint landMaskBitsFrom(int first, int row) {
+  int t = (first + 4) >> 3;
+  uint word = texelFetch(uLandMask, ivec2(t % textureSize(uLandMask, 0).x, row), 0).r;
+  return word >> uint(first + 4 - 8 * t);
 }
 
-// Cells (column - 1, column, column + 1) of a row as bits 0..2, longitude wrapping: two texel
-// fetches (the three bits lie in one texel or straddle two), no branches. Needs the row length
-// to be a multiple of 8 cells (the 2′ mask: 10800).
-uint landMaskTriple(int column, int row, int cols) {
-  int first = (column - 1 + cols) % cols;
-  int texels = textureSize(uLandMask, 0).x;
-  int t = first >> 3;
-  uint word = texelFetch(uLandMask, ivec2(t, row), 0).r |
-              (texelFetch(uLandMask, ivec2((t + 1) % texels, row), 0).r << 8u);
-  return (word >> uint(first & 7)) & 7u;
+float landMaskCell(int column, int row) {
+  return float(landMaskBitsFrom(column, row) & 1u);
 }
 
 // The fraction of land around (latitude, longitude) radians, [0, 1]: the quadratic B-spline
@@ -43,7 +39,7 @@ float landFraction(vec2 latLon) {
   vec3 wy = vec3(wm.y, w0.y, wp.y);
   float v = 0.0;
   for (int j = 0; j < 3; ++j) {
-    uint bits = landMaskTriple(c.x % cols, clamp(c.y + j - 1, 0, rows - 1), cols);
+    uint bits = landMaskBitsFrom((c.x - 1 + cols) % cols, clamp(c.y + j - 1, 0, rows - 1));
     v += wy[j] * dot(wx, vec3(uvec3(bits, bits >> 1u, bits >> 2u) & 1u));
   }
   return v;

@@ -21,6 +21,7 @@ in vec4 vInfo;  // height m, latitude rad, longitude rad, detail amplitude m
 
 uniform vec3 uSunDir;  // unit, ECEF axes
 uniform int uSeaFromGlobe;  // 1 above the grid's ceiling: the globe pass draws the sea
+uniform int uTileHasWater;  // 1 when a vertex of this tile is at or below sea level
 
 // The detail's octaves (terrain::DetailOctaves): octave k has 2^k uDetailScale0 lattice cells
 // per unit of the sphere and weight detailOctaveWeight(k) / uDetailNorm; the eye lies in lattice cell
@@ -93,9 +94,10 @@ void main() {
   // would otherwise let show through far away over shallow banks (issue 15).
   // Where the coastline mask decides the coast (terrain/landmask.glsl), it does so per pixel up
   // here: the mesh's zero crossing is straight between vertices, which on far tiles are
-  // kilometres apart (a staircase of straight lines along the coast from 30 km).
+  // kilometres apart (a staircase of straight lines along the coast from 30 km). Tiles that are
+  // land at every vertex skip it (a lake narrower than their vertex spacing does not show).
   float lat = vInfo.y, lon = vInfo.z;
-  if (uSeaFromGlobe == 1 && landMaskOn()) {
+  if (uSeaFromGlobe == 1 && uTileHasWater == 1 && landMaskOn()) {
     if (landFraction(vec2(lat, lon)) < 0.5) discard;
     heightM = max(heightM, 0.0);
   } else if (heightM < (uSeaFromGlobe == 1 ? 0.0 : -1.0)) {
