@@ -3,15 +3,17 @@
 // footprint gets the mean and second moments it covers: Dupuy & Bruneton 2012 §3, and LEAN
 // mapping's moments for the slopes, Olano & Baker 2010):
 //   displacement: (lambda Dx, lambda Dy, h, 0), m, in the tile's axes (0, 0, h undisplaced)
-//   slopes:       (s_u, s_c, s_u², s_c²), slopes along/across the set's wind
-//   jacobian:     (j, j²), j = lambda (dDx/dx + dDy/dy): the Jacobian's linear term (Dupuy
-//                 2012 Eq. 7 without its quadratic part, src/ocean/WavePatterns.hpp)
+//   slopes:       (s_u, s_c, s_u² + s_c², j): slopes along/across the set's wind, their second
+//                 moment, and j = lambda (dDx/dx + dDy/dy), the Jacobian's linear term (Dupuy
+//                 2012 Eq. 7 without its quadratic part, src/ocean/WavePatterns.hpp). j's
+//                 variance in a footprint is lambda² times the slopes' (the two fields have
+//                 the same power spectrum, lambda² |k|² P_h), so it needs no channel of its own
+//                 and the sea reads one texture per pattern (ocean/patterns.glsl).
 #include "ocean/fft_common.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0, rgba32f) readonly uniform image2DArray uFields;
 layout(binding = 1, rgba16f) writeonly uniform image2DArray uDisplacement;
-layout(binding = 2, rgba16f) writeonly uniform image2DArray uSlopes;
-layout(binding = 3, rg16f) writeonly uniform image2DArray uJacobian;
+layout(binding = 2, rgba32f) writeonly uniform image2DArray uSlopes;
 uniform float uChoppiness[PATTERN_COUNT];
 
 void main() {
@@ -37,7 +39,6 @@ void main() {
     vec2 s = vec2(dot(slope, along), dot(slope, vec2(-along.y, along.x)));
     float j = lambda * b.y;
     imageStore(uDisplacement, at, vec4(d, a.x, 0.0));
-    imageStore(uSlopes, at, vec4(s, s * s));
-    imageStore(uJacobian, at, vec4(j, j * j, 0.0, 0.0));
+    imageStore(uSlopes, at, vec4(s, dot(s, s), j));
   }
 }

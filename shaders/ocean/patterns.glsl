@@ -1,10 +1,12 @@
 // The sea from the FFT wave patterns (render/OceanPatterns, Dupuy & Bruneton 2012) filtered by
 // the footprint as Bruneton et al. 2010 filter their waves: what the footprint resolves is
 // geometry (the vertex displacement) or the mean normal (the mean slope of the footprint, from
-// the mip-mapped slope texture), and the slope variance inside the footprint (mip-mapped
-// second moments minus the squared mean: LEAN mapping, Olano & Baker 2010) plus the spectrum's
-// tail below the finest pattern goes into the BRDF. Whitecaps: the Jacobian's mean and variance
-// in the footprint from the mip-mapped (j, j²) (Dupuy 2012 Eqs. 6-8).
+// the mip-mapped slope texture), and the slope variance inside the footprint (the mip-mapped
+// second moment minus the squared mean: LEAN mapping, Olano & Baker 2010, split along/across the
+// wind as the band's spectrum splits it) plus the spectrum's tail below the finest pattern goes
+// into the BRDF. Whitecaps: the Jacobian's mean in the footprint from the mip-mapped j, its
+// variance lambda² times the slopes' (same power spectrum; Dupuy 2012 Eqs. 6-8). One texture
+// lookup per pattern and direction bin.
 //
 // Local wind, place by place: the patterns exist for 8 wind directions 45° apart (two spectra,
 // each turned by quarter turns, which are exact on the periodic tiles); a point blends the two
@@ -21,8 +23,7 @@
 
 layout(binding = 10) uniform sampler2D uPatternTable;            // per wind speed, see below
 layout(binding = 12) uniform sampler2DArray uPatternDisplacement; // (lambda Dx, lambda Dy, h, 0)
-layout(binding = 13) uniform sampler2DArray uPatternSlopes;       // (s_u, s_c, s_u², s_c²)
-layout(binding = 14) uniform sampler2DArray uPatternJacobian;     // (j, j²)
+layout(binding = 13) uniform sampler2DArray uPatternSlopes;       // (s_u, s_c, s_u² + s_c², j)
 uniform float uPatternSizeM[PATTERN_COUNT];
 uniform vec2 uPatternOffsetM[PATTERN_COUNT];  // field offset modulo each tile, field axes
 uniform vec2 uFieldRotation;                  // (cos, sin): field axes -> frame axes
@@ -156,23 +157,21 @@ SeaSurface oceanSurface(vec2 xy, float footprintM, vec2 wind) {
   }
   for (int i = 0; i < resolved; ++i) {
     float lod = patternLod(footprintM, i);
-    float s = patternTable(i, wind.x).y;
-    bool choppy = uPatternChoppiness[i] > 0.0;
+    vec4 band = patternTable(i, wind.x);
+    float s = band.y;
+    // The footprint's slope variance splits along/across its bin's wind as the band's does (the
+    // cross moment is not stored: ~m_u m_c where the footprint holds one slope, ~0 where it
+    // averages many, so the covariance is diagonal either way).
+    float alongShare = band.z / max(band.z + band.w, 1e-12);
+    float lambda2 = uPatternChoppiness[i] * uPatternChoppiness[i];
     for (int k = 0; k < 2; ++k) {
       float w = wb.weight[k];
-      if (w < 1e-3) continue;
-      vec3 coord = patternCoord(p, wb.bin[k], i);
-      vec4 m = textureLod(uPatternSlopes, coord, lod) * vec4(s, s, s * s, s * s);
+      vec4 m = textureLod(uPatternSlopes, patternCoord(p, wb.bin[k], i), lod);
       float binAngle = float(wb.bin[k]) * 0.25 * PI;
-      mean += w * rotate2(m.xy, binAngle);
-      // The cross moment E[s_u s_c] is not stored: it is ~m_u m_c where the footprint holds one
-      // slope and ~0 where it averages many (m ~ 0), so the covariance is diagonal either way.
-      vec3 c = vec3(max(m.z - m.x * m.x, 0.0), max(m.w - m.y * m.y, 0.0), 0.0);
-      cov += w * w * rotateCovariance(c, binAngle - windField);
-      for (int c = 0; c < (choppy ? 1 : 0); ++c) {  // a loop, not an if: skipped on llvmpipe
-        vec2 j = textureLod(uPatternJacobian, coord, lod).xy;
-        jac += vec2(w * s * j.x, w * w * s * s * max(j.y - j.x * j.x, 0.0));
-      }
+      mean += (w * s) * rotate2(m.xy, binAngle);
+      float variance = s * s * max(m.z - dot(m.xy, m.xy), 0.0);
+      cov += w * w * rotateCovariance(variance * vec3(alongShare, 1.0 - alongShare, 0.0), binAngle - windField);
+      jac += vec2(w * s * m.w, w * w * lambda2 * variance);
     }
   }
   vec4 tail = patternTable(PATTERN_COUNT, wind.x);

@@ -88,14 +88,13 @@ OceanPatterns::OceanPatterns(std::shared_ptr<const ocean::WavePatterns> patterns
   for (gl::Texture& f : fields_) f = makeArray(GL_RGBA32F, n, fftLayers_, 1);
   const int levels = log2Of(n) + 1;
   displacement_ = makeArray(GL_RGBA16F, n, kLayers, levels);
-  slopes_ = makeArray(GL_RGBA16F, n, kLayers, levels);
-  jacobian_ = makeArray(GL_RG16F, n, kLayers, levels);
+  slopes_ = makeArray(GL_RGBA32F, n, kLayers, levels);  // squares of slopes ~1e-5: below half floats
   table_ = makeTableTexture(tables_);
   for (const gl::Program* p : {&spectrum_, &line_, &finish_}) setLayerUniforms(*p);
   const auto texels = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
   // Spectra (16 B/texel) + steps (4) + FFT buffers (2 x 16 per FFT layer) + mip-mapped outputs.
   gpuBytes_ = texels * kLayers * 20 + texels * static_cast<std::size_t>(fftLayers_) * 32 +
-              texels * kLayers * 20 * 4 / 3;
+              texels * kLayers * 24 * 4 / 3;
   gl::checkErrors("OceanPatterns setup");
 }
 
@@ -182,12 +181,11 @@ void OceanPatterns::runFft(double timeS) {
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   glBindImageTexture(0, fields_[source].id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
   glBindImageTexture(1, displacement_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-  glBindImageTexture(2, slopes_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-  glBindImageTexture(3, jacobian_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG16F);
+  glBindImageTexture(2, slopes_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   finish_.use();
   glDispatchCompute(static_cast<GLuint>(n / 8), static_cast<GLuint>(n / 8), ocean::kPatternSets);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-  for (const gl::Texture* t : {&displacement_, &slopes_, &jacobian_}) glGenerateTextureMipmap(t->id());
+  for (const gl::Texture* t : {&displacement_, &slopes_}) glGenerateTextureMipmap(t->id());
   for (GLuint unit = 0; unit < 4; ++unit) glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
   gl::checkErrors("OceanPatterns::update");
 }
@@ -236,7 +234,6 @@ void OceanPatterns::bind() const {
   glBindTextureUnit(10, table_.id());
   glBindTextureUnit(12, displacement_.id());
   glBindTextureUnit(13, slopes_.id());
-  glBindTextureUnit(14, jacobian_.id());
 }
 
 }  // namespace og::render

@@ -4,8 +4,8 @@
 // set (compute shaders shaders/ocean/fft_*.comp) into three mip-mapped texture arrays the sea
 // shaders sample (shaders/ocean/patterns.glsl):
 //   displacement (unit 12): (lambda Dx, lambda Dy, h, 0), m, tile axes
-//   slopes       (unit 13): (s_u, s_c, s_u², s_c²) along/across the set's wind
-//   jacobian     (unit 14): (j, j²), the whitecaps' Jacobian term and its square
+//   slopes       (unit 13): (s_u, s_c, s_u² + s_c², j): slopes along/across the set's wind,
+//                           their second moment, the whitecaps' Jacobian term
 // layer = set * 4 + pattern. Plus the per-wind tables (unit 10, ocean::PatternTables).
 #include <memory>
 #include <string>
@@ -32,7 +32,7 @@ class OceanPatterns {
   /// FFTs unless the textures already hold that time.
   void update(double timeS);
 
-  /// Binds the textures to their units (12, 13, 14 and the table on 10).
+  /// Binds the textures to their units (12, 13 and the table on 10).
   void bind() const;
 
   /// Sets shaders/ocean/patterns.glsl's uniforms on `program`: the tiles, the field's offset and
@@ -50,7 +50,6 @@ class OceanPatterns {
   /// The textures (for read-back in tests).
   [[nodiscard]] GLuint displacementTexture() const { return displacement_.id(); }
   [[nodiscard]] GLuint slopesTexture() const { return slopes_.id(); }
-  [[nodiscard]] GLuint jacobianTexture() const { return jacobian_.id(); }
 
   /// GPU memory of the textures, bytes.
   [[nodiscard]] std::size_t gpuBytes() const { return gpuBytes_; }
@@ -70,7 +69,6 @@ class OceanPatterns {
   gl::Texture fields_[2];  ///< ping-pong buffers of the FFT
   gl::Texture displacement_;
   gl::Texture slopes_;
-  gl::Texture jacobian_;
   gl::Texture table_;
   double requestedWindMs_ = -1.0;
   int fftLayers_ = 0;         ///< layers of the FFT buffers (1 or 2 per pattern layer)
