@@ -166,6 +166,23 @@ void main() {
       nearestT = min(nearestT, ts[i] * dot(dirs[i], uForward));
     }
   }
+  float R = uAtmosphere.bottomRadius;
+  float h = uCamAltitude;
+  float r = R + h;
+  float rho2 = h * (2.0 * R + h);
+  // The sky: to the top of the atmosphere, above the sphere's horizon. Rays from space that
+  // miss the atmosphere see only the Sun's disc (no table lookups: most of an orbit view).
+  vec3 skyDirection = normalize(skyDir);
+  float skyMu = max(dot(skyDirection, uCamUp), -sqrt(rho2) / r + 1e-5);
+  float top = uAtmosphere.topRadius;
+  bool space = r > top && (skyMu >= 0.0 || r * r * (skyMu * skyMu - 1.0) + top * top < 0.0);
+#ifndef GLOBE_BEHIND
+  // A pixel that sees nothing but space (no sample on the globe, the sky's rays miss the
+  // atmosphere, the Sun's disc not in it) would write what the target was cleared to: no
+  // radiance, no coverage, the far depth. Discarding it is the one way llvmpipe skips work:
+  // a block of such pixels leaves here, where an `if` would still run the shading below.
+  if (nHit == 0 && space && sunDisc == 0.0) discard;
+#endif
   vec3 surface = vec3(0.0);
   float foam = 0.0;  // whitecap coverage summed over the samples
   // Inside the globe's silhouette and away from coasts (four samples on the globe, all land or
@@ -182,10 +199,6 @@ void main() {
   }
 
   float coverage = float(nHit);
-  float R = uAtmosphere.bottomRadius;
-  float h = uCamAltitude;
-  float r = R + h;
-  float rho2 = h * (2.0 * R + h);
   float muS = dot(uSunDir, uCamUp);
   float skyCount = 4.0 - coverage - seaHoles;
   vec3 radiance = vec3(0.0);
@@ -202,12 +215,6 @@ void main() {
                                         transmittance);
     radiance += surface * transmittance + inscatter * coverage;
   }
-  // The sky: to the top of the atmosphere, above the sphere's horizon. Rays from space that
-  // miss the atmosphere see only the Sun's disc (no table lookups: most of an orbit view).
-  vec3 skyDirection = normalize(skyDir);
-  float skyMu = max(dot(skyDirection, uCamUp), -sqrt(rho2) / r + 1e-5);
-  float top = uAtmosphere.topRadius;
-  bool space = r > top && (skyMu >= 0.0 || r * r * (skyMu * skyMu - 1.0) + top * top < 0.0);
   if (skyCount > 0.0 && space) radiance += sunDisc * sunDiscRadiance(uAtmosphere);
   for (int k = 0; k < (skyCount > 0.0 && !space ? 1 : 0); ++k) {
     vec3 transmittance;
