@@ -3,7 +3,10 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec4.hpp>
+
 #include "core/Error.hpp"
+#include "gl/Shader.hpp"
 
 namespace og::render {
 
@@ -41,5 +44,26 @@ LandMaskTexture::LandMaskTexture(const data::LandMask* mask) {
 }
 
 void LandMaskTexture::bind() const { glBindTextureUnit(18, texture_.id()); }
+
+std::vector<float> LandMaskTexture::probeLandFraction(const std::vector<glm::vec2>& latLonRad) const {
+  if (latLonRad.empty()) return {};
+  std::vector<glm::vec4> values;
+  for (const glm::vec2& p : latLonRad) values.emplace_back(p.x, p.y, 0.0f, 0.0f);
+  const auto bytes = static_cast<GLsizeiptr>(values.size() * sizeof(glm::vec4));
+  gl::Buffer buffer = gl::createBuffer();
+  glNamedBufferStorage(buffer.id(), bytes, values.data(), GL_DYNAMIC_STORAGE_BIT);
+  gl::Program probe({{GL_COMPUTE_SHADER, "terrain/landmask_probe.comp"}});
+  bind();
+  probe.use();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer.id());
+  glDispatchCompute(static_cast<GLuint>(values.size()), 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(buffer.id(), 0, bytes, values.data());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  gl::checkErrors("LandMaskTexture::probeLandFraction");
+  std::vector<float> out;
+  for (const glm::vec4& v : values) out.push_back(v.x);
+  return out;
+}
 
 }  // namespace og::render
