@@ -6,7 +6,7 @@
 #include "atmosphere/functions.glsl"
 
 uniform AtmosphereParameters uAtmosphere;
-layout(binding = 2) uniform sampler2D uAtmTransmittance;
-layout(binding = 3) uniform sampler3D uAtmScattering;
-layout(binding = 4) uniform sampler3D uAtmSingleMie;
-layout(binding = 5) uniform sampler2D uAtmIrradiance;
+layout(binding = OG_UNIT_ATM_TRANSMITTANCE) uniform sampler2D uAtmTransmittance;
+layout(binding = OG_UNIT_ATM_SCATTERING) uniform sampler3D uAtmScattering;
+layout(binding = OG_UNIT_ATM_SINGLE_MIE) uniform sampler3D uAtmSingleMie;
+layout(binding = OG_UNIT_ATM_IRRADIANCE) uniform sampler2D uAtmIrradiance;

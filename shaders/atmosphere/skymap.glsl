@@ -37,8 +37,8 @@
 #include "atmosphere/skymap_common.glsl"
 #include "atmosphere/model.glsl"
 
-layout(binding = 6) uniform sampler2DArray uSkyMap;         // rgb radiance, mip-mapped
-layout(binding = 7) uniform sampler1DArray uSkyIrradiance;  // layer 0 sky (layer 1 Sun: unused)
+layout(binding = OG_UNIT_SKY_MAP) uniform sampler2DArray uSkyMap;         // rgb radiance, mip-mapped
+layout(binding = OG_UNIT_SKY_IRRADIANCE) uniform sampler1DArray uSkyIrradiance;  // layer 0 sky (layer 1 Sun: unused)
 
 vec2 skyMapStereo(vec3 dirLocal) { return dirLocal.xy / max(1.0 + dirLocal.z, 1e-4); }
 

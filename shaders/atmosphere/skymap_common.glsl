@@ -1,6 +1,8 @@
 // Layout of the sky maps and the sea-level irradiance table, shared by their precomputation
 // (atmosphere/precompute.comp) and their lookup (atmosphere/skymap.glsl). Mirrored in
-// src/render/Atmosphere.hpp.
+// src/render/Atmosphere.hpp. In the twins' subset (common/types.glsl): ocean/lighting.glsl's C++
+// twin compiles it.
+#include "common/types.glsl"
 
 // The maps cover the stereographic square u in [-EXTENT, EXTENT]^2 (the horizon is the unit
 // circle). Below the horizon, as in the sky-map shader of Bruneton's ocean lighting demo (2010)
@@ -9,18 +11,18 @@
 // texels hold the light reflected by waves from below the horizon, approximated by "average
 // Fresnel x average sky radiance" = SEA_MEAN_FRESNEL * E_sky / pi (skyMapBelowHorizon). Rough
 // seas at grazing angles reflect facets that see the sea, not the horizon's bright sky.
-const float SKYMAP_EXTENT = 1.1;
-const float SKYMAP_HORIZON_BAND = 1.02;  // |u|² of the band's outer edge
-const float SEA_MEAN_FRESNEL = 0.17;     // Bruneton's demo / Proland: avgFresnel
+const Number SKYMAP_EXTENT = 1.1;
+const Number SKYMAP_HORIZON_BAND = 1.02;  // |u|² of the band's outer edge
+const Number SEA_MEAN_FRESNEL = 0.17;     // Bruneton's demo / Proland: avgFresnel
 // Layer k of L holds the Sun at zenith angle k / (L - 1) * SKYMAP_MAX_ZENITH (radians, 105°).
-const float SKYMAP_MAX_ZENITH = 1.8325957;
+const Number SKYMAP_MAX_ZENITH = 1.8325957;
 
-float skyMapLayerZenith(int layer, int layers) {
-  return float(layer) / float(layers - 1) * SKYMAP_MAX_ZENITH;
+Number skyMapLayerZenith(int layer, int layers) {
+  return Number(layer) / Number(layers - 1) * SKYMAP_MAX_ZENITH;
 }
 // Entry k of N of the irradiance table holds the Sun at zenith angle k / (N - 1) * pi.
-float skyIrradianceZenith(int entry, int entries) {
-  return float(entry) / float(entries - 1) * 3.14159265358979;
+Number skyIrradianceZenith(int entry, int entries) {
+  return Number(entry) / Number(entries - 1) * 3.14159265358979;
 }
 
 // Radiance stored below the horizon: SEA_MEAN_FRESNEL * E_sky / pi, E_sky the sky's irradiance of
@@ -38,7 +40,7 @@ bool skyMapIsBelowHorizon(vec2 uv) {
 // horizon, in its azimuth, for the horizon band and beyond).
 vec3 skyMapDirection(vec2 uv) {
   vec2 u = (uv * 2.0 - 1.0) * SKYMAP_EXTENT;
-  float s = dot(u, u);
+  Number s = dot(u, u);
   vec3 dir = vec3(2.0 * u, 1.0 - s) / (1.0 + s);
   if (dir.z < 0.0) dir = vec3(normalize(u), 0.0);
   return dir;

@@ -1,8 +1,10 @@
-// Shared numeric constants (mirrors src/geo/Wgs84.hpp).
-const float PI = 3.14159265358979;
-const float WGS84_A = 6378137.0;          // semi-major axis, m
-const float WGS84_B = 6356752.314245179;  // semi-minor axis, m
+// Shared numeric constants: named once in C++ (src/gl/ShaderContract.hpp from src/geo/Wgs84.hpp)
+// and injected into every shader as #defines (C++ twins define them from the same names).
+#include "common/types.glsl"
+const Number PI = OG_PI;
+const Number WGS84_A = OG_WGS84_A;  // semi-major axis, m
+const Number WGS84_B = OG_WGS84_B;  // semi-minor axis, m
 
 // atan(y, x) is undefined at (0, 0) in GLSL (llvmpipe returns NaN): directions straight up,
 // points exactly at a pole and calm winds all land there. Any angle will do at that point.
-float atan2Safe(float y, float x) { return (x == 0.0 && y == 0.0) ? 0.0 : atan(y, x); }
+Number atan2Safe(Number y, Number x) { return (x == 0.0 && y == 0.0) ? 0.0 : atan(y, x); }

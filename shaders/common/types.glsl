@@ -1,8 +1,13 @@
-// Type names shared with C++: files written in the common GLSL/C++ subset (ocean/brdf.glsl,
-// ocean/spectrum.glsl, terrain/detail.glsl) use these so their C++ twins can compile them in
-// double precision.
+// The vocabulary of the GLSL/C++ twins (files compiled both as shaders and, in double precision,
+// as C++: ocean/brdf.glsl, ocean/lighting.glsl, ocean/water_optics.glsl, ocean/spectrum.glsl,
+// terrain/detail.glsl, atmosphere/functions.glsl). Scalars are Number; vectors keep their GLSL
+// names (vec2, vec3, vec4, ivec3, mat3), parameters are qualified IN(T)/OUT(T)/INOUT(T), and
+// OG_EXPECT_RANGE(x, lo, hi); states a range that C++ debug builds assert. The C++ side of these
+// names is src/core/GlslShim.hpp, which defines OG_GLSL_SHIM.
+#ifndef OG_GLSL_SHIM
 #define Number float
-#define Vec2 vec2
-#define Vec3 vec3
-#define Vec4 vec4
-#define IVec3 ivec3
+#define IN(T) in T
+#define OUT(T) out T
+#define INOUT(T) inout T
+#define OG_EXPECT_RANGE(x, lo, hi)
+#endif

@@ -3,7 +3,7 @@
 // effective Fresnel factor for sky light filtered over the slope distribution.
 //
 // Shared by GLSL and C++ (src/ocean/Brdf.cpp compiles it with Number = double and GLM vectors),
-// so CPU tests check the shaders' own code. Common subset only: Number, Vec2, Vec3, exp, sqrt,
+// so CPU tests check the shaders' own code. Common subset only: Number, vec2, vec3, exp, sqrt,
 // pow, max, min, clamp, dot, normalize.
 //
 // Conventions: all vectors unit, in one frame; n is the mean (resolved) surface normal; tx, ty
@@ -34,14 +34,14 @@ Number smithLambda(Number cosTheta, Number sigmaPhi2) {
 }
 
 // Slope variance in the azimuth of direction d: sigma_phi² = sx² cos²phi + sy² sin²phi.
-Number azimuthVariance(Vec3 d, Vec3 tx, Vec3 ty, Vec2 sigma2) {
+Number azimuthVariance(vec3 d, vec3 tx, vec3 ty, vec2 sigma2) {
   Number x = dot(d, tx), y = dot(d, ty);
   Number r2 = max(x * x + y * y, 1e-12);
   return (sigma2.x * x * x + sigma2.y * y * y) / r2;
 }
 
 // Gaussian slope density p(zeta) = exp(-1/2 (zx²/sx² + zy²/sy²)) / (2 pi sx sy) (Eq. 3 context).
-Number slopeDensity(Vec2 zeta, Vec2 sigma2) {
+Number slopeDensity(vec2 zeta, vec2 sigma2) {
   Number e = 0.5 * (zeta.x * zeta.x / sigma2.x + zeta.y * zeta.y / sigma2.y);
   return exp(-e) / (2.0 * BRDF_PI * sqrt(sigma2.x * sigma2.y));
 }
@@ -49,13 +49,13 @@ Number slopeDensity(Vec2 zeta, Vec2 sigma2) {
 // Ross BRDF times cos(theta_l) for the Sun (Eq. 6 with the Sun's solid angle folded into the
 // irradiance): radiance = sunIrradiance * rossSun(...).
 // I = p(zeta_h) F(v.h) / (4 (h.n)^4 cos(theta_v) (1 + Lambda(a_v) + Lambda(a_l))).
-Number rossSun(Vec3 v, Vec3 l, Vec3 n, Vec3 tx, Vec3 ty, Vec2 sigma2) {
+Number rossSun(vec3 v, vec3 l, vec3 n, vec3 tx, vec3 ty, vec2 sigma2) {
   Number cosV = dot(v, n);
   Number cosL = dot(l, n);
   if (cosL <= 0.0 || cosV <= 0.0) return 0.0;
-  Vec3 h = normalize(v + l);
+  vec3 h = normalize(v + l);
   Number hn = max(dot(h, n), 1e-4);
-  Vec2 zeta = Vec2(-dot(h, tx) / hn, -dot(h, ty) / hn);  // slope of the facet normal h
+  vec2 zeta = vec2(-dot(h, tx) / hn, -dot(h, ty) / hn);  // slope of the facet normal h
   Number masking = 1.0 + smithLambda(cosV, azimuthVariance(v, tx, ty, sigma2)) +
                    smithLambda(cosL, azimuthVariance(l, tx, ty, sigma2));
   Number hn2 = hn * hn;
@@ -73,15 +73,15 @@ Number effectiveFresnel(Number cosV, Number sigmaV) {
 
 // Reflected direction for the facet of slope zeta (used for the filtered sky lookup, §5.2):
 // f = normalize(-zeta_x tx - zeta_y ty + n), r = 2 (f.v) f - v.
-Vec3 reflectedBySlope(Vec3 v, Vec3 n, Vec3 tx, Vec3 ty, Vec2 zeta) {
-  Vec3 f = normalize(n - zeta.x * tx - zeta.y * ty);
+vec3 reflectedBySlope(vec3 v, vec3 n, vec3 tx, vec3 ty, vec2 zeta) {
+  vec3 f = normalize(n - zeta.x * tx - zeta.y * ty);
   return 2.0 * dot(f, v) * f - v;
 }
 
 // Stereographic projection used by the sky maps: u = [rx, ry] / (1 + rz) in the local frame
 // (x east, y north, z up): zenith at 0, horizon on the unit circle.
-Vec2 stereographic(Vec3 r) {
-  return Vec2(r.x, r.y) / (1.0 + max(r.z, -0.999));
+vec2 stereographic(vec3 r) {
+  return vec2(r.x, r.y) / (1.0 + max(r.z, -0.999));
 }
 
 // Principal axes of a slope covariance (xx, yy, xy) given in the (tx, ty) frame: the variances
@@ -89,27 +89,27 @@ Vec2 stereographic(Vec3 r) {
 // Lets the axis-aligned Ross BRDF above take any covariance, e.g. resolved slopes carried in
 // the local wind's frame with their cross term (Bruneton 2010 Eq. 4 keeps the full matrix).
 struct SlopeFrame {
-  Vec2 sigma2;
-  Vec2 axis;
+  vec2 sigma2;
+  vec2 axis;
 };
-SlopeFrame slopePrincipalAxes(Vec3 cov) {
+SlopeFrame slopePrincipalAxes(vec3 cov) {
   Number a = cov.x, b = cov.y, c = cov.z;
   Number mean = 0.5 * (a + b);
   Number radius = sqrt(0.25 * (a - b) * (a - b) + c * c);
   SlopeFrame f;
-  f.sigma2 = Vec2(max(mean + radius, 0.0), max(mean - radius, 0.0));
+  f.sigma2 = vec2(max(mean + radius, 0.0), max(mean - radius, 0.0));
   // Eigenvector of the largest eigenvalue, from the better-conditioned row.
-  Vec2 e = a >= b ? Vec2(f.sigma2.x - b, c) : Vec2(c, f.sigma2.x - a);
+  vec2 e = a >= b ? vec2(f.sigma2.x - b, c) : vec2(c, f.sigma2.x - a);
   Number len2 = dot(e, e);
-  f.axis = len2 > 1e-30 ? e / sqrt(len2) : Vec2(1.0, 0.0);
+  f.axis = len2 > 1e-30 ? e / sqrt(len2) : vec2(1.0, 0.0);
   return f;
 }
 
 // Covariance (xx, yy, xy) in the (tx, ty) frame of a 2x2 diagonal one (d.x along axis, d.y
 // across), axis = (cos, sin) in (tx, ty).
-Vec3 covarianceFromAxes(Vec2 d, Vec2 axis) {
+vec3 covarianceFromAxes(vec2 d, vec2 axis) {
   Number c = axis.x, s = axis.y;
-  return Vec3(c * c * d.x + s * s * d.y, s * s * d.x + c * c * d.y, c * s * (d.x - d.y));
+  return vec3(c * c * d.x + s * s * d.y, s * s * d.x + c * c * d.y, c * s * (d.x - d.y));
 }
 
 // The Sun's disc as a slope covariance, to add to the facets' (a convolution: the Sun's glint
@@ -120,14 +120,14 @@ Vec3 covarianceFromAxes(Vec2 d, Vec2 axis) {
 // facet slope variance that the disc spans: alpha²/16 in the plane of incidence and
 // alpha²/(16 (v.h)²) across (slopes ~ tilts for the near-normal h of a glint). Returned in the
 // (tx, ty) frame.
-Vec3 sunDiscSlopeCovariance(Vec3 v, Vec3 l, Vec3 tx, Vec3 ty, Number alpha) {
-  Vec3 h = normalize(v + l);
+vec3 sunDiscSlopeCovariance(vec3 v, vec3 l, vec3 tx, vec3 ty, Number alpha) {
+  vec3 h = normalize(v + l);
   Number vh = max(dot(v, h), 0.05);
-  Vec2 d = Vec2(dot(l - v, tx), dot(l - v, ty));  // the plane of incidence, in the tangent plane
+  vec2 d = vec2(dot(l - v, tx), dot(l - v, ty));  // the plane of incidence, in the tangent plane
   Number len2 = dot(d, d);
-  Vec2 axis = len2 > 1e-12 ? d / sqrt(len2) : Vec2(1.0, 0.0);
+  vec2 axis = len2 > 1e-12 ? d / sqrt(len2) : vec2(1.0, 0.0);
   Number inPlane = alpha * alpha / 16.0;
-  return covarianceFromAxes(Vec2(inPlane, inPlane / (vh * vh)), axis);
+  return covarianceFromAxes(vec2(inPlane, inPlane / (vh * vh)), axis);
 }
 
 // The slopes the eye sees along the view's azimuth: a facet of slope zeta (towards the eye's
@@ -139,12 +139,12 @@ Vec3 sunDiscSlopeCovariance(Vec3 v, Vec3 l, Vec3 tx, Vec3 ty, Number alpha) {
 // At grazing angles (small k) the visible facets lean towards the eye and spread less: the sky
 // they reflect is higher above the horizon than the full Gaussian's (Bruneton 2010 Eq. 9 filters
 // with the full distribution, the paper's largest error, its §7.2).
-Vec2 visibleSlopeMoments(Number k) {
-  if (k > 6.0) return Vec2(0.0, 1.0);
+vec2 visibleSlopeMoments(Number k) {
+  if (k > 6.0) return vec2(0.0, 1.0);
   Number kk = max(k, 1e-3);
   Number pdf = exp(-0.5 * kk * kk) / sqrt(2.0 * BRDF_PI);
   Number cdf = 1.0 - 0.5 * brdfErfc(kk / sqrt(2.0));
   Number m0 = cdf + pdf / kk;
   Number mean = -cdf / kk / m0;
-  return Vec2(mean, max((cdf + 2.0 * pdf / kk) / m0 - mean * mean, 0.0));
+  return vec2(mean, max((cdf + 2.0 * pdf / kk) / m0 - mean * mean, 0.0));
 }

@@ -18,8 +18,8 @@ in vec3 vRelative;
 in vec2 vSlope;
 #include "render/outputs.glsl"
 
-layout(binding = 8) uniform sampler2D uBumpMap;     // tangent-space normals, RG = xy * 0.5 + 0.5
-layout(binding = 9) uniform sampler1D uFresnelRamp; // RGB water colour, A = Fresnel, by N.V
+layout(binding = OG_UNIT_BUMP_MAP) uniform sampler2D uBumpMap;     // tangent-space normals, RG = xy * 0.5 + 0.5
+layout(binding = OG_UNIT_FRESNEL_RAMP) uniform sampler1D uFresnelRamp; // RGB water colour, A = Fresnel, by N.V
 uniform mat3 uEcefToOcean;
 uniform vec2 uFieldOffset;
 uniform float uTime;

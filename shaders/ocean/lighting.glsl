@@ -10,6 +10,9 @@
 // The sky comes from shaders/atmosphere/skymap.glsl (skyMapRadianceStereo, skyIrradiance,
 // sunIrradiance); define OCEAN_SIMPLE_SKY before including this file to use a small analytic
 // sky instead (tests of the ocean alone).
+//
+// Written in the twins' subset (common/types.glsl): src/ocean/Lighting.cpp compiles this file as
+// C++ in double precision with the analytic sky (ocean::lighting, its tests).
 
 #include "common/constants.glsl"
 // Outside the #ifdef: files are included once, before the preprocessor runs.
@@ -18,33 +21,40 @@
 #ifdef OCEAN_SIMPLE_SKY
 uniform vec3 uSkyZenith;   // radiance at the zenith
 uniform vec3 uSkyHorizon;  // radiance at the horizon
-vec3 skyIrradiance(float sunZenith) { return vec3(0.1, 0.13, 0.18) * clamp(cos(sunZenith) * 2.0, 0.0, 1.0); }
-vec3 skyMapRadianceStereo(vec2 u, float sunZenith, float sunAzimuth, vec2 dUdx, vec2 dUdy) {
-  float q = dot(u, u);
-  float z = (1.0 - q) / (1.0 + q);  // inverse stereographic: cos(zenith angle)
+vec3 skyIrradiance(Number sunZenith) { return vec3(0.1, 0.13, 0.18) * clamp(cos(sunZenith) * 2.0, 0.0, 1.0); }
+vec3 skyMapRadianceStereo(vec2 u, Number sunZenith, Number sunAzimuth, vec2 dUdx, vec2 dUdy) {
+  Number q = dot(u, u);
+  Number z = (1.0 - q) / (1.0 + q);  // inverse stereographic: cos(zenith angle)
   vec3 sky = mix(uSkyHorizon, uSkyZenith, sqrt(clamp(z, 0.0, 1.0))) * clamp(cos(sunZenith) * 4.0, 0.0, 1.0);
   // Below the horizon as the maps (skymap_common.glsl), the step filtered over the footprint
   // (the maps' textureGrad does that): the share beyond the band of a Gaussian footprint whose
   // axes dUdx, dUdy are 2 sigma, sigma_r its spread across the horizon (Phi as a linear ramp of
   // the same slope at 0).
   vec2 radial = u / max(sqrt(q), 1e-6);
-  float sigmaR = 0.5 * length(vec2(dot(dUdx, radial), dot(dUdy, radial)));
-  float below = clamp(0.5 + (sqrt(q) - sqrt(SKYMAP_HORIZON_BAND)) / max(2.5 * sigmaR, 1e-4), 0.0, 1.0);
+  Number sigmaR = 0.5 * length(vec2(dot(dUdx, radial), dot(dUdy, radial)));
+  Number below = clamp(0.5 + (sqrt(q) - sqrt(SKYMAP_HORIZON_BAND)) / max(2.5 * sigmaR, 1e-4), 0.0, 1.0);
   return mix(sky, skyMapBelowHorizon(skyIrradiance(sunZenith)), below);
 }
-vec3 sunIrradiance(float sunZenith) { return vec3(1.0) * step(0.0, cos(sunZenith)); }
+vec3 sunIrradiance(Number sunZenith) { return vec3(1.0) * step(0.0, cos(sunZenith)); }
 #else
 #include "atmosphere/skymap.glsl"
 #endif
 
 uniform vec3 uSeaColor;  // upwelling radiance per unit irradiance (sr^-1)
+#ifndef OG_GLSL_SHIM
 #include "terrain/shallow.glsl"  // shallow water: the sea floor seen through the water
+#else
+// The C++ twin (src/ocean/Lighting.cpp) lights the open sea: shallow.glsl's behaviour without an
+// elevation layer or a prepared water column (the water's own twin is ocean/WaterOptics).
+Number seaFloorDepthM(vec3) { return 1e4; }
+vec3 shallowSeaColor(vec3 deepColor, Number) { return deepColor; }
+#endif
 // The Sun's apparent angular radius, rad (0.267°, atmosphere::Parameters::sunAngularRadiusRad):
 // its disc is convolved into the glint (sunDiscSlopeCovariance, ocean/brdf.glsl), so a glassy
 // sea shows the disc, not a lobe of an arbitrary variance floor.
-const float SUN_ANGULAR_RADIUS_RAD = 0.004675;
+const Number SUN_ANGULAR_RADIUS_RAD = 0.004675;
 // Smallest slope variance handed to the BRDF's divisions (a mirror, for the sky's lookups).
-const float SEA_SIGMA2_MIN = 1e-9;
+const Number SEA_SIGMA2_MIN = 1e-9;
 
 // Unit local frame at a point with vertical upE: columns east, north, up (ECEF axes).
 mat3 localFrame(vec3 upE) {
@@ -56,7 +66,7 @@ mat3 localFrame(vec3 upE) {
 // The view, the Sun and the surface in the point's local frame, and the light arriving there.
 struct SeaPoint {
   vec3 v, n, l, tx, ty;  // to the eye, normal, to the Sun, tangents along/across the wind
-  float sunZenith, sunAzimuth;
+  Number sunZenith, sunAzimuth;
   vec3 eSun, eSky;       // Sun and sky irradiance at sea level for this Sun zenith
 };
 
@@ -70,7 +80,7 @@ const vec4 uLightingTerms = vec4(1.0);
 
 // Fraction of the Sun's disc seen from the sea point being shaded (the terrain's shadows:
 // terrain/shadow.glsl); the grid's shaders set it before shading, elsewhere the Sun is open.
-float gSeaSunVisibility = 1.0;
+Number gSeaSunVisibility = 1.0;
 
 SeaPoint seaPoint(vec3 vE, vec3 nE, vec3 windE, vec3 upE, vec3 sunE) {
   mat3 toLocal = transpose(localFrame(upE));
@@ -90,7 +100,7 @@ SeaPoint seaPoint(vec3 vE, vec3 nE, vec3 windE, vec3 upE, vec3 sunE) {
 
 // Turns p's tangents (tx, ty) onto the principal axes of the slope covariance cov = (xx, yy, xy)
 // given in them, and returns the variances along the new axes (ocean/brdf.glsl).
-vec2 alignToSlopeAxes(inout SeaPoint p, vec3 cov) {
+vec2 alignToSlopeAxes(INOUT(SeaPoint) p, vec3 cov) {
   SlopeFrame f = slopePrincipalAxes(cov);
   vec3 tx = f.axis.x * p.tx + f.axis.y * p.ty;
   p.tx = tx;
@@ -108,7 +118,7 @@ vec3 seaSunGlint(SeaPoint p, vec3 cov) {
 
 // Light refracted from below the surface, L_sea (1 - F) (§5.3), F the Fresnel factor used for
 // the reflected sky.
-vec3 seaRefracted(SeaPoint p, vec3 upE, float fresnel) {
+vec3 seaRefracted(SeaPoint p, vec3 upE, Number fresnel) {
   return shallowSeaColor(uSeaColor, seaFloorDepthM(upE)) * (p.eSun * max(p.l.z, 0.0) + p.eSky) *
          (1.0 - fresnel);
 }
@@ -123,18 +133,18 @@ vec3 seaRadianceAt(SeaPoint p, vec3 cov, vec3 upE) {
   vec2 sigma2 = alignToSlopeAxes(p, cov);
   // Sky: filtered reflection (Eqs. 9-10): the gradient lookup integrates the sky map over the
   // unresolved slopes' footprint, U(zeta) the stereographic coordinate of a facet's mirror ray.
-  float sigmaV = sqrt(azimuthVariance(p.v, p.tx, p.ty, sigma2));
-  float fbar = effectiveFresnel(dot(p.v, p.n), sigmaV);
+  Number sigmaV = sqrt(azimuthVariance(p.v, p.tx, p.ty, sigma2));
+  Number fbar = effectiveFresnel(dot(p.v, p.n), sigmaV);
   // The footprint in the view's azimuth (a towards the eye's side, b across) of the visible
   // slopes: along a the moments of visibleSlopeMoments (brdf.glsl), across b the Gaussian's.
   vec2 a = vec2(dot(p.v, p.tx), dot(p.v, p.ty));
-  float sinV = length(a);
+  Number sinV = length(a);
   a = sinV > 1e-6 ? a / sinV : vec2(1.0, 0.0);
   vec2 b = vec2(-a.y, a.x);
-  float sigmaB = sqrt(dot(b * b, sigma2));
+  Number sigmaB = sqrt(dot(b * b, sigma2));
   vec2 visible = visibleSlopeMoments(max(dot(p.v, p.n), 0.0) / max(sinV * sigmaV, 1e-6));
   vec2 zeta0 = visible.x * sigmaV * a;  // mean < 0: the visible facets lean towards the eye
-  const float eps = 1e-3;
+  const Number eps = 1e-3;
   vec2 u0 = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, zeta0));
   vec2 ua = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, zeta0 + eps * a));
   vec2 ub = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, zeta0 + eps * b));
@@ -154,9 +164,10 @@ vec3 seaRadiance(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE)
 // Whitecap foam (Dupuy & Bruneton 2012 Eq. 2): a Lambertian surface of reflectance 0.4
 // (Koepke 1984) over the fraction `coverage` of the footprint, the clear sea over the rest:
 // R = W R_foam + (1 - W) R_sea.
-const float FOAM_REFLECTANCE = 0.4;
+const Number FOAM_REFLECTANCE = 0.4;
 vec3 seaRadianceWithFoam(vec3 vE, vec3 nE, vec3 windE, vec3 cov, vec3 upE, vec3 sunE,
-                         float coverage) {
+                         Number coverage) {
+  OG_EXPECT_RANGE(coverage, 0.0, 1.0);  // a share of the footprint (asserts in debug C++ only)
   SeaPoint p = seaPoint(vE, nE, windE, upE, sunE);  // once for the sea and the foam
   vec3 clear = seaRadianceAt(p, cov, upE);
   coverage *= uLightingTerms.w;
@@ -164,7 +175,7 @@ vec3 seaRadianceWithFoam(vec3 vE, vec3 nE, vec3 windE, vec3 cov, vec3 upE, vec3 
   return mix(clear, foam, coverage);
 }
 vec3 seaRadianceWithFoam(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE,
-                         float coverage) {
+                         Number coverage) {
   return seaRadianceWithFoam(vE, nE, windE, vec3(sigma2, 0.0), upE, sunE, coverage);
 }
 
@@ -183,7 +194,7 @@ vec3 seaRadianceWithFoam(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, ve
 // Covariance (along, across the wind, cross) of the slopes over a sample's patch: a slope
 // varying linearly by dSlopeDx, dSlopeDy (frame axes x east, y north) across the sample spreads
 // like a box, variance d²/12 per direction. windAzimuth: radians clockwise from north.
-vec3 referencePatchCovariance(vec2 dSlopeDx, vec2 dSlopeDy, float windAzimuth) {
+vec3 referencePatchCovariance(vec2 dSlopeDx, vec2 dSlopeDy, Number windAzimuth) {
   vec2 along = vec2(sin(windAzimuth), cos(windAzimuth)), across = vec2(-along.y, along.x);
   vec2 gx = vec2(dot(dSlopeDx, along), dot(dSlopeDx, across));
   vec2 gy = vec2(dot(dSlopeDy, along), dot(dSlopeDy, across));
@@ -192,7 +203,7 @@ vec3 referencePatchCovariance(vec2 dSlopeDx, vec2 dSlopeDy, float windAzimuth) {
 
 vec3 seaRadianceMirror(vec3 vE, vec3 nE, vec3 windE, vec3 patchCov, vec3 upE, vec3 sunE) {
   SeaPoint p = seaPoint(vE, nE, windE, upE, sunE);
-  float f = fresnelSchlick(dot(p.v, p.n));
+  Number f = fresnelSchlick(dot(p.v, p.n));
   vec3 sky = f * skyMapRadianceStereo(stereographic(reflect(-p.v, p.n)), p.sunZenith, p.sunAzimuth,
                                       vec2(0.0), vec2(0.0));
   return uLightingTerms.x * seaSunGlint(p, patchCov) + uLightingTerms.y * sky +

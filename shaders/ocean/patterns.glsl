@@ -21,9 +21,9 @@
 // Needs PATTERN_COUNT defined (render/OceanPatterns::shaderDefines).
 #include "common/constants.glsl"
 
-layout(binding = 10) uniform sampler2D uPatternTable;            // per wind speed, see below
-layout(binding = 12) uniform sampler2DArray uPatternDisplacement; // (lambda Dx, lambda Dy, h, 0)
-layout(binding = 13) uniform sampler2DArray uPatternSlopes;       // (s_u, s_c, s_u² + s_c², j)
+layout(binding = OG_UNIT_PATTERN_TABLE) uniform sampler2D uPatternTable;            // per wind speed, see below
+layout(binding = OG_UNIT_PATTERN_DISPLACEMENT) uniform sampler2DArray uPatternDisplacement; // (lambda Dx, lambda Dy, h, 0)
+layout(binding = OG_UNIT_PATTERN_SLOPES) uniform sampler2DArray uPatternSlopes;       // (s_u, s_c, s_u² + s_c², j)
 uniform float uPatternSizeM[PATTERN_COUNT];
 uniform vec2 uPatternOffsetM[PATTERN_COUNT];  // field offset modulo each tile, field axes
 uniform vec2 uFieldRotation;                  // (cos, sin): field axes -> frame axes

@@ -18,13 +18,13 @@ const Number WATER_LEAVING_FACTOR = 0.54;
 
 // Eq. 3, Baboud & Decoret 2006: alpha(d) = exp(-a d) per channel, the fraction of light left
 // after a path of `pathM` metres through water of attenuation `attenuationPerM`.
-Vec3 waterTransmittance(Vec3 attenuationPerM, Number pathM) {
+vec3 waterTransmittance(vec3 attenuationPerM, Number pathM) {
   return exp(-attenuationPerM * max(pathM, Number(0.0)));
 }
 
 // Eq. 6, Baboud & Decoret 2006: d_max = -log(epsilon) / min(a), the path beyond which every
 // channel keeps less than `epsilon` of the light (the march stops there), m.
-Number waterMaxPathM(Vec3 attenuationPerM, Number epsilon) {
+Number waterMaxPathM(vec3 attenuationPerM, Number epsilon) {
   Number k = min(attenuationPerM.x, min(attenuationPerM.y, attenuationPerM.z));
   return -log(epsilon) / max(k, Number(1e-6));
 }
@@ -42,9 +42,9 @@ Number waterRefractedCosine(Number cosAir) {
 // times `sunFactor` (caustics x shadows x the facet's tilt, 1 on a flat open floor), plus the
 // diffuse sky light `skyBelowSurface` attenuated by K over the vertical (K is the diffuse
 // attenuation coefficient, defined for that path: Jerlov 1976).
-Vec3 floorIrradiance(Vec3 attenuationPerM, Number depthM, Number cosSunWater, Vec3 sunBelowSurface,
-                     Number sunFactor, Vec3 skyBelowSurface) {
-  Vec3 sun = sunBelowSurface * sunFactor *
+vec3 floorIrradiance(vec3 attenuationPerM, Number depthM, Number cosSunWater, vec3 sunBelowSurface,
+                     Number sunFactor, vec3 skyBelowSurface) {
+  vec3 sun = sunBelowSurface * sunFactor *
              waterTransmittance(attenuationPerM, depthM / max(cosSunWater, Number(0.05)));
   return sun + skyBelowSurface * waterTransmittance(attenuationPerM, depthM);
 }
@@ -56,11 +56,11 @@ Vec3 floorIrradiance(Vec3 attenuationPerM, Number depthM, Number cosSunWater, Ve
 // horizontal) over all but the light the path down and up lets through (Eq. 1 of Baboud &
 // Decoret 2006 with L_d the deep water's radiance; seen vertically with the Sun overhead,
 // R(H) = R_inf + (A - R_inf) exp(-2 K H), Maritorena et al. 1994 Eq. 9).
-Vec3 waterColumnRadiance(Vec3 attenuationPerM, Vec3 deepReflectance, Vec3 floorAlbedo, Vec3 floorIrr,
-                         Number depthM, Number viewPathM, Vec3 surfaceIrradiance) {
-  Vec3 floorSeen = WATER_LEAVING_FACTOR * floorAlbedo / PI * floorIrr *
+vec3 waterColumnRadiance(vec3 attenuationPerM, vec3 deepReflectance, vec3 floorAlbedo, vec3 floorIrr,
+                         Number depthM, Number viewPathM, vec3 surfaceIrradiance) {
+  vec3 floorSeen = WATER_LEAVING_FACTOR * floorAlbedo / PI * floorIrr *
                    waterTransmittance(attenuationPerM, viewPathM);
-  Vec3 column = deepReflectance * surfaceIrradiance *
+  vec3 column = deepReflectance * surfaceIrradiance *
                 (1.0 - waterTransmittance(attenuationPerM, depthM + viewPathM));
   return floorSeen + column;
 }

@@ -5,7 +5,7 @@
 #include "common/constants.glsl"
 //   It is the only wind the shaders see: without data layers it is one cell holding the
 //   constant wind (render/WindTextures.hpp).
-layout(binding = 1) uniform sampler2D uWind;
+layout(binding = OG_UNIT_WIND) uniform sampler2D uWind;
 
 // Local wind (speed m/s, azimuth radians clockwise from north, the direction it blows towards)
 // at geodetic (latitude, longitude) in radians.

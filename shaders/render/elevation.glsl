@@ -2,7 +2,7 @@
 // pass (land/sea, land colours) and the ocean passes (no sea over land). Where the GSHHG land
 // mask is bound (terrain/landmask.glsl) it decides the coast; the layer only gives heights.
 #include "terrain/landmask.glsl"
-layout(binding = 0) uniform sampler2D uElevation;  // metres, rows south to north
+layout(binding = OG_UNIT_ELEVATION) uniform sampler2D uElevation;  // metres, rows south to north
 uniform vec4 uElevationMap;  // (lon0, lat0, dLon, dLat) in radians, cell centres
 uniform vec2 uElevationSize; // (columns, rows)
 uniform int uElevationWraps; // 1 when the columns cover 360 degrees

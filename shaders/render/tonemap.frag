@@ -4,9 +4,9 @@
 // dominate the pixel, so bright-dark edges step again after the tone curve.
 #include "common/color.glsl"
 #ifdef TONEMAP_MULTISAMPLE
-layout(binding = 0) uniform sampler2DMS uRadiance;
+layout(binding = OG_UNIT_TONE_RADIANCE) uniform sampler2DMS uRadiance;
 #else
-layout(binding = 0) uniform sampler2D uRadiance;
+layout(binding = OG_UNIT_TONE_RADIANCE) uniform sampler2D uRadiance;
 #endif
 uniform float uExposure;
 out vec4 fragColor;

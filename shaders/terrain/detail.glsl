@@ -8,7 +8,7 @@
 // as many as the pixel footprint allows). The caller supplies each octave's lattice cell and
 // the position inside it, so the GPU never needs the absolute (large) lattice coordinates:
 // the CPU splits the eye's coordinate per octave in double, the shader adds the offset.
-// Needs Number, Vec3, Vec4, IVec3 and uint; GLSL-and-C++ subset only.
+// Needs Number, vec3, vec4, ivec3 and uint; GLSL-and-C++ subset only.
 
 // Octave k has wavelength longest / 2^k; its lattice is the unit sphere scaled by
 // (semi-major axis / wavelength) and shifted by detailOctaveOffset(k) so lattice points of
@@ -17,14 +17,14 @@
 const Number DETAIL_GAIN = 0.6;
 Number detailOctaveWeight(int k) { return pow(DETAIL_GAIN, Number(k)); }
 
-Vec3 detailOctaveOffset(int k) {
+vec3 detailOctaveOffset(int k) {
   Number o = 17.31 * Number(k + 1);
-  return Vec3(o, -o, 0.5 * o);
+  return vec3(o, -o, 0.5 * o);
 }
 
 // Integer hash of a lattice point (murmur3's 32-bit finaliser over a mix of the coordinates):
 // the same bits on the CPU and the GPU.
-uint detailHash(IVec3 p) {
+uint detailHash(ivec3 p) {
   uint h = uint(p.x) * 0x8DA6B343u + uint(p.y) * 0xD8163841u + uint(p.z) * 0xCB1AB31Fu;
   h ^= h >> 16u;
   h *= 0x85EBCA6Bu;
@@ -36,11 +36,11 @@ uint detailHash(IVec3 p) {
 
 // Gradient at a lattice point: one of the 12 cube-edge directions (Perlin's improved noise;
 // 16 cases, 4 repeated, so a bit mask picks it).
-Vec3 detailGradient(uint h) {
+vec3 detailGradient(uint h) {
   uint c = h & 15u;
   Number su = (c & 1u) == 0u ? 1.0 : -1.0;
   Number sv = (c & 2u) == 0u ? 1.0 : -1.0;
-  Vec3 g = Vec3(0.0);
+  vec3 g = vec3(0.0);
   if (c < 8u) g.x = su; else g.y = su;
   if (c < 4u) g.y = sv; else if (c == 12u || c == 14u) g.x = sv; else g.z = sv;
   return g;
@@ -48,25 +48,25 @@ Vec3 detailGradient(uint h) {
 
 // Gradient noise in about [-1, 1] at lattice cell `cell` and position `f` in [0,1)³ inside it,
 // with its derivatives (lattice units): (value, d/dx, d/dy, d/dz). Quintic fade, C2-continuous.
-Vec4 detailNoise(IVec3 cell, Vec3 f) {
-  Vec3 u = f * f * f * (f * (f * 6.0 - 15.0) + 10.0);
-  Vec3 du = 30.0 * f * f * (f * (f - 2.0) + 1.0);
-  Vec3 ga = detailGradient(detailHash(cell));
-  Vec3 gb = detailGradient(detailHash(cell + IVec3(1, 0, 0)));
-  Vec3 gc = detailGradient(detailHash(cell + IVec3(0, 1, 0)));
-  Vec3 gd = detailGradient(detailHash(cell + IVec3(1, 1, 0)));
-  Vec3 ge = detailGradient(detailHash(cell + IVec3(0, 0, 1)));
-  Vec3 gf = detailGradient(detailHash(cell + IVec3(1, 0, 1)));
-  Vec3 gg = detailGradient(detailHash(cell + IVec3(0, 1, 1)));
-  Vec3 gh = detailGradient(detailHash(cell + IVec3(1, 1, 1)));
+vec4 detailNoise(ivec3 cell, vec3 f) {
+  vec3 u = f * f * f * (f * (f * 6.0 - 15.0) + 10.0);
+  vec3 du = 30.0 * f * f * (f * (f - 2.0) + 1.0);
+  vec3 ga = detailGradient(detailHash(cell));
+  vec3 gb = detailGradient(detailHash(cell + ivec3(1, 0, 0)));
+  vec3 gc = detailGradient(detailHash(cell + ivec3(0, 1, 0)));
+  vec3 gd = detailGradient(detailHash(cell + ivec3(1, 1, 0)));
+  vec3 ge = detailGradient(detailHash(cell + ivec3(0, 0, 1)));
+  vec3 gf = detailGradient(detailHash(cell + ivec3(1, 0, 1)));
+  vec3 gg = detailGradient(detailHash(cell + ivec3(0, 1, 1)));
+  vec3 gh = detailGradient(detailHash(cell + ivec3(1, 1, 1)));
   Number va = dot(ga, f);
-  Number vb = dot(gb, f - Vec3(1.0, 0.0, 0.0));
-  Number vc = dot(gc, f - Vec3(0.0, 1.0, 0.0));
-  Number vd = dot(gd, f - Vec3(1.0, 1.0, 0.0));
-  Number ve = dot(ge, f - Vec3(0.0, 0.0, 1.0));
-  Number vf = dot(gf, f - Vec3(1.0, 0.0, 1.0));
-  Number vg = dot(gg, f - Vec3(0.0, 1.0, 1.0));
-  Number vh = dot(gh, f - Vec3(1.0, 1.0, 1.0));
+  Number vb = dot(gb, f - vec3(1.0, 0.0, 0.0));
+  Number vc = dot(gc, f - vec3(0.0, 1.0, 0.0));
+  Number vd = dot(gd, f - vec3(1.0, 1.0, 0.0));
+  Number ve = dot(ge, f - vec3(0.0, 0.0, 1.0));
+  Number vf = dot(gf, f - vec3(1.0, 0.0, 1.0));
+  Number vg = dot(gg, f - vec3(0.0, 1.0, 1.0));
+  Number vh = dot(gh, f - vec3(1.0, 1.0, 1.0));
   // Trilinear interpolation written as a polynomial in the fade weights, so the derivative is
   // the product rule over its terms.
   Number k1 = vb - va, k2 = vc - va, k3 = ve - va;
@@ -74,20 +74,20 @@ Vec4 detailNoise(IVec3 cell, Vec3 f) {
   Number k7 = -va + vb + vc - vd + ve - vf - vg + vh;
   Number value = va + u.x * k1 + u.y * k2 + u.z * k3 + u.x * u.y * k4 + u.y * u.z * k5 +
                  u.z * u.x * k6 + u.x * u.y * u.z * k7;
-  Vec3 grad = ga + u.x * (gb - ga) + u.y * (gc - ga) + u.z * (ge - ga) +
+  vec3 grad = ga + u.x * (gb - ga) + u.y * (gc - ga) + u.z * (ge - ga) +
               u.x * u.y * (ga - gb - gc + gd) + u.y * u.z * (ga - gc - ge + gg) +
               u.z * u.x * (ga - gb - ge + gf) + u.x * u.y * u.z * (-ga + gb + gc - gd + ge - gf - gg + gh);
-  grad += du * Vec3(k1 + k4 * u.y + k6 * u.z + k7 * u.y * u.z,
+  grad += du * vec3(k1 + k4 * u.y + k6 * u.z + k7 * u.y * u.z,
                     k2 + k5 * u.z + k4 * u.x + k7 * u.z * u.x,
                     k3 + k6 * u.x + k5 * u.y + k7 * u.x * u.y);
-  return Vec4(value, grad.x, grad.y, grad.z);
+  return vec4(value, grad.x, grad.y, grad.z);
 }
 
 // One ridged octave: 1 - 2|n| has sharp crests and rounded valleys, like eroded relief; 0.45
 // is its approximate mean, removed so the detail does not lift the terrain on average.
 // Returns (value, gradient in lattice units).
-Vec4 detailRidged(IVec3 cell, Vec3 f) {
-  Vec4 n = detailNoise(cell, f);
+vec4 detailRidged(ivec3 cell, vec3 f) {
+  vec4 n = detailNoise(cell, f);
   Number s = n.x < 0.0 ? -2.0 : 2.0;
-  return Vec4(1.0 - s * n.x - 0.45, -s * n.y, -s * n.z, -s * n.w);
+  return vec4(1.0 - s * n.x - 0.45, -s * n.y, -s * n.z, -s * n.w);
 }

@@ -5,9 +5,9 @@
 // not from derivatives: the globe pass shades several samples per pixel in a loop, and longitude
 // jumps by 2 pi across the antimeridian.
 // Needs common/constants.glsl.
-layout(binding = 15) uniform sampler2D uImageryDay;        // rgb day colour, rows south to north
-layout(binding = 16) uniform sampler2D uImageryNight;      // rgb night lights
-layout(binding = 17) uniform sampler2DArray uImageryLayers; // the user's layers, rgba
+layout(binding = OG_UNIT_IMAGERY_DAY) uniform sampler2D uImageryDay;        // rgb day colour, rows south to north
+layout(binding = OG_UNIT_IMAGERY_NIGHT) uniform sampler2D uImageryNight;      // rgb night lights
+layout(binding = OG_UNIT_IMAGERY_LAYERS) uniform sampler2DArray uImageryLayers; // the user's layers, rgba
 const int MAX_IMAGERY_LAYERS = 8;  // data::kMaxImageryLayers
 uniform int uImageryEnabled;        // 0: the stand-in material ramps (no imagery)
 uniform float uImageryDayTexelRad;  // angular size of a base texel, radians

@@ -1,11 +1,11 @@
 // Land and water from real coastlines (data::LandMask, render/LandMaskTexture): a global mask
 // of 2′ cells from GSHHG, lakes as water, covering -180..180° E and -90..90° N, rows south to
 // north. Texel x of a row (16 bits) holds columns 8x - 4 ... 8x + 11 (bit k = column 8x - 4 + k,
-// wrapping in longitude), so any three neighbouring cells lie in one texel. Bound to unit 18
-// only where it decides the coast (a global elevation layer coarser than it); otherwise the
+// wrapping in longitude), so any three neighbouring cells lie in one texel. Bound to unit
+// OG_UNIT_LAND_MASK only where it decides the coast (a global elevation layer coarser than it); otherwise the
 // unit holds a 1×1 texture and landMaskOn() is false. The coastal-water code reads it here.
 #include "common/constants.glsl"
-layout(binding = 18) uniform usampler2D uLandMask;
+layout(binding = OG_UNIT_LAND_MASK) uniform usampler2D uLandMask;
 
 bool landMaskOn() { return textureSize(uLandMask, 0).y > 1; }
 

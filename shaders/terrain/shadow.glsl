@@ -3,7 +3,7 @@
 // far one's reach), looked up with 2x2 hardware comparisons at 4 offsets (a 3x3-texel soft
 // edge, like the penumbra of relief a few km away).
 const int SHADOW_CASCADES = 2;
-layout(binding = 11) uniform sampler2DArrayShadow uShadowMap;
+layout(binding = OG_UNIT_SHADOW_MAP) uniform sampler2DArrayShadow uShadowMap;
 uniform mat4 uShadowMatrix[SHADOW_CASCADES];  // camera-relative ECEF -> uv in [0,1], depth [0,1]
 uniform float uShadowTexelM[SHADOW_CASCADES]; // texel size, m
 uniform float uShadowSplitM;  // distance from the eye where the near cascade hands over, m

@@ -140,71 +140,122 @@ std::int64_t frameCount(double durationS, double fps) {
   return static_cast<std::int64_t>(std::floor(durationS * fps + 1e-6)) + 1;
 }
 
-RecordResult runRecording(const RecordJob& job) {
-  using Clock = std::chrono::steady_clock;
-  const geo::FlightPath flight = job.path.flight();
-  const io::SceneSettings& scene = job.scene;
-  const std::int64_t total = frameCount(flight.durationS(), job.fps);
-  const std::int64_t first = job.first, end = job.end < 0 ? total : job.end;
+namespace {
 
+/// Where the frames go, checked before anything is rendered.
+struct OutputPlan {
+  Sink sink = Sink::None;
+  std::optional<FramePattern> pattern;  ///< image sequences
+  io::VideoOptions video;               ///< MP4
+};
+
+/// Step 1, setup: the output's kind from its name, its options validated and its folder
+/// writable (fail before the long render, not after).
+OutputPlan planOutput(const RecordJob& job, std::int64_t first) {
+  const io::SceneSettings& scene = job.scene;
   const std::string ext = lowerExtension(job.output);
-  const Sink sink = job.output.empty() ? Sink::None : ext == ".mp4" ? Sink::Mp4 : ext == ".png" ? Sink::Png : ext == ".exr" ? Sink::Exr
+  OutputPlan plan;
+  plan.sink = job.output.empty() ? Sink::None : ext == ".mp4" ? Sink::Mp4 : ext == ".png" ? Sink::Png : ext == ".exr" ? Sink::Exr
       : throw InputError(job.output + ": unsupported output '" + ext +
                          "' (use .mp4, or an image pattern like frames/frame_%05d.png or .exr)");
-  if (!job.aovs.empty() && sink != Sink::Exr)
+  if (!job.aovs.empty() && plan.sink != Sink::Exr)
     throw InputError(job.output + ": --aov needs an OpenEXR frame pattern (frames/frame_%05d.exr)");
-  std::optional<FramePattern> pattern;
-  io::VideoOptions video;
-  if (sink == Sink::Mp4) {
+  if (plan.sink == Sink::Mp4) {
     if (job.resume)
       throw InputError("--resume works with image sequences (frames/frame_%05d.png); an MP4 is "
                        "re-recorded whole");
-    video.width = scene.width;
-    video.height = scene.height;
-    video.fps = job.fps;
-    video.crf = job.crf;
-    video.preset = job.preset;
-    io::validateVideoOptions(video);
+    plan.video.width = scene.width;
+    plan.video.height = scene.height;
+    plan.video.fps = job.fps;
+    plan.video.crf = job.crf;
+    plan.video.preset = job.preset;
+    io::validateVideoOptions(plan.video);
     checkOutputWritable(job.output);
-  } else if (sink != Sink::None) {
-    pattern.emplace(job.output);
-    checkOutputWritable(pattern->at(first));  // fail before the (long) render, not after
+  } else if (plan.sink != Sink::None) {
+    plan.pattern.emplace(job.output);
+    checkOutputWritable(plan.pattern->at(first));
   }
+  return plan;
+}
 
-  // Frames still to do. A frame file exists only once complete (written under a temporary
-  // name, then renamed), so existence is the whole resume test.
+/// Frames still to do. A frame file exists only once complete (written under a temporary name,
+/// then renamed), so existence is the whole resume test; skipped ones are counted in `result`.
+std::vector<std::int64_t> framesToDo(const RecordJob& job, const OutputPlan& plan, std::int64_t first,
+                                     std::int64_t end, RecordResult& result) {
   std::vector<std::int64_t> todo;
-  RecordResult result;
   for (std::int64_t i = first; i < end; i += job.stride) {
     std::error_code ec;
-    if (job.resume && pattern && fs::is_regular_file(pattern->at(i), ec) && fs::file_size(pattern->at(i), ec) > 0)
+    const bool done = job.resume && plan.pattern && fs::is_regular_file(plan.pattern->at(i), ec) &&
+                      fs::file_size(plan.pattern->at(i), ec) > 0;
+    if (done)
       ++result.skipped;
     else
       todo.push_back(i);
   }
+  return todo;
+}
 
-  // Data layers before the GL context (as `render` does): a bad file exits 2 at once.
+/// The GL side of a recording: the context and the renderer with the scene's data layers.
+struct RecordingGl {
+  std::unique_ptr<gl::Context> context;
+  std::unique_ptr<render::GlobeRenderer> renderer;
+};
+
+/// Step 1, setup: data layers before the GL context (as `render` does: a bad file exits 2 at
+/// once), then the context and the renderer.
+RecordingGl setUpRenderer(const io::SceneSettings& scene, std::size_t frames, RecordResult& result) {
   const data::LatLonGrid elevation = data::loadElevationLayer(scene.elevationLayer);
   const std::shared_ptr<const data::WindLayers> wind = loadWindLayers(scene);
   const std::vector<data::GeoImage> imagery = loadImageryLayers(scene);
 
-  auto context = gl::createHeadlessContext(*gl::parseBackend(scene.glBackend));
-  result.glRenderer = context->info().renderer;
-  log::info("recording " + std::to_string(todo.size()) + " frames at " + std::to_string(scene.width) +
-            "x" + std::to_string(scene.height) + " with " + context->info().backend + " (" +
-            context->info().renderer + ")");
-  render::GlobeRenderer renderer(elevation, scene.atmosphere);
-  renderer.setWindLayers(wind);
+  RecordingGl gl;
+  gl.context = gl::createHeadlessContext(*gl::parseBackend(scene.glBackend));
+  result.glRenderer = gl.context->info().renderer;
+  log::info("recording " + std::to_string(frames) + " frames at " + std::to_string(scene.width) +
+            "x" + std::to_string(scene.height) + " with " + gl.context->info().backend + " (" +
+            gl.context->info().renderer + ")");
+  gl.renderer = std::make_unique<render::GlobeRenderer>(elevation, scene.atmosphere);
+  gl.renderer->setWindLayers(wind);
   if (wind && wind->timeVarying() && !scene.time)
     log::warn("the wind layers have a time axis but the path has no UTC time ([scene] time or "
               "--time): the winds stay at their first step");
-  renderer.imagery().setLayers(imagery);
+  gl.renderer->imagery().setLayers(imagery);
+  return gl;
+}
 
-  // With Sun angles, they hold at the last keyframe (usually the close-up, where a low Sun
-  // matters); the direction is then fixed in ECEF for the whole flight.
-  io::SceneSettings sunScene = scene;
-  sunScene.camera = job.path.keyframes.back().pose;
-  const glm::dvec3 fixedSun = sunDirectionOf(sunScene);
+/// Step 2, per-frame render: frame i of the job is the path at startS + i / fps, the waves'
+/// clock in real time and, with a UTC time, the Sun and wind layers at time + (i / fps) *
+/// time_lapse.
+class FrameRenderer {
+ public:
+  FrameRenderer(const RecordJob& job, render::GlobeRenderer& renderer)
+      : job_(job), flight_(job.path.flight()), renderer_(renderer) {
+    // With Sun angles, they hold at the last keyframe (usually the close-up, where a low Sun
+    // matters); the direction is then fixed in ECEF for the whole flight.
+    io::SceneSettings sunScene = job.scene;
+    sunScene.camera = job.path.keyframes.back().pose;
+    fixedSun_ = sunDirectionOf(sunScene);
+  }
+
+  void render(std::int64_t i) {
+    const io::SceneSettings& scene = job_.scene;
+    const double t = static_cast<double>(i) / job_.fps;
+    advanceOceanFrame(i);
+    render::FrameInput frame = frameInputOf(scene);
+    frame.camera = poseAt(i);
+    frame.oceanFrame = &oceanFrame_;
+    // The UTC clock runs time_lapse times faster than the path (Sun, timed wind layers).
+    if (scene.time) frame.utcTime = UtcTime{scene.time->unixSeconds + t * scene.timeLapse};
+    frame.sunDirectionEcef = frame.utcTime ? geo::sunEphemeris(*frame.utcTime).directionEcef : fixedSun_;
+    frame.simulationTimeS = scene.simulationTimeS + t;
+    frame.auxiliaryOutputs = needsAuxiliaryOutputs(job_.aovs);
+    renderer_.render(frame);
+  }
+
+ private:
+  [[nodiscard]] geo::CameraPose poseAt(std::int64_t j) const {
+    return flight_.at(flight_.startS() + static_cast<double>(j) / job_.fps);
+  }
 
   // The ocean frame carries the waves across frames so they stay fixed to the Earth while the
   // camera flies (ocean::OceanFrame). It is a pure function of the frame index: rebuilt from
@@ -212,81 +263,95 @@ RecordResult runRecording(const RecordJob& job) {
   // drawn, so a fresh frame there is invisible) or from frame 0, by moving it through every
   // frame in between. Consecutive frames continue the same sequence of moves, so a frame is
   // bit-identical alone, in a chunk or in the whole run.
-  ocean::OceanFrame oceanFrame;
-  std::int64_t oceanFrameAt = -1;
-  auto poseAt = [&](std::int64_t j) { return flight.at(flight.startS() + static_cast<double>(j) / job.fps); };
-  auto advanceOceanFrame = [&](std::int64_t i) {
-    if (oceanFrameAt < 0 || i < oceanFrameAt || i > oceanFrameAt + 1) {
+  void advanceOceanFrame(std::int64_t i) {
+    if (oceanFrameAt_ < 0 || i < oceanFrameAt_ || i > oceanFrameAt_ + 1) {
       std::int64_t j = i;
       while (j > 0 && poseAt(j).position.heightM < render::kOceanGridMaxHeightM) --j;
-      oceanFrame.reset(poseAt(j).position);
-      for (std::int64_t k = j + 1; k < i; ++k) oceanFrame.moveTo(poseAt(k).position);
-      oceanFrameAt = i - 1;
+      oceanFrame_.reset(poseAt(j).position);
+      for (std::int64_t k = j + 1; k < i; ++k) oceanFrame_.moveTo(poseAt(k).position);
+      oceanFrameAt_ = i - 1;
     }
     const geo::CameraPose pose = poseAt(i);
     if (pose.position.heightM >= render::kOceanGridMaxHeightM)
-      oceanFrame.reset(pose.position);
-    else if (i == 0 && oceanFrameAt < 0)
-      oceanFrame.reset(pose.position);
+      oceanFrame_.reset(pose.position);
+    else if (i == 0 && oceanFrameAt_ < 0)
+      oceanFrame_.reset(pose.position);
     else
-      oceanFrame.moveTo(pose.position);
-    oceanFrameAt = i;
-  };
+      oceanFrame_.moveTo(pose.position);
+    oceanFrameAt_ = i;
+  }
 
-  // Frame i: the path at startS + i / fps, the waves' clock in real time and, with a UTC time,
-  // the Sun and wind layers at time + (i / fps) * time_lapse.
-  auto renderFrame = [&](std::int64_t i) {
-    const double t = static_cast<double>(i) / job.fps;
-    advanceOceanFrame(i);
-    render::FrameInput frame = frameInputOf(scene);
-    frame.camera = poseAt(i);
-    frame.oceanFrame = &oceanFrame;
-    // The UTC clock runs time_lapse times faster than the path (Sun, timed wind layers).
-    if (scene.time) frame.utcTime = UtcTime{scene.time->unixSeconds + t * scene.timeLapse};
-    frame.sunDirectionEcef = frame.utcTime ? geo::sunEphemeris(*frame.utcTime).directionEcef : fixedSun;
-    frame.simulationTimeS = scene.simulationTimeS + t;
-    frame.auxiliaryOutputs = needsAuxiliaryOutputs(job.aovs);
-    renderer.render(frame);
-  };
+  const RecordJob& job_;
+  const geo::FlightPath flight_;
+  render::GlobeRenderer& renderer_;
+  glm::dvec3 fixedSun_{0.0};
+  ocean::OceanFrame oceanFrame_;
+  std::int64_t oceanFrameAt_ = -1;
+};
 
-  installStopHandlers();
-  Progress progress("record", static_cast<std::int64_t>(todo.size()),
-                    job.progress && log::level() <= log::Level::Warn);
-  const auto start = Clock::now();
-  auto loop = [&](const std::function<void(std::int64_t)>& write) {
-    for (const std::int64_t i : todo) {
-      if (stopRequested()) {
-        result.interrupted = true;
-        break;
-      }
-      const auto s = Clock::now();
-      renderFrame(i);
-      write(i);
-      result.renderS += std::chrono::duration<double>(Clock::now() - s).count();
-      ++result.rendered;
-      progress.advance();
+/// Step 4, progress: renders the frames in order, handing each to `write`, until done or
+/// stopped (SIGINT/SIGTERM); counts and times them in `result`.
+void renderFrames(const std::vector<std::int64_t>& todo, FrameRenderer& frames, Progress& progress,
+                  RecordResult& result, const std::function<void(std::int64_t)>& write) {
+  using Clock = std::chrono::steady_clock;
+  for (const std::int64_t i : todo) {
+    if (stopRequested()) {
+      result.interrupted = true;
+      break;
     }
-  };
+    const auto s = Clock::now();
+    frames.render(i);
+    write(i);
+    result.renderS += std::chrono::duration<double>(Clock::now() - s).count();
+    ++result.rendered;
+    progress.advance();
+  }
+}
 
-  if (sink == Sink::Mp4) {
+/// Step 3, encode/write: each frame to the MP4 encoder, to its image file, or read back only.
+void renderAndWrite(const RecordJob& job, const OutputPlan& plan, const std::vector<std::int64_t>& todo,
+                    render::GlobeRenderer& renderer, Progress& progress, RecordResult& result) {
+  FrameRenderer frames(job, renderer);
+  auto loop = [&](const std::function<void(std::int64_t)>& write) {
+    renderFrames(todo, frames, progress, result, write);
+  };
+  if (plan.sink == Sink::Mp4) {
     writeFileAtomically(job.output, [&](const fs::path& tmp) {
-      io::VideoWriter writer(tmp, video);
+      io::VideoWriter writer(tmp, plan.video);
       loop([&](std::int64_t) { writer.push(renderer.display()); });
       writer.finish();  // also after an interrupt: the MP4 plays up to the last frame
     });
-  } else if (sink == Sink::None) {
+  } else if (plan.sink == Sink::None) {
     loop([&](std::int64_t) { (void)renderer.display(); });  // read back, as a real sink would
   } else {
     loop([&](std::int64_t i) {
-      if (sink == Sink::Png)
-        io::writePng(pattern->at(i), renderer.display());
+      if (plan.sink == Sink::Png)
+        io::writePng(plan.pattern->at(i), renderer.display());
       else
-        io::writeExr(pattern->at(i), renderer.radiance(),
+        io::writeExr(plan.pattern->at(i), renderer.radiance(),
                      job.exrFloat ? io::ExrPixelType::Float : io::ExrPixelType::Half,
                      aovChannels(renderer, job.aovs));
     });
   }
-  result.wallS = std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+RecordResult runRecording(const RecordJob& job) {
+  const std::int64_t total = frameCount(job.path.flight().durationS(), job.fps);
+  const std::int64_t first = job.first, end = job.end < 0 ? total : job.end;
+  const OutputPlan plan = planOutput(job, first);
+  RecordResult result;
+  const std::vector<std::int64_t> todo = framesToDo(job, plan, first, end, result);
+  RecordingGl gl = setUpRenderer(job.scene, todo.size(), result);
+
+  installStopHandlers();
+  Progress progress("record", static_cast<std::int64_t>(todo.size()),
+                    job.progress && log::level() <= log::Level::Warn);
+  const auto start = std::chrono::steady_clock::now();
+  renderAndWrite(job, plan, todo, *gl.renderer, progress, result);
+  // Step 5, finish: the wall time up to the closed output, the progress line ended.
+  result.wallS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.finish();
   return result;
 }

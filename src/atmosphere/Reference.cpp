@@ -7,6 +7,8 @@
 #include <numbers>
 #include <thread>
 
+#include "core/GlslShim.hpp"
+
 namespace og::atmosphere {
 
 glm::dvec4 texture(const Table2D& t, glm::dvec2 uv) {
@@ -41,33 +43,11 @@ glm::dvec4 texture(const Table3D& t, glm::dvec3 uvw) {
 
 // The shared GLSL, compiled as C++ in double precision.
 namespace shared {
-using Real = double;
-using vec2 = glm::dvec2;
-using vec3 = glm::dvec3;
-using vec4 = glm::dvec4;
+using namespace og::glsl;
 using Texture2D = Table2D;
 using Texture3D = Table3D;
-using glm::clamp;
-using glm::dot;
-using glm::length;
-using glm::max;
-using glm::min;
-using glm::smoothstep;
 using og::atmosphere::texture;
-constexpr Real PI = std::numbers::pi;
-inline Real sqrt(Real x) { return std::sqrt(x); }
-inline Real exp(Real x) { return std::exp(x); }
-inline vec3 exp(const vec3& x) { return glm::exp(x); }
-inline Real log(Real x) { return std::log(x); }
-inline Real abs(Real x) { return std::abs(x); }
-inline Real floor(Real x) { return std::floor(x); }
-inline Real sin(Real x) { return std::sin(x); }
-inline Real cos(Real x) { return std::cos(x); }
-inline Real pow(Real x, Real y) { return std::pow(x, y); }
-inline Real mod(Real x, Real y) { return x - y * std::floor(x / y); }
-#define IN(T) const T&
-#define OUT(T) T&
-#define INOUT(T) T&
+constexpr Number PI = std::numbers::pi;
 #include "atmosphere/functions.glsl"
 #undef IN
 #undef OUT

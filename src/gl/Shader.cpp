@@ -11,6 +11,8 @@
 #include <string_view>
 
 #include "core/Error.hpp"
+#include "core/Log.hpp"
+#include "gl/ShaderContract.hpp"
 
 namespace og::embedded::shaders {
 std::optional<std::string_view> find(std::string_view path);
@@ -83,6 +85,7 @@ ExpandedSource expandShader(const std::string& path, const std::vector<std::stri
   if (first.rfind("#version", 0) != 0)
     throw InternalError(body.files[0] + ":1: a shader must start with #version");
   out.text = first + "\n";
+  for (const auto& d : contractDefines()) out.text += "#define " + d + "\n";
   for (const auto& d : defines) out.text += "#define " + d + "\n";
   out.text += "#line 2 0\n" + body.text.substr(eol + 1);
   return out;
@@ -145,9 +148,45 @@ Program::Program(const std::vector<std::pair<GLenum, std::string>>& stages,
     throw InternalError("cannot link program" + names + ":\n" + log.c_str());
   }
   for (const auto& s : shaders) glDetachShader(program_.id(), s.id());
+  for (const auto& st : stages) name_ += (name_.empty() ? "shaders/" : " shaders/") + st.second;
+  readActiveUniforms();
 }
 
-GLint Program::location(const char* name) const { return glGetUniformLocation(id(), name); }
+void Program::readActiveUniforms() {
+  GLint count = 0;
+  glGetProgramInterfaceiv(id(), GL_UNIFORM, GL_ACTIVE_RESOURCES, &count);
+  for (GLint i = 0; i < count; ++i) {
+    char name[256];
+    GLsizei length = 0;
+    glGetProgramResourceName(id(), GL_UNIFORM, static_cast<GLuint>(i), sizeof name, &length, name);
+    const GLint loc = glGetUniformLocation(id(), name);
+    if (loc >= 0) locations_.emplace(std::string(name, static_cast<std::size_t>(length)), loc);
+  }
+}
+
+GLint Program::location(const char* name) const {
+  if (const auto it = locations_.find(name); it != locations_.end()) return it->second;
+  // Not an active uniform by its own name: an array element or struct member, or missing.
+  const GLint loc = glGetUniformLocation(id(), name);
+  locations_.emplace(name, loc);
+  if (loc < 0) log::debug(name_ + ": no active uniform '" + name + "' (misspelt, or unused and optimised out)");
+  return loc;
+}
+
+std::vector<std::string> Program::missingUniforms(const std::vector<std::string>& names) const {
+  std::vector<std::string> missing;
+  for (const std::string& n : names)
+    if (glGetUniformLocation(id(), n.c_str()) < 0) missing.push_back(n);
+  return missing;
+}
+
+void Program::requireUniforms(const std::vector<std::string>& names) const {
+  const std::vector<std::string> missing = missingUniforms(names);
+  if (missing.empty()) return;
+  std::string list;
+  for (const std::string& n : missing) list += (list.empty() ? "" : ", ") + n;
+  throw InternalError(name_ + ": no active uniform " + list + " (misspelt, or unused and optimised out)");
+}
 void Program::set(const char* n, float v) const { glProgramUniform1f(id(), location(n), v); }
 void Program::set(const char* n, int v) const { glProgramUniform1i(id(), location(n), v); }
 void Program::set(const char* n, const glm::ivec2& v) const {

@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -25,7 +26,8 @@ struct ExpandedSource {
 /// Throws og::InternalError when it does not exist.
 std::string readShaderFile(const std::string& path);
 
-/// Expands #include directives and inserts `defines` ("NAME value" or "NAME") after #version.
+/// Expands #include directives and inserts the C++/GLSL contract (gl/ShaderContract.hpp) and
+/// `defines` ("NAME value" or "NAME") after #version.
 ExpandedSource expandShader(const std::string& path, const std::vector<std::string>& defines = {});
 
 /// Rewrites driver log lines "0:12(3): error" / "0(12) : error" as "file.glsl:12: error".
@@ -42,7 +44,14 @@ class Program {
   [[nodiscard]] GLuint id() const { return program_.id(); }
   void use() const { glUseProgram(program_.id()); }
 
+  /// The uniform's location, looked up once (active uniforms are read at link time); -1 for a
+  /// name the program lacks, logged once at debug level (variants may drop unused uniforms).
   [[nodiscard]] GLint location(const char* name) const;
+  /// The uniforms among `names` the linked program lacks: misspelt, or unused and optimised out.
+  [[nodiscard]] std::vector<std::string> missingUniforms(const std::vector<std::string>& names) const;
+  /// Throws og::InternalError naming the program and each uniform of `names` it lacks: called
+  /// once after building, it stops the start-up where a typo would silently set nothing.
+  void requireUniforms(const std::vector<std::string>& names) const;
   void set(const char* name, float v) const;
   void set(const char* name, int v) const;
   void set(const char* name, const glm::ivec2& v) const;
@@ -53,7 +62,11 @@ class Program {
   void set(const char* name, const glm::mat4& v) const;
 
  private:
+  void readActiveUniforms();
+
   ProgramObject program_;
+  std::string name_;  ///< its shader files, for messages
+  mutable std::unordered_map<std::string, GLint> locations_;  ///< by name, -1 = not in the program
 };
 
 }  // namespace og::gl

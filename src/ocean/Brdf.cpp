@@ -3,18 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/GlslShim.hpp"
+
 namespace og::ocean::brdf {
 namespace glsl {
-using Number = double;
-using Vec2 = glm::dvec2;
-using Vec3 = glm::dvec3;
-using glm::clamp;
-using glm::dot;
-using glm::normalize;
-using std::exp;
-using std::max;
-using std::pow;
-using std::sqrt;
+using namespace og::glsl;
 #include "ocean/brdf.glsl"
 }  // namespace glsl
 

@@ -3,16 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/GlslShim.hpp"
+
 namespace og::ocean {
 namespace glsl {
-// The GLSL subset spectrum.glsl uses, in double precision.
-using Number = double;
-using std::exp;
-using std::log;
-using std::pow;
-using std::sqrt;
-using std::tanh;
-using std::max;
+using namespace og::glsl;
 #include "ocean/spectrum.glsl"
 }  // namespace glsl
 

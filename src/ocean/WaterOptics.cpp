@@ -4,16 +4,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/GlslShim.hpp"
+
 namespace og::ocean {
 namespace glsl {
-using Number = double;
-using Vec3 = glm::dvec3;
-using glm::clamp;
-using glm::exp;
-using std::log;
-using std::max;
-using std::min;
-using std::sqrt;
+using namespace og::glsl;
 constexpr double PI = std::numbers::pi;
 #include "ocean/water_optics.glsl"
 }  // namespace glsl

@@ -12,6 +12,7 @@
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "gl/ShaderContract.hpp"
 
 namespace og::render {
 namespace {
@@ -318,15 +319,15 @@ void Atmosphere::computeSkyMaps() {
 void Atmosphere::bind(const gl::Program& program) const {
   setParameters(program, parameters_);
   program.set("uSkyFilterProbes", skyFilter_.probes);
-  glBindTextureUnit(2, transmittance_.id());
-  glBindTextureUnit(3, scattering_.id());
-  glBindTextureUnit(4, singleMie_.id());
-  glBindTextureUnit(5, irradiance_.id());
+  glBindTextureUnit(gl::kUnitAtmTransmittance, transmittance_.id());
+  glBindTextureUnit(gl::kUnitAtmScattering, scattering_.id());
+  glBindTextureUnit(gl::kUnitAtmSingleMie, singleMie_.id());
+  glBindTextureUnit(gl::kUnitAtmIrradiance, irradiance_.id());
 }
 
 void Atmosphere::bindSkyMaps() const {
-  glBindTextureUnit(6, skyMaps_.id());
-  glBindTextureUnit(7, skyIrradiance_.id());
+  glBindTextureUnit(gl::kUnitSkyMap, skyMaps_.id());
+  glBindTextureUnit(gl::kUnitSkyIrradiance, skyIrradiance_.id());
 }
 
 // Cache file: magic, key, sizes, the four tables as float32 RGBA, FNV-1a of the payload.

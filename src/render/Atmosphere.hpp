@@ -58,7 +58,7 @@ class Atmosphere {
   /// Sets `program`'s uAtmosphere uniforms and the sky filter's uSkyFilterProbes
   /// (skymap.glsl) and binds the tables to units 2-5 (model.glsl).
   void bind(const gl::Program& program) const;
-  /// Binds the sky maps (unit 6) and the sea-level irradiance table (unit 7) (skymap.glsl).
+  /// Binds the sky maps (gl::kUnitSkyMap) and the sea-level irradiance table (gl::kUnitSkyIrradiance) (skymap.glsl).
   void bindSkyMaps() const;
 
   [[nodiscard]] const atmosphere::Parameters& parameters() const { return parameters_; }

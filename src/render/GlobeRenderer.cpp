@@ -10,6 +10,7 @@
 #include "core/Log.hpp"
 #include "gl/DriverProfile.hpp"
 #include "gl/Readback.hpp"
+#include "gl/ShaderContract.hpp"
 #include "ocean/WaterOptics.hpp"
 #include "render/WaterVolume.hpp"
 
@@ -160,14 +161,14 @@ void GlobeRenderer::render(const FrameInput& f) {
   if (auxiliary_) glClearNamedFramebufferfv(hdr_.fbo.id(), GL_COLOR, 1, clearColor);
   glClearNamedFramebufferfv(hdr_.fbo.id(), GL_DEPTH, 0, &clearDepth);
   glEnable(GL_DEPTH_TEST);
-  landMask_->bind();  // unit 18 for every pass (render/elevation.glsl)
+  landMask_->bind();  // gl::kUnitLandMask for every pass (render/elevation.glsl)
   if (!grid) drawGlobe(view, f, grid);
 
   // Terrain over the globe's land (its far fallback), depth-tested; the ocean below is then
   // depth-tested against it, so the shoreline is where sea surface and ground meet. Below
   // 20 km the globe comes last, shading only what the two left empty (no pixel twice).
   terrain_->draw(view, f.width, f.height, f.sunDirectionEcef, !grid);
-  glBindTextureUnit(0, elevation_.id());
+  glBindTextureUnit(gl::kUnitElevation, elevation_.id());
   glBindVertexArray(emptyVao_.id());
   if (grid) {
     drawOcean(view, f);
@@ -181,7 +182,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   glBindFramebuffer(GL_FRAMEBUFFER, ldr_.fbo.id());
   const gl::Program& tonemap = hdr_.samples > 1 ? tonemapMs_ : tonemap_;
   tonemap.set("uExposure", static_cast<float>(f.exposure));
-  glBindTextureUnit(0, hdr_.color.id());
+  glBindTextureUnit(gl::kUnitToneRadiance, hdr_.color.id());
   tonemap.use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -219,7 +220,7 @@ void GlobeRenderer::drawGlobe(const geo::CameraView& view, const FrameInput& f, 
   globe.set("uElevationMap", elevationMap_);
   globe.set("uElevationSize", elevationSize_);
   globe.set("uElevationWraps", elevationWraps_);
-  glBindTextureUnit(0, elevation_.id());
+  glBindTextureUnit(gl::kUnitElevation, elevation_.id());
   imagery_->bind(globe);
   atmosphere_->bind(globe);
   atmosphere_->bindSkyMaps();

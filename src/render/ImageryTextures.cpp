@@ -6,6 +6,7 @@
 
 #include "core/Error.hpp"
 #include "data/Imagery.hpp"
+#include "gl/ShaderContract.hpp"
 
 namespace og::render {
 namespace {
@@ -78,9 +79,9 @@ void ImageryTextures::setLayers(const std::vector<data::GeoImage>& layers) {
 }
 
 void ImageryTextures::bind(const gl::Program& program) const {
-  glBindTextureUnit(15, day_.id());
-  glBindTextureUnit(16, night_.id());
-  glBindTextureUnit(17, layers_.id());
+  glBindTextureUnit(gl::kUnitImageryDay, day_.id());
+  glBindTextureUnit(gl::kUnitImageryNight, night_.id());
+  glBindTextureUnit(gl::kUnitImageryLayers, layers_.id());
   program.set("uImageryEnabled", enabled_ ? 1 : 0);
   program.set("uImageryDayTexelRad", dayTexelRad_);
   program.set("uImageryLayerCount", layerCount_);

@@ -2,10 +2,10 @@
 // Imagery on the GPU (shaders/terrain/imagery.glsl): the day colour that the globe's land and
 // the terrain use as albedo, and the night lights. Three textures, all sRGB-encoded (the
 // sampler returns linear colour) and mip-mapped:
-//  * unit 15: the base day image, global (the embedded Blue Marble, 2048 × 1024);
-//  * unit 16: the night lights, global (the embedded Earth at night, 2048 × 1024);
-//  * unit 17: the `--imagery-layer`s, a 2D array of kImageryLayerSizePx² layers each over its own
-//    latitude/longitude extent, alpha = coverage, later layers on top.
+//  * gl::kUnitImageryDay: the base day image, global (the embedded Blue Marble, 2048 × 1024);
+//  * gl::kUnitImageryNight: the night lights, global (the embedded Earth at night, 2048 × 1024);
+//  * gl::kUnitImageryLayers: the `--imagery-layer`s, a 2D array of kImageryLayerSizePx² layers
+//    each over its own latitude/longitude extent, alpha = coverage, later layers on top.
 // Each user layer is one whole mip-mapped texture (not streamed tiles): ~21 MiB of GPU memory
 // per 2048² layer, at most data::kMaxImageryLayers (8) layers, so ≤ 170 MiB.
 #include <cstddef>
@@ -39,7 +39,7 @@ class ImageryTextures {
   /// Bytes of GPU memory the imagery textures hold (with mip-maps).
   [[nodiscard]] std::size_t gpuBytes() const { return bytes_; }
 
-  /// Binds the textures (units 15-17) and sets imagery.glsl's uniforms on `program`.
+  /// Binds the textures (gl::kUnitImagery*) and sets imagery.glsl's uniforms on `program`.
   void bind(const gl::Program& program) const;
 
  private:

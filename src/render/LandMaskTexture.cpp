@@ -7,6 +7,7 @@
 
 #include "core/Error.hpp"
 #include "gl/Shader.hpp"
+#include "gl/ShaderContract.hpp"
 
 namespace og::render {
 
@@ -43,7 +44,7 @@ LandMaskTexture::LandMaskTexture(const data::LandMask* mask) {
   bytes_ = texels.size() * sizeof(std::uint16_t);
 }
 
-void LandMaskTexture::bind() const { glBindTextureUnit(18, texture_.id()); }
+void LandMaskTexture::bind() const { glBindTextureUnit(gl::kUnitLandMask, texture_.id()); }
 
 std::vector<float> LandMaskTexture::probeLandFraction(const std::vector<glm::vec2>& latLonRad) const {
   if (latLonRad.empty()) return {};

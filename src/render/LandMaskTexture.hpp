@@ -1,7 +1,7 @@
 #pragma once
 // The GSHHG land mask on the GPU (shaders/terrain/landmask.glsl): data::LandMask's packed bits
-// as an R16UI texture on unit 18, texel x of a row holding columns 8x − 4 … 8x + 11 (1350 ×
-// 5400 texels, 14 MiB for the 2′ default), bound only
+// as an R16UI texture on gl::kUnitLandMask, texel x of a row holding columns 8x − 4 … 8x + 11
+// (1350 × 5400 texels, 14 MiB for the 2′ default), bound only
 // where the mask decides the coast (a global elevation layer coarser than it); a 1×1 texture
 // there otherwise, which landmask.glsl reads as "no mask".
 #include <vector>
@@ -17,7 +17,7 @@ class LandMaskTexture {
  public:
   /// Needs a current GL context. `mask` nullptr: no mask (the elevation layer's zero contour).
   explicit LandMaskTexture(const data::LandMask* mask);
-  /// Binds the mask (or the 1×1 stand-in) to unit 18.
+  /// Binds the mask (or the 1×1 stand-in) to gl::kUnitLandMask.
   void bind() const;
   [[nodiscard]] bool active() const { return active_; }
   [[nodiscard]] std::size_t gpuBytes() const { return bytes_; }

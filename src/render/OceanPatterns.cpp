@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "gl/ShaderContract.hpp"
+
 namespace og::render {
 namespace {
 constexpr int kLayers = ocean::kPatternSets * ocean::kPatternCount;
@@ -231,9 +233,9 @@ void OceanPatterns::setUniforms(const gl::Program& program, const ocean::OceanFr
 }
 
 void OceanPatterns::bind() const {
-  glBindTextureUnit(10, table_.id());
-  glBindTextureUnit(12, displacement_.id());
-  glBindTextureUnit(13, slopes_.id());
+  glBindTextureUnit(gl::kUnitPatternTable, table_.id());
+  glBindTextureUnit(gl::kUnitPatternDisplacement, displacement_.id());
+  glBindTextureUnit(gl::kUnitPatternSlopes, slopes_.id());
 }
 
 }  // namespace og::render

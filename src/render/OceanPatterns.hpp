@@ -3,10 +3,10 @@
 // ocean::WavePatterns uploaded once, and every frame an inverse FFT per pattern and direction
 // set (compute shaders shaders/ocean/fft_*.comp) into three mip-mapped texture arrays the sea
 // shaders sample (shaders/ocean/patterns.glsl):
-//   displacement (unit 12): (lambda Dx, lambda Dy, h, 0), m, tile axes
-//   slopes       (unit 13): (s_u, s_c, s_u² + s_c², j): slopes along/across the set's wind,
-//                           their second moment, the whitecaps' Jacobian term
-// layer = set * 4 + pattern. Plus the per-wind tables (unit 10, ocean::PatternTables).
+//   displacement (OG_UNIT_PATTERN_DISPLACEMENT): (lambda Dx, lambda Dy, h, 0), m, tile axes
+//   slopes       (OG_UNIT_PATTERN_SLOPES): (s_u, s_c, s_u² + s_c², j): slopes along/across the
+//                set's wind, their second moment, the whitecaps' Jacobian term
+// layer = set * 4 + pattern. Plus the per-wind tables (OG_UNIT_PATTERN_TABLE, ocean::PatternTables).
 #include <memory>
 #include <string>
 #include <vector>

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "gl/ShaderContract.hpp"
 #include "render/WaterVolume.hpp"
 
 namespace og::render {
@@ -203,8 +204,8 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     p.set("uFieldOffset", glm::vec2(static_cast<float>(std::fmod(off.x, 800.0)),
                                     static_cast<float>(std::fmod(off.y, 800.0))));
     p.set("uTime", static_cast<float>(std::fmod(timeS, 1000.0)));
-    glBindTextureUnit(8, bumpMap_.id());
-    glBindTextureUnit(9, fresnelRamp_.id());
+    glBindTextureUnit(gl::kUnitBumpMap, bumpMap_.id());
+    glBindTextureUnit(gl::kUnitFresnelRamp, fresnelRamp_.id());
   } else {
     patterns.bind();
     patterns.setUniforms(p, &frame, amplitudeScale);

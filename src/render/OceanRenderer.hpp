@@ -25,7 +25,7 @@ struct OceanLighting {
   // Used without an atmosphere only (tests of the ocean alone): a simple analytic sky.
   glm::vec3 skyZenith{0.02f, 0.045f, 0.11f};
   glm::vec3 skyHorizon{0.07f, 0.09f, 0.12f};
-  /// The terrain's Sun shadows to cast on the sea (maps bound to unit 11), or none.
+  /// The terrain's Sun shadows to cast on the sea (maps bound to gl::kUnitShadowMap), or none.
   const SunShadows* shadows = nullptr;
   /// Whether land may be in view: false compiles the per-pixel coast test out (ocean/coast.glsl).
   bool landInView = true;
@@ -57,7 +57,7 @@ class OceanRenderer {
                          ValidationMode mode = ValidationMode::Filtered);
 
   /// The elevation layer's mapping (see render/elevation.glsl); its texture must be bound to
-  /// unit 0 when drawing. Without it the sea is drawn everywhere.
+  /// gl::kUnitElevation when drawing. Without it the sea is drawn everywhere.
   void setElevationLayer(const glm::vec4& map, const glm::vec2& size, int wraps) {
     elevationMap_ = map;
     elevationSize_ = size;

@@ -8,6 +8,7 @@
 
 #include "core/Error.hpp"
 #include "geo/Wgs84.hpp"
+#include "gl/ShaderContract.hpp"
 
 namespace og::render {
 
@@ -226,7 +227,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
     if (!t->coveredBySea()) casters.push_back(t);
   renderShadowMap(view, casters, sunDirectionEcef);
   if (timer_ != nullptr) timer_->mark("terrain");
-  glBindTextureUnit(11, shadowMap_.id());
+  glBindTextureUnit(gl::kUnitShadowMap, shadowMap_.id());
   if (atmosphere_ != nullptr) atmosphere_->bind(p);
   if (imagery_ != nullptr) imagery_->bind(p);
   p.set("uImageryEnabled", imagery_ != nullptr && imagery_->enabled() ? 1 : 0);

@@ -25,7 +25,7 @@
 namespace og::render {
 
 /// The terrain's Sun shadow maps of the last frame, for other passes to look up
-/// (terrain/shadow.glsl's uniforms; the maps stay bound to texture unit 11).
+/// (terrain/shadow.glsl's uniforms; the maps stay bound to gl::kUnitShadowMap).
 struct SunShadows {
   static constexpr int kCascades = 2;  // SHADOW_CASCADES in terrain/shadow.glsl
   bool on = false;

@@ -1,5 +1,7 @@
 #include "render/WindTextures.hpp"
 
+#include "gl/ShaderContract.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -65,6 +67,6 @@ double WindTextures::upload(const data::WindRaster& raster) {
   return strongest;
 }
 
-void WindTextures::bind(const gl::Program&) const { glBindTextureUnit(1, wind_.id()); }
+void WindTextures::bind(const gl::Program&) const { glBindTextureUnit(gl::kUnitWind, wind_.id()); }
 
 }  // namespace og::render

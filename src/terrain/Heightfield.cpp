@@ -6,6 +6,7 @@
 #include <numbers>
 #include <utility>
 
+#include "core/GlslShim.hpp"
 #include "geo/Wgs84.hpp"
 #include "terrain/Tile.hpp"
 
@@ -19,14 +20,7 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kReliefGain = 2.5;
 
 namespace glsl {
-// The GLSL subset terrain/detail.glsl uses, in double precision.
-using Number = double;
-using Vec3 = glm::dvec3;
-using Vec4 = glm::dvec4;
-using IVec3 = glm::ivec3;
-using uint = std::uint32_t;
-using glm::dot;
-using std::pow;
+using namespace og::glsl;
 #include "terrain/detail.glsl"
 }  // namespace glsl
 

@@ -27,23 +27,13 @@ double mean(const std::vector<float>& v) {
 
 /// A global wind layer blowing east at speeds[t] m/s at `hours`[t] after 2024-06-20T00:00Z.
 fs::path writeWindSteps(const fs::path& file, const std::vector<double>& hours, const std::vector<double>& speeds) {
-  og::test::NcWriter nc(file, NC_NETCDF4);
-  const auto [td, tv] = nc.axis("time", hours, "hours since 2024-06-20 00:00:00");
-  nc.text(tv, "calendar", "gregorian");
-  const auto lat = og::test::steps(-90.0, 10.0, 19);
-  const auto lon = og::test::steps(0.0, 10.0, 36);
-  const auto [latD, latV] = nc.axis("lat", lat, "degrees_north");
-  const auto [lonD, lonV] = nc.axis("lon", lon, "degrees_east");
-  for (const char* n : {"uwnd", "vwnd"}) {
-    const int v = nc.var(n, NC_FLOAT, {td, latD, lonD});
-    nc.text(v, "units", "m/s");
-    std::vector<double> values;
-    for (std::size_t t = 0; t < hours.size(); ++t)
-      values.insert(values.end(), lat.size() * lon.size(), n[0] == 'u' ? speeds[t] : 0.0);
-    nc.values(v, values);
-  }
-  nc.close();
-  return file;
+  og::test::TimedWind wind;
+  wind.times = hours;
+  wind.units = "hours since 2024-06-20 00:00:00";
+  wind.calendar = "gregorian";
+  wind.eastMs = speeds;
+  wind.gridStepDeg = 10.0;
+  return og::test::writeTimedWind(file, wind);
 }
 
 /// A still camera 200 m above the Pacific looking straight down for 2 s of path, 1 frame/s.
@@ -126,19 +116,12 @@ TEST(SeaStateTime, AovChannelsWhitecapAndDepth) {
 TEST(SeaStateTime, UnsupportedCalendarExitsTwoNamingFileAndAxis) {
   const fs::path dir = og::test::scratchDir("seastate_time");
   const fs::path file = dir / "lunar.nc";
-  {
-    og::test::NcWriter nc(file, NC_NETCDF4);
-    const auto [td, tv] = nc.axis("time", {0.0, 1.0}, "days since 2024-01-01");
-    nc.text(tv, "calendar", "lunar");
-    const auto [latD, latV] = nc.axis("lat", og::test::steps(-90.0, 30.0, 7), "degrees_north");
-    const auto [lonD, lonV] = nc.axis("lon", og::test::steps(0.0, 30.0, 12), "degrees_east");
-    for (const char* n : {"uwnd", "vwnd"}) {
-      const int v = nc.var(n, NC_FLOAT, {td, latD, lonD});
-      nc.text(v, "units", "m/s");
-      nc.values(v, std::vector<double>(2 * 7 * 12, 5.0));
-    }
-    nc.close();
-  }
+  og::test::TimedWind wind;
+  wind.times = {0.0, 1.0};
+  wind.units = "days since 2024-01-01";
+  wind.calendar = "lunar";
+  wind.eastMs = wind.northMs = {5.0, 5.0};
+  og::test::writeTimedWind(file, wind);
   const auto r = run("render --width 16 --height 16 --wind-layer " + file.string() + " -o " +
                      (dir / "x.png").string());
   EXPECT_EQ(r.exitCode, 2);

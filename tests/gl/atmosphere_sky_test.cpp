@@ -9,6 +9,7 @@
 #include "geo/Sun.hpp"
 #include "gl/Context.hpp"
 #include "render/GlobeRenderer.hpp"
+#include "support/GlFixtures.hpp"
 
 using namespace og;
 
@@ -34,33 +35,14 @@ struct Shot {
   }
 };
 
-class AtmosphereSky : public ::testing::Test {
+class AtmosphereSky : public test::GlobeSuite {
  protected:
-  static void SetUpTestSuite() {
-    context_ = gl::createHeadlessContext();
-    renderer_ = std::make_unique<render::GlobeRenderer>(data::defaultElevation());
-  }
-  static void TearDownTestSuite() {
-    renderer_.reset();
-    context_.reset();
-  }
   static Shot shoot(double lat, double lon, double h, double heading, double pitch, double fov,
                     double sunElevation, double sunAzimuth, int w = 64, int ht = 48) {
-    render::FrameInput f;
-    f.camera.position = {lat, lon, h};
-    f.camera.headingDeg = heading;
-    f.camera.pitchDeg = pitch;
-    f.camera.verticalFovDeg = fov;
-    f.width = w;
-    f.height = ht;
-    f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, sunElevation, sunAzimuth);
-    renderer_->render(f);
+    renderer_->render(test::frameOf({lat, lon, h, heading, pitch, fov, w, ht}, sunElevation, sunAzimuth));
     return {renderer_->radiance()};
   }
-  static inline std::unique_ptr<gl::Context> context_;
-  static inline std::unique_ptr<render::GlobeRenderer> renderer_;
 };
-
 }  // namespace
 
 TEST_F(AtmosphereSky, HighSunSkyFromSeaLevelIsBlue) {

@@ -18,6 +18,7 @@
 #include "gl/Context.hpp"
 #include "io/Image.hpp"
 #include "render/GlobeRenderer.hpp"
+#include "support/GlFixtures.hpp"
 #include "support/GridFixtures.hpp"
 #include "support/ImageCompare.hpp"
 
@@ -35,29 +36,14 @@ data::LatLonGrid flatFloor(double depthM) {
 }
 
 render::FrameInput downView(double heightM, double timeS) {
-  render::FrameInput f;
-  f.camera.position = {kLat, kLon, heightM};
-  f.camera.pitchDeg = -90.0;
-  f.camera.headingDeg = 0.0;
-  f.camera.verticalFovDeg = 30.0;
-  f.width = kW;
-  f.height = kH;
+  // Sun 55° up in the south: its glint lies ~35° off the vertical, outside the 30° view.
+  render::FrameInput f = test::frameOf({kLat, kLon, heightM, 0.0, -90.0, 30.0, kW, kH}, 55.0, 180.0);
   f.wind.speedMs = 5.0;
   f.wind.towardsDeg = 45.0;
   f.simulationTimeS = timeS;
-  // Sun 55° up in the south: its glint lies ~35° off the vertical, outside the 30° view.
-  f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 55.0, 180.0);
   return f;
 }
-
-std::vector<double> luminance(const io::ImageRgbaF& img) {
-  std::vector<double> y(static_cast<std::size_t>(img.width * img.height));
-  for (std::size_t i = 0; i < y.size(); ++i) {
-    const float* p = &img.pixels[i * 4];
-    y[i] = 0.2126 * double{p[0]} + 0.7152 * double{p[1]} + 0.0722 * double{p[2]};
-  }
-  return y;
-}
+using test::luminance;
 
 // Fine detail: the mean |pixel - its 5x5 box mean| over the image's upper half (north, away
 // from the Sun's glitter, which is the same over any depth).
@@ -82,9 +68,7 @@ double meanAbsDiff(const std::vector<double>& a, const std::vector<double>& b) {
   return sum / double(a.size() / 2);
 }
 
-void save(const render::GlobeRenderer& r, const std::string& name) {
-  io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".png"), r.display());
-}
+void save(const render::GlobeRenderer& r, const std::string& name) { test::savePng(r, name); }
 
 }  // namespace
 

@@ -8,20 +8,12 @@
 #include "gl/Objects.hpp"
 #include "gl/Readback.hpp"
 #include "gl/Shader.hpp"
+#include "support/GlFixtures.hpp"
 
 using namespace og;
 
 namespace {
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const char* value) : name_(name) { setenv(name, value, 1); }
-  ~ScopedEnv() { unsetenv(name_); }
-  ScopedEnv(const ScopedEnv&) = delete;
-  ScopedEnv& operator=(const ScopedEnv&) = delete;
-
- private:
-  const char* name_;
-};
+using test::ScopedEnv;
 }  // namespace
 
 TEST(GlContext, EglAndOsMesaGiveCoreContexts) {
@@ -53,11 +45,13 @@ TEST(GlContext, ParseBackend) {
 
 TEST(GlShader, IncludesExpandWithLineDirectives) {
   const gl::ExpandedSource src = gl::expandShader("render/globe.frag", {"TEST_DEFINE 1"});
-  EXPECT_EQ(src.text.rfind("#version 450 core\n#define TEST_DEFINE 1\n", 0), 0u);
+  // #version first, then the contract's defines (gl/ShaderContract), then the caller's.
+  EXPECT_EQ(src.text.rfind("#version 450 core\n#define OG_PI ", 0), 0u);
+  EXPECT_NE(src.text.find("\n#define TEST_DEFINE 1\n#line 2 0\n"), std::string::npos);
   EXPECT_EQ(src.files.at(0), "shaders/render/globe.frag");
   // common/constants.glsl is included by globe.frag and by geo/ellipsoid.glsl: once only.
   std::size_t count = 0;
-  for (std::size_t p = 0; (p = src.text.find("const float WGS84_A", p)) != std::string::npos; ++p)
+  for (std::size_t p = 0; (p = src.text.find("const Number WGS84_A", p)) != std::string::npos; ++p)
     ++count;
   EXPECT_EQ(count, 1u);
   EXPECT_EQ(src.text.find("#include"), std::string::npos);

@@ -4,9 +4,6 @@
 // show on the night side only (the day side is unchanged by them). Images are written to
 // OG_TEST_OUT_DIR/land_imagery for looking at.
 #include <gtest/gtest.h>
-#include <cpl_conv.h>
-#include <gdal.h>
-#include <ogr_srs_api.h>
 
 #include <array>
 #include <cmath>
@@ -20,6 +17,7 @@
 #include "gl/Context.hpp"
 #include "io/Image.hpp"
 #include "render/GlobeRenderer.hpp"
+#include "support/GeoTiffWriter.hpp"
 
 using namespace og;
 namespace fs = std::filesystem;
@@ -67,30 +65,8 @@ double meanLuminance(const io::ImageRgbaF& img) {
 /// A solid-colour GeoTIFF over lon0..lon1, lat0..lat1, in EPSG:4326 or 3857.
 fs::path writeSolidGeoTiff(const std::string& name, int epsg, std::array<std::uint8_t, 3> rgb,
                            double lon0, double lon1, double lat0, double lat1) {
-  GDALAllRegister();
-  const fs::path file = outDir() / name;
-  const int n = 64;
-  GDALDatasetH ds = GDALCreate(GDALGetDriverByName("GTiff"), file.c_str(), n, n, 3, GDT_Byte, nullptr);
-  OGRSpatialReferenceH srs = OSRNewSpatialReference(nullptr);
-  OSRImportFromEPSG(srs, epsg);
-  char* wkt = nullptr;
-  OSRExportToWkt(srs, &wkt);
-  GDALSetProjection(ds, wkt);
-  CPLFree(wkt);
-  OSRDestroySpatialReference(srs);
-  const double k = 6378137.0 * 3.14159265358979323846 / 180.0;
-  auto y = [&](double lat) {
-    return epsg == 4326 ? lat : 6378137.0 * std::log(std::tan(3.14159265358979323846 / 4 + lat * 3.14159265358979323846 / 360));
-  };
-  const double x0 = epsg == 4326 ? lon0 : lon0 * k, x1 = epsg == 4326 ? lon1 : lon1 * k;
-  std::array<double, 6> gt{x0, (x1 - x0) / n, 0, y(lat1), 0, -(y(lat1) - y(lat0)) / n};
-  GDALSetGeoTransform(ds, gt.data());
-  for (int b = 0; b < 3; ++b) {
-    std::vector<std::uint8_t> px(static_cast<std::size_t>(n * n), rgb[static_cast<std::size_t>(b)]);
-    EXPECT_EQ(GDALRasterIO(GDALGetRasterBand(ds, b + 1), GF_Write, 0, 0, n, n, px.data(), n, n, GDT_Byte, 0, 0), CE_None);
-  }
-  GDALClose(ds);
-  return file;
+  return test::writeGeoRaster(outDir() / name, epsg, 64, 64, {lon0, lon1, lat0, lat1},
+                              [rgb](double, double) { return rgb; });
 }
 
 }  // namespace

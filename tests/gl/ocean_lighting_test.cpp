@@ -14,32 +14,17 @@
 #include "geo/Sun.hpp"
 #include "gl/Context.hpp"
 #include "render/GlobeRenderer.hpp"
+#include "support/GlFixtures.hpp"
 
 using namespace og;
 
 namespace {
 
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const char* value) : name_(name) { setenv(name, value, 1); }
-  ~ScopedEnv() { unsetenv(name_); }
-  ScopedEnv(const ScopedEnv&) = delete;
-  ScopedEnv& operator=(const ScopedEnv&) = delete;
+using test::luminance;
+using test::ScopedEnv;
 
- private:
-  const char* name_;
-};
-
-class OceanLighting : public ::testing::Test {
+class OceanLighting : public test::GlobeSuite {
  protected:
-  static void SetUpTestSuite() {
-    context_ = gl::createHeadlessContext();
-    renderer_ = std::make_unique<render::GlobeRenderer>(data::defaultElevation());
-  }
-  static void TearDownTestSuite() {
-    renderer_.reset();
-    context_.reset();
-  }
   // Linear radiance of a small view over the open Pacific (0°N 140°W), one sample per pixel.
   static io::ImageRgbaF shoot(double heightM, double heading, double pitch, double fov,
                               double sunElevation, double sunAzimuth, double windMs, int w, int h) {
@@ -47,24 +32,13 @@ class OceanLighting : public ::testing::Test {
   }
   static io::ImageRgbaF shootWith(render::GlobeRenderer& renderer, double heightM, double heading, double pitch, double fov,
                               double sunElevation, double sunAzimuth, double windMs, int w, int h) {
-    render::FrameInput f;
-    f.camera.position = {0.0, -140.0, heightM};
-    f.camera.headingDeg = heading;
-    f.camera.pitchDeg = pitch;
-    f.camera.verticalFovDeg = fov;
-    f.width = w;
-    f.height = h;
+    render::FrameInput f = test::frameOf({0.0, -140.0, heightM, heading, pitch, fov, w, h}, sunElevation, sunAzimuth);
     f.samples = 1;
     f.simulationTimeS = 10.0;
     f.wind.speedMs = windMs;
     f.wind.towardsDeg = 60.0;
-    f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, sunElevation, sunAzimuth);
     renderer.render(f);
     return renderer.radiance();
-  }
-  static double luminance(const io::ImageRgbaF& im, int x, int y) {
-    const float* p = &im.pixels[4 * static_cast<std::size_t>(y * im.width + x)];
-    return 0.2126 * double(p[0]) + 0.7152 * double(p[1]) + 0.0722 * double(p[2]);
   }
   static double meanRows(const io::ImageRgbaF& im, int y0, int y1) {
     double sum = 0.0;
@@ -72,8 +46,6 @@ class OceanLighting : public ::testing::Test {
       for (int x = 0; x < im.width; ++x) sum += luminance(im, x, y);
     return sum / double((y1 - y0) * im.width);
   }
-  static inline std::unique_ptr<gl::Context> context_;
-  static inline std::unique_ptr<render::GlobeRenderer> renderer_;
 };
 
 }  // namespace

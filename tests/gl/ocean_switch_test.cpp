@@ -6,22 +6,16 @@
 #include "geo/Sun.hpp"
 #include "gl/Context.hpp"
 #include "render/GlobeRenderer.hpp"
+#include "support/GlFixtures.hpp"
 #include "support/ImageCompare.hpp"
 
 using namespace og;
 
 namespace {
 render::FrameInput view(double heightM) {
-  render::FrameInput f;
-  f.camera.position = {20.0, -40.0, heightM};
-  f.camera.headingDeg = 90;
-  f.camera.pitchDeg = -30;
-  f.camera.verticalFovDeg = 60;
-  f.width = 192;
-  f.height = 108;
+  render::FrameInput f = test::frameOf({20.0, -40.0, heightM, 90.0, -30.0, 60.0, 192, 108}, 30.0, 100.0);
   f.wind.speedMs = 9.0;
   f.wind.towardsDeg = 60.0;
-  f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 30, 100);
   return f;
 }
 }  // namespace

@@ -21,20 +21,11 @@ namespace {
 /// A global layer blowing east at 3 m/s at 00:00 UTC and 20 m/s at 06:00 UTC.
 fs::path writeTwoSteps() {
   const fs::path file = test::fixtureDir("ocean_windtime") / "two.nc";
-  test::NcWriter nc(file, NC_NETCDF4);
-  const auto [td, tv] = nc.axis("time", {0.0, 6.0}, "hours since 2024-06-20 00:00:00");
-  const auto lat = test::steps(-90.0, 30.0, 7);
-  const auto lon = test::steps(0.0, 30.0, 12);
-  const auto [latD, latV] = nc.axis("lat", lat, "degrees_north");
-  const auto [lonD, lonV] = nc.axis("lon", lon, "degrees_east");
-  for (const char* n : {"uwnd", "vwnd"}) {
-    const int v = nc.var(n, NC_FLOAT, {td, latD, lonD});
-    nc.text(v, "units", "m/s");
-    std::vector<double> values;
-    for (double speed : {3.0, 20.0}) values.insert(values.end(), lat.size() * lon.size(), n[0] == 'u' ? speed : 0.0);
-    nc.values(v, values);
-  }
-  nc.close();
+  test::TimedWind wind;
+  wind.times = {0.0, 6.0};
+  wind.units = "hours since 2024-06-20 00:00:00";
+  wind.eastMs = {3.0, 20.0};
+  test::writeTimedWind(file, wind);
   return file;
 }
 

@@ -99,6 +99,43 @@ inline double fixtureV(double latDeg, double lonDeg, int t) {
   return -1.0 + lonDeg / 100.0 - latDeg / 60.0 - 0.5 * t;
 }
 
+/// A CF wind layer with a time axis, uniform in space: the test's own time coordinate.
+struct TimedWind {
+  std::vector<double> times;           ///< the time coordinate's values
+  std::string units;                   ///< e.g. "hours since 2024-06-20 00:00:00"
+  std::string calendar;                ///< the `calendar` attribute; none when empty
+  std::string flagAttribute;           ///< an attribute set on the axis (e.g. "climatology")
+  std::vector<double> eastMs;          ///< u at each time, m/s
+  std::vector<double> northMs;         ///< v at each time, m/s (0 when empty)
+  double gridStepDeg = 30.0;           ///< global grid: latitude -90..90, longitude 0..360-step
+};
+
+/// Writes `wind` as NetCDF-4 (time, lat, lon variables uwnd and vwnd) to `file`.
+inline std::filesystem::path writeTimedWind(const std::filesystem::path& file, const TimedWind& wind) {
+  NcWriter nc(file, NC_NETCDF4);
+  const auto [td, tv] = nc.axis("time", wind.times, wind.units);
+  if (!wind.calendar.empty()) nc.text(tv, "calendar", wind.calendar);
+  if (!wind.flagAttribute.empty()) nc.text(tv, wind.flagAttribute, "climatology_bounds");
+  const int rows = static_cast<int>(std::lround(180.0 / wind.gridStepDeg)) + 1;
+  const int columns = static_cast<int>(std::lround(360.0 / wind.gridStepDeg));
+  const auto lat = steps(-90.0, wind.gridStepDeg, rows);
+  const auto lon = steps(0.0, wind.gridStepDeg, columns);
+  const auto [latD, latV] = nc.axis("lat", lat, "degrees_north");
+  const auto [lonD, lonV] = nc.axis("lon", lon, "degrees_east");
+  for (const char* n : {"uwnd", "vwnd"}) {
+    const int v = nc.var(n, NC_FLOAT, {td, latD, lonD});
+    nc.text(v, "units", "m/s");
+    std::vector<double> values;
+    for (std::size_t t = 0; t < wind.times.size(); ++t) {
+      const double value = n[0] == 'u' ? wind.eastMs.at(t) : wind.northMs.empty() ? 0.0 : wind.northMs.at(t);
+      values.insert(values.end(), lat.size() * lon.size(), value);
+    }
+    nc.values(v, values);
+  }
+  nc.close();
+  return file;
+}
+
 /// ERA5-style: u10/v10 packed shorts (scale 0.001, offset 1), _FillValue -32767 at (lat 0,
 /// lon 90), latitude 90..-90 descending by 30, longitude 0..330 by 30 (no seam), valid_time
 /// 2024-06-20T00/06/12Z as "seconds since 1970-01-01", proleptic_gregorian.

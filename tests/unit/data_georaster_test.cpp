@@ -20,6 +20,7 @@
 #include "data/Imagery.hpp"
 #include "support/DataFixtures.hpp"
 #include "support/ExpectError.hpp"
+#include "support/GeoTiffWriter.hpp"
 
 namespace fs = std::filesystem;
 using og::data::GeoImage;
@@ -29,8 +30,6 @@ namespace {
 
 fs::path outDir() { return og::test::fixtureDir("data_georaster"); }
 
-constexpr double kPi = 3.14159265358979323846;
-
 /// The quadrant colours of the fixtures, split at (45°N, 15°E): NW red, NE green, SW blue,
 /// SE white.
 std::array<std::uint8_t, 3> quadrant(double latDeg, double lonDeg) {
@@ -38,41 +37,9 @@ std::array<std::uint8_t, 3> quadrant(double latDeg, double lonDeg) {
   return lonDeg < 15.0 ? std::array<std::uint8_t, 3>{0, 0, 255} : std::array<std::uint8_t, 3>{255, 255, 255};
 }
 
-double mercatorY(double latDeg) { return 6378137.0 * std::log(std::tan(kPi / 4 + latDeg * kPi / 360)); }
-double mercatorLat(double y) { return (2 * std::atan(std::exp(y / 6378137.0)) - kPi / 2) * 180 / kPi; }
-
 /// A 3-band GeoTIFF over 10..20°E, 40..50°N with the quadrant colours, in EPSG:4326 or 3857.
 fs::path writeQuadrants(const std::string& name, int epsg, const std::string& driver = "GTiff") {
-  GDALAllRegister();
-  const fs::path file = outDir() / name;
-  const int w = 200, h = 200;
-  GDALDatasetH ds = GDALCreate(GDALGetDriverByName(driver.c_str()), file.c_str(), w, h, 3, GDT_Byte, nullptr);
-  EXPECT_NE(ds, nullptr);
-  OGRSpatialReferenceH srs = OSRNewSpatialReference(nullptr);
-  OSRImportFromEPSG(srs, epsg);
-  char* wkt = nullptr;
-  OSRExportToWkt(srs, &wkt);
-  GDALSetProjection(ds, wkt);
-  CPLFree(wkt);
-  OSRDestroySpatialReference(srs);
-  const double x0 = epsg == 4326 ? 10.0 : 10.0 * kPi / 180 * 6378137.0;
-  const double x1 = epsg == 4326 ? 20.0 : 20.0 * kPi / 180 * 6378137.0;
-  const double y0 = epsg == 4326 ? 40.0 : mercatorY(40.0), y1 = epsg == 4326 ? 50.0 : mercatorY(50.0);
-  std::array<double, 6> gt{x0, (x1 - x0) / w, 0, y1, 0, -(y1 - y0) / h};
-  GDALSetGeoTransform(ds, gt.data());
-  for (int b = 0; b < 3; ++b) {
-    std::vector<std::uint8_t> px(static_cast<std::size_t>(w * h));
-    for (int r = 0; r < h; ++r)
-      for (int c = 0; c < w; ++c) {
-        const double y = y1 + (r + 0.5) * gt[5];
-        const double lat = epsg == 4326 ? y : mercatorLat(y);
-        const double lon = 10.0 + (c + 0.5) * 10.0 / w;
-        px[static_cast<std::size_t>(r * w + c)] = quadrant(lat, lon)[static_cast<std::size_t>(b)];
-      }
-    EXPECT_EQ(GDALRasterIO(GDALGetRasterBand(ds, b + 1), GF_Write, 0, 0, w, h, px.data(), w, h, GDT_Byte, 0, 0), CE_None);
-  }
-  GDALClose(ds);
-  return file;
+  return og::test::writeGeoRaster(outDir() / name, epsg, 200, 200, {10.0, 20.0, 40.0, 50.0}, quadrant, driver);
 }
 
 /// The colour of `img` at a latitude/longitude (nearest pixel).

@@ -21,8 +21,6 @@ using og::data::WindVector;
 using og::data::detail::AxisTimes;
 using og::data::detail::decodeTimeAxis;
 using og::test::expectInputError;
-using og::test::NcWriter;
-using og::test::steps;
 
 namespace {
 
@@ -39,24 +37,13 @@ std::string isoOf(const AxisTimes& a, std::size_t i) { return a.times.at(i).toIs
 fs::path writeUniformWind(const fs::path& file, const std::vector<double>& times, const std::string& units,
                           const std::vector<double>& speeds, const std::string& calendar = "",
                           const std::string& timeAttribute = "") {
-  NcWriter nc(file, NC_NETCDF4);
-  const auto [td, tv] = nc.axis("time", times, units);
-  if (!calendar.empty()) nc.text(tv, "calendar", calendar);
-  if (!timeAttribute.empty()) nc.text(tv, timeAttribute, "climatology_bounds");
-  const auto lat = steps(-90.0, 30.0, 7);
-  const auto lon = steps(0.0, 30.0, 12);
-  const auto [latD, latV] = nc.axis("lat", lat, "degrees_north");
-  const auto [lonD, lonV] = nc.axis("lon", lon, "degrees_east");
-  for (const char* n : {"uwnd", "vwnd"}) {
-    const int v = nc.var(n, NC_FLOAT, {td, latD, lonD});
-    nc.text(v, "units", "m/s");
-    std::vector<double> values;
-    for (std::size_t t = 0; t < times.size(); ++t)
-      for (std::size_t i = 0; i < lat.size() * lon.size(); ++i) values.push_back(n[0] == 'u' ? speeds[t] : 0.0);
-    nc.values(v, values);
-  }
-  nc.close();
-  return file;
+  og::test::TimedWind wind;
+  wind.times = times;
+  wind.units = units;
+  wind.calendar = calendar;
+  wind.flagAttribute = timeAttribute;
+  wind.eastMs = speeds;
+  return og::test::writeTimedWind(file, wind);
 }
 
 }  // namespace

@@ -1,12 +1,15 @@
 #include "app/viewer/TextOverlay.hpp"
 
 #include "app/viewer/BitmapFont.hpp"
+#include "gl/ShaderContract.hpp"
 
 namespace og::app::viewer {
 
 TextOverlay::TextOverlay()
     : program_({{GL_VERTEX_SHADER, "viewer/text.vert"}, {GL_FRAGMENT_SHADER, "viewer/text.frag"}}),
-      vao_(gl::createVertexArray()) {}
+      vao_(gl::createVertexArray()) {
+  program_.requireUniforms({"uRect", "uText"});  // what draw() sets
+}
 
 void TextOverlay::draw(const std::vector<std::string>& lines, int fbWidth, int fbHeight, int scale,
                        int marginPx) {
@@ -46,7 +49,7 @@ void TextOverlay::draw(const std::vector<std::string>& lines, int fbWidth, int f
   program_.use();
   program_.set("uRect", glm::vec4(x0, y0, x1, y1));
   program_.set("uText", 0);
-  glBindTextureUnit(0, texture_.id());
+  glBindTextureUnit(gl::kUnitOverlayText, texture_.id());
   glBindVertexArray(vao_.id());
   glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
   glBindVertexArray(0);

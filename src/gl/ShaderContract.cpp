@@ -1,0 +1,44 @@
+#include "gl/ShaderContract.hpp"
+
+#include <cstdio>
+#include <numbers>
+
+#include "geo/Wgs84.hpp"
+
+namespace og::gl {
+namespace {
+std::string define(const char* name, double value) {
+  char buffer[96];
+  std::snprintf(buffer, sizeof buffer, "%s %.17g", name, value);
+  return buffer;
+}
+std::string define(const char* name, unsigned value) { return std::string(name) + " " + std::to_string(value); }
+}  // namespace
+
+std::vector<std::string> contractDefines() {
+  return {define("OG_PI", std::numbers::pi),
+          define("OG_WGS84_A", geo::kWgs84SemiMajorM),
+          define("OG_WGS84_B", geo::kWgs84SemiMinorM),
+          define("OG_UNIT_ELEVATION", kUnitElevation),
+          define("OG_UNIT_WIND", kUnitWind),
+          define("OG_UNIT_ATM_TRANSMITTANCE", kUnitAtmTransmittance),
+          define("OG_UNIT_ATM_SCATTERING", kUnitAtmScattering),
+          define("OG_UNIT_ATM_SINGLE_MIE", kUnitAtmSingleMie),
+          define("OG_UNIT_ATM_IRRADIANCE", kUnitAtmIrradiance),
+          define("OG_UNIT_SKY_MAP", kUnitSkyMap),
+          define("OG_UNIT_SKY_IRRADIANCE", kUnitSkyIrradiance),
+          define("OG_UNIT_BUMP_MAP", kUnitBumpMap),
+          define("OG_UNIT_FRESNEL_RAMP", kUnitFresnelRamp),
+          define("OG_UNIT_PATTERN_TABLE", kUnitPatternTable),
+          define("OG_UNIT_SHADOW_MAP", kUnitShadowMap),
+          define("OG_UNIT_PATTERN_DISPLACEMENT", kUnitPatternDisplacement),
+          define("OG_UNIT_PATTERN_SLOPES", kUnitPatternSlopes),
+          define("OG_UNIT_IMAGERY_DAY", kUnitImageryDay),
+          define("OG_UNIT_IMAGERY_NIGHT", kUnitImageryNight),
+          define("OG_UNIT_IMAGERY_LAYERS", kUnitImageryLayers),
+          define("OG_UNIT_LAND_MASK", kUnitLandMask),
+          define("OG_UNIT_TONE_RADIANCE", kUnitToneRadiance),
+          define("OG_UNIT_OVERLAY_TEXT", kUnitOverlayText)};
+}
+
+}  // namespace og::gl

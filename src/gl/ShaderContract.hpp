@@ -1,0 +1,40 @@
+#pragma once
+// The contract between the C++ and the GLSL sides, named once here: shared constants (π, WGS84)
+// and the texture units of the samplers the frame's passes share. gl::expandShader injects them
+// into every shader as #defines (OG_PI, OG_WGS84_A, OG_WGS84_B, OG_UNIT_WIND, ...), so GLSL
+// writes `layout(binding = OG_UNIT_WIND)` and C++ binds to gl::kUnitWind: a number written on one
+// side only. (Image units of the compute passes are local to one shader and stay there.)
+#include <string>
+#include <vector>
+
+namespace og::gl {
+
+/// Texture units of the frame's samplers (GLSL: OG_UNIT_<NAME>).
+enum TextureUnit : unsigned {
+  kUnitElevation = 0,            ///< render/elevation.glsl uElevation
+  kUnitWind = 1,                 ///< ocean/wind.glsl uWind (render/WindTextures)
+  kUnitAtmTransmittance = 2,     ///< atmosphere/model.glsl
+  kUnitAtmScattering = 3,
+  kUnitAtmSingleMie = 4,
+  kUnitAtmIrradiance = 5,
+  kUnitSkyMap = 6,               ///< atmosphere/skymap.glsl
+  kUnitSkyIrradiance = 7,
+  kUnitBumpMap = 8,              ///< ocean/classic.frag
+  kUnitFresnelRamp = 9,
+  kUnitPatternTable = 10,        ///< ocean/patterns.glsl
+  kUnitShadowMap = 11,           ///< terrain/shadow.glsl
+  kUnitPatternDisplacement = 12,
+  kUnitPatternSlopes = 13,
+  kUnitImageryDay = 15,          ///< terrain/imagery.glsl (render/ImageryTextures)
+  kUnitImageryNight = 16,
+  kUnitImageryLayers = 17,
+  kUnitLandMask = 18,            ///< terrain/landmask.glsl (render/LandMaskTexture)
+  // Passes of their own, which bind nothing else, reuse unit 0:
+  kUnitToneRadiance = 0,         ///< render/tonemap.frag uRadiance (the HDR target)
+  kUnitOverlayText = 0,          ///< viewer/text.frag uText (the viewer's text overlay)
+};
+
+/// The contract as "NAME value" #define bodies, in full double precision.
+std::vector<std::string> contractDefines();
+
+}  // namespace og::gl

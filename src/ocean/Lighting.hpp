@@ -1,0 +1,48 @@
+#pragma once
+// CPU twin of shaders/ocean/lighting.glsl (Algorithm 5.1 of Bruneton, Neyret & Holzschuch 2010:
+// the Sun's glint, the filtered sky reflection, the light refracted from below, whitecaps): the
+// same file compiled as C++ in double precision (through core/GlslShim.hpp), lit by the file's
+// analytic sky (OCEAN_SIMPLE_SKY) since the precomputed sky maps live on the GPU. Over the open
+// sea (no sea floor: the shallow-water hook returns the deep colour).
+#include <glm/glm.hpp>
+
+namespace og::ocean::lighting {
+
+/// The uniforms lighting.glsl reads, as the renderer's validation variants set them. Radiance in
+/// units of the Sun's irradiance at the top of the atmosphere (per steradian).
+struct Settings {
+  glm::dvec3 skyZenithRadiance{0.0};   ///< analytic sky at the zenith (uSkyZenith), >= 0
+  glm::dvec3 skyHorizonRadiance{0.0};  ///< analytic sky at the horizon (uSkyHorizon), >= 0
+  glm::dvec3 seaColorPerSr{0.0};       ///< upwelling radiance per unit irradiance (uSeaColor), 1/sr
+  /// Weights of the Sun, sky, refracted and foam terms (uLightingTerms), each 0 or 1.
+  glm::dvec4 terms{1.0};
+  double sunVisibility = 1.0;  ///< share of the Sun's disc seen (gSeaSunVisibility), [0, 1]
+};
+
+/// One sea point. Directions unit, in one frame (ECEF in the renderer).
+struct SeaSample {
+  glm::dvec3 toEye{0.0, 0.0, 1.0};
+  glm::dvec3 normal{0.0, 0.0, 1.0};  ///< mean (resolved) normal
+  glm::dvec3 wind{0.0, 1.0, 0.0};    ///< any vector with a horizontal component along the wind
+  /// Unresolved slope covariance (xx, yy, xy) along/across the wind, dimensionless, xx, yy > 0.
+  glm::dvec3 slopeCovariance{0.01, 0.01, 0.0};
+  glm::dvec3 up{0.0, 0.0, 1.0};     ///< the ellipsoid normal
+  glm::dvec3 toSun{0.0, 0.0, 1.0};
+  double foamCoverage = 0.0;         ///< whitecap coverage W, [0, 1]
+};
+
+/// Radiance leaving the sea towards the eye (lighting.glsl seaRadianceWithFoam).
+glm::dvec3 seaRadiance(const Settings& settings, const SeaSample& sample);
+/// The reference of the validation (seaRadianceMirror): a mirror facet, the Sun's disc over a
+/// patch of slope covariance patchCovariance (sample.slopeCovariance is not used).
+glm::dvec3 seaRadianceMirror(const Settings& settings, const SeaSample& sample,
+                             const glm::dvec3& patchCovariance);
+/// Sun and sky irradiance at sea level of the analytic sky for a Sun zenith angle, rad, [0, pi].
+glm::dvec3 sunIrradiance(double sunZenithRad);
+glm::dvec3 skyIrradiance(double sunZenithRad);
+/// The Sun's angular radius the glint convolves, rad (SUN_ANGULAR_RADIUS_RAD).
+double sunAngularRadiusRad();
+/// Whitecap reflectance (FOAM_REFLECTANCE, Koepke 1984), [0, 1].
+double foamReflectance();
+
+}  // namespace og::ocean::lighting
