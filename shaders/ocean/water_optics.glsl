@@ -4,8 +4,8 @@
 // tests check it against the formulas; the shaders (ocean/water_volume.glsl, terrain/shallow.glsl)
 // use the same code in float.
 //
-// Units: attenuation coefficients K per RGB channel in 1/m (diffuse attenuation, Jerlov water
-// types: ocean::jerlovWater); paths and depths in m; irradiances in the renderer's units (the
+// Units: attenuation coefficients K per RGB channel in 1/m (diffuse attenuation at 600, 550 and
+// 450 nm, Jerlov 1976 Table XXVII's water types: ocean::jerlovWater); paths and depths in m; irradiances in the renderer's units (the
 // Sun's irradiance at the top of the atmosphere); reflectances in 1/sr (radiance per unit
 // irradiance), the unit of uSeaColor.
 

@@ -5,6 +5,8 @@
 // waves (caustics) and shadowed by the terrain along its refracted path, plus the sky; the
 // water column's absorption and in-scattering from ocean/water_optics.glsl. The result goes to
 // gWater (terrain/shallow.glsl), which the lighting's refracted term reads (lighting.glsl).
+// The water's K_d per RGB channel is Jerlov's (1976, Table XXVII) at 600, 550 and 450 nm
+// (uWaterAttenuation, terrain/shallow.glsl; the C++ twin's ocean::jerlovWater).
 //
 // Needs (included first): ocean/patterns.glsl, ocean/brdf.glsl, ocean/lighting.glsl (which
 // brings terrain/shallow.glsl and ocean/water_optics.glsl), render/elevation.glsl,
@@ -59,24 +61,29 @@ vec4 floorDetail(vec3 dUp, float footprintM) {
   return vec4(FLOOR_ALBEDO_SPREAD * value, grad);
 }
 
-// Mean slope (frame axes) of the sea surface at xy over a footprint of `footprintM`, from the
-// two finest patterns only (the ones that focus light at these depths; ocean/patterns.glsl's
-// oceanSurface without the variances).
-vec2 causticSlope(vec2 xy, float footprintM, vec2 wind) {
+// The caustics' curvature map (render/WaterVolume's CausticCurvature, ocean/caustic_curvature.comp):
+// tr H of the CAUSTIC_PATTERNS finest patterns per texel (1/texel), mip-mapped.
+layout(binding = 19) uniform sampler2DArray uCausticCurvature;
+
+// Trace of the height's Hessian (1/m) of the sea surface at xy (frame axes) filtered over a
+// footprint of `footprintM`, from the finest patterns only (the ones that focus light at these
+// depths; longer waves focus far deeper): one lookup per pattern and wind bin.
+float causticCurvature(vec2 xy, float footprintM, vec2 wind) {
   vec2 p = fieldPosition(xy);
   WindBins wb = windBins(fieldWindAngle(wind.y));
-  vec2 mean = vec2(0.0);
-  for (int i = max(PATTERN_COUNT - 2, 0); i < PATTERN_COUNT; ++i) {
+  float traceH = 0.0;
+  for (int j = 0; j < CAUSTIC_PATTERNS; ++j) {
+    int i = PATTERN_COUNT - CAUSTIC_PATTERNS + j;
     float lod = patternLod(footprintM, i);
     if (lod >= uPatternTopLod) break;
-    float s = patternTable(i, wind.x).y;
+    float perM = patternTable(i, wind.x).y * uPatternFftSize / uPatternSizeM[i];
     for (int k = 0; k < 2; ++k) {
-      if (wb.weight[k] < 1e-3) continue;
-      vec2 m = textureLod(uPatternSlopes, patternCoord(p, wb.bin[k], i), lod).xy * s;
-      mean += wb.weight[k] * rotate2(m, float(wb.bin[k]) * 0.25 * PI);
+      vec3 c = patternCoord(p, wb.bin[k], i);
+      c.z = float((wb.bin[k] & 1) * CAUSTIC_PATTERNS + j);
+      traceH += wb.weight[k] * perM * textureLod(uCausticCurvature, c, lod).x;
     }
   }
-  return frameVector(mean * uPatternAmplitude);
+  return traceH * uPatternAmplitude;
 }
 
 // Caustics: the Sun's irradiance on the floor relative to a flat sea. A ray entering where the
@@ -85,18 +92,30 @@ vec2 causticSlope(vec2 xy, float footprintM, vec2 wind) {
 // surface's height Hessian) and the irradiance 1 / det J ~ 1 - c, c = z (1 - 1/n) tr H
 // (DESIGN.md "Caustics"): crests focus, troughs spread. c is compressed to c / (1 + |c|), an
 // odd function, so the gain keeps a mean of 1 over the floor (energy is conserved) and stays in
-// (0, 2). H comes from finite differences of the slopes filtered over the blur of the Sun's
-// disc at that depth (0.53° in air, /n in water) or the pixel's footprint, whichever is
-// larger: caustics sharpen with depth up to the waves' focal depth, blur beyond it, and
-// average out with distance (no aliasing).
+// (0, 2). tr H is filtered over the blur of the Sun's disc at that depth (0.53° in air, /n in
+// water) or twice the pixel's footprint, whichever is larger: caustics sharpen with depth up to
+// the waves' focal depth, blur beyond it, and average out with distance (no aliasing).
 float causticGain(vec2 xy, float pathM, float footprintM, vec2 wind) {
-  float blur = max(footprintM, pathM * (0.0093 / WATER_INDEX));
-  vec2 s0 = causticSlope(xy, blur, wind);
-  vec2 sx = causticSlope(xy + vec2(blur, 0.0), blur, wind);
-  vec2 sy = causticSlope(xy + vec2(0.0, blur), blur, wind);
-  float traceH = (sx.x - s0.x + sy.y - s0.y) / blur;
-  float c = pathM * (1.0 - 1.0 / WATER_INDEX) * traceH;
+  float blur = max(2.0 * footprintM, pathM * (0.0093 / WATER_INDEX));
+  float c = pathM * (1.0 - 1.0 / WATER_INDEX) * causticCurvature(xy, blur, wind);
   return 1.0 - c / (1.0 + abs(c));
+}
+
+// The terrain's shadow on the floor: the Sun seen from the point `rel` where its refracted
+// ray to the floor entered the water (seed 001 §4.3), from the shadow maps (terrain/shadow.glsl)
+// with one 2x2 hardware comparison instead of the surface's four (a 2x2-texel soft edge: the
+// floor is seen through the moving surface, which blurs it more than that).
+float floorSunVisibility(vec3 rel, vec3 n) {
+  float visible = 1.0;
+#ifndef SHADOWS_OFF
+  for (int on = 0; on < uShadowOn; ++on) {
+    int c = length(rel) < uShadowSplitM ? 0 : 1;
+    vec4 s = uShadowMatrix[c] * vec4(rel + n * (1.5 * uShadowTexelM[c]), 1.0);
+    bool inside = all(greaterThanEqual(s.xy, vec2(0.0))) && all(lessThanEqual(s.xy, vec2(1.0))) && s.z > 0.0;
+    visible = inside ? texture(uShadowMap, vec4(s.xy, float(c), s.z)) : 1.0;
+  }
+#endif
+  return visible;
 }
 
 // Height of the layer's floor (m, negative below sea level) along a ray leaving the surface at
@@ -163,7 +182,7 @@ void prepareWaterVolume(vec3 rel, vec3 v, vec3 n, vec3 up, vec2 latLon, vec2 oce
     albedo *= clamp(1.0 + detail.x, 0.3, 1.7);
     vec3 entryRel = floorRel - sunPathM * sunWater;
     vec2 entryXY = oceanXY + (ecefToOcean * (entryRel - rel)).xy;
-    sunFactor = sunVisibility(entryRel, up) * causticGain(entryXY, sunPathM, footprintM, wind) *
+    sunFactor = floorSunVisibility(entryRel, up) * causticGain(entryXY, sunPathM, footprintM, wind) *
                 max(dot(nFloor, -sunWater), 0.0) / max(cosSunWater, 0.05);
   }
   float sunZenith = acos(clamp(muS, -1.0, 1.0));

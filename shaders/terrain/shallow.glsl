@@ -9,7 +9,9 @@
 #include "render/elevation.glsl"
 #include "ocean/water_optics.glsl"
 
-uniform vec3 uWaterAttenuation;  // diffuse attenuation K_d per RGB, 1/m (ocean::jerlovWater)
+// Diffuse attenuation K_d, 1/m, per RGB channel at 600, 550 and 450 nm (Jerlov 1976, Table
+// XXVII; ocean::jerlovWater: type IB by default, 0.245, 0.072, 0.036).
+uniform vec3 uWaterAttenuation;
 uniform vec3 uFloorAlbedo;       // the sea floor's reflectance (ocean::kCoralSandAlbedo)
 // The march's epsilon (seed 001 Eq. 6; ocean::kWaterEpsilon).
 const float WATER_EPSILON = 1.0 / 256.0;

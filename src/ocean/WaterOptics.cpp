@@ -14,17 +14,18 @@ constexpr double PI = std::numbers::pi;
 }  // namespace glsl
 
 WaterType jerlovWater(JerlovWater type) {
-  // K_d, 1/m, at (600, 550, 450) nm.
+  // K_d, 1/m, at (600, 550, 450) nm: Jerlov (1976) Table XXVII as printed (every 25 nm from
+  // 310 to 700 nm; the rows used here are printed values, not interpolated).
   switch (type) {
-    case JerlovWater::OceanI: return {"Jerlov I", {0.24, 0.064, 0.019}};
-    case JerlovWater::OceanIB: return {"Jerlov IB", {0.24, 0.070, 0.032}};
-    case JerlovWater::OceanII: return {"Jerlov II", {0.26, 0.089, 0.050}};
-    case JerlovWater::OceanIII: return {"Jerlov III", {0.28, 0.12, 0.10}};
-    case JerlovWater::Coastal1: return {"Jerlov 1C", {0.30, 0.13, 0.20}};
-    case JerlovWater::Coastal3: return {"Jerlov 3C", {0.36, 0.19, 0.30}};
-    case JerlovWater::Coastal5: return {"Jerlov 5C", {0.44, 0.26, 0.45}};
+    case JerlovWater::OceanI: return {"Jerlov I", {0.235, 0.063, 0.019}};
+    case JerlovWater::OceanIB: return {"Jerlov IB", {0.245, 0.072, 0.036}};
+    case JerlovWater::OceanII: return {"Jerlov II", {0.26, 0.089, 0.068}};
+    case JerlovWater::OceanIII: return {"Jerlov III", {0.295, 0.12, 0.135}};
+    case JerlovWater::Coastal1: return {"Jerlov 1C", {0.30, 0.12, 0.25}};
+    case JerlovWater::Coastal3: return {"Jerlov 3C", {0.33, 0.19, 0.39}};
+    case JerlovWater::Coastal5: return {"Jerlov 5C", {0.40, 0.30, 0.56}};
   }
-  return {"Jerlov IB", {0.24, 0.070, 0.032}};
+  return jerlovWater(kDefaultWater);
 }
 
 glm::dvec3 waterTransmittance(const glm::dvec3& k, double pathM) { return glsl::waterTransmittance(k, pathM); }

@@ -15,13 +15,17 @@ enum class JerlovWater { OceanI, OceanIB, OceanII, OceanIII, Coastal1, Coastal3,
 struct WaterType {
   std::string_view name;
   /// Diffuse attenuation coefficient K_d, 1/m, per RGB channel: Jerlov's K_d at 600, 550 and
-  /// 450 nm (near the dominant wavelengths of the sRGB primaries).
+  /// 450 nm (R, G, B; near the dominant wavelengths of the sRGB primaries).
   glm::dvec3 attenuationPerM{0.0};
 };
 
-/// The K_d of a Jerlov type: Jerlov (1976) Table 27 as tabulated by Solonenko & Mobley 2015
-/// (Appl. Opt. 54, 5392, Table 1, the reference K_d^0 spectra), rounded to two figures; the
-/// clearest type tends to pure water's K_w (Smith & Baker 1981: 0.22, 0.064, 0.017).
+/// The K_d of a Jerlov type at 600, 550 and 450 nm: Jerlov (1976, "Marine Optics", Table
+/// XXVII), the printed rows (checked against the digitised table of the Dstl dataset as shipped
+/// with the `jerlov` Python package, jerlov1976_kd.csv); Solonenko & Mobley (2015, Appl. Opt.
+/// 54, 5392) derive the types' absorption and scattering from such K_d spectra. The channels'
+/// wavelengths are near the dominant wavelengths of the sRGB primaries (~610, 550, 465 nm) and
+/// on Jerlov's 25 nm grid. Austin & Petzold (1986) later revised the oceanic types (IB at 450
+/// nm: 0.0355 instead of 0.036); the printed table is kept.
 WaterType jerlovWater(JerlovWater type);
 
 /// The water the renderer uses: clear tropical ocean (Jerlov IB), the water of coral banks

@@ -74,6 +74,7 @@ std::vector<std::string> skyDefines(const Atmosphere* atmosphere) {
 std::vector<std::string> oceanDefines(const Atmosphere* atmosphere, ValidationMode mode) {
   std::vector<std::string> d = skyDefines(atmosphere);
   for (const std::string& define : OceanPatterns::shaderDefines()) d.push_back(define);
+  for (const std::string& define : waterVolumeDefines()) d.push_back(define);
   d.emplace_back("OCEAN_LIGHTING_TERMS");
   if (mode == ValidationMode::Reference) d.emplace_back("OCEAN_VALIDATION_REFERENCE");
   if (mode == ValidationMode::ConstantBrdf) d.emplace_back("OCEAN_VALIDATION_CONSTANT_BRDF");
@@ -207,6 +208,10 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     glBindTextureUnit(gl::kUnitBumpMap, bumpMap_.id());
     glBindTextureUnit(gl::kUnitFresnelRamp, fresnelRamp_.id());
   } else {
+    if ((features & kFeatureWaterVolume) != 0) {
+      caustics_.update(patterns, timeS);
+      caustics_.bind();
+    }
     patterns.bind();
     patterns.setUniforms(p, &frame, amplitudeScale);
     p.set("uLightingTerms", lightingTerms_);

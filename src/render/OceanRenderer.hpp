@@ -15,6 +15,7 @@
 #include "render/Atmosphere.hpp"
 #include "render/OceanPatterns.hpp"
 #include "render/TerrainRenderer.hpp"
+#include "render/WaterVolume.hpp"
 #include "render/WindTextures.hpp"
 
 namespace og::render {
@@ -91,6 +92,7 @@ class OceanRenderer {
   const Atmosphere* atmosphere_;
   std::vector<std::string> defines_;        ///< the filtered model's, whatever the features
   std::array<gl::Program, 8> variants_;     ///< by feature bits; id() 0 until compiled
+  CausticCurvature caustics_;  ///< the water volume's caustics (render/WaterVolume)
   gl::Program classic_;
   gl::Texture bumpMap_;      ///< classic: tileable ripple normals, mip-mapped
   gl::Texture fresnelRamp_;  ///< classic: water colour and Fresnel by N.V

@@ -2,6 +2,8 @@
 
 #include <array>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "geo/Wgs84.hpp"
 #include "terrain/Heightfield.hpp"
@@ -37,5 +39,50 @@ void setFloorDetail(const gl::Program& p, const geo::CameraView& view) {
   p.set("uFloorEyeHeightM", static_cast<float>(view.position.heightM));
   p.set("uFloorEyeFootScale", static_cast<float>(glm::length(foot * glm::dvec3(1.0, 1.0, ab * ab))));
 }
+
+std::vector<std::string> waterVolumeDefines() {
+  return {"CAUSTIC_PATTERNS " + std::to_string(kCausticPatterns)};
+}
+
+namespace {
+std::vector<std::string> causticDefines() {
+  std::vector<std::string> d = OceanPatterns::shaderDefines();
+  for (const std::string& define : waterVolumeDefines()) d.push_back(define);
+  return d;
+}
+}  // namespace
+
+CausticCurvature::CausticCurvature() : program_({{GL_COMPUTE_SHADER, "ocean/caustic_curvature.comp"}}, causticDefines()) {}
+
+void CausticCurvature::update(const OceanPatterns& patterns, double timeS) {
+  const GLuint source = patterns.slopesTexture();
+  if (source == source_ && timeS == timeS_) return;
+  const int n = patterns.patterns().params.fftSize;
+  const int layers = ocean::kPatternSets * kCausticPatterns;
+  if (n != size_) {
+    int levels = 1;
+    while ((1 << (levels - 1)) < n) ++levels;
+    texture_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
+    glTextureStorage3D(texture_.id(), levels, GL_R16F, n, n, layers);
+    glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+    size_ = n;
+  }
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  glBindTextureUnit(13, source);  // where the sea samples the slopes too (OceanPatterns::bind)
+  glBindImageTexture(0, texture_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R16F);
+  program_.use();
+  glDispatchCompute(static_cast<GLuint>((n + 7) / 8), static_cast<GLuint>((n + 7) / 8), static_cast<GLuint>(layers));
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  glGenerateTextureMipmap(texture_.id());
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R16F);
+  gl::checkErrors("CausticCurvature::update");
+  source_ = source;
+  timeS_ = timeS;
+}
+
+void CausticCurvature::bind() const { glBindTextureUnit(kCausticCurvatureUnit, texture_.id()); }
 
 }  // namespace og::render

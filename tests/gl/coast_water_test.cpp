@@ -134,16 +134,26 @@ TEST(CoastWater, FloorFadesWithDepthRedFirst) {
 namespace {
 const char* kEtopo5 = "/usr/share/ferret-vis/data/etopo5.cdf";
 
-// ETOPO5 (5', ~9 km) over the Bahamas, 20-28°N, 82-72°W.
-data::LatLonGrid bahamas() {
+// ETOPO5 (5', ~9 km) over the Bahamas, 20-28°N, 82-72°W. `bankDepthM` > 0: the banks at that
+// depth instead of ETOPO5's -10 m, which is a placeholder there, not a sounding: in 80-76°W,
+// 22-27°N, 485 cells hold exactly -10 m against at most 12 for any other depth from -1 to
+// -60 m; charts give the Great Bahama Bank 2-7 m.
+data::LatLonGrid bahamas(double bankDepthM = 0.0) {
   const data::LatLonGrid world = data::readElevationFile(kEtopo5);
   const double step = 5.0 / 60.0;
-  return test::grid("bahamas", 20.0, -82.0, step, 121, 97, false,
-                    [&](double lat, double lon) { return double{world.sample(lat, lon)}; });
+  return test::grid("bahamas", 20.0, -82.0, step, 121, 97, false, [&](double lat, double lon) {
+    const double z = world.sample(lat, lon);
+    return bankDepthM > 0.0 && std::abs(z + 10.0) < 1e-3 ? -bankDepthM : z;
+  });
 }
 
-// Mean radiance of the central 5x5 pixels seen straight down from 700 km over (lat, lon).
-glm::dvec3 orbitColour(render::GlobeRenderer& r, double lat, double lon, const std::string& name) {
+struct OrbitColour {
+  glm::dvec3 radiance;  // linear, the central 5x5 pixels' mean
+  glm::dvec3 display;   // tone-mapped sRGB, 0-255
+};
+
+// The colour of the central 5x5 pixels seen straight down from 700 km over (lat, lon).
+OrbitColour orbitColour(render::GlobeRenderer& r, double lat, double lon, const std::string& name) {
   render::FrameInput f;
   f.camera.position = {lat, lon, 7.0e5};
   f.camera.pitchDeg = -90.0;
@@ -155,13 +165,24 @@ glm::dvec3 orbitColour(render::GlobeRenderer& r, double lat, double lon, const s
   r.render(f);
   save(r, name);
   const io::ImageRgbaF img = r.radiance();
-  glm::dvec3 s(0.0);
+  const io::ImageRgba8 shown = r.display();
+  OrbitColour c{glm::dvec3(0.0), glm::dvec3(0.0)};
   for (int y = 46; y < 51; ++y)
     for (int x = 46; x < 51; ++x) {
-      const float* p = &img.pixels[static_cast<std::size_t>(4 * (y * img.width + x))];
-      s += glm::dvec3(p[0], p[1], p[2]);
+      const auto i = static_cast<std::size_t>(4 * (y * img.width + x));
+      c.radiance += glm::dvec3(img.pixels[i], img.pixels[i + 1], img.pixels[i + 2]) / 25.0;
+      c.display += glm::dvec3(shown.pixels[i], shown.pixels[i + 1], shown.pixels[i + 2]) / 25.0;
     }
-  return s / 25.0;
+  return c;
+}
+
+// Hue (degrees) and saturation (HSV, 0-1) of an sRGB colour.
+glm::dvec2 hueSaturation(const glm::dvec3& c) {
+  const double hi = std::max({c.x, c.y, c.z}), lo = std::min({c.x, c.y, c.z}), d = hi - lo;
+  if (d <= 0.0) return {0.0, 0.0};
+  double h = hi == c.x ? std::fmod((c.y - c.z) / d, 6.0) : hi == c.y ? (c.z - c.x) / d + 2.0 : (c.x - c.y) / d + 4.0;
+  h *= 60.0;
+  return {h < 0.0 ? h + 360.0 : h, d / hi};
 }
 }  // namespace
 
@@ -169,27 +190,45 @@ glm::dvec3 orbitColour(render::GlobeRenderer& r, double lat, double lon, const s
 // green and blue both bright, against the deep blue of the Tongue of the Ocean next to it.
 TEST(CoastWater, BahamaBankIsTurquoiseFromOrbit) {
   if (!std::filesystem::exists(kEtopo5)) GTEST_SKIP() << kEtopo5 << " not installed (package ferret-datasets)";
-  const data::LatLonGrid layer = bahamas();
   const double bank[2] = {24.25, -78.6}, tongue[2] = {24.0, -77.25};
-  std::printf("ETOPO5: bank %.0f m, Tongue of the Ocean %.0f m\n", double{layer.sample(bank[0], bank[1])},
-              double{layer.sample(tongue[0], tongue[1])});
-  ASSERT_GT(layer.sample(bank[0], bank[1]), -20.0f);
-  ASSERT_LT(layer.sample(tongue[0], tongue[1]), -500.0f);  // ETOPO5 has it ~800 m
   auto ctx = gl::createHeadlessContext();
-  render::GlobeRenderer r(layer);
-  const glm::dvec3 shallow = orbitColour(r, bank[0], bank[1], "coast_orbit_bank");
-  const glm::dvec3 deep = orbitColour(r, tongue[0], tongue[1], "coast_orbit_tongue");
-  std::printf("bank %.4f %.4f %.4f, tongue %.4f %.4f %.4f\n", shallow.x, shallow.y, shallow.z, deep.x,
-              deep.y, deep.z);
-  // The light the bank adds over the deep water (the air's haze is the same over both) is
-  // turquoise: green about as bright as blue, red absorbed (measured G/B 0.77, G/R 23).
-  const glm::dvec3 added = shallow - deep;
+  OrbitColour shallow[2], deep[2];
+  for (int charted = 0; charted < 2; ++charted) {
+    const data::LatLonGrid layer = bahamas(charted == 1 ? 4.5 : 0.0);
+    std::printf("layer: bank %.1f m, Tongue of the Ocean %.0f m\n", double{layer.sample(bank[0], bank[1])},
+                double{layer.sample(tongue[0], tongue[1])});
+    ASSERT_GT(layer.sample(bank[0], bank[1]), -20.0f);
+    ASSERT_LT(layer.sample(tongue[0], tongue[1]), -500.0f);  // ETOPO5 has it ~800 m
+    render::GlobeRenderer r(layer);
+    const std::string suffix = charted == 1 ? "_charted" : "";
+    shallow[charted] = orbitColour(r, bank[0], bank[1], "coast_orbit_bank" + suffix);
+    deep[charted] = orbitColour(r, tongue[0], tongue[1], "coast_orbit_tongue" + suffix);
+    const glm::dvec2 hsBank = hueSaturation(shallow[charted].display), hsDeep = hueSaturation(deep[charted].display);
+    std::printf("bank %.4f %.4f %.4f (sRGB %.0f %.0f %.0f, hue %.0f, sat %.2f), tongue %.4f %.4f %.4f (sRGB %.0f %.0f %.0f, hue %.0f, sat %.2f)\n",
+                shallow[charted].radiance.x, shallow[charted].radiance.y, shallow[charted].radiance.z,
+                shallow[charted].display.x, shallow[charted].display.y, shallow[charted].display.z, hsBank.x, hsBank.y,
+                deep[charted].radiance.x, deep[charted].radiance.y, deep[charted].radiance.z, deep[charted].display.x,
+                deep[charted].display.y, deep[charted].display.z, hsDeep.x, hsDeep.y);
+  }
+  // ETOPO5's 10 m: the light the bank adds over the deep water (the air's haze is the same
+  // over both) is blue-green, red absorbed; the bank brighter and greener than the Tongue.
+  const glm::dvec3 added = shallow[0].radiance - deep[0].radiance;
   EXPECT_GT(added.y, 5.0 * added.x);
   EXPECT_GT(added.y / added.z, 0.6);
-  // So the bank is brighter and greener than the Tongue of the Ocean (measured 1.6x, G/B
-  // 0.59 against 0.52).
-  EXPECT_GT(shallow.y, 1.4 * deep.y);
-  EXPECT_GT(shallow.y / shallow.z, deep.y / deep.z + 0.04);
+  EXPECT_GT(shallow[0].radiance.y, 1.4 * deep[0].radiance.y);
+  // At the charted depth the light the bank adds is turquoise, greener than blue (measured
+  // G/B 1.22, 2.3x ETOPO5's green), and the displayed bank is cyan against the Tongue's blue
+  // (measured hue 195 against 217, both through the same 700 km of blue haze: saturation
+  // 0.38 and 0.40).
+  const glm::dvec3 addedCharted = shallow[1].radiance - deep[1].radiance;
+  EXPECT_GT(addedCharted.y / addedCharted.z, 1.05);
+  EXPECT_GT(addedCharted.y, 2.0 * added.y);
+  const glm::dvec2 hsBank = hueSaturation(shallow[1].display), hsDeep = hueSaturation(deep[1].display);
+  EXPECT_LT(hsBank.x, 200.0);
+  EXPECT_GT(hsDeep.x, hsBank.x + 15.0);
+  EXPECT_GT(hsBank.y, 0.8 * hsDeep.y);
+  // ETOPO5's 10 m reads only slightly greener (measured hue 205).
+  EXPECT_GT(hueSaturation(shallow[0].display).x, hsBank.x + 5.0);
 }
 
 namespace {

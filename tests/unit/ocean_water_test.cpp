@@ -106,3 +106,16 @@ TEST(WaterOptics, ClearShallowWaterIsTurquoiseCoastalWaterGreener) {
     for (int c = 0; c < 3; ++c)
       EXPECT_GE(jerlovWater(order[i]).attenuationPerM[c], jerlovWater(order[i - 1]).attenuationPerM[c]);
 }
+
+// The water types are Jerlov's (1976) Table XXVII as printed, at 600, 550 and 450 nm: the
+// renderer's IB, and the two ends of the oceanic and coastal ranges (a slip of a digit shows).
+TEST(WaterOptics, WaterTypesAreJerlovsTable) {
+  const auto expectK = [](JerlovWater t, glm::dvec3 k) {
+    for (int c = 0; c < 3; ++c) EXPECT_DOUBLE_EQ(jerlovWater(t).attenuationPerM[c], k[c]) << jerlovWater(t).name << " " << c;
+  };
+  expectK(JerlovWater::OceanIB, {0.245, 0.072, 0.036});
+  expectK(JerlovWater::OceanI, {0.235, 0.063, 0.019});
+  expectK(JerlovWater::OceanIII, {0.295, 0.12, 0.135});
+  expectK(JerlovWater::Coastal5, {0.40, 0.30, 0.56});
+  EXPECT_EQ(kDefaultWater, JerlovWater::OceanIB);
+}
