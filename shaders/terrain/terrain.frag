@@ -12,6 +12,7 @@
 #include "terrain/imagery.glsl"
 #include "terrain/detail.glsl"
 #include "terrain/shadow.glsl"
+#include "terrain/landmask.glsl"
 
 in vec3 vRelative;
 in vec3 vNormal;
@@ -20,6 +21,7 @@ in vec4 vInfo;  // height m, latitude rad, longitude rad, detail amplitude m
 
 uniform vec3 uSunDir;  // unit, ECEF axes
 uniform int uSeaFromGlobe;  // 1 above the grid's ceiling: the globe pass draws the sea
+uniform int uTileHasWater;  // 1 when a vertex of this tile is at or below sea level
 
 // The detail's octaves (terrain::DetailOctaves): octave k has 2^k uDetailScale0 lattice cells
 // per unit of the sphere and weight detailOctaveWeight(k) / uDetailNorm; the eye lies in lattice cell
@@ -90,8 +92,17 @@ void main() {
   // Below the grid's ceiling the sea pass draws the floor itself, through the water
   // (ocean/water_volume.glsl): drop the floor deeper than a metre, which the sea's chords
   // would otherwise let show through far away over shallow banks (issue 15).
-  if (heightM < (uSeaFromGlobe == 1 ? 0.0 : -1.0)) discard;
+  // Where the coastline mask decides the coast (terrain/landmask.glsl), it does so per pixel up
+  // here: the mesh's zero crossing is straight between vertices, which on far tiles are
+  // kilometres apart (a staircase of straight lines along the coast from 30 km). Tiles that are
+  // land at every vertex skip it (a lake narrower than their vertex spacing does not show).
   float lat = vInfo.y, lon = vInfo.z;
+  if (uSeaFromGlobe == 1 && uTileHasWater == 1 && landMaskOn()) {
+    if (landFraction(vec2(lat, lon)) < 0.5) discard;
+    heightM = max(heightM, 0.0);
+  } else if (heightM < (uSeaFromGlobe == 1 ? 0.0 : -1.0)) {
+    discard;
+  }
   vec3 up = vec3(cos(lat) * cos(lon), cos(lat) * sin(lon), sin(lat));
   // Triangles that collapse at a pole give no normal (zero or NaN): the vertical stands in.
   vec3 n = dot(vNormal, vNormal) > 1e-20 ? normalize(vNormal) : up;

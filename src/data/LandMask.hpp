@@ -20,9 +20,14 @@ class LandMask {
   /// (westDeg, southDeg) (outer edges). Global when it covers 360° × 180°.
   LandMask(int width, int height, double westDeg, double southDeg, double cellDeg,
            const std::vector<std::uint8_t>& landBytes);
+  /// A mask from cells already packed as packedBits() lays them out (8 per byte, rows south
+  /// to north, bytesPerRow() bytes a row): no per-cell pass.
+  static LandMask fromPackedBits(int width, int height, double westDeg, double southDeg, double cellDeg,
+                                 std::vector<std::uint8_t> bits);
 
-  /// The fraction of land around a point, [0, 1]: the bilinear blend of the four nearest
-  /// cells (1 = land). The coast is the 0.5 contour: smooth curves at the cells' scale.
+  /// The fraction of land around a point, [0, 1]: the quadratic B-spline of the 3 × 3 nearest
+  /// cells (1 = land; shaders/terrain/landmask.glsl is its GPU twin). The coast is the 0.5
+  /// contour: smooth curves at the cells' scale, no raster staircase.
   [[nodiscard]] float landFraction(double latitudeDeg, double longitudeDeg) const;
   [[nodiscard]] bool isLand(double latitudeDeg, double longitudeDeg) const {
     return landFraction(latitudeDeg, longitudeDeg) >= 0.5f;
@@ -53,12 +58,14 @@ class LandMask {
   [[nodiscard]] bool cell(int column, int row) const;
 
  private:
-  int width_, height_;
-  double westDeg_, southDeg_, cellDeg_;
+  LandMask() = default;
+  int width_ = 0, height_ = 0;
+  double westDeg_ = 0.0, southDeg_ = 0.0, cellDeg_ = 0.0;
   std::vector<std::uint8_t> bits_;
 };
 
-/// The embedded GSHHG mask (2′, intermediate-resolution shorelines), decoded once.
+/// The embedded GSHHG mask (2′, intermediate-resolution shorelines), decoded once (1-bit PNG
+/// straight to packed bits, ~30 ms; thread-safe).
 const LandMask& defaultLandMask();
 
 /// Reads a mask from any single-band georeferenced raster GDAL reads in EPSG:4326 (nonzero =

@@ -248,6 +248,8 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
     p.set("uTileOffset", glm::vec3(t->centreEcef - view.positionEcef));
     p.set("uMorphScale", morphScale(*t, view));
     p.set("uDetailFirst", t->normalOctaves);
+    // Only tiles with water at a vertex look the coast up per pixel (terrain.frag).
+    p.set("uTileHasWater", t->minHeightM <= 0.0 ? 1 : 0);
     bindTile(*t);
     glEnable(GL_CULL_FACE);
     glDrawElements(GL_TRIANGLES, gridIndices, GL_UNSIGNED_INT, nullptr);

@@ -4,9 +4,19 @@
 // and keep their own zero contour for a regional layer.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
+#include "core/Error.hpp"
+#include "data/BitPng.hpp"
 #include "data/Elevation.hpp"
+#include "data/GeoRaster.hpp"
 #include "data/LandMask.hpp"
 #include "terrain/Heightfield.hpp"
 
@@ -57,20 +67,65 @@ TEST(LandMask, RegionalAndFineLayersKeepTheirOwnCoast) {
   EXPECT_NEAR(ground.layerHeightM(52.0, 2.0), -50.0, 1e-6);  // would be land (England) in the mask
 }
 
-TEST(LandMask, FractionIsBilinearAcrossCells) {
-  // A global 16 x 8 mask (22.5° cells) with one land cell at column 9, row 5.
+TEST(LandMask, FractionIsAQuadraticBSplineOfTheCells) {
+  // A global 16 x 8 mask (22.5° cells) with one land cell at column 9, row 5. Weights of the
+  // uniform quadratic B-spline: 3/4 at the centre, 1/8 at the neighbours' centres, 1/2 and 1/2
+  // on a shared edge.
   std::vector<std::uint8_t> cells(16 * 8, 0);
   cells[5 * 16 + 9] = 1;
   const LandMask m(16, 8, -180.0, -90.0, 22.5, cells);
   const double lon = -180.0 + 9.5 * 22.5, lat = -90.0 + 5.5 * 22.5;
-  EXPECT_FLOAT_EQ(m.landFraction(lat, lon), 1.0f);
-  EXPECT_FLOAT_EQ(m.landFraction(lat, lon + 22.5), 0.0f);
-  EXPECT_FLOAT_EQ(m.landFraction(lat, lon + 11.25), 0.5f);
+  EXPECT_FLOAT_EQ(m.landFraction(lat, lon), 0.5625f);  // a one-cell island survives (>= 0.5)
+  EXPECT_FLOAT_EQ(m.landFraction(lat, lon + 22.5), 0.09375f);
+  EXPECT_FLOAT_EQ(m.landFraction(lat, lon + 11.25), 0.375f);
   EXPECT_FLOAT_EQ(m.landFraction(lat + 11.25, lon + 11.25), 0.25f);
-  EXPECT_NEAR(m.constrainHeightM(-100.0, lat, lon), LandMask::kCoastRampM * 0.5, 1e-9);
-  EXPECT_NEAR(m.constrainHeightM(300.0, lat, lon + 22.5), -LandMask::kCoastRampM * 0.5, 1e-9);
+  EXPECT_FLOAT_EQ(m.landFraction(lat, lon + 33.75), 0.0f);  // outside the 3 x 3 support
+  EXPECT_NEAR(m.constrainHeightM(-100.0, lat, lon), LandMask::kCoastRampM * 0.0625, 1e-6);
+  EXPECT_NEAR(m.constrainHeightM(300.0, lat, lon + 22.5), -LandMask::kCoastRampM * 0.40625, 1e-6);
   // Longitude wraps: column 15 and column 0 are neighbours.
-  EXPECT_FLOAT_EQ(m.landFraction(lat, lon + 360.0), 1.0f);
+  EXPECT_FLOAT_EQ(m.landFraction(lat, lon + 360.0), 0.5625f);
+  // A straight coast along a cell edge stays on it.
+  std::vector<std::uint8_t> half(16 * 8, 0);
+  for (int r = 0; r < 8; ++r)
+    for (int c = 0; c < 8; ++c) half[r * 16 + c] = 1;
+  const LandMask h(16, 8, -180.0, -90.0, 22.5, half);
+  EXPECT_FLOAT_EQ(h.landFraction(10.0, 0.0), 0.5f);
+  EXPECT_GT(h.landFraction(10.0, -1.0), 0.5f);
+  EXPECT_LT(h.landFraction(10.0, 1.0), 0.5f);
+}
+
+TEST(LandMask, RasterStaircaseCoastIsSmoothed) {
+  // A coast rasterised as a staircase (2 columns per row): the 0.5 contour's largest distance
+  // from its fitted straight line is 0.40 cells with the B-spline, 0.56 with a bilinear blend
+  // (whose contour keeps the raster's straight runs and corners).
+  const int w = 64, h = 32;
+  std::vector<std::uint8_t> cells(static_cast<std::size_t>(w * h), 0);
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) cells[static_cast<std::size_t>(r * w + c)] = c >= 2 * r + 10 ? 1 : 0;
+  const double cell = 360.0 / w;
+  const LandMask m(w, h, -180.0, -90.0, cell, cells);
+  std::vector<std::pair<double, double>> contour;  // (row, column) of the 0.5 crossing
+  for (double y = 4.0; y <= 12.0; y += 0.05) {
+    double lo = 0.0, hi = 50.0;
+    for (int i = 0; i < 50; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (m.landFraction(-90.0 + (y + 0.5) * cell, -180.0 + (mid + 0.5) * cell) >= 0.5f ? hi : lo) = mid;
+    }
+    contour.emplace_back(y, lo);
+  }
+  double sy = 0, sx = 0, syy = 0, sxy = 0;
+  for (const auto& [y, x] : contour) {
+    sy += y;
+    sx += x;
+    syy += y * y;
+    sxy += y * x;
+  }
+  const double n = static_cast<double>(contour.size());
+  const double b = (n * sxy - sy * sx) / (n * syy - sy * sy), a = (sx - b * sy) / n;
+  double worst = 0.0;
+  for (const auto& [y, x] : contour) worst = std::max(worst, std::abs(x - (a + b * y)));
+  EXPECT_NEAR(b, 2.0, 0.05);
+  EXPECT_LT(worst, 0.45);
 }
 
 TEST(LandMask, SyntheticGlobesKeepTheirOwnCoast) {
@@ -86,4 +141,55 @@ TEST(LandMask, SyntheticGlobesKeepTheirOwnCoast) {
   EXPECT_FALSE(og::data::defaultLandMask().refines(flat));
   const og::terrain::Heightfield ground(flat);
   EXPECT_NEAR(ground.layerHeightM(0.3, 0.0), 300.0, 1e-3);  // the Gulf of Guinea in the mask
+}
+
+// The embedded mask is decoded straight from its 1-bit PNG into packed bits (data/BitPng):
+// bit for bit what GDAL's general reader gives, in a fraction of its time.
+namespace og::embedded::data {
+std::optional<std::string_view> find(std::string_view path);
+}
+
+TEST(LandMask, FastDecodeMatchesGdalBitForBit) {
+  const auto png = og::embedded::data::find("gshhg_landmask_2m.png");
+  const auto pgw = og::embedded::data::find("gshhg_landmask_2m.pgw");
+  ASSERT_TRUE(png && pgw);
+  const auto t0 = std::chrono::steady_clock::now();
+  const og::data::PackedBitImage image = og::data::decodeBitPng(*png, "embedded mask");
+  const double fastS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const LandMask& fast = og::data::defaultLandMask();
+  const auto raster = og::data::readGeographicBytesMemory(*png, *pgw, "png", "gdal");
+  const LandMask slow(raster.width, raster.height, raster.westDeg, raster.southDeg, raster.cellLatDeg,
+                      raster.values);
+  EXPECT_EQ(fast.width(), slow.width());
+  EXPECT_EQ(fast.height(), slow.height());
+  EXPECT_NEAR(fast.westDeg(), slow.westDeg(), 1e-9);
+  EXPECT_NEAR(fast.southDeg(), slow.southDeg(), 1e-9);
+  EXPECT_NEAR(fast.cellDeg(), slow.cellDeg(), 1e-12);
+  EXPECT_TRUE(fast.packedBits() == slow.packedBits());
+  EXPECT_TRUE(image.bits == slow.packedBits());
+  // Generous (a loaded 2-core machine, Debug builds): GDAL's path took ~1.7 s.
+  EXPECT_LT(fastS, 1.0);
+}
+
+TEST(LandMask, BadBitPngIsAnInputErrorNamingTheFile) {
+  const auto png = og::embedded::data::find("gshhg_landmask_2m.png");
+  ASSERT_TRUE(png);
+  const auto message = [](std::string_view bytes) {
+    try {
+      (void)og::data::decodeBitPng(bytes, "mask.png");
+    } catch (const og::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message(png->substr(0, png->size() / 2)).find("mask.png: "), std::string::npos);
+  EXPECT_NE(message("not a png at all").find("mask.png: not a PNG"), std::string::npos);
+  const auto jpg = og::embedded::data::find("blue_marble_2048x1024.jpg");
+  ASSERT_TRUE(jpg);
+  EXPECT_NE(message(*jpg).find("mask.png: not a PNG"), std::string::npos);
+  EXPECT_THROW((void)og::data::parseWorldFile("0.1 0 0 -0.1 5", "w.pgw"), og::InputError);
+  EXPECT_THROW((void)og::data::parseWorldFile("0.1 0.2 0 -0.1 5 6", "w.pgw"), og::InputError);
+  const auto grid = og::data::parseWorldFile("0.5 0 0 -0.5 -179.75 89.75", "w.pgw");
+  EXPECT_DOUBLE_EQ(grid.westDeg, -180.0);
+  EXPECT_DOUBLE_EQ(grid.northDeg, 90.0);
 }
