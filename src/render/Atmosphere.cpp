@@ -13,6 +13,7 @@
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "gl/Probe.hpp"
 #include "gl/ShaderContract.hpp"
 
 namespace og::render {
@@ -461,19 +462,10 @@ std::vector<glm::dvec3> Atmosphere::probeSunIrradiance(const std::vector<double>
   if (zenithRad.empty()) return {};
   std::vector<glm::vec4> values;
   for (const double z : zenithRad) values.emplace_back(static_cast<float>(z), 0.0f, 0.0f, 0.0f);
-  const auto bytes = static_cast<GLsizeiptr>(values.size() * sizeof(glm::vec4));
-  gl::Buffer buffer = gl::createBuffer();
-  glNamedBufferStorage(buffer.id(), bytes, values.data(), GL_DYNAMIC_STORAGE_BIT);
   gl::Program probe({{GL_COMPUTE_SHADER, "atmosphere/probe.comp"}});
   bind(probe);
   bindSkyMaps();
-  probe.use();
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer.id());
-  glDispatchCompute(static_cast<GLuint>(values.size()), 1, 1);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(buffer.id(), 0, bytes, values.data());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-  gl::checkErrors("Atmosphere::probeSunIrradiance");
+  gl::runProbe(probe, values, static_cast<int>(values.size()), "Atmosphere::probeSunIrradiance");
   std::vector<glm::dvec3> out;
   for (const glm::vec4& v : values) out.emplace_back(v.x, v.y, v.z);
   return out;

@@ -6,6 +6,7 @@
 #include <glm/vec4.hpp>
 
 #include "core/Error.hpp"
+#include "gl/Probe.hpp"
 #include "gl/Shader.hpp"
 #include "gl/ShaderContract.hpp"
 
@@ -50,18 +51,9 @@ std::vector<float> LandMaskTexture::probeLandFraction(const std::vector<glm::vec
   if (latLonRad.empty()) return {};
   std::vector<glm::vec4> values;
   for (const glm::vec2& p : latLonRad) values.emplace_back(p.x, p.y, 0.0f, 0.0f);
-  const auto bytes = static_cast<GLsizeiptr>(values.size() * sizeof(glm::vec4));
-  gl::Buffer buffer = gl::createBuffer();
-  glNamedBufferStorage(buffer.id(), bytes, values.data(), GL_DYNAMIC_STORAGE_BIT);
   gl::Program probe({{GL_COMPUTE_SHADER, "terrain/landmask_probe.comp"}});
   bind();
-  probe.use();
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer.id());
-  glDispatchCompute(static_cast<GLuint>(values.size()), 1, 1);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(buffer.id(), 0, bytes, values.data());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-  gl::checkErrors("LandMaskTexture::probeLandFraction");
+  gl::runProbe(probe, values, static_cast<int>(values.size()), "LandMaskTexture::probeLandFraction");
   std::vector<float> out;
   for (const glm::vec4& v : values) out.push_back(v.x);
   return out;

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "gl/Context.hpp"
-#include "gl/Objects.hpp"
+#include "gl/Probe.hpp"
 #include "gl/Shader.hpp"
 #include "ocean/Lighting.hpp"
 
@@ -64,23 +64,14 @@ TEST(OceanLightingTwinGpu, ShaderAndCppTwinAgree) {
     buffer.emplace_back(0.0f);
     buffer.emplace_back(0.0f);
   }
-  const auto bytes = static_cast<GLsizeiptr>(buffer.size() * sizeof(glm::vec4));
-  gl::Buffer ssbo = gl::createBuffer();
-  glNamedBufferStorage(ssbo.id(), bytes, buffer.data(), GL_DYNAMIC_STORAGE_BIT);
   const gl::Program probe({{GL_COMPUTE_SHADER, "ocean/lighting_probe.comp"}});
   probe.requireUniforms({"uSkyZenith", "uSkyHorizon", "uSeaColor", "uLightingTerms", "uSunVisibility"});
-  probe.use();
   probe.set("uSkyZenith", glm::vec3(s.skyZenithRadiance));
   probe.set("uSkyHorizon", glm::vec3(s.skyHorizonRadiance));
   probe.set("uSeaColor", glm::vec3(s.seaColorPerSr));
   probe.set("uLightingTerms", glm::vec4(s.terms));
   probe.set("uSunVisibility", static_cast<float>(s.sunVisibility));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, ssbo.id());
-  glDispatchCompute(static_cast<GLuint>(in.size()), 1, 1);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(ssbo.id(), 0, bytes, buffer.data());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-  ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  ASSERT_NO_THROW(gl::runProbe(probe, buffer, static_cast<int>(in.size()), "lighting probe"));
 
   int lit = 0;
   for (std::size_t i = 0; i < in.size(); ++i) {
