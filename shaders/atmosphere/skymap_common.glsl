@@ -14,7 +14,8 @@
 const Number SKYMAP_EXTENT = 1.1;
 const Number SKYMAP_HORIZON_BAND = 1.02;  // |u|² of the band's outer edge
 const Number SEA_MEAN_FRESNEL = 0.17;     // Bruneton's demo / Proland: avgFresnel
-// Layer k of L holds the Sun at zenith angle k / (L - 1) * SKYMAP_MAX_ZENITH (radians, 105°).
+// Layer k of L holds the Sun at zenith angle k / (L - 1) * SKYMAP_MAX_ZENITH (radians, 105°;
+// render::Atmosphere::kSkyMapMaxZenithRad on the CPU, which blends the frame layer).
 const Number SKYMAP_MAX_ZENITH = 1.8325957;
 
 Number skyMapLayerZenith(int layer, int layers) {

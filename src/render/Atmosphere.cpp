@@ -331,9 +331,8 @@ void Atmosphere::bind(const gl::Program& program) const {
 void Atmosphere::prepareFrameSkyLayer(double sunZenithRad) const {
   const atmosphere::TableSizes& s = parameters_.tables;
   if (frameLayer_.id() == 0) frameLayer_ = gl::Program({{GL_COMPUTE_SHADER, "atmosphere/skymap_frame.comp"}});
-  // The layer coordinate as skymap.glsl computes it (SKYMAP_MAX_ZENITH = 105°).
-  const double maxZenithRad = 1.8325957;
-  const double f = std::clamp(sunZenithRad / maxZenithRad, 0.0, 1.0) * (s.skyMapLayers - 1);
+  // The layer coordinate as skymap.glsl computes it.
+  const double f = std::clamp(sunZenithRad / kSkyMapMaxZenithRad, 0.0, 1.0) * (s.skyMapLayers - 1);
   const int layer0 = std::min(static_cast<int>(std::floor(f)), s.skyMapLayers - 2);
   frameLayer_.set("uLayer0", layer0);
   frameLayer_.set("uWeight", static_cast<float>(f - layer0));

@@ -31,6 +31,9 @@ struct SkyFilter {
 
 class Atmosphere {
  public:
+  /// Sun zenith angle of the sky maps' last Sun layer, rad (105°): layer k of L holds the Sun
+  /// at k / (L - 1) of it (SKYMAP_MAX_ZENITH in shaders/atmosphere/skymap_common.glsl).
+  static constexpr double kSkyMapMaxZenithRad = 1.8325957;
   /// What start-up cost and where the tables came from.
   struct Timing {
     double tablesMs = 0.0;   ///< precomputation, or loading and uploading the cached tables

@@ -73,7 +73,8 @@ TEST(AtmospherePrecompute, GpuSkyImageMatchesCpuReference) {
   EXPECT_LT(worst, 2e-3);
 
   const int n = p.tables.skyMapSize;
-  const double extent = 1.1, maxZenith = 105.0 * std::numbers::pi / 180.0;
+  const double extent = 1.1, maxZenith = render::Atmosphere::kSkyMapMaxZenithRad;
+  EXPECT_NEAR(maxZenith, 105.0 * std::numbers::pi / 180.0, 1e-7);
   for (int layer : {0, 8, 11}) {
     const double sunZenith = layer / double(p.tables.skyMapLayers - 1) * maxZenith;
     const glm::dvec3 sun(std::sin(sunZenith), 0.0, std::cos(sunZenith));
@@ -101,6 +102,29 @@ TEST(AtmospherePrecompute, GpuSkyImageMatchesCpuReference) {
 
 // Second construction with the same parameters loads the tables; a corrupt or foreign file is
 // ignored, recomputed and replaced, never trusted.
+// The frame layer (the array's last) holds the two Sun layers around a zenith angle blended as
+// skymap.glsl blends them per pixel: what the sea below 50 m reads instead (SKY_FRAME_LAYER).
+TEST(AtmospherePrecompute, FrameSkyLayerBlendsTheLayersAroundTheSun) {
+  auto ctx = gl::createHeadlessContext();
+  const atmosphere::Parameters p = smallEarth(2);
+  render::Atmosphere gpu(p, noCache());
+  const int layers = p.tables.skyMapLayers;
+  const double layerRad = render::Atmosphere::kSkyMapMaxZenithRad / (layers - 1);
+  const double zenithRad = 5.3 * layerRad;  // 30 % of the way from layer 5 to layer 6
+  gpu.prepareFrameSkyLayer(zenithRad);
+  const std::vector<float> frame = gpu.readSkyMap(layers);
+  const std::vector<float> a = gpu.readSkyMap(5), b = gpu.readSkyMap(6);
+  ASSERT_EQ(frame.size(), a.size());
+  double worst = 0.0, largest = 0.0;
+  for (std::size_t i = 0; i < frame.size(); ++i) {
+    const double want = 0.7 * static_cast<double>(a[i]) + 0.3 * static_cast<double>(b[i]);
+    worst = std::max(worst, std::abs(static_cast<double>(frame[i]) - want));
+    largest = std::max(largest, std::abs(want));
+  }
+  EXPECT_LT(worst, 2e-3 * largest);  // half floats
+  EXPECT_GT(largest, 0.0);
+}
+
 TEST(AtmospherePrecompute, CacheIsHitAndCorruptCacheIsRebuilt) {
   auto ctx = gl::createHeadlessContext();
   atmosphere::Parameters p = smallEarth(2);
