@@ -37,9 +37,10 @@
 // a `discard` too, masked, so a part cannot leave early by discarding; what it does skip is a
 // fragment failing the depth or stencil test before the shader runs. So three cheap
 // classifying draws (GLOBE_PART_CLASSIFY, arithmetic only) first count into the stencil
-// buffer what each pixel needs: 0 nothing (pure space; below 20 km, pixels the terrain or the
-// grid covers), 1 the sky only (no ray hits the ellipsoid), 2 both (an edge: the limb, the
-// horizon), 3 the surface only (all four rays hit). Then one draw per part, stencil-tested
+// buffer what each pixel needs: 0 nothing (pure space), 1 the sky only (no ray hits the
+// ellipsoid), 2 both (an edge: the limb, the horizon), 3 the surface only (all four rays hit).
+// Below 20 km, where no pixel sees pure space and the depth test leaves out what the terrain
+// and the grid cover, the first step is skipped and the counts are one lower. Then one draw per part, stencil-tested
 // before the shader (early fragment tests), each compiled with only its part's code.
 #define GLOBE_PART_SKY 1
 #define GLOBE_PART_EDGE 2

@@ -211,8 +211,11 @@ void GlobeRenderer::drawGlobe(const geo::CameraView& view, const FrameInput& f, 
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glStencilFunc(GL_ALWAYS, 0, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
-  for (int step = 0; step < 3; ++step) {
-    glDepthMask(!grid && step == 0 ? GL_TRUE : GL_FALSE);  // above 20 km step 0 writes the depth
+  // Below 20 km no pixel sees pure space, and the depth test already leaves out what the
+  // terrain and the grid cover: step 0 is skipped and the counts start at 0 for the sky.
+  const int firstStep = grid ? 1 : 0;
+  for (int step = firstStep; step < 3; ++step) {
+    glDepthMask(step == 0 ? GL_TRUE : GL_FALSE);  // above 20 km step 0 writes the depth
     const gl::Program& classify = globeProgram(grid, step);
     setGlobeUniforms(classify, view, f);
     classify.use();
@@ -222,7 +225,7 @@ void GlobeRenderer::drawGlobe(const geo::CameraView& view, const FrameInput& f, 
   glDepthMask(GL_FALSE);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   for (int part = 1; part <= 3; ++part) {  // sky, edge, surface: the stencil counts 1, 2, 3
-    glStencilFunc(GL_EQUAL, part, 0xff);
+    glStencilFunc(GL_EQUAL, part - firstStep, 0xff);
     const gl::Program& globe = globeProgram(grid, part + 2);
     setGlobeUniforms(globe, view, f);
     globe.use();
