@@ -144,6 +144,9 @@ void OceanRenderer::setCommon(const gl::Program& p, const geo::CameraView& view,
   p.set("uEcefToOcean", ecefToOcean);
   p.set("uEyeHeight", static_cast<float>(eyeHeight));
   p.set("uCellAngle", static_cast<float>(2.0 * tanY / height * cellPixels_));
+  p.set("uCellPixels", static_cast<float>(cellPixels_));
+  // Patterns whose texels span 2 cells or more are looked up per vertex (ocean/patterns.glsl).
+  p.set("uPatternVertexLod", static_cast<float>(-std::log2(static_cast<double>(cellPixels_))));
   p.set("uEyeScaled", toFloat(o));
   p.set("uEyeC", static_cast<float>(glm::dot(o, o) - 1.0));
   p.set("uSunDirOcean", ecefToOcean * toFloat(glm::normalize(lighting.sunDirectionEcef)));
