@@ -41,6 +41,7 @@ uniform vec3 uSunDirEcef;
 out vec3 vTransmittance;      // of the eye-to-vertex path
 out vec3 vInscatter;          // light scattered towards the eye along it (units of the Sun's irradiance)
 #endif
+#include "ocean/water_volume_vertex.glsl"  // the water volume's smooth terms per vertex
 
 void main() {
   int ix = gl_VertexID % uGridSize.x;
@@ -68,6 +69,7 @@ void main() {
   vec2 latLon = latLonOfNormal(ellipsoidNormal(dir, t));
   vec2 wind = localWind(latLon);
   vec3 d = oceanDisplacement(local.xy, cell, wind) * shoreWaveFactor(latLon, seaStateWaveHeightM(wind.x));
+  prepareWaterVolumeVertex(latLon, ellipsoidNormal(dir, t));
   // Displacement along the frame's axes; near the camera (where waves are resolved at all)
   // they coincide with the local tangent frame.
   vRelative = rel + transpose(uEcefToOcean) * d;

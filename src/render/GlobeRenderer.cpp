@@ -38,14 +38,18 @@ GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
       wind_(std::make_unique<WindTextures>()) {
   if (elevation.width < 2 || elevation.height < 2)
     throw InternalError("elevation layer '" + elevation.name + "' is too small to render");
-  // Missing values (NaN) read as sea.
-  std::vector<float> texels(elevation.values);
-  for (float& v : texels)
-    if (!std::isfinite(v)) v = -1.0f;
+  // Height and keepDepth (the land mask leaves corrected banks' depth alone: data/ShallowBanks)
+  // per texel; missing values (NaN) read as sea.
+  std::vector<float> texels(2 * elevation.values.size(), 0.0f);
+  for (std::size_t i = 0; i < elevation.values.size(); ++i) {
+    const float v = elevation.values[i];
+    texels[2 * i] = std::isfinite(v) ? v : -1.0f;
+    if (!elevation.keepDepth.empty()) texels[2 * i + 1] = elevation.keepDepth[i];
+  }
   elevation_ = gl::createTexture(GL_TEXTURE_2D);
-  glTextureStorage2D(elevation_.id(), 1, GL_R32F, elevation.width, elevation.height);
+  glTextureStorage2D(elevation_.id(), 1, GL_RG32F, elevation.width, elevation.height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTextureSubImage2D(elevation_.id(), 0, 0, 0, elevation.width, elevation.height, GL_RED,
+  glTextureSubImage2D(elevation_.id(), 0, 0, 0, elevation.width, elevation.height, GL_RG,
                       GL_FLOAT, texels.data());
   glTextureParameteri(elevation_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(elevation_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
