@@ -55,6 +55,10 @@ void SceneOptions::add(CLI::App& cmd) {
                  "georeferenced imagery FILE draped over the land (GeoTIFF/COG, JPEG/PNG with a "
                  "world file, ... in EPSG:4326, 3857 or any CRS PROJ knows); repeat, later on top "
                  "(default: the embedded Blue Marble)");
+  cmd.add_option("--imagery-cache-cpu-mib", flags_.imageryCacheCpuMib,
+                 "CPU memory for the imagery layers' decoded tiles, MiB [1, 65536] (default 256)");
+  cmd.add_option("--imagery-cache-gpu-mib", flags_.imageryCacheGpuMib,
+                 "GPU memory for the imagery layers' tiles, MiB [1, 65536] (default 256)");
 }
 
 io::SceneSettings SceneOptions::resolve(io::SceneSettings s) const {
@@ -81,6 +85,8 @@ io::SceneSettings SceneOptions::resolve(io::SceneSettings s) const {
   if (given("--wind-layer")) s.windLayers = flags_.windLayers;
   if (given("--elevation-layer")) s.elevationLayer = flags_.elevationLayer;
   if (given("--imagery-layer")) s.imageryLayers = flags_.imageryLayers;
+  if (given("--imagery-cache-cpu-mib")) s.imageryCacheCpuMib = flags_.imageryCacheCpuMib;
+  if (given("--imagery-cache-gpu-mib")) s.imageryCacheGpuMib = flags_.imageryCacheGpuMib;
   if (given("--wind")) {
     const geo::Wind wind = geo::parseWindFlag(wind_, s.windFromDeg);
     s.windSpeedMs = wind.speedMs;
@@ -131,6 +137,14 @@ glm::dvec3 sunDirectionOf(const io::SceneSettings& s) {
 std::vector<data::GeoImage> loadImageryLayers(const io::SceneSettings& s) {
   std::vector<std::filesystem::path> files(s.imageryLayers.begin(), s.imageryLayers.end());
   return data::loadImageryLayers(files);
+}
+
+void setImageryLayers(render::ImageryTextures& imagery, const io::SceneSettings& s,
+                      const std::vector<data::GeoImage>& layers) {
+  constexpr std::size_t kMib = std::size_t{1} << 20;
+  imagery.setCacheBudgets(static_cast<std::size_t>(s.imageryCacheCpuMib) * kMib,
+                          static_cast<std::size_t>(s.imageryCacheGpuMib) * kMib);
+  imagery.setLayers(layers);
 }
 
 std::shared_ptr<const data::WindLayers> loadWindLayers(const io::SceneSettings& s) {
