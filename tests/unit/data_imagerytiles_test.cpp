@@ -16,6 +16,7 @@
 #include "support/CheckerGeoTiff.hpp"
 #include "support/DataFixtures.hpp"
 #include "support/ExpectError.hpp"
+#include "support/GeoTiffWriter.hpp"
 
 namespace fs = std::filesystem;
 using og::data::ImageryTileKey;
@@ -85,6 +86,14 @@ TEST(ImageryTiles, TileHoldsTheFineCheckerAndMipsAverageIt) {
   const auto lvl0 = [&](int x, int y) { return srgbToLinear(t.rgba[(static_cast<std::size_t>(y) * n + static_cast<std::size_t>(x)) * 4]); };
   const double mean = 0.25 * (lvl0(0, 0) + lvl0(1, 0) + lvl0(0, 1) + lvl0(1, 1));
   EXPECT_NEAR(srgbToLinear(t.rgba[static_cast<std::size_t>(n) * n * 4]), mean, 0.004);
+  // Placement: the layer's south-west tile has the layer's south-west cell (dark, i + j = 0)
+  // at texel (0, 0), rows from the south.
+  const og::data::ImageryTile sw = s.read({0, 9, 568, 286});
+  const auto red = [&](int x, int y) { return sw.rgba[(static_cast<std::size_t>(y) * n + static_cast<std::size_t>(x)) * 4]; };
+  EXPECT_EQ(red(0, 0), og::test::kCheckerDark[0]);
+  EXPECT_EQ(red(1, 0), og::test::kCheckerLight[0]);
+  EXPECT_EQ(red(0, 1), og::test::kCheckerLight[0]);
+  EXPECT_EQ(red(255, 255), og::test::kCheckerDark[0]);
   // A tile over the layer's west edge (level 5: 16.875..22.5°E, 11.25..16.875°N) is
   // transparent west of it; its row n/8 (11.95°N) is inside the layer at its east end.
   const og::data::ImageryTile edge = s.read(tileAt(5, 12.0, 20.0));
@@ -129,4 +138,33 @@ TEST(ImageryTiles, FileTruncatedMidStreamFailsWithItsName) {
   cache.request(std::span(&south, 1));
   cache.waitIdle();
   og::test::expectInputError(file.string(), "", [&] { (void)cache.collect(); });
+}
+
+TEST(ImageryTiles, WebMercatorTilesLandWhereTheyBelong) {
+  // 4096 × 256 pixels over 20..22°E, 10..10.125°N in EPSG:3857 (finer than its whole texture):
+  // red south of 10.06°N, blue north of it; reprojected per tile.
+  const og::test::GeoBox box{20.0, 22.0, 10.0, 10.125};
+  const fs::path file = og::test::writeGeoRaster(og::test::fixtureDir("data_imagerytiles") / "split3857.tif", 3857, 4096,
+                                                 256, box, [](double lat, double) {
+                                                   return lat < 10.06 ? og::test::Rgb8{255, 0, 0} : og::test::Rgb8{0, 0, 255};
+                                                 });
+  const og::data::ImageryTileSource s(file.string(), 0, og::data::kImageryLayerSizePx);
+  ASSERT_LE(s.minLevel(), 11);
+  ASSERT_GE(s.maxLevel(), 11);
+  const ImageryTileKey key = tileAt(11, 10.06, 21.0);
+  const og::data::ImageryTile t = s.read(key);
+  const int n = og::data::kImageryTilePx;
+  const double texelDeg = key.sizeDeg() / n;
+  const auto texelAt = [&](double latDeg) {
+    const int row = static_cast<int>(std::floor((latDeg - key.southDeg()) / texelDeg));
+    const int col = static_cast<int>(std::floor((21.0 - key.westDeg()) / texelDeg));
+    return &t.rgba[(static_cast<std::size_t>(row) * n + static_cast<std::size_t>(col)) * 4];
+  };
+  // Two texels (0.0007°) either side of the split.
+  const std::uint8_t* south = texelAt(10.06 - 2 * texelDeg);
+  const std::uint8_t* north = texelAt(10.06 + 2 * texelDeg);
+  EXPECT_GT(south[0], 200);
+  EXPECT_LT(south[2], 50);
+  EXPECT_LT(north[0], 50);
+  EXPECT_GT(north[2], 200);
 }
