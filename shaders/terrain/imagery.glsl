@@ -1,6 +1,8 @@
 // Imagery draped as the land's albedo (render/ImageryTextures.hpp): the base day image (global,
 // the embedded Blue Marble unless replaced), the user's `--imagery-layer`s over it (later ones on
-// top, alpha = coverage), and the night lights. All textures are sRGB-encoded, so samples are
+// top, alpha = coverage), and the night lights. A user layer is sampled from its streamed tile
+// for the terrain tile being drawn (render/ImageryTiles.hpp: uImageryTileSlot >= 0, set per
+// draw) or else from its whole texture. All textures are sRGB-encoded, so samples are
 // linear. Mip levels come from the pixel's footprint on the ground (an angle, radians of arc),
 // not from derivatives: the globe pass shades several samples per pixel in a loop, and longitude
 // jumps by 2 pi across the antimeridian.
@@ -14,6 +16,12 @@ uniform float uImageryDayTexelRad;  // angular size of a base texel, radians
 uniform int uImageryLayerCount;
 uniform float uImageryLayerTexelRad;
 uniform vec4 uImageryLayerBounds[MAX_IMAGERY_LAYERS];  // west, south, east, north, radians
+// Streamed tiles (render/ImageryTiles), per draw and layer: the slot in uImageryTiles (-1: none,
+// the whole layer texture), the tile's bounds (west, south, east, north, radians) and texel size.
+layout(binding = OG_UNIT_IMAGERY_TILES) uniform sampler2DArray uImageryTiles;
+uniform int uImageryTileSlot[MAX_IMAGERY_LAYERS];
+uniform vec4 uImageryTileBounds[MAX_IMAGERY_LAYERS];
+uniform float uImageryTileTexelRad[MAX_IMAGERY_LAYERS];
 uniform float uNightLights;         // scale of the night lights, 1 by default, 0 = off
 
 // Blue Marble is a true-colour composite stretched for display: decoded from sRGB, its desert
@@ -33,22 +41,43 @@ float imageryLod(float footprintRad, float texelRad) {
   return log2(max(footprintRad / texelRad, 1.0));
 }
 
+// Where (latitude, longitude) radians lies in the box b (west, south, east, north, radians):
+// 0..1 inside, longitudes taken east of the box's west edge.
+vec2 imageryBoxCoord(vec2 latLon, vec4 b) {
+  float lon = b.x + mod(latLon.y - b.x, 2.0 * PI);
+  return vec2((lon - b.x) / (b.z - b.x), (latLon.x - b.y) / (b.w - b.y));
+}
+
+// User layer i at (latitude, longitude): its streamed tile when one is bound, else its whole
+// texture. Premultiplied by coverage (alpha).
+vec4 imageryLayerSample(int i, vec2 latLon, vec2 st, float footprintRad, float lodWhole) {
+  int slot = uImageryTileSlot[i];
+  if (slot < 0) return textureLod(uImageryLayers, vec3(st, float(i)), lodWhole);
+  vec2 tileSt = imageryBoxCoord(latLon, uImageryTileBounds[i]);
+  return textureLod(uImageryTiles, vec3(tileSt, float(slot)), imageryLod(footprintRad, uImageryTileTexelRad[i]));
+}
+
 // Day colour (linear albedo) at (latitude, longitude) radians for a footprint in radians of arc.
-// a = how much of it is real imagery (1 everywhere with the global base image).
+// The layers are composited top down ("under"): acc gathers the colour seen so far, through the
+// transmittance T = Π (1 - alpha) of the layers above; where a layer covers fully (T ~ 0) the
+// ones below and the base image are not sampled at all. The same sum as bottom-up "over".
 vec3 imageryAlbedo(vec2 latLon, float footprintRad) {
-  vec2 uv = vec2(fract(latLon.y / (2.0 * PI) + 0.5), latLon.x / PI + 0.5);
-  vec3 c = textureLod(uImageryDay, uv, imageryLod(footprintRad, uImageryDayTexelRad)).rgb;
+  vec3 acc = vec3(0.0);
+  float T = 1.0;
   float lodLayers = imageryLod(footprintRad, uImageryLayerTexelRad);
-  for (int i = 0; i < min(uImageryLayerCount, MAX_IMAGERY_LAYERS); ++i) {
-    vec4 b = uImageryLayerBounds[i];
-    float lon = b.x + mod(latLon.y - b.x, 2.0 * PI);  // east of the layer's west edge
-    vec2 st = vec2((lon - b.x) / (b.z - b.x), (latLon.x - b.y) / (b.w - b.y));
+  for (int i = min(uImageryLayerCount, MAX_IMAGERY_LAYERS) - 1; i >= 0 && T > 0.5 / 255.0; --i) {
+    vec2 st = imageryBoxCoord(latLon, uImageryLayerBounds[i]);
     if (st.x < 0.0 || st.x > 1.0 || st.y < 0.0 || st.y > 1.0) continue;
     // No-data texels are black with alpha 0, so mip-mapped colour is premultiplied by coverage.
-    vec4 l = textureLod(uImageryLayers, vec3(st, float(i)), lodLayers);
-    c = c * (1.0 - l.a) + l.rgb;
+    vec4 l = imageryLayerSample(i, latLon, st, footprintRad, lodLayers);
+    acc += T * l.rgb;
+    T *= 1.0 - l.a;
   }
-  return IMAGERY_ALBEDO_SCALE * pow(max(c, vec3(0.0)), vec3(IMAGERY_ALBEDO_POWER));
+  if (T > 0.5 / 255.0) {
+    vec2 uv = vec2(fract(latLon.y / (2.0 * PI) + 0.5), latLon.x / PI + 0.5);
+    acc += T * textureLod(uImageryDay, uv, imageryLod(footprintRad, uImageryDayTexelRad)).rgb;
+  }
+  return IMAGERY_ALBEDO_SCALE * pow(max(acc, vec3(0.0)), vec3(IMAGERY_ALBEDO_POWER));
 }
 
 // How much an imagery colour looks like open water (Blue Marble's sea, lakes and the coastal

@@ -71,7 +71,23 @@ struct BenchOptions {
   bool breakdown = false;
   std::string timer = "auto";  // how passes are timed: auto, queries, finish
   std::vector<std::string> views;  // only these views (all when empty)
+  io::SceneSettings imagery;  // --imagery-layer and its cache budgets
 };
+
+/// The imagery tile caches' use (render::ImageryTileStats) for --json.
+nlohmann::json imageryTilesJson(const render::ImageryTileStats& s) {
+  return {{"cpu_tiles", s.cpuTiles}, {"cpu_bytes", s.cpuBytes}, {"gpu_tiles", s.gpuTiles},
+          {"gpu_bytes", s.gpuBytes}, {"reads", s.reads}, {"finest_level", s.finestLevel}};
+}
+
+/// The same for the table: ", imagery N tiles, C MiB CPU + G MiB GPU", empty without tiles.
+std::string imageryTilesLine(const render::ImageryTileStats& s) {
+  if (s.reads == 0) return {};
+  char line[120];
+  std::snprintf(line, sizeof line, "; imagery %zu tiles, %.1f MiB CPU + %.1f MiB GPU", s.gpuTiles,
+                static_cast<double>(s.cpuBytes) / 1048576.0, static_cast<double>(s.gpuBytes) / 1048576.0);
+  return line;
+}
 
 bool wanted(const BenchOptions& o, const char* view) {
   return o.views.empty() || std::find(o.views.begin(), o.views.end(), view) != o.views.end();
@@ -211,6 +227,9 @@ Run addBenchCommand(CLI::App& parent) {
   cmd->add_option("--samples", o->samples,
                   "samples per pixel: auto (default), 1, 2, 4 or 8; several (--samples 1 4) time each "
                   "case at each count, frames interleaved so that machine load hits all alike");
+  cmd->add_option("--imagery-layer", o->imagery.imageryLayers, "imagery FILE over the land (repeatable)");
+  cmd->add_option("--imagery-cache-cpu-mib", o->imagery.imageryCacheCpuMib, "imagery tile cache, MiB")->check(CLI::Range(1, 65536));
+  cmd->add_option("--imagery-cache-gpu-mib", o->imagery.imageryCacheGpuMib, "imagery tile slots, MiB")->check(CLI::Range(1, 65536));
   cmd->add_flag("--json", o->json, "print JSON instead of a table");
   cmd->add_flag("--breakdown", o->breakdown,
                 "also time every pass (globe, terrain shadows, terrain, ocean waves, ocean, tone "
@@ -236,6 +255,7 @@ Run addBenchCommand(CLI::App& parent) {
       return benchRecord(o->record, sizes, o->frames, o->gl, samples, o->json);
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
+    const std::vector<data::GeoImage> imagery = loadImageryLayers(o->imagery);
     auto context = gl::createHeadlessContext(*gl::parseBackend(o->gl));
     const auto& elevation = data::defaultElevation();
     // Atmosphere start-up: cold (empty cache directory: precomputation on this GL device),
@@ -282,6 +302,7 @@ Run addBenchCommand(CLI::App& parent) {
                   context->info().renderer.c_str(), context->info().backend.c_str(), startupMs,
                   atmoColdMs, atmoCachedMs, cached->timing().fromCache ? "" : " (cache MISSED)",
                   cached->timing().skyMapsMs, "view", "size", "samples", "median", "min", "max");
+    for (auto& r : renderers) setImageryLayers(r->imagery(), o->imagery, imagery);
     std::vector<gl::PassTimer> timers;
     for (std::size_t k = 0; k < renderers.size(); ++k) timers.emplace_back(timerMode(o->timer));
     for (std::size_t k = 0; k < renderers.size(); ++k)
@@ -326,12 +347,14 @@ Run addBenchCommand(CLI::App& parent) {
                                      {"terrain_cpu_bytes", ts.cpuBytes},
                                      {"terrain_gpu_bytes", ts.gpuBytes},
                                      {"imagery_gpu_bytes", renderers[k]->imagery().gpuBytes() +
-                                                               renderers[k]->landMask().gpuBytes()}});
+                                                               renderers[k]->landMask().gpuBytes()},
+                                     {"imagery_tiles", imageryTilesJson(renderers[k]->imagery().tileStats())}});
           if (!o->json)
-            std::printf("%-16s %10s %7d %7.2fms %7.2fms %7.2fms  terrain %d tiles, %.1f MiB CPU + %.1f MiB GPU\n",
+            std::printf("%-16s %10s %7d %7.2fms %7.2fms %7.2fms  terrain %d tiles, %.1f MiB CPU + %.1f MiB GPU%s\n",
                         view.name, size.c_str(), renderers[k]->samples(), median, t.front(),
                         t.back(), ts.tiles, static_cast<double>(ts.cpuBytes) / 1048576.0,
-                        static_cast<double>(ts.gpuBytes) / 1048576.0);
+                        static_cast<double>(ts.gpuBytes) / 1048576.0,
+                        imageryTilesLine(renderers[k]->imagery().tileStats()).c_str());
           if (!o->breakdown) continue;
           nlohmann::json breakdown = nlohmann::json::object();
           const gl::PassTimer::Mode mode = timers[k].mode();

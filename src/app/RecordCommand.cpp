@@ -219,7 +219,7 @@ RecordingGl setUpRenderer(const io::SceneSettings& scene, std::size_t frames, Re
   if (wind && wind->timeVarying() && !scene.time)
     log::warn("the wind layers have a time axis but the path has no UTC time ([scene] time or "
               "--time): the winds stay at their first step");
-  gl.renderer->imagery().setLayers(imagery);
+  setImageryLayers(gl.renderer->imagery(), scene, imagery);
   return gl;
 }
 

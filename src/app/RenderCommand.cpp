@@ -67,7 +67,7 @@ Run addRenderCommand(CLI::App& parent) {
               " with " + context->info().backend + " (" + context->info().renderer + ")");
     render::GlobeRenderer renderer(elevation, scene.atmosphere);
     renderer.setWindLayers(wind);
-    renderer.imagery().setLayers(imagery);
+    setImageryLayers(renderer.imagery(), scene, imagery);
     render::FrameInput frame = frameInputOf(scene);
     frame.auxiliaryOutputs = needsAuxiliaryOutputs(opts->aovs);
     renderer.render(frame);

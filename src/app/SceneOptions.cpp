@@ -59,6 +59,10 @@ void SceneOptions::add(CLI::App& cmd) {
                  "georeferenced imagery FILE draped over the land (GeoTIFF/COG, JPEG/PNG with a "
                  "world file, ... in EPSG:4326, 3857 or any CRS PROJ knows); repeat, later on top "
                  "(default: the embedded Blue Marble)");
+  cmd.add_option("--imagery-cache-cpu-mib", flags_.imageryCacheCpuMib,
+                 "CPU memory for the imagery layers' decoded tiles, MiB [1, 65536] (default 256)");
+  cmd.add_option("--imagery-cache-gpu-mib", flags_.imageryCacheGpuMib,
+                 "GPU memory for the imagery layers' tiles, MiB [1, 65536] (default 256)");
 }
 
 io::SceneSettings SceneOptions::resolve(io::SceneSettings s) const {
@@ -86,6 +90,8 @@ io::SceneSettings SceneOptions::resolve(io::SceneSettings s) const {
   if (given("--elevation-layer")) s.elevationLayer = flags_.elevationLayer;
   if (given("--elevation-correction")) s.elevationCorrection = flags_.elevationCorrection;
   if (given("--imagery-layer")) s.imageryLayers = flags_.imageryLayers;
+  if (given("--imagery-cache-cpu-mib")) s.imageryCacheCpuMib = flags_.imageryCacheCpuMib;
+  if (given("--imagery-cache-gpu-mib")) s.imageryCacheGpuMib = flags_.imageryCacheGpuMib;
   if (given("--wind")) {
     const geo::Wind wind = geo::parseWindFlag(wind_, s.windFromDeg);
     s.windSpeedMs = wind.speedMs;
@@ -140,6 +146,14 @@ std::vector<data::GeoImage> loadImageryLayers(const io::SceneSettings& s) {
 
 data::LatLonGrid loadElevation(const io::SceneSettings& scene) {
   return data::loadElevationLayer(scene.elevationLayer, data::parseElevationCorrection(scene.elevationCorrection));
+}
+
+void setImageryLayers(render::ImageryTextures& imagery, const io::SceneSettings& s,
+                      const std::vector<data::GeoImage>& layers) {
+  constexpr std::size_t kMib = std::size_t{1} << 20;
+  imagery.setCacheBudgets(static_cast<std::size_t>(s.imageryCacheCpuMib) * kMib,
+                          static_cast<std::size_t>(s.imageryCacheGpuMib) * kMib);
+  imagery.setLayers(layers);
 }
 
 std::shared_ptr<const data::WindLayers> loadWindLayers(const io::SceneSettings& s) {

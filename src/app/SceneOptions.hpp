@@ -61,6 +61,10 @@ std::shared_ptr<const data::WindLayers> loadWindLayers(const io::SceneSettings& 
 /// The scene's imagery layers (data::loadImageryLayers), read before any GL context so a bad
 /// file exits 2 at once.
 std::vector<data::GeoImage> loadImageryLayers(const io::SceneSettings& scene);
+/// Hands `layers` (loadImageryLayers) to the renderer's imagery with the scene's tile cache
+/// budgets (--imagery-cache-cpu-mib / --imagery-cache-gpu-mib).
+void setImageryLayers(render::ImageryTextures& imagery, const io::SceneSettings& scene,
+                      const std::vector<data::GeoImage>& layers);
 
 /// The scene's ocean model ("bruneton" or "classic", validated by io::validateScene).
 render::OceanModel oceanModelOf(const io::SceneSettings& scene);

@@ -111,7 +111,7 @@ class Viewer {
     renderer_ = std::make_unique<render::GlobeRenderer>(ground_.layer(), scene_.atmosphere);
     // Progressive terrain: missing tiles are built in the background, never stalling a frame.
     renderer_->terrain().selection().wait = false;
-    renderer_->imagery().setLayers(imagery_);
+    setImageryLayers(renderer_->imagery(), scene_, imagery_);
     imagery_ = {};  // on the GPU now: release the CPU copy
     // The renderer reads the layers point by point (wind texture); L switches them off.
     if (wind_.size() > 0) windShared_ = std::make_shared<const data::WindLayers>(wind_);

@@ -273,40 +273,84 @@ bool readUnwarped(GDALDatasetH src, const std::string& srcWkt, int width, int he
   return true;
 }
 
-GeoImage readImage(const std::string& path, const std::string& label, const GeoImageRequest& request) {
-  registerGdal();
-  if (request.maxSizePx < 16 || request.maxSizePx > 16384)
-    throw InternalError("imagery size limit out of range: " + std::to_string(request.maxSizePx));
-  GdalErrors errors;
-  Dataset src = openRaster(path, label, errors);
-  const std::string srcWkt = sourceSrs(src.get(), label);
-  src = toEightBit(std::move(src), label, errors);
-  const Extent x = geographicExtent(src.get(), srcWkt, label, errors);
-  int width = x.width, height = x.height;
-  if (request.square) {
-    width = height = request.maxSizePx;
-  } else if (std::max(width, height) > request.maxSizePx) {
-    const double s = static_cast<double>(request.maxSizePx) / std::max(width, height);
-    width = std::max(1, static_cast<int>(std::lround(width * s)));
-    height = std::max(1, static_cast<int>(std::lround(height * s)));
-  }
-  if (GeoImage direct; readUnwarped(src.get(), srcWkt, width, height, label, errors, direct)) return direct;
-  Dataset geo = warpToGeographic(src.get(), srcWkt, x, width, height, true, {}, label, errors);
+/// An 8-bit GeoImage of the warped dataset `geo` (colour bands + an alpha band last).
+GeoImage imageOf(GDALDatasetH geo, const Extent& x, const std::string& label, const GdalErrors& errors) {
   GeoImage img;
   img.label = label;
-  img.width = width;
-  img.height = height;
+  img.width = GDALGetRasterXSize(geo);
+  img.height = GDALGetRasterYSize(geo);
   img.westDeg = x.west;
   img.southDeg = x.south;
   img.eastDeg = x.east;
   img.northDeg = x.north;
-  img.rgba.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4, 0);
-  const int bands = GDALGetRasterCount(geo.get());  // colour bands + the alpha band
+  img.rgba.assign(static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height) * 4, 0);
+  const int bands = GDALGetRasterCount(geo);  // colour bands + the alpha band
   const int colour = std::min(3, bands - 1);
-  for (int c = 0; c < 3; ++c) readByteBand(geo.get(), std::min(c, colour - 1) + 1, img.rgba.data() + c, 4, label, errors);
-  readByteBand(geo.get(), bands, img.rgba.data() + 3, 4, label, errors);
+  for (int c = 0; c < 3; ++c) readByteBand(geo, std::min(c, colour - 1) + 1, img.rgba.data() + c, 4, label, errors);
+  readByteBand(geo, bands, img.rgba.data() + 3, 4, label, errors);
   return img;
 }
+
+}  // namespace
+
+struct GeoImageReader::State {
+  std::string label;
+  Dataset dataset;
+  std::string wkt;
+  Extent extent{};
+  GeoFootprint footprint;
+};
+
+GeoImageReader::GeoImageReader(const std::string& path, const std::string& label) : state_(std::make_unique<State>()) {
+  registerGdal();
+  GdalErrors errors;
+  State& s = *state_;
+  s.label = label;
+  s.dataset = openRaster(path, label, errors);
+  s.wkt = sourceSrs(s.dataset.get(), label);
+  s.dataset = toEightBit(std::move(s.dataset), label, errors);
+  s.extent = geographicExtent(s.dataset.get(), s.wkt, label, errors);
+  s.footprint = {s.extent.west, s.extent.south, s.extent.east, s.extent.north, s.extent.width, s.extent.height};
+}
+
+GeoImageReader::~GeoImageReader() = default;
+
+const GeoFootprint& GeoImageReader::footprint() const { return state_->footprint; }
+const std::string& GeoImageReader::label() const { return state_->label; }
+
+GeoImage GeoImageReader::read(double westDeg, double southDeg, double eastDeg, double northDeg, int widthPx,
+                              int heightPx) const {
+  GdalErrors errors;
+  const State& s = *state_;
+  // The window's size at the source's resolution decides between averaging and bilinear.
+  const double cell = s.footprint.cellDeg();
+  const Extent x{westDeg, southDeg, eastDeg, northDeg,
+                 static_cast<int>(std::ceil((eastDeg - westDeg) / cell)),
+                 static_cast<int>(std::ceil((northDeg - southDeg) / cell))};
+  Dataset geo = warpToGeographic(s.dataset.get(), s.wkt, x, widthPx, heightPx, true, {}, s.label, errors);
+  return imageOf(geo.get(), x, s.label, errors);
+}
+
+GeoImage GeoImageReader::readWhole(const GeoImageRequest& request) const {
+  if (request.maxSizePx < 16 || request.maxSizePx > 16384)
+    throw InternalError("imagery size limit out of range: " + std::to_string(request.maxSizePx));
+  GdalErrors errors;
+  const State& s = *state_;
+  const Extent& x = s.extent;
+  int width = x.width, height = x.height;
+  if (request.square) {
+    width = height = request.maxSizePx;
+  } else if (std::max(width, height) > request.maxSizePx) {
+    const double f = static_cast<double>(request.maxSizePx) / std::max(width, height);
+    width = std::max(1, static_cast<int>(std::lround(width * f)));
+    height = std::max(1, static_cast<int>(std::lround(height * f)));
+  }
+  if (GeoImage direct; readUnwarped(s.dataset.get(), s.wkt, width, height, s.label, errors, direct)) return direct;
+  Dataset geo = warpToGeographic(s.dataset.get(), s.wkt, x, width, height, true, {}, s.label, errors);
+  return imageOf(geo.get(), x, s.label, errors);
+}
+
+namespace {
 
 bool hasExtension(const fs::path& file, std::initializer_list<const char*> exts) {
   std::string e = file.extension().string();
@@ -376,7 +420,9 @@ ByteRaster readGeographicBytesMemory(std::string_view bytes, std::string_view wo
 }
 
 GeoImage readGeoImage(const fs::path& file, const GeoImageRequest& request) {
-  return readImage(file.string(), file.string(), request);
+  GeoImage img = GeoImageReader(file.string(), file.string()).readWhole(request);
+  img.sourcePath = file.string();
+  return img;
 }
 
 GeoImage readGeoImageMemory(std::string_view bytes, std::string_view worldFile,
@@ -387,7 +433,7 @@ GeoImage readGeoImageMemory(std::string_view bytes, std::string_view worldFile,
   MemoryFile image(dir + "/image." + extension, bytes);
   std::unique_ptr<MemoryFile> world;
   if (!worldFile.empty()) world = std::make_unique<MemoryFile>(dir + "/image.wld", worldFile);
-  return readImage(dir + "/image." + extension, label, request);
+  return GeoImageReader(dir + "/image." + extension, label).readWhole(request);
 }
 
 LatLonGrid readGeoRasterGrid(const fs::path& file, int maxSizePx) {

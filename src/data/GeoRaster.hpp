@@ -5,6 +5,7 @@
 // captured by a scoped error handler; every failure is an og::InputError "FILE: problem".
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,6 +26,9 @@ struct GeoImage {
   /// width * height * 4 bytes: sRGB-encoded colour as in the file, alpha = coverage
   /// (0 where the source has no data or lies outside its footprint).
   std::vector<std::uint8_t> rgba;
+  /// The file it was read from, for reading finer windows of it later (imagery tiles); empty
+  /// for an image in memory.
+  std::string sourcePath;
 
   [[nodiscard]] bool coversGlobe() const { return eastDeg - westDeg >= 359.9 && northDeg - southDeg >= 179.9; }
   /// The pixel at (column, row), row 0 south. Channel c in [0, 4).
@@ -49,6 +53,44 @@ struct GeoImageRequest {
 /// when its extent lies within ±180°/±90°. Throws og::InputError "FILE: problem" when GDAL
 /// cannot read it, when it has no georeferencing, or when it cannot be reprojected.
 GeoImage readGeoImage(const std::filesystem::path& file, const GeoImageRequest& request = {});
+
+/// The footprint of a raster in EPSG:4326, degrees, and its size there at its own resolution.
+struct GeoFootprint {
+  double westDeg = 0.0, southDeg = 0.0, eastDeg = 0.0, northDeg = 0.0;
+  int widthPx = 0, heightPx = 0;  ///< GDAL's suggested size that keeps the source's resolution
+  /// The source's finest cell in EPSG:4326, degrees (the smaller of its two sides).
+  [[nodiscard]] double cellDeg() const {
+    const double w = (eastDeg - westDeg) / widthPx, h = (northDeg - southDeg) / heightPx;
+    return w < h ? w : h;
+  }
+};
+
+/// An open georeferenced colour raster from which windows are read again and again (imagery
+/// tiles), each resampled with GDAL's warper (which uses the file's overviews when reading
+/// coarser than the source). One thread at a time per reader: open one per thread.
+class GeoImageReader {
+ public:
+  /// Opens `path` (a file or a /vsimem/ path), named `label` in messages, as readGeoImage
+  /// reads it. Throws og::InputError "LABEL: problem".
+  GeoImageReader(const std::string& path, const std::string& label);
+  ~GeoImageReader();
+  GeoImageReader(const GeoImageReader&) = delete;
+  GeoImageReader& operator=(const GeoImageReader&) = delete;
+
+  [[nodiscard]] const GeoFootprint& footprint() const;
+  [[nodiscard]] const std::string& label() const;
+  /// The window west..east × south..north (degrees; it may reach past the footprint, where
+  /// alpha is 0) resampled to widthPx × heightPx. Throws og::InputError "LABEL: problem" when
+  /// the pixels cannot be read (a truncated or corrupt file).
+  GeoImage read(double westDeg, double southDeg, double eastDeg, double northDeg, int widthPx,
+                int heightPx) const;
+  /// The whole footprint as readGeoImage returns it.
+  [[nodiscard]] GeoImage readWhole(const GeoImageRequest& request) const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 /// Same for an image in memory (e.g. embedded in the binary) with its world file's text
 /// (`worldFile`, may be empty when the format carries its own georeferencing); `extension`

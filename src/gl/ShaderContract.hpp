@@ -25,6 +25,7 @@ enum TextureUnit : unsigned {
   kUnitShadowMap = 11,           ///< terrain/shadow.glsl
   kUnitPatternDisplacement = 12,
   kUnitPatternSlopes = 13,
+  kUnitImageryTiles = 14,        ///< terrain/imagery.glsl (render/ImageryTiles)
   kUnitImageryDay = 15,          ///< terrain/imagery.glsl (render/ImageryTextures)
   kUnitImageryNight = 16,
   kUnitImageryLayers = 17,

@@ -52,6 +52,10 @@ struct SceneSettings {
   /// Georeferenced imagery draped over the land (GDAL rasters), bottom first; the embedded
   /// Blue Marble is always underneath.
   std::vector<std::string> imageryLayers;
+  /// Budgets of the imagery layers' streamed tiles (docs/data.md), MiB, [1, 65536]: decoded
+  /// tiles kept in CPU memory, and tile slots in GPU memory.
+  int imageryCacheCpuMib = 256;
+  int imageryCacheGpuMib = 256;
   double simulationTimeS = 0.0;           ///< wave clock at the image (record: at frame 0), s
   /// record/view: UTC seconds that pass per second of path (or of viewing), [0, 1e6]; the Sun
   /// and the wind layers follow this clock, the waves keep real time. 1 = real time.

@@ -166,6 +166,20 @@ std::vector<SceneField> oceanFields() {
   return {model, speed, from, clock, seed};
 }
 
+/// An imagery tile cache budget, MiB, [1, 65536]; written only when not the default (256).
+SceneField imageryCache(std::string_view key, std::string_view label, int SceneSettings::*member) {
+  SceneField f = ranged(field("layers", key, FieldType::Integer, "MiB", label), 1, 65536);
+  f.get = [member](const SceneSettings& s) -> FieldValue {
+    if (s.*member == 256) return std::monostate{};
+    return std::int64_t{s.*member};
+  };
+  f.set = [member](SceneSettings& s, const FieldValue& v) {
+    const std::int64_t* i = std::get_if<std::int64_t>(&v);
+    s.*member = i ? static_cast<int>(*i) : 256;
+  };
+  return f;
+}
+
 std::vector<SceneField> layerFields() {
   SceneField wind = field("layers", "wind", FieldType::TextList, "", "wind layers");
   wind.legacyPathKey = "wind_layers";
@@ -197,7 +211,9 @@ std::vector<SceneField> layerFields() {
   // default corrected, etopo5-banks = any layer, none = as the file has it.
   SceneField correction = text("layers", "elevation_correction", "elevation correction",
                                &SceneSettings::elevationCorrection, {"auto", "etopo5-banks", "none"});
-  return {wind, elevation, correction, imagery, backend};
+  return {wind, elevation, correction, imagery,
+          imageryCache("imagery_cache_cpu_mib", "imagery CPU cache", &SceneSettings::imageryCacheCpuMib),
+          imageryCache("imagery_cache_gpu_mib", "imagery GPU cache", &SceneSettings::imageryCacheGpuMib), backend};
 }
 
 std::vector<SceneField> atmosphereFields() {

@@ -6,6 +6,7 @@
 
 #include "core/Error.hpp"
 #include "data/Imagery.hpp"
+#include "data/ImageryTiles.hpp"
 #include "gl/ShaderContract.hpp"
 
 namespace og::render {
@@ -76,12 +77,38 @@ void ImageryTextures::setLayers(const std::vector<data::GeoImage>& layers) {
   setSampling(layers_.id(), false);
   layerTexelRad_ = static_cast<float>(layerCount_ > 0 ? finest : 1.0);
   bytes_ = mippedBytes(2048, 1024, 2) + mippedBytes(size, size, layerCount_);
+  streamTiles(layers);
+}
+
+void ImageryTextures::streamTiles(const std::vector<data::GeoImage>& layers) {
+  tiles_.reset();  // joins its readers before new ones open
+  std::vector<std::shared_ptr<const data::ImageryTileSource>> sources(static_cast<std::size_t>(data::kMaxImageryLayers));
+  bool any = false;
+  for (int i = 0; i < layerCount_; ++i) {
+    const data::GeoImage& img = layers[static_cast<std::size_t>(i)];
+    if (img.sourcePath.empty()) continue;
+    auto source = std::make_shared<const data::ImageryTileSource>(img.sourcePath, i, img.width);
+    if (source->minLevel() > source->maxLevel()) continue;  // the whole texture holds it all
+    sources[static_cast<std::size_t>(i)] = std::move(source);
+    any = true;
+  }
+  if (any) tiles_ = std::make_unique<ImageryTiles>(std::move(sources), cpuBudget_, gpuBudget_);
+}
+
+void ImageryTextures::prepareTiles(std::span<const terrain::TileKey> drawn, bool wait) {
+  if (tiles_ && enabled_) tiles_->prepare(drawn, wait && !tilesInBackground_);
+}
+
+void ImageryTextures::bindTile(const gl::Program& program, const terrain::TileKey& key) {
+  if (tiles_ && enabled_) tiles_->bindTile(program, key);
 }
 
 void ImageryTextures::bind(const gl::Program& program) const {
   glBindTextureUnit(gl::kUnitImageryDay, day_.id());
   glBindTextureUnit(gl::kUnitImageryNight, night_.id());
   glBindTextureUnit(gl::kUnitImageryLayers, layers_.id());
+  glBindTextureUnit(gl::kUnitImageryTiles, layers_.id());  // a 2D array until a tile binds its own
+  ImageryTiles::bindNone(program);
   program.set("uImageryEnabled", enabled_ ? 1 : 0);
   program.set("uImageryDayTexelRad", dayTexelRad_);
   program.set("uImageryLayerCount", layerCount_);

@@ -6,9 +6,14 @@
 //  * gl::kUnitImageryNight: the night lights, global (the embedded Earth at night, 2048 × 1024);
 //  * gl::kUnitImageryLayers: the `--imagery-layer`s, a 2D array of kImageryLayerSizePx² layers
 //    each over its own latitude/longitude extent, alpha = coverage, later layers on top.
-// Each user layer is one whole mip-mapped texture (not streamed tiles): ~21 MiB of GPU memory
-// per 2048² layer, at most data::kMaxImageryLayers (8) layers, so ≤ 170 MiB.
+// Each user layer is one whole mip-mapped texture: ~21 MiB of GPU memory per 2048² layer, at
+// most data::kMaxImageryLayers (8) layers, so ≤ 170 MiB; it is what the globe pass (above the
+// terrain) and any terrain not yet covered by a finer tile show. A layer read from a file
+// finer than that texture also streams as tiles (render/ImageryTiles.hpp) for the terrain,
+// under the CPU and GPU cache budgets (setCacheBudgets).
 #include <cstddef>
+#include <memory>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -16,6 +21,8 @@
 #include "data/GeoRaster.hpp"
 #include "gl/Objects.hpp"
 #include "gl/Shader.hpp"
+#include "render/ImageryTiles.hpp"
+#include "terrain/Tile.hpp"
 
 namespace og::render {
 
@@ -24,9 +31,34 @@ class ImageryTextures {
   /// Needs a current GL context. Uploads the embedded day and night images.
   ImageryTextures();
 
+  /// Default imagery tile cache budgets (docs/data.md): 256 MiB of CPU and of GPU memory.
+  static constexpr std::size_t kDefaultCacheBytes = std::size_t{256} << 20;
+
   /// Replaces the user's imagery layers (later ones on top); empty: only the base image.
-  /// All layers must be square and of one size (data::loadImageryLayers makes them so).
+  /// All layers must be square and of one size (data::loadImageryLayers makes them so). Layers
+  /// read from a file finer than their texture stream tiles from it (throws og::InputError
+  /// "FILE: problem" when it cannot be opened again).
   void setLayers(const std::vector<data::GeoImage>& layers);
+  /// The streamed tiles' cache budgets, bytes (each at least one tile); applies to the next
+  /// setLayers().
+  void setCacheBudgets(std::size_t cpuBytes, std::size_t gpuBytes) {
+    cpuBudget_ = cpuBytes;
+    gpuBudget_ = gpuBytes;
+  }
+
+  /// Before the terrain draws these tiles: streams the imagery tiles they want (with `wait`,
+  /// reads them before returning). No-op without streamed layers.
+  void prepareTiles(std::span<const terrain::TileKey> drawn, bool wait);
+  /// Sets the per-draw uniforms for terrain tile `key` (after bind()).
+  void bindTile(const gl::Program& program, const terrain::TileKey& key);
+  /// true: never wait for imagery tiles, even in frames whose terrain waits for its own (they
+  /// arrive in a later frame; ancestors stand in). Default false: they follow the terrain.
+  void setTilesInBackground(bool background) { tilesInBackground_ = background; }
+  /// The streamed tiles (nullptr when no layer streams).
+  [[nodiscard]] ImageryTiles* tiles() { return tiles_.get(); }
+  [[nodiscard]] const ImageryTiles* tiles() const { return tiles_.get(); }
+  /// Tile cache use (zeros when no layer streams).
+  [[nodiscard]] ImageryTileStats tileStats() const { return tiles_ ? tiles_->stats() : ImageryTileStats{}; }
 
   /// Scales the night lights' radiance (1 = the default; 0 = none). See imagery.glsl.
   void setNightLights(float scale) { nightScale_ = scale; }
@@ -43,6 +75,9 @@ class ImageryTextures {
   void bind(const gl::Program& program) const;
 
  private:
+  /// Opens the tile sources of the layers read from files finer than their textures.
+  void streamTiles(const std::vector<data::GeoImage>& layers);
+
   gl::Texture day_;
   gl::Texture night_;
   gl::Texture layers_;
@@ -53,6 +88,10 @@ class ImageryTextures {
   float nightScale_ = 1.0f;
   bool enabled_ = true;
   std::size_t bytes_ = 0;
+  std::size_t cpuBudget_ = kDefaultCacheBytes;
+  std::size_t gpuBudget_ = kDefaultCacheBytes;
+  std::unique_ptr<ImageryTiles> tiles_;
+  bool tilesInBackground_ = false;
 };
 
 }  // namespace og::render

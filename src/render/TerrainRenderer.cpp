@@ -196,6 +196,7 @@ void TerrainRenderer::drawTiles(const geo::CameraView& view, const std::vector<c
     p.set("uDetailFirst", t->normalOctaves);
     // Only tiles with water at a vertex look the coast up per pixel (terrain.frag).
     p.set("uTileHasWater", t->minHeightM <= 0.0 ? 1 : 0);
+    if (imagery_ != nullptr) imagery_->bindTile(p, t->key);
     bindTile(*t);
     glEnable(GL_CULL_FACE);
     glDrawElements(GL_TRIANGLES, gridIndices, GL_UNSIGNED_INT, nullptr);
@@ -251,6 +252,14 @@ void TerrainRenderer::setDetailUniforms(const gl::Program& p, const geo::CameraV
   p.set("uEyeFootScale", static_cast<float>(glm::length(foot * glm::dvec3(1.0, 1.0, ab * ab))));
 }
 
+void TerrainRenderer::prepareImagery(const std::vector<const terrain::Tile*>& tiles) {
+  std::vector<terrain::TileKey> keys;
+  keys.reserve(tiles.size());
+  for (const terrain::Tile* t : tiles)
+    if (!t->coveredBySea()) keys.push_back(t->key);
+  imagery_->prepareTiles(keys, params_.wait);
+}
+
 void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
                            const glm::dvec3& sunDirectionEcef, bool seaFromGlobe) {
   params_.widthPx = width;
@@ -259,6 +268,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   if (timer_ != nullptr) timer_->mark("terrain selection");
   const auto tiles = terrain::selectTiles(cache_, view, params_, &sel);
   for (const std::uint64_t key : cache_.takeEvicted()) gpu_.erase(key);
+  if (imagery_ != nullptr) prepareImagery(tiles);
 
   if (timer_ != nullptr) timer_->mark("terrain shadows");
   // Casters: tiles that reach above the sea. Deep sea-floor tiles shadow nothing seen, so

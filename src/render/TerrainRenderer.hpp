@@ -68,7 +68,7 @@ class TerrainRenderer {
   /// The shadow maps drawn by the last draw() (off when there were none).
   [[nodiscard]] const SunShadows& shadows() const { return shadows_; }
   /// The imagery draped as the terrain's albedo (nullptr: the stand-in materials). Not owned.
-  void setImagery(const ImageryTextures* imagery) { imagery_ = imagery; }
+  void setImagery(ImageryTextures* imagery) { imagery_ = imagery; }
   /// Selection settings; `wait = false` (progressive) never stalls a frame on tile builds.
   terrain::SelectionParams& selection() { return params_; }
 
@@ -87,6 +87,8 @@ class TerrainRenderer {
   void renderShadowMap(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
                        const glm::dvec3& sunDirectionEcef);
   void bindTile(const terrain::Tile& tile);
+  /// Streams the imagery tiles the land tiles to draw want (ImageryTextures::prepareTiles).
+  void prepareImagery(const std::vector<const terrain::Tile*>& tiles);
   /// terrain.vert's uMorphScale for a tile.
   [[nodiscard]] float morphScale(const terrain::Tile& tile, const geo::CameraView& view) const;
   struct GpuTile {
@@ -94,7 +96,7 @@ class TerrainRenderer {
   };
 
   const Atmosphere* atmosphere_;
-  const ImageryTextures* imagery_ = nullptr;
+  ImageryTextures* imagery_ = nullptr;
   terrain::TileCache cache_;
   terrain::SelectionParams params_;
   gl::Program program_;

@@ -59,3 +59,28 @@ TEST(CliImagery, JpegWithWorldFileRenders) {
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(fs::exists(dir / "ok.png"));
 }
+
+TEST(CliImagery, BadCacheBudgetsExit2NamingTheSetting) {
+  const fs::path dir = scratch();
+  const std::string base = "render --lat 10 --lon 20 --alt 20000000 --width 32 --height 32 -o " +
+                           (dir / "cache.png").string();
+  for (const char* bad : {"--imagery-cache-cpu-mib 0", "--imagery-cache-gpu-mib 70000",
+                         "--imagery-cache-gpu-mib -5"}) {
+    SCOPED_TRACE(bad);
+    const auto r = run(base + " " + std::string(bad));
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(lines(r.err), 1u) << r.err;
+    EXPECT_NE(r.err.find("imagery"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("cache"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "cache.png"));
+  }
+  // A scene file's key is checked the same way.
+  const fs::path scene = dir / "cache.toml";
+  std::ofstream(scene) << "[layers]\nimagery_cache_cpu_mib = 0\n";
+  const auto r = run(base + " --config " + scene.string());
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("imagery_cache_cpu_mib"), std::string::npos) << r.err;
+  // In range: renders.
+  const auto ok = run(base + " --imagery-cache-cpu-mib 16 --imagery-cache-gpu-mib 16");
+  EXPECT_EQ(ok.exitCode, 0) << ok.err;
+}

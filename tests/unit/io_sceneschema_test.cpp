@@ -91,7 +91,7 @@ TEST(SceneSchema, EverySettingHasOneKeyAndAUnitInItsName) {
   std::set<std::string> seen;
   for (const SceneField& f : og::io::sceneSchema()) {
     EXPECT_TRUE(seen.insert(std::string(f.section) + "." + std::string(f.key)).second) << f.key;
-    const bool unitInName = f.key.ends_with("_deg") || f.key.ends_with("_m") || f.key.ends_with("_ms") ||
+    const bool unitInName = f.key.ends_with("_deg") || f.key.ends_with("_m") || f.key.ends_with("_ms") || f.key.ends_with("_mib") ||
                             f.key.ends_with("_s");
     if (!f.unit.empty() && f.unit != "px" && f.unit != "1/m") {
       EXPECT_TRUE(unitInName) << f.key;
