@@ -56,6 +56,7 @@ Run addRenderCommand(CLI::App& parent) {
     if (!opts->aovs.empty() && format != Format::Exr)
       throw InputError(out.string() + ": --aov needs an OpenEXR output (.exr): PNG has no extra channels");
     checkOutputWritable(out);  // fail before the (long) render, not after
+    const std::future<void> defaultImagery = prefetchDefaultImagery();
     // Data layers before the GL context: a bad file exits 2 without rendering anything.
     const data::LatLonGrid elevation = loadElevation(scene);
     const std::shared_ptr<const data::WindLayers> wind = loadWindLayers(scene);

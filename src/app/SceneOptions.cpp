@@ -144,6 +144,13 @@ std::vector<data::GeoImage> loadImageryLayers(const io::SceneSettings& s) {
   return data::loadImageryLayers(files);
 }
 
+std::future<void> prefetchDefaultImagery() {
+  return std::async(std::launch::async, [] {
+    (void)data::defaultDayImagery();
+    (void)data::defaultNightLights();
+  });
+}
+
 data::LatLonGrid loadElevation(const io::SceneSettings& scene) {
   return data::loadElevationLayer(scene.elevationLayer, data::parseElevationCorrection(scene.elevationCorrection));
 }
