@@ -72,6 +72,11 @@ Heightfield::Heightfield(data::LatLonGrid layer) : layer_(std::move(layer)) {
     ++octaves_.normalCount;
   }
   if (octaves_.norm <= 0.0) octaves_.norm = 1.0;
+  // The land's detail amplitude per metre of the layer's RMS difference σ(Δ) (below): the
+  // weights' sum times octave 0's a_0 = (λ_0 / c) S(λ_0) sqrt(1 - 4^(H-1)) for σ(Δ) = 1 m.
+  amplitudePerRms_ = octaves_.norm * octaves_.longestM / kRidgedSlopeRms *
+                     calibratedRmsSlope(1.0, octaves_.longestM) *
+                     std::sqrt(1.0 - std::pow(4.0, detailHurst() - 1.0));
 }
 
 double Heightfield::layerHeightM(double latitudeDeg, double longitudeDeg) const {
@@ -132,13 +137,11 @@ double Heightfield::detailShadingAmplitudeM(double latitudeDeg, double longitude
   // S(λ_k)² (1 - 4^(H-1)); its slope is a_k c / λ_k (c: the ridged noise's RMS gradient), so
   // a_k = (λ_k / c) S(λ_k) sqrt(1 - 4^(H-1)), which falls as λ_k^H like the octaves' weights:
   // the detail's amplitude (octave 0's times the weights' sum) follows from octave 0.
-  const double hurst = detailHurst();
-  const double a0 = octaves_.longestM / kRidgedSlopeRms *
-                    calibratedRmsSlope(layerRmsDifferenceM(latitudeDeg, longitudeDeg, h), octaves_.longestM) *
-                    std::sqrt(1.0 - std::pow(4.0, hurst - 1.0));
+  // Linear in σ(Δ): the factor is amplitudePerRms_ (the constructor's).
   // Flat plains stay flat (a smooth layer gives little); plateaus keep some relief (3 % of
   // their height).
-  const double amplitude = std::max(octaves_.norm * a0, 0.03 * h);
+  const double amplitude =
+      std::max(amplitudePerRms_ * layerRmsDifferenceM(latitudeDeg, longitudeDeg, h), 0.03 * h);
   return amplitude < 0.5 ? 0.0 : amplitude;
 }
 
@@ -162,9 +165,10 @@ HeightSample Heightfield::sample(double latitudeDeg, double longitudeDeg, int no
   s.shadingAmplitudeM = detailShadingAmplitudeM(latitudeDeg, longitudeDeg, h);
   glm::dvec3 grad(0.0);
   s.heightM = h;
-  if (s.detailAmplitudeM > 0.0)
-    s.heightM = h + s.detailAmplitudeM * detailSum(octaves_, up, octaves_.heightCount,
-                                                   normalOctaves, &grad);
+  if (s.shadingAmplitudeM > 0.0) {
+    const double sum = detailSum(octaves_, up, octaves_.heightCount, normalOctaves, &grad);
+    if (s.detailAmplitudeM > 0.0) s.heightM = h + s.detailAmplitudeM * sum;
+  }
   // The layer's normal from central differences on the ellipsoid (ECEF), over at least half a
   // cell so the bilinear layer's facets do not show in the lighting.
   const double latN = std::min(latitudeDeg + stepDeg, 90.0), latS = std::max(latitudeDeg - stepDeg, -90.0);
@@ -179,8 +183,10 @@ HeightSample Heightfield::sample(double latitudeDeg, double longitudeDeg, int no
   // At the poles the east-west difference vanishes: the vertical stands in.
   glm::dvec3 n = len > 1e-6 * ns * ns ? c / len : up;
   // Tilt by the detail's height gradient per metre along the surface (the unit sphere's
-  // coordinates move 1/a per metre), tangential part only.
-  const glm::dvec3 g = grad * (s.detailAmplitudeM / geo::kWgs84SemiMajorM);
+  // coordinates move 1/a per metre), tangential part only. With the shading's amplitude, as
+  // the fragment shader's finer octaves: an octave lights the same whether a tile's vertex
+  // normals or its pixels carry it, so tiles of different levels meet without a seam.
+  const glm::dvec3 g = grad * (s.shadingAmplitudeM / geo::kWgs84SemiMajorM);
   n = glm::normalize(n - (g - glm::dot(g, n) * n));
   s.normal = n;
   return s;

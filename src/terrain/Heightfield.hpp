@@ -100,6 +100,7 @@ class Heightfield {
   const data::LandMask* mask_ = nullptr;  ///< decides the coast when the layer is coarser
   double cellM_ = 0.0;
   DetailOctaves octaves_;
+  double amplitudePerRms_ = 0.0;  ///< land detail amplitude per metre of σ(Δ)
 };
 
 /// The detail's Hurst exponent: its octaves' amplitudes fall as wavelength^H (gain 2^-H per
