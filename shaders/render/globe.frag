@@ -33,12 +33,29 @@
 #include "render/aerial.glsl"
 #include "terrain/imagery.glsl"
 
+// The globe is drawn in parts (GlobeRenderer::drawGlobe). llvmpipe runs a shader's code after
+// a `discard` too, masked, so a part cannot leave early by discarding; what it does skip is a
+// fragment failing the depth or stencil test before the shader runs. So three cheap
+// classifying draws (GLOBE_PART_CLASSIFY, arithmetic only) first count into the stencil
+// buffer what each pixel needs: 0 nothing (pure space), 1 the sky only (no ray hits the
+// ellipsoid), 2 both (an edge: the limb, the horizon), 3 the surface only (all four rays hit).
+// Below 20 km, where no pixel sees pure space and the depth test leaves out what the terrain
+// and the grid cover, the first step is skipped and the counts are one lower. Then one draw per part, stencil-tested
+// before the shader (early fragment tests), each compiled with only its part's code.
+#define GLOBE_PART_SKY 1
+#define GLOBE_PART_EDGE 2
+#define GLOBE_PART_SURFACE 3
+#define GLOBE_PART_CLASSIFY 4
+#ifndef GLOBE_PART
+#define GLOBE_PART GLOBE_PART_EDGE  // all the shading code
+#endif
 in vec2 vNdc;
 #include "render/outputs.glsl"
-#ifdef GLOBE_BEHIND
+#if GLOBE_PART != GLOBE_PART_CLASSIFY
 // Below 20 km the globe is drawn last, behind the terrain and the grid (GlobeRenderer): only
-// the pixels they left empty (sky, far land, the grid's horizon gaps) pass the depth test, and
-// they pass it before this shader runs. It writes no depth then.
+// the pixels they left empty (sky, far land, the grid's horizon gaps) pass the depth test.
+// Each part's pixels pass the stencil test (see above). Both tests run before this shader;
+// the depth was written by the classifying draws.
 layout(early_fragment_tests) in;
 #endif
 
@@ -59,6 +76,9 @@ const bool SEA_BY_GRID = true;
 #else
 const bool SEA_BY_GRID = false;
 #endif
+
+const bool PART_HAS_SKY = GLOBE_PART != GLOBE_PART_SURFACE;
+const bool PART_HAS_SURFACE = GLOBE_PART != GLOBE_PART_SKY;
 
 vec3 landAlbedo(float elevation, float latitude) {
   // Stand-in ramp until imagery/material layers exist: lowland green, upland brown, snow.
@@ -121,68 +141,130 @@ vec3 surfaceRadiance(vec3 dir, float t, bool sea) {
          nightLightsRadiance(latLon, footprint, muSP);
 }
 
-void main() {
-  // 4 rotated-grid samples per pixel: an anti-aliased limb, horizon and coastline. The surface
-  // is shaded per sample at edges, once inside (below); the atmosphere, smooth across a pixel, once per pixel for the
-  // samples on the globe (at their mean distance) and once for those in the sky. Loops run
-  // only as many times as needed: llvmpipe skips a loop's remaining trips for a whole quad
-  // but evaluates both sides of a divergent if.
-  const vec2 offsets[4] = vec2[4](vec2(-0.125, -0.375), vec2(0.375, -0.125),
-                                  vec2(0.125, 0.375), vec2(-0.375, 0.125));
+// A pixel's four rays: 4 rotated-grid samples, for an anti-aliased limb, horizon and coastline;
+// ts < 0 where a ray misses the ellipsoid. Arithmetic only (the classifying draws use it).
+struct PixelRays {
   vec3 dirs[4];
   float ts[4];
+  int nHit;  // rays that hit the ellipsoid
+};
+PixelRays traceRays() {
+  const vec2 offsets[4] = vec2[4](vec2(-0.125, -0.375), vec2(0.375, -0.125),
+                                  vec2(0.125, 0.375), vec2(-0.375, 0.125));
+  PixelRays rays;
+  rays.nHit = 0;
+  for (int i = 0; i < 4; ++i) {
+    vec2 ndc = vNdc + offsets[i] * uPixelNdc;
+    rays.dirs[i] = normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp);
+    rays.ts[i] = intersectEllipsoid(rays.dirs[i]);
+    rays.nHit += rays.ts[i] >= 0.0 ? 1 : 0;
+  }
+  return rays;
+}
+
+// The sky seen by the rays that miss: their mean direction's zenith cosine at the camera,
+// raised to just above the sphere's horizon (see the header), and whether it leaves the
+// atmosphere unseen (rays from space that miss it see only the Sun's disc).
+struct SkyView {
+  vec3 dir;
+  float mu;
+  bool space;
+  float sunDisc;  // rays in the Sun's disc
+};
+SkyView skyOf(PixelRays rays) {
+  float cosSun = cos(uAtmosphere.sunAngularRadius);
+  vec3 sum = vec3(0.0);
+  SkyView sky;
+  sky.sunDisc = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    bool miss = rays.ts[i] < 0.0;
+    sum += miss ? rays.dirs[i] : vec3(0.0);
+    sky.sunDisc += miss && dot(rays.dirs[i], uSunDir) > cosSun ? 1.0 : 0.0;
+  }
+  float R = uAtmosphere.bottomRadius;
+  float r = R + uCamAltitude;
+  float rho2 = uCamAltitude * (2.0 * R + uCamAltitude);
+  float top = uAtmosphere.topRadius;
+  sky.dir = normalize(sum);
+  sky.mu = max(dot(sky.dir, uCamUp), -sqrt(rho2) / r + 1e-5);
+  sky.space = r > top && (sky.mu >= 0.0 || r * r * (sky.mu * sky.mu - 1.0) + top * top < 0.0);
+  return sky;
+}
+
+#if GLOBE_PART == GLOBE_PART_CLASSIFY
+// The classifying draws (GlobeRenderer::drawGlobe): each keeps the pixels that pass its step,
+// the stencil counting them: step 0 anything to shade (not pure space), 1 a ray on the globe,
+// 2 all four on it. Step 0 also writes the depth above 20 km.
+void main() {
+  PixelRays rays = traceRays();
+#if GLOBE_CLASSIFY_STEP == 0
+  SkyView sky = skyOf(rays);
+  if (rays.nHit == 0 && sky.space && sky.sunDisc == 0.0) discard;
+#elif GLOBE_CLASSIFY_STEP == 1
+  if (rays.nHit == 0) discard;
+#else
+  if (rays.nHit < 4) discard;
+#endif
+  fragRadiance = vec4(0.0);  // colour writes are masked off
+  fragAux = vec4(0.0);
+#if !defined(GLOBE_BEHIND) && GLOBE_CLASSIFY_STEP == 0
+  // Depth of the surface on the pixel-centre ray where it hits the globe, as the terrain and
+  // the grid rasterise theirs, so land at or above sea level always passes in front of this
+  // fallback (the nearest sample would stand up to half a pixel's footprint closer: from 30
+  // km, hundreds of metres at a grazing angle, hiding low coasts). The nearest sample
+  // otherwise; the far plane (0) for the sky.
+  float depthZ = 1e30;
+  for (int i = 0; i < 4; ++i)
+    depthZ = rays.ts[i] >= 0.0 ? min(depthZ, rays.ts[i] * dot(rays.dirs[i], uForward)) : depthZ;
+  vec3 centreDir = normalize(uForward + vNdc.x * uTanHalfFov.x * uRight + vNdc.y * uTanHalfFov.y * uUp);
+  float centreT = rays.nHit > 0 ? intersectEllipsoid(centreDir) : -1.0;
+  if (centreT >= 0.0) {
+    depthZ = centreT * dot(centreDir, uForward);
+    // Over land the terrain draws the ground and this flat fallback must never stand in front
+    // of a tile: the coarsest tiles' chords sag up to ~0.5 km below the ellipsoid. Over the sea
+    // (from orbit) the depth stays exact, so the sea surface hides the bathymetry.
+    if (elevationAt(latLonOfNormal(ellipsoidNormal(centreDir, centreT))) > 0.0) depthZ += 20000.0;
+  }
+  gl_FragDepth = rays.nHit > 0 ? clamp(uNear / depthZ, 0.0, 1.0) : 0.0;
+#endif
+}
+#else
+void main() {
+  // The surface is shaded per sample at edges, once inside (below); the atmosphere, smooth
+  // across a pixel, once per pixel for the samples on the globe (at their mean distance) and
+  // once for those in the sky. Loops run only as many times as needed: llvmpipe skips a
+  // loop's remaining trips for a whole vector of pixels but evaluates both sides of an if.
+  PixelRays rays = traceRays();
   int hits[4];
   bool seas[4];
-  vec3 hitDir = vec3(0.0), skyDir = vec3(0.0);
+  vec3 hitDir = vec3(0.0);
   float hitT = 0.0;
   int nHit = 0, nSea = 0;
-  float nearestT = 1e30;
-  float sunDisc = 0.0;
   float seaHoles = 0.0;
   vec3 seaHoleDir = vec3(0.0);
   float seaHoleT = 0.0;
-  float cosSun = cos(uAtmosphere.sunAngularRadius);
   for (int i = 0; i < 4; ++i) {
-    vec2 ndc = vNdc + offsets[i] * uPixelNdc;
-    dirs[i] = normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp);
-    ts[i] = intersectEllipsoid(dirs[i]);
-    bool sea = ts[i] >= 0.0 && elevationAt(latLonOfNormal(ellipsoidNormal(dirs[i], ts[i]))) <= 0.0;
-    // Below 20 km the grid pass draws the sea: leave sea samples to it (no colour, no depth).
+    bool sea = PART_HAS_SURFACE && rays.ts[i] >= 0.0 &&
+               elevationAt(latLonOfNormal(ellipsoidNormal(rays.dirs[i], rays.ts[i]))) <= 0.0;
+    // Below 20 km the grid pass draws the sea: leave sea samples to it (no colour).
     if (sea && SEA_BY_GRID) {
       seaHoles += 1.0;
-      seaHoleDir = dirs[i];
-      seaHoleT = ts[i];
+      seaHoleDir = rays.dirs[i];
+      seaHoleT = rays.ts[i];
       continue;
     }
     nSea += sea ? 1 : 0;
     seas[i] = sea;
-    if (ts[i] < 0.0) {
-      skyDir += dirs[i];
-      sunDisc += dot(dirs[i], uSunDir) > cosSun ? 1.0 : 0.0;
-    } else {
+    if (rays.ts[i] >= 0.0) {
       hits[nHit++] = i;
-      hitDir += dirs[i];
-      hitT += ts[i];
-      nearestT = min(nearestT, ts[i] * dot(dirs[i], uForward));
+      hitDir += rays.dirs[i];
+      hitT += rays.ts[i];
     }
   }
   float R = uAtmosphere.bottomRadius;
   float h = uCamAltitude;
   float r = R + h;
   float rho2 = h * (2.0 * R + h);
-  // The sky: to the top of the atmosphere, above the sphere's horizon. Rays from space that
-  // miss the atmosphere see only the Sun's disc (no table lookups: most of an orbit view).
-  vec3 skyDirection = normalize(skyDir);
-  float skyMu = max(dot(skyDirection, uCamUp), -sqrt(rho2) / r + 1e-5);
-  float top = uAtmosphere.topRadius;
-  bool space = r > top && (skyMu >= 0.0 || r * r * (skyMu * skyMu - 1.0) + top * top < 0.0);
-#ifndef GLOBE_BEHIND
-  // A pixel that sees nothing but space (no sample on the globe, the sky's rays miss the
-  // atmosphere, the Sun's disc not in it) would write what the target was cleared to: no
-  // radiance, no coverage, the far depth. Discarding it is the one way llvmpipe skips work:
-  // a block of such pixels leaves here, where an `if` would still run the shading below.
-  if (nHit == 0 && space && sunDisc == 0.0) discard;
-#endif
   vec3 surface = vec3(0.0);
   float foam = 0.0;  // whitecap coverage summed over the samples
   // Inside the globe's silhouette and away from coasts (four samples on the globe, all land or
@@ -191,20 +273,20 @@ void main() {
   bool interior = nHit == 4 && (nSea == 0 || nSea == 4);
   int nShade = interior ? 1 : nHit;
   float weight = interior ? 4.0 : 1.0;
-  for (int k = 0; k < nShade; ++k) {
-    vec3 dir = interior ? normalize(hitDir) : dirs[hits[k]];
-    float t = interior ? intersectEllipsoid(dir) : ts[hits[k]];
+  for (int k = 0; k < (PART_HAS_SURFACE ? nShade : 0); ++k) {
+    vec3 dir = interior ? normalize(hitDir) : rays.dirs[hits[k]];
+    float t = interior ? intersectEllipsoid(dir) : rays.ts[hits[k]];
     surface += weight * surfaceRadiance(dir, t, interior ? nSea == 4 : seas[hits[k]]);
     foam += weight * gSeaFoam;
   }
 
   float coverage = float(nHit);
   float muS = dot(uSunDir, uCamUp);
-  float skyCount = 4.0 - coverage - seaHoles;
+  float skyCount = 4.0 - float(rays.nHit);
   vec3 radiance = vec3(0.0);
   // Two loops of 0 or 1 trips rather than one if/else (see above): the globe's samples through
   // the aerial perspective of their mean path, the sky's through the sky to the boundary.
-  for (int k = 0; k < (nHit > 0 ? 1 : 0); ++k) {
+  for (int k = 0; k < (PART_HAS_SURFACE && nHit > 0 ? 1 : 0); ++k) {
     vec3 dir = normalize(hitDir);
     // Aerial perspective over the camera-to-surface path (see the header).
     float d = min(hitT / coverage, sqrt(rho2));
@@ -215,38 +297,25 @@ void main() {
                                         transmittance);
     radiance += surface * transmittance + inscatter * coverage;
   }
-  if (skyCount > 0.0 && space) radiance += sunDisc * sunDiscRadiance(uAtmosphere);
-  for (int k = 0; k < (skyCount > 0.0 && !space ? 1 : 0); ++k) {
-    vec3 transmittance;
-    vec3 inscatter = skyRadiance(uAtmosphere, uAtmTransmittance, uAtmScattering, uAtmSingleMie,
-                                 r, skyMu, muS, dot(skyDirection, uSunDir), transmittance);
-    radiance += inscatter * skyCount + sunDisc * transmittance * sunDiscRadiance(uAtmosphere);
+  if (PART_HAS_SKY) {
+    SkyView sky = skyOf(rays);
+    if (skyCount > 0.0 && sky.space) radiance += sky.sunDisc * sunDiscRadiance(uAtmosphere);
+    for (int k = 0; k < (skyCount > 0.0 && !sky.space ? 1 : 0); ++k) {
+      vec3 transmittance;
+      vec3 inscatter = skyRadiance(uAtmosphere, uAtmTransmittance, uAtmScattering, uAtmSingleMie,
+                                   r, sky.mu, muS, dot(sky.dir, uSunDir), transmittance);
+      radiance += inscatter * skyCount + sky.sunDisc * transmittance * sunDiscRadiance(uAtmosphere);
+    }
   }
   // Sea holes: the grid pass paints over them; where it leaves a gap (between its horizon
   // vertices, where the chord falls short of the curved horizon) this far-field sea shows,
   // which is what the grid converges to there anyway. Shaded once per pixel, no depth.
-  if (SEA_BY_GRID && seaHoles > 0.0) {
+  if (SEA_BY_GRID && PART_HAS_SURFACE && seaHoles > 0.0) {
     radiance += seaHoles * withAerialPerspective(shadeSea(-seaHoleDir, ellipsoidNormal(seaHoleDir, seaHoleT)),
                                                  seaHoleDir, seaHoleT, uSunDir);
     foam += seaHoles * gSeaFoam;
   }
   fragRadiance = vec4(radiance * 0.25, (coverage + seaHoles) * 0.25);
   fragAux = vec4(foam * 0.25, 0.0, 0.0, 0.0);
-  // Depth of the surface on the pixel-centre ray where it hits the globe, as the terrain and
-  // the grid rasterise theirs, so land at or above sea level always passes in front of this
-  // fallback (the nearest sample would stand up to half a pixel's footprint closer: from 30 km,
-  // hundreds of metres at a grazing angle, hiding low coasts). The nearest sample otherwise.
-  float depthZ = nearestT;
-  vec3 centreDir = normalize(uForward + vNdc.x * uTanHalfFov.x * uRight + vNdc.y * uTanHalfFov.y * uUp);
-  float centreT = nHit > 0 ? intersectEllipsoid(centreDir) : -1.0;
-  if (centreT >= 0.0) {
-    depthZ = centreT * dot(centreDir, uForward);
-    // Over land the terrain draws the ground and this flat fallback must never stand in front
-    // of a tile: the coarsest tiles' chords sag up to ~0.5 km below the ellipsoid. Over the sea
-    // (from orbit) the depth stays exact, so the sea surface hides the bathymetry.
-    if (elevationAt(latLonOfNormal(ellipsoidNormal(centreDir, centreT))) > 0.0) depthZ += 20000.0;
-  }
-#ifndef GLOBE_BEHIND
-  gl_FragDepth = nHit > 0 ? clamp(uNear / depthZ, 0.0, 1.0) : 0.0;
-#endif
 }
+#endif

@@ -84,8 +84,8 @@ RenderTarget createRenderTarget(int width, int height, GLenum colorFormat, bool 
   }
   if (withDepth) {
     t.depth = createTexture(target);
-    storage(t.depth, GL_DEPTH_COMPONENT32F);
-    glNamedFramebufferTexture(t.fbo.id(), GL_DEPTH_ATTACHMENT, t.depth.id(), 0);
+    storage(t.depth, GL_DEPTH32F_STENCIL8);
+    glNamedFramebufferTexture(t.fbo.id(), GL_DEPTH_STENCIL_ATTACHMENT, t.depth.id(), 0);
   }
   if (multisample) {
     GLint allocated = 0;
@@ -110,7 +110,7 @@ int maxSamples(GLenum colorFormat) {
     limit = std::min(limit, v);
   }
   // Per format: float formats may allow fewer samples than the global limits.
-  for (const GLenum format : {colorFormat, static_cast<GLenum>(GL_DEPTH_COMPONENT32F)}) {
+  for (const GLenum format : {colorFormat, static_cast<GLenum>(GL_DEPTH32F_STENCIL8)}) {
     GLint counts = 0, highest = 1;
     glGetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, format, GL_NUM_SAMPLE_COUNTS, 1, &counts);
     if (counts > 0) glGetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, format, GL_SAMPLES, 1, &highest);

@@ -59,8 +59,8 @@ Framebuffer createFramebuffer();
 Renderbuffer createRenderbuffer();
 Query createQuery(GLenum target);
 
-/// An off-screen render target: one colour texture and a 32-bit float depth texture
-/// (reversed-Z: clear to 0, GL_GREATER). With samples > 1 both are multisample textures
+/// An off-screen render target: one colour texture and a 32-bit float depth + 8-bit stencil
+/// texture (reversed-Z: clear to 0, GL_GREATER). With samples > 1 both are multisample textures
 /// (GL_TEXTURE_2D_MULTISAMPLE); `samples` is then the count the driver allocated, which may
 /// exceed the one asked for.
 struct RenderTarget {
@@ -81,7 +81,7 @@ RenderTarget createRenderTarget(int width, int height, GLenum colorFormat, bool 
                                 int samples = 1, GLenum auxiliaryFormat = 0);
 
 /// The most samples a multisample render target of this colour format (with a 32-bit float
-/// depth texture) can have on the current context; 1 without multisampling.
+/// depth + 8-bit stencil texture) can have on the current context; 1 without multisampling.
 int maxSamples(GLenum colorFormat);
 
 /// Whether the current context renders on the CPU (Mesa's llvmpipe, softpipe, swrast, or

@@ -19,11 +19,6 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 glm::vec3 toFloat(const glm::dvec3& v) { return glm::vec3(v); }
-
-std::vector<std::string> withDefine(std::vector<std::string> defines, std::string define) {
-  defines.push_back(std::move(define));
-  return defines;
-}
 }  // namespace
 
 GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
@@ -33,12 +28,6 @@ GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
 GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
                              std::shared_ptr<const Atmosphere> atmosphere)
     : atmosphere_(std::move(atmosphere)),
-      globe_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
-              {GL_FRAGMENT_SHADER, "render/globe.frag"}},
-             OceanPatterns::shaderDefines()),
-      globeBehind_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
-                    {GL_FRAGMENT_SHADER, "render/globe.frag"}},
-                   withDefine(OceanPatterns::shaderDefines(), "GLOBE_BEHIND")),
       tonemap_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
                 {GL_FRAGMENT_SHADER, "render/tonemap.frag"}}),
       tonemapMs_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
@@ -159,7 +148,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   const float clearDepth = 0.0f;  // reversed-Z: 0 is infinitely far
   glClearNamedFramebufferfv(hdr_.fbo.id(), GL_COLOR, 0, clearColor);
   if (auxiliary_) glClearNamedFramebufferfv(hdr_.fbo.id(), GL_COLOR, 1, clearColor);
-  glClearNamedFramebufferfv(hdr_.fbo.id(), GL_DEPTH, 0, &clearDepth);
+  glClearNamedFramebufferfi(hdr_.fbo.id(), GL_DEPTH_STENCIL, 0, clearDepth, 0);
   glEnable(GL_DEPTH_TEST);
   landMask_->bind();  // gl::kUnitLandMask for every pass (render/elevation.glsl)
   if (!grid) drawGlobe(view, f, grid);
@@ -190,17 +179,69 @@ void GlobeRenderer::render(const FrameInput& f) {
   gl::checkErrors("GlobeRenderer::render");
 }
 
+const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
+  gl::Program& p = globePrograms_[static_cast<std::size_t>((behind ? kGlobeVariants : 0) + variant)];
+  if (p.id() == 0) {
+    // Variants 0-2: GLOBE_PART_CLASSIFY (4) with its step; 3-5: the parts 1-3 (render/globe.frag).
+    std::vector<std::string> defines = OceanPatterns::shaderDefines();
+    if (variant < 3) {
+      defines.emplace_back("GLOBE_PART 4");
+      defines.push_back("GLOBE_CLASSIFY_STEP " + std::to_string(variant));
+    } else {
+      defines.push_back("GLOBE_PART " + std::to_string(variant - 2));
+    }
+    if (behind) defines.emplace_back("GLOBE_BEHIND");
+    p = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
+                     {GL_FRAGMENT_SHADER, "render/globe.frag"}},
+                    defines);
+  }
+  return p;
+}
+
 // The ray-cast ellipsoid with the atmosphere: sky, the land's far fallback and the sea from
-// orbit (or, below the grid's ceiling, the sea the grid leaves uncovered).
+// orbit (or, below the grid's ceiling, the sea the grid leaves uncovered). llvmpipe skips a
+// fragment shader only for fragments that fail the depth or stencil test before it runs, so
+// three cheap classifying draws count into the stencil what each pixel needs (globe.frag's
+// header), and each part is then drawn over only its own pixels.
 void GlobeRenderer::drawGlobe(const geo::CameraView& view, const FrameInput& f, bool grid) {
   if (timer_ != nullptr) timer_->mark("globe");
+  glBindVertexArray(emptyVao_.id());
+  glDepthFunc(grid ? GL_GEQUAL : GL_ALWAYS);
+  glEnable(GL_STENCIL_TEST);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glStencilFunc(GL_ALWAYS, 0, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+  // Below 20 km no pixel sees pure space, and the depth test already leaves out what the
+  // terrain and the grid cover: step 0 is skipped and the counts start at 0 for the sky.
+  const int firstStep = grid ? 1 : 0;
+  for (int step = firstStep; step < 3; ++step) {
+    glDepthMask(step == 0 ? GL_TRUE : GL_FALSE);  // above 20 km step 0 writes the depth
+    const gl::Program& classify = globeProgram(grid, step);
+    setGlobeUniforms(classify, view, f);
+    classify.use();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_FALSE);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  for (int part = 1; part <= 3; ++part) {  // sky, edge, surface: the stencil counts 1, 2, 3
+    glStencilFunc(GL_EQUAL, part - firstStep, 0xff);
+    const gl::Program& globe = globeProgram(grid, part + 2);
+    setGlobeUniforms(globe, view, f);
+    globe.use();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  glDisable(GL_STENCIL_TEST);
+  glDepthMask(grid ? GL_FALSE : GL_TRUE);  // as the caller had it
+}
+
+void GlobeRenderer::setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view,
+                                     const FrameInput& f) {
   // Eye in the ellipsoid's scaled space; C = |o|² - 1 in double (see geo/ellipsoid.glsl).
   const glm::dvec3 o = view.positionEcef /
                        glm::dvec3(geo::kWgs84SemiMajorM, geo::kWgs84SemiMajorM,
                                   geo::kWgs84SemiMinorM);
   const double tanY = std::tan(0.5 * view.verticalFovRad);
-  glDepthFunc(grid ? GL_GEQUAL : GL_ALWAYS);
-  const gl::Program& globe = grid ? globeBehind_ : globe_;
   globe.set("uRight", toFloat(view.right));
   globe.set("uUp", toFloat(view.up));
   globe.set("uForward", toFloat(view.forward));
@@ -224,9 +265,6 @@ void GlobeRenderer::drawGlobe(const geo::CameraView& view, const FrameInput& f, 
   imagery_->bind(globe);
   atmosphere_->bind(globe);
   atmosphere_->bindSkyMaps();
-  globe.use();
-  glBindVertexArray(emptyVao_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 // The near sea: the projected grid over the globe's sea holes, depth-tested against land.

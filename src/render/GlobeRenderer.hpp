@@ -4,6 +4,7 @@
 // sRGB, 8-bit).
 #include <glm/glm.hpp>
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -149,8 +150,13 @@ class GlobeRenderer {
   const OceanPatterns& patternsFor(double referenceWindMs, std::uint64_t seed);
 
   std::shared_ptr<const Atmosphere> atmosphere_;
-  gl::Program globe_;
-  gl::Program globeBehind_;  ///< globe.frag drawn after the terrain and the grid (GLOBE_BEHIND)
+  /// globe.frag's variants: three classifying steps then three parts (sky, edge, surface; see
+  /// its GLOBE_PART), drawn first above the grid's ceiling and last (GLOBE_BEHIND, after the
+  /// terrain and the grid) below; each compiled on first use. `variant` in [0, kGlobeVariants).
+  static constexpr int kGlobeVariants = 6;
+  const gl::Program& globeProgram(bool behind, int variant);
+  void setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view, const FrameInput& f);
+  std::array<gl::Program, 2 * kGlobeVariants> globePrograms_;
   gl::Program tonemap_;
   gl::Program tonemapMs_;  ///< per-sample tone mapping of a multisampled target
   gl::VertexArray emptyVao_;
