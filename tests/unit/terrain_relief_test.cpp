@@ -123,6 +123,32 @@ TEST(TerrainCalibration, PlainsStayFlat) {
   EXPECT_LT(himalaya, 24.0);
 }
 
+TEST(TerrainCalibration, VertexNormalsTiltWithTheShadingAmplitude) {
+  // Low land by a steep coast, where the heights' 80 % bound holds the detail below the
+  // calibrated amplitude: the vertex normals must still tilt with the shading's amplitude, the
+  // one the fragment shader gives the finer octaves, or an octave would light differently on
+  // either side of a level change (a seam). Norway's fjords, west to east across the coast.
+  const Heightfield& h = defaultHeights();
+  const int octaves = 4;
+  int checked = 0;
+  for (int i = 0; i < 400 && checked < 20; ++i) {
+    const double lat = 61.0 + 0.01 * (i % 40), lon = 4.5 + 0.05 * (i / 40);
+    const double layer = h.layerHeightM(lat, lon);
+    const double shading = h.detailShadingAmplitudeM(lat, lon);
+    if (layer <= 0.0 || h.detailAmplitudeM(lat, lon) >= 0.9 * shading) continue;
+    const HeightSample flat = h.sample(lat, lon, 0, 0.05);
+    const HeightSample tilted = h.sample(lat, lon, octaves, 0.05);
+    glm::dvec3 grad(0.0);
+    detailSum(h.octaves(), geodeticUpFast(lat, lon), h.octaves().heightCount, octaves, &grad);
+    const glm::dvec3 n = flat.normal;
+    const glm::dvec3 g = grad * (shading / geo::kWgs84SemiMajorM);
+    const glm::dvec3 expected = glm::normalize(n - (g - glm::dot(g, n) * n));
+    EXPECT_NEAR(glm::length(tilted.normal - expected), 0.0, 1e-9) << lat << " " << lon;
+    ++checked;
+  }
+  EXPECT_GE(checked, 5) << "no low coastal land where the 80 % bound holds";
+}
+
 TEST(TerrainCalibration, Etopo5RangesReachPublishedSlopes) {
   // With ETOPO5 (apt-get install ferret-datasets) the calibration's anchor: the ranges' mean
   // slope at 90 m (as GIS tools compute it, ≈ 1.25 × the RMS of one component for Gaussian
