@@ -207,6 +207,20 @@ void GlobeRenderer::drawGlobe(const geo::CameraView& view, const FrameInput& f, 
   if (timer_ != nullptr) timer_->mark("globe");
   glBindVertexArray(emptyVao_.id());
   glDepthFunc(grid ? GL_GEQUAL : GL_ALWAYS);
+  if (grid) {  // the classifying draws run on every pixel: skip them when nothing is left
+    if (uncovered_.id() == 0) {
+      uncovered_ = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
+                                {GL_FRAGMENT_SHADER, "render/uncovered.frag"}});
+      uncoveredQuery_ = gl::createQuery(GL_ANY_SAMPLES_PASSED);
+    }
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    uncovered_.use();
+    glBeginQuery(GL_ANY_SAMPLES_PASSED, uncoveredQuery_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glEndQuery(GL_ANY_SAMPLES_PASSED);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glBeginConditionalRender(uncoveredQuery_.id(), GL_QUERY_WAIT);
+  }
   glEnable(GL_STENCIL_TEST);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glStencilFunc(GL_ALWAYS, 0, 0xff);
@@ -233,6 +247,7 @@ void GlobeRenderer::drawGlobe(const geo::CameraView& view, const FrameInput& f, 
   }
   glDisable(GL_STENCIL_TEST);
   glDepthMask(grid ? GL_FALSE : GL_TRUE);  // as the caller had it
+  if (grid) glEndConditionalRender();
 }
 
 void GlobeRenderer::setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view,

@@ -157,6 +157,10 @@ class GlobeRenderer {
   const gl::Program& globeProgram(bool behind, int variant);
   void setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view, const FrameInput& f);
   std::array<gl::Program, 2 * kGlobeVariants> globePrograms_;
+  /// Below 20 km: whether the terrain and the grid left any pixel for the globe (an occlusion
+  /// query of render/uncovered.frag; the globe's draws are conditional on it).
+  gl::Program uncovered_;
+  gl::Query uncoveredQuery_;
   gl::Program tonemap_;
   gl::Program tonemapMs_;  ///< per-sample tone mapping of a multisampled target
   gl::VertexArray emptyVao_;
