@@ -32,7 +32,7 @@ struct DetailOctaves {
 struct HeightSample {
   double heightM = 0.0;         ///< above mean sea level, detail included
   double detailAmplitudeM = 0;  ///< the detail's local amplitude in the heights (scales its normalised sum)
-  double shadingAmplitudeM = 0; ///< the same for the octaves only the shading sees (finer than the mesh)
+  double shadingAmplitudeM = 0; ///< the same in the normals (vertex and pixel), without the 80 % bound
   glm::dvec3 normal{0.0};       ///< unit, ECEF axes
 };
 
@@ -59,9 +59,10 @@ class Heightfield {
   /// sea 2.5 × the layer's relief across two cells (the coast's floor). At least 3 % of |h|
   /// and at most 80 % of it, so detail never crosses sea level.
   [[nodiscard]] double detailAmplitudeM(double latitudeDeg, double longitudeDeg) const;
-  /// The amplitude of the octaves finer than the mesh, which only the shading sees (normals
-  /// per pixel): detailAmplitudeM without the 80 % bound (it guards the coastline's heights),
-  /// so low valleys near the sea keep the law's slopes.
+  /// The detail's amplitude in the normals (the tile's vertex normals and the pixels' finer
+  /// octaves alike, so levels meet without a shading step): detailAmplitudeM without the 80 %
+  /// bound (it guards the coastline's heights), so low valleys near the sea keep the law's
+  /// slopes.
   [[nodiscard]] double detailShadingAmplitudeM(double latitudeDeg, double longitudeDeg) const;
   /// RMS of the layer's height differences to its four neighbours one cell (cellM()) away,
   /// m: its structure function at lag Δ, σ(Δ).
