@@ -14,7 +14,7 @@
 //       filtered over the footprint given by the two stereographic-space gradients dUdx, dUdy
 //       (the axes of the filter ellipse, e.g. Bruneton 2010 Fig. 9: 2 sigma_x dU/dzeta_x and
 //       2 sigma_y dU/dzeta_y; pass zeros for a point sample), with textureGrad: hardware
-//       anisotropy on a GPU, 9 lookups along the ellipse on llvmpipe (uSkyFilterProbes,
+//       anisotropy on a GPU, up to 4 lookups along the ellipse on llvmpipe (uSkyFilterProbes,
 //       Atmosphere::chooseSkyFilter). sunZenith: the Sun's zenith angle
 //       at the surface point, radians [0, pi] (beyond 105° the last, dark layer is used);
 //       sunAzimuth: the Sun's azimuth in the same local frame, radians, counter-clockwise from
@@ -45,17 +45,19 @@ layout(binding = OG_UNIT_SKY_IRRADIANCE) uniform sampler1DArray uSkyIrradiance; 
 vec2 skyMapStereo(vec3 dirLocal) { return dirLocal.xy / max(1.0 + dirLocal.z, 1e-4); }
 
 // The sky filter (og::render::Atmosphere::chooseSkyFilter, set by Atmosphere::bind): 1 = one
-// textureGrad over the footprint ellipse (the sampler's hardware anisotropy on a GPU); 9 =
+// textureGrad over the footprint ellipse (the sampler's hardware anisotropy on a GPU); more =
 // Bruneton 2010 §7.3, "an average of nine texture2D samples inside the elliptical filter
-// support", for CPU rasterisers whose anisotropic filtering is slow and blurs wrongly.
+// support", for CPU rasterisers whose anisotropic filtering is slow and blurs wrongly (4 there:
+// within a level of 9 at 8 bits, docs/performance.md).
 uniform int uSkyFilterProbes;
 
 // One sky-map layer over the footprint with axes gx, gy (texture space, a pixel's extent).
 vec3 skyMapLayerFiltered(vec2 tc, float layer, vec2 gx, vec2 gy) {
   if (uSkyFilterProbes <= 1) return textureGrad(uSkyMap, vec3(tc, layer), gx, gy).rgb;
-  // Up to nine isotropic lookups spread along the major axis, each over 1/n of it and the
-  // minor axis: together they tile the ellipse's extent. n follows the ellipse's elongation
-  // (major / minor, at most uSkyFilterProbes), so near-round footprints cost one lookup.
+  // Up to uSkyFilterProbes isotropic lookups spread along the major axis, each over 1/n of it
+  // and the minor axis: together they tile the ellipse's extent. n follows the ellipse's
+  // elongation (major / minor, at most uSkyFilterProbes), so near-round footprints cost one
+  // lookup; a longer ellipse's lookups each blur over more than the minor axis.
   bool xMajor = dot(gx, gx) >= dot(gy, gy);
   vec2 major = xMajor ? gx : gy, minor = xMajor ? gy : gx;
   float ratio = length(major) / max(length(minor), 1e-8);

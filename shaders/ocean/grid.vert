@@ -21,8 +21,17 @@ uniform mat3 uEcefToOcean;    // rows: ocean frame east, north, up in ECEF
 uniform float uEyeHeight;     // eye height above the ellipsoid, m
 uniform float uCellAngle;     // angular size of a grid cell, radians
 
+uniform float uCellPixels;    // grid cell size, pixels
+
 out vec2 vOceanXY;            // undisplaced position in the ocean frame, m
 out vec3 vRelative;           // displaced position relative to the eye, ECEF axes, m
+// The patterns the vertices look up for the pixels (oceanVertexPatterns, ocean/patterns.glsl).
+out vec2 vPatternMean;
+out vec3 vPatternCov;
+out vec2 vPatternJacobian;
+out float vPatternShare[PATTERN_COUNT];
+out vec2 vPatternBand[PATTERN_COUNT];              // patternBands at the vertex's wind
+out vec3 vPatternAveragedFrom[PATTERN_COUNT + 1];
 
 #ifndef OCEAN_SIMPLE_SKY
 // Aerial perspective per vertex: smooth over a cell of a few pixels, and the costliest part
@@ -32,6 +41,7 @@ uniform vec3 uSunDirEcef;
 out vec3 vTransmittance;      // of the eye-to-vertex path
 out vec3 vInscatter;          // light scattered towards the eye along it (units of the Sun's irradiance)
 #endif
+#include "ocean/water_volume_vertex.glsl"  // the water volume's smooth terms per vertex
 
 void main() {
   int ix = gl_VertexID % uGridSize.x;
@@ -59,10 +69,19 @@ void main() {
   vec2 latLon = latLonOfNormal(ellipsoidNormal(dir, t));
   vec2 wind = localWind(latLon);
   vec3 d = oceanDisplacement(local.xy, cell, wind) * shoreWaveFactor(latLon, seaStateWaveHeightM(wind.x));
+  prepareWaterVolumeVertex(latLon, ellipsoidNormal(dir, t));
   // Displacement along the frame's axes; near the camera (where waves are resolved at all)
   // they coincide with the local tangent frame.
   vRelative = rel + transpose(uEcefToOcean) * d;
   vOceanXY = local.xy;
+  PatternSums coarse = oceanVertexPatterns(local.xy, cell / uCellPixels, wind);
+  vPatternMean = coarse.mean;
+  vPatternCov = coarse.cov;
+  vPatternJacobian = coarse.jac;
+  vPatternShare = coarse.share;
+  PatternBands bands = patternBands(wind.x);
+  vPatternBand = bands.band;
+  vPatternAveragedFrom = bands.averagedFrom;
   gl_Position = uViewProjection * vec4(vRelative, 1.0);
 #ifndef OCEAN_SIMPLE_SKY
   float dist = length(vRelative);

@@ -17,6 +17,12 @@
 
 in vec2 vOceanXY;
 in vec3 vRelative;
+in vec2 vPatternMean;  // the patterns the grid's vertices looked up (ocean/grid.vert)
+in vec3 vPatternCov;
+in vec2 vPatternJacobian;
+in float vPatternShare[PATTERN_COUNT];
+in vec2 vPatternBand[PATTERN_COUNT];
+in vec3 vPatternAveragedFrom[PATTERN_COUNT + 1];
 #include "render/outputs.glsl"
 
 uniform mat3 uEcefToOcean;
@@ -43,7 +49,9 @@ void main() {
   KEEP_SEA_SAMPLES(vRelative)  // no sea over land (ocean/coast.glsl)
   gSeaSunVisibility = sunVisibility(vRelative, up);  // mountains shade the sea at their feet
   vec2 wind = localWind(latLon);  // speed, azimuth
-  SeaSurface sea = oceanSurface(vOceanXY, max(footprint, 1e-4), wind);
+  SeaSurface sea = oceanSurface(vOceanXY, max(footprint, 1e-4), wind,
+                                PatternSums(vPatternMean, vPatternCov, vPatternJacobian, vPatternShare),
+                                PatternBands(vPatternBand, vPatternAveragedFrom));
 #ifdef OCEAN_VALIDATION_CONSTANT_BRDF
   sea.covariance = vec3(patternTable(PATTERN_COUNT, wind.x).xy, 0.0);  // the paper's constant BRDF
 #endif

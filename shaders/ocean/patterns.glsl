@@ -138,53 +138,131 @@ struct SeaSurface {
   vec2 jacobian;    // mean and variance of the whitecaps' Jacobian in the footprint
 };
 
-SeaSurface oceanSurface(vec2 xy, float footprintM, vec2 wind) {
+// Sums of resolved patterns' statistics in a footprint: the mean slope (field axes), the slope
+// covariance left in the footprint (xx, yy, xy in the local wind's frame) and the whitecaps'
+// Jacobian (mean and variance, the constant 1 of the mean not included).
+struct PatternSums {
+  vec2 mean;
+  vec3 cov;
+  vec2 jac;
+  float share[PATTERN_COUNT];  // of each pattern (patternVertexShare), the rest the pixel's
+};
+
+// Where the patterns are looked up (docs/performance.md, "The ocean pass"): a pattern whose
+// texels span two grid cells or more is smooth across a cell, so the grid's vertices look it up
+// (at the pixel footprint's level of detail, which there is below 0: magnified texels) and the
+// triangles interpolate it; per pixel only the patterns whose texels are near the footprint
+// remain. Share of pattern i taken per vertex at the pixel level of detail `lod`: 1 where a texel
+// spans 2 cells or more, 0 where it spans 1 cell or less, linear between, so the vertices' and
+// the pixels' shares of every pattern add up to 1 (Bruneton 2010's split of the spectrum between
+// geometry, normals and BRDF is untouched: only where the normals' lookups run moves).
+// uPatternVertexLod: -log2(cell size in pixels), set by render/OceanRenderer; patternVertexShare
+// is 0 everywhere with it at or above uPatternTopLod (everything per pixel).
+uniform float uPatternVertexLod;
+float patternVertexShare(float lod) { return clamp(uPatternVertexLod - lod, 0.0, 1.0); }
+
+// Adds pattern i's statistics at level of detail `lod` in the footprint around field point p,
+// times `share` (the part of the pattern this caller stands for), to `sums`: the mean slope of
+// the footprint and its slope variance (the mip-mapped second moment minus the squared mean,
+// LEAN mapping) of the two wind bins, and the Jacobian's mean and variance (lambda² times the
+// slopes', Dupuy 2012 Eqs. 6-8). `band`: patternBand(i, wind speed).
+void addPatternStatistics(INOUT(PatternSums) sums, vec2 p, WindBins wb, float windField, int i, float lod,
+                          vec2 band, float share) {
+  float s = band.x;
+  float alongShare = band.y;
+  float lambda2 = uPatternChoppiness[i] * uPatternChoppiness[i];
+  for (int k = 0; k < 2; ++k) {
+    float w = wb.weight[k];
+    vec4 m = textureLod(uPatternSlopes, patternCoord(p, wb.bin[k], i), lod);
+    float binAngle = float(wb.bin[k]) * 0.25 * PI;
+    sums.mean += (share * w * s) * rotate2(m.xy, binAngle);
+    float variance = share * s * s * max(m.z - dot(m.xy, m.xy), 0.0);
+    sums.cov += w * w * rotateCovariance(variance * vec3(alongShare, 1.0 - alongShare, 0.0), binAngle - windField);
+    sums.jac += vec2(share * w * s * m.w, w * w * lambda2 * variance);
+  }
+}
+
+// Pattern i's (slope scale, share of its band's slope variance along the wind) at a wind speed
+// (m/s). The footprint's slope variance splits along/across its bin's wind as the band's does
+// (the cross moment is not stored: ~m_u m_c where the footprint holds one slope, ~0 where it
+// averages many, so the covariance is diagonal either way).
+vec2 patternBand(int i, float speedMs) {
+  vec4 band = patternTable(i, speedMs);
+  return vec2(band.y, band.z / max(band.z + band.w, 1e-12));
+}
+
+// The per-wind table values a pixel needs (patternBand per pattern; the averaged-out statistics
+// from pattern i on, i = 0..PATTERN_COUNT: up and cross slope variance with the tail below the
+// finest pattern, and the Jacobian's variance), looked up by the grid's vertices: the wind
+// varies over kilometres, and the tables' texel fetches cost the pixels as much as a pattern.
+struct PatternBands {
+  vec2 band[PATTERN_COUNT];
+  vec3 averagedFrom[PATTERN_COUNT + 1];
+};
+PatternBands patternBands(float speedMs) {
+  PatternBands b;
+  vec3 sum = vec3(patternTable(PATTERN_COUNT, speedMs).xy, 0.0);  // the tail
+  b.averagedFrom[PATTERN_COUNT] = sum;
+  for (int i = PATTERN_COUNT - 1; i >= 0; --i) {
+    b.band[i] = patternBand(i, speedMs);
+    sum += vec3(patternTable(i, speedMs).zw, patternTable(PATTERN_COUNT + 1 + i, speedMs).x);
+    b.averagedFrom[i] = sum;
+  }
+  return b;
+}
+
+// The vertices' part of the resolved patterns (patternVertexShare) at xy for pixels of
+// footprint `pixelFootprintM` (m) there, for the grid's vertex shader to interpolate.
+PatternSums oceanVertexPatterns(vec2 xy, float pixelFootprintM, vec2 wind) {
   vec2 p = fieldPosition(xy);
   float windField = fieldWindAngle(wind.y);
   WindBins wb = windBins(windField);
-  vec2 mean = vec2(0.0);            // field axes
-  vec3 cov = vec3(0.0);             // local wind frame
-  vec2 jac = vec2(1.0, 0.0);
+  PatternSums sums;
+  sums.mean = vec2(0.0);
+  sums.cov = vec3(0.0);
+  sums.jac = vec2(0.0);
+  for (int i = 0; i < PATTERN_COUNT; ++i) sums.share[i] = patternVertexShare(patternLod(pixelFootprintM, i));
+  for (int i = 0; i < PATTERN_COUNT; ++i) {
+    if (sums.share[i] <= 0.0) break;  // finer patterns have larger lods: none of theirs either
+    addPatternStatistics(sums, p, wb, windField, i, patternLod(pixelFootprintM, i), patternBand(i, wind.x), sums.share[i]);
+  }
+  return sums;
+}
+
+// The pixel's sea: `vertexSums` is the interpolated oceanVertexPatterns of the grid (zero sums
+// and shares: everything per pixel), `bands` the interpolated patternBands(wind speed). The
+// pixel takes the part of each pattern that the vertices' interpolated share leaves, so the two
+// parts add up to 1 however the footprints of pixel and vertex differ.
+SeaSurface oceanSurface(vec2 xy, float footprintM, vec2 wind, PatternSums vertexSums, PatternBands bands) {
+  vec2 p = fieldPosition(xy);
+  float windField = fieldWindAngle(wind.y);
+  WindBins wb = windBins(windField);
+  PatternSums sums = vertexSums;
   // The footprint resolves a prefix of the patterns (largest first; lod grows along the list);
-  // the rest it averages out entirely. Two loops rather than an if in one (llvmpipe runs both
-  // sides of an if, but no loop trip that no pixel of a block needs).
+  // the rest it averages out entirely. Of the prefix the vertices took the first patterns,
+  // wholly or in part. Loops rather than an if in one (llvmpipe runs both sides of an if, but
+  // no loop trip after the first that no pixel of a block needs).
   int resolved = 0;
   while (resolved < PATTERN_COUNT && patternLod(footprintM, resolved) < uPatternTopLod) ++resolved;
-  for (int i = resolved; i < PATTERN_COUNT; ++i) {
-    // Averaged out entirely: the band's statistics at this wind, analytic.
-    cov.xy += patternTable(i, wind.x).zw;
-    jac.y += patternTable(PATTERN_COUNT + 1 + i, wind.x).x;
-  }
-  for (int i = 0; i < resolved; ++i) {
+  int first = 0;
+  while (first < resolved && vertexSums.share[first] >= 0.999) ++first;
+  for (int i = first; i < resolved; ++i) {
     float lod = patternLod(footprintM, i);
-    vec4 band = patternTable(i, wind.x);
-    float s = band.y;
-    // The footprint's slope variance splits along/across its bin's wind as the band's does (the
-    // cross moment is not stored: ~m_u m_c where the footprint holds one slope, ~0 where it
-    // averages many, so the covariance is diagonal either way).
-    float alongShare = band.z / max(band.z + band.w, 1e-12);
-    float lambda2 = uPatternChoppiness[i] * uPatternChoppiness[i];
-    for (int k = 0; k < 2; ++k) {
-      float w = wb.weight[k];
-      vec4 m = textureLod(uPatternSlopes, patternCoord(p, wb.bin[k], i), lod);
-      float binAngle = float(wb.bin[k]) * 0.25 * PI;
-      mean += (w * s) * rotate2(m.xy, binAngle);
-      float variance = s * s * max(m.z - dot(m.xy, m.xy), 0.0);
-      cov += w * w * rotateCovariance(variance * vec3(alongShare, 1.0 - alongShare, 0.0), binAngle - windField);
-      jac += vec2(w * s * m.w, w * w * lambda2 * variance);
-    }
+    addPatternStatistics(sums, p, wb, windField, i, lod, bands.band[i], 1.0 - vertexSums.share[i]);
   }
-  vec4 tail = patternTable(PATTERN_COUNT, wind.x);
-  cov.xy += tail.xy;
+  // The patterns averaged out entirely and the tail below the finest: their statistics at this
+  // wind, analytic.
+  vec3 averaged = bands.averagedFrom[resolved];
+  vec3 cov = sums.cov + vec3(averaged.xy, 0.0);
   // Faded-out waves (12-20 km): what the mean normal no longer shows goes into the BRDF.
   float a = uPatternAmplitude;
-  vec2 meanWind = rotate2(mean, -windField);
+  vec2 meanWind = rotate2(sums.mean, -windField);
   cov += (1.0 - a * a) * vec3(meanWind * meanWind, meanWind.x * meanWind.y);
   SeaSurface r;
-  r.meanSlope = frameVector(a * mean);
+  r.meanSlope = frameVector(a * sums.mean);
   r.variance = max(cov.xy, vec2(0.0));
   r.covariance = vec3(r.variance, cov.z);
-  r.jacobian = jac;
+  r.jacobian = vec2(1.0, averaged.z) + sums.jac;
   return r;
 }
 

@@ -26,7 +26,6 @@ uniform vec3 uFloorEyeUp;          // geodetic normal under the eye, ECEF axes
 uniform float uFloorEyeHeightM;    // the eye's height above the ellipsoid, m
 const float FLOOR_RELIEF_M = 0.12;     // height of octave 0's ripples, m (weight 0.6^k below)
 const float FLOOR_ALBEDO_SPREAD = 0.45;  // relative albedo variation of the floor's patches
-const int FLOOR_MARCH_STEPS = 4;  // + a secant step: the layer is near-planar over d_max
 // Below this share of the floor in the pixel (transmission down and up x (1 - Fresnel)), its
 // detail, caustics and shadows are not worth their cost: a plain floor stands in.
 const float FLOOR_DETAIL_MIN_SHARE = 0.02;
@@ -125,6 +124,25 @@ float floorHeightAlong(vec2 latLon, vec2 horizontal, float s) {
   return elevationAt(latLon + vec2(d.y, d.x / max(cos(latLon.x), 1e-3)));
 }
 
+// The secant step's root between (sA, gapA) and (sB, gapB) along the ray, in [0, sMax];
+// sMax when the gap does not close (the floor falls away faster than the ray goes down).
+float secantRoot(float sA, float gapA, float sB, float gapB, float sMax) {
+  float slope = (gapB - gapA) / (sB - sA);
+  return slope < -1e-6 ? clamp(sB - gapB / slope, 0.0, sMax) : sMax;
+}
+
+// Depth of the floor under the grid's vertices, m (ocean/water_volume_vertex.glsl), linear
+// across a cell of a few pixels: the search's first guess.
+#ifndef OCEAN_NO_WATER_VOLUME
+in float vFloorDepthM;
+#ifndef OCEAN_SIMPLE_SKY
+in vec3 vWaterSunE;  // the Sun's and the sky's irradiance at sea level
+in vec3 vWaterSkyE;
+#endif
+#else
+const float vFloorDepthM = 1e4;
+#endif
+
 // Prepares gWater for the sea pixel at camera-relative `rel` (to the eye `v`, mean normal `n`,
 // geodetic vertical `up`, at `latLon`, `oceanXY` in the ocean frame whose rows are
 // `ecefToOcean`), pixel footprint `footprintM` (m), local wind (speed, azimuth).
@@ -132,7 +150,8 @@ void prepareWaterVolume(vec3 rel, vec3 v, vec3 n, vec3 up, vec2 latLon, vec2 oce
                         mat3 ecefToOcean, float footprintM, vec2 wind, vec3 sunE) {
   vec3 k = uWaterAttenuation;
   float dMax = waterMaxPathM(k, WATER_EPSILON);
-  if (uElevationSize.x <= 0.0 || -elevationAt(latLon) > dMax) {
+  float gap0 = max(vFloorDepthM, 0.0);  // ray height minus floor height at the surface (>= 0)
+  if (uElevationSize.x <= 0.0 || gap0 > dMax) {
     gWater = WaterVolume(true, uSeaColor);  // deep: the floor contributes less than epsilon
     return;
   }
@@ -143,24 +162,19 @@ void prepareWaterVolume(vec3 rel, vec3 v, vec3 n, vec3 up, vec2 latLon, vec2 oce
   down = dot(t, up);
   mat3 frame = localFrame(up);
   vec2 horizontal = vec2(dot(t, frame[0]), dot(t, frame[1]));
-  // March (fixed steps to d_max), then a secant step between the last two samples.
-  float sPrev = 0.0, gapPrev = -elevationAt(latLon);  // ray height minus floor height (>= 0 above)
-  float sHit = -1.0;
-  float step = dMax / float(FLOOR_MARCH_STEPS);
-  for (int i = 1; i <= FLOOR_MARCH_STEPS; ++i) {
-    float s = step * float(i);
-    float gap = s * down - floorHeightAlong(latLon, horizontal, s);
-    if (gap <= 0.0) {
-      sHit = mix(sPrev, s, gapPrev / max(gapPrev - gap, 1e-6));
-      break;
-    }
-    sPrev = s;
-    gapPrev = gap;
-  }
-  if (sHit < 0.0) {
-    gWater = WaterVolume(true, uSeaColor);
+  // The floor along the ray (seed 001 §3.2's search, two lookups instead of a fixed march): the
+  // first guess is a flat floor at the vertices' depth, then two secant steps through the
+  // layer's heights (exact on a flat floor, ~1 % of the depth on the steepest shelves of a
+  // 5' layer; the layer is near-planar over d_max).
+  float s1 = min(gap0 / -down, dMax);
+  float gap1 = s1 * down - floorHeightAlong(latLon, horizontal, s1);
+  float s2 = s1 > 1e-3 ? secantRoot(0.0, gap0, s1, gap1, dMax) : 0.0;  // 0: floor at the surface
+  float gap2 = s2 * down - floorHeightAlong(latLon, horizontal, s2);
+  if (gap2 > 0.0 && s2 >= dMax) {
+    gWater = WaterVolume(true, uSeaColor);  // no floor within d_max
     return;
   }
+  float sHit = abs(s2 - s1) > 1e-3 ? secantRoot(s1, gap1, s2, gap2, dMax) : s2;
   float depthM = max(-(sHit * down), 0.0);
   vec3 floorRel = rel + sHit * t;
   // The Sun refracted through the mean surface, its path down to the floor, and the point
@@ -185,8 +199,12 @@ void prepareWaterVolume(vec3 rel, vec3 v, vec3 n, vec3 up, vec2 latLon, vec2 oce
     sunFactor = floorSunVisibility(entryRel, up) * causticGain(entryXY, sunPathM, footprintM, wind) *
                 max(dot(nFloor, -sunWater), 0.0) / max(cosSunWater, 0.05);
   }
+#if defined(OCEAN_SIMPLE_SKY) || defined(OCEAN_NO_WATER_VOLUME)
   float sunZenith = acos(clamp(muS, -1.0, 1.0));
   vec3 eSun = sunIrradiance(sunZenith), eSky = skyIrradiance(sunZenith);
+#else
+  vec3 eSun = vWaterSunE, eSky = vWaterSkyE;  // per vertex (ocean/water_volume_vertex.glsl)
+#endif
   vec3 sunBelow = eSun * max(muS, 0.0) * (1.0 - fresnelSchlick(max(muS, 0.0)));
   vec3 skyBelow = eSky * (1.0 - SKY_FRESNEL_MEAN) * (0.5 + 0.5 * dot(nFloor, up));
   vec3 floorIrr = floorIrradiance(k, depthM, cosSunWater, sunBelow, sunFactor, skyBelow);

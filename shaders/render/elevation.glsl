@@ -2,7 +2,7 @@
 // pass (land/sea, land colours) and the ocean passes (no sea over land). Where the GSHHG land
 // mask is bound (terrain/landmask.glsl) it decides the coast; the layer only gives heights.
 #include "terrain/landmask.glsl"
-layout(binding = OG_UNIT_ELEVATION) uniform sampler2D uElevation;  // metres, rows south to north
+layout(binding = OG_UNIT_ELEVATION) uniform sampler2D uElevation;  // metres, keepDepth; rows south to north
 uniform vec4 uElevationMap;  // (lon0, lat0, dLon, dLat) in radians, cell centres
 uniform vec2 uElevationSize; // (columns, rows)
 uniform int uElevationWraps; // 1 when the columns cover 360 degrees
@@ -14,5 +14,6 @@ float elevationAt(vec2 latLon) {
   if (uElevationWraps == 1) cell.x = mod(cell.x, uElevationSize.x);
   vec2 uv = (cell + 0.5) / uElevationSize;
   if (uElevationWraps == 0 && (uv.x < 0.0 || uv.x > 1.0)) return -1.0;
-  return constrainByLandMask(texture(uElevation, uv).r, latLon);
+  vec2 heightKeep = texture(uElevation, uv).rg;  // m; LatLonGrid::keepDepth
+  return constrainByLandMask(heightKeep.x, heightKeep.y, latLon);
 }

@@ -33,15 +33,17 @@
 #include "render/aerial.glsl"
 #include "terrain/imagery.glsl"
 
-// The globe is drawn in parts (GlobeRenderer::drawGlobe). llvmpipe runs a shader's code after
-// a `discard` too, masked, so a part cannot leave early by discarding; what it does skip is a
-// fragment failing the depth or stencil test before the shader runs. So three cheap
-// classifying draws (GLOBE_PART_CLASSIFY, arithmetic only) first count into the stencil
-// buffer what each pixel needs: 0 nothing (pure space), 1 the sky only (no ray hits the
-// ellipsoid), 2 both (an edge: the limb, the horizon), 3 the surface only (all four rays hit).
-// Below 20 km, where no pixel sees pure space and the depth test leaves out what the terrain
-// and the grid cover, the first step is skipped and the counts are one lower. Then one draw per part, stencil-tested
-// before the shader (early fragment tests), each compiled with only its part's code.
+// The globe is drawn in parts (GlobeRenderer::classifyGlobe, shadeGlobe). llvmpipe runs a
+// shader's code after a `discard` too, masked, so a part cannot leave early by discarding;
+// what it does skip is a fragment failing the depth or stencil test before the shader runs.
+// So three cheap classifying draws (GLOBE_PART_CLASSIFY, arithmetic only) first count into the
+// stencil buffer what each pixel needs: 0 nothing (pure space), 1 the sky only (no ray hits
+// the ellipsoid), 2 both (an edge: the limb, the horizon), 3 the surface only (all four rays
+// hit). Then one draw per part, stencil-tested before the shader (early fragment tests), each
+// compiled with only its part's code. Below 20 km, where no pixel sees pure space and the
+// depth test leaves out what the terrain and the grid cover, the first step is skipped and the
+// counts are one lower. Above, the terrain is drawn between the classifying draws and the
+// parts, and zeroes the count where it draws.
 #define GLOBE_PART_SKY 1
 #define GLOBE_PART_EDGE 2
 #define GLOBE_PART_SURFACE 3
@@ -192,7 +194,7 @@ SkyView skyOf(PixelRays rays) {
 }
 
 #if GLOBE_PART == GLOBE_PART_CLASSIFY
-// The classifying draws (GlobeRenderer::drawGlobe): each keeps the pixels that pass its step,
+// The classifying draws (GlobeRenderer::classifyGlobe): each keeps the pixels that pass its step,
 // the stencil counting them: step 0 anything to shade (not pure space), 1 a ray on the globe,
 // 2 all four on it. Step 0 also writes the depth above 20 km.
 void main() {

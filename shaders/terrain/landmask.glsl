@@ -46,10 +46,11 @@ float landFraction(vec2 latLon) {
 }
 
 // A layer height (m) made to agree with the mask: at least / at most 20 m × (fraction − 0.5)
-// on land / water (data::LandMask::constrainHeightM, kCoastRampM = 20).
-float constrainByLandMask(float heightM, vec2 latLon) {
+// on land / water (data::LandMask::constrainHeightM, kCoastRampM = 20), the water's bound
+// scaled by 1 − keepDepth (the layer's corrected shallow banks keep their depth).
+float constrainByLandMask(float heightM, float keepDepth, vec2 latLon) {
   if (!landMaskOn()) return heightM;
   float f = landFraction(latLon);
   float edge = 20.0 * (f - 0.5);
-  return f >= 0.5 ? max(heightM, edge) : min(heightM, edge);
+  return f >= 0.5 ? max(heightM, edge) : min(heightM, edge * (1.0 - keepDepth));
 }

@@ -84,7 +84,9 @@ vec3 aerialToAltitude(vec3 surface, vec3 dir, float t, float hP) {
 void main() {
   // Triangles of a tile's row at a pole collapse onto the pole; llvmpipe can still emit a
   // fragment for them with undefined (NaN) attributes. They cover nothing: drop them.
+#ifndef TERRAIN_LAND_ONLY  // (tiles all above the sea, away from the poles: TerrainRenderer)
   if (any(isnan(vInfo)) || any(isnan(vRelative)) || any(isnan(vNormal))) discard;
+#endif
   float heightM = vInfo.x;
   // From high up the globe pass's sea covers the bathymetry: leave it to it rather than to a
   // depth test a few kilometres deep at thousands of kilometres (which llvmpipe's multisample
@@ -97,12 +99,14 @@ void main() {
   // kilometres apart (a staircase of straight lines along the coast from 30 km). Tiles that are
   // land at every vertex skip it (a lake narrower than their vertex spacing does not show).
   float lat = vInfo.y, lon = vInfo.z;
+#ifndef TERRAIN_LAND_ONLY
   if (uSeaFromGlobe == 1 && uTileHasWater == 1 && landMaskOn()) {
     if (landFraction(vec2(lat, lon)) < 0.5) discard;
     heightM = max(heightM, 0.0);
   } else if (heightM < (uSeaFromGlobe == 1 ? 0.0 : -1.0)) {
     discard;
   }
+#endif
   vec3 up = vec3(cos(lat) * cos(lon), cos(lat) * sin(lon), sin(lat));
   // Triangles that collapse at a pole give no normal (zero or NaN): the vertical stands in.
   vec3 n = dot(vNormal, vNormal) > 1e-20 ? normalize(vNormal) : up;

@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "app/SceneOptions.hpp"
 #include "core/Error.hpp"
 #include "data/Elevation.hpp"
 #include "terrain/Heightfield.hpp"
@@ -20,7 +21,7 @@ io::CameraPath loadPathFile(const fs::path& file, const io::SceneResolver& resol
 }
 
 io::TerrainHeight terrainHeights(const io::SceneSettings& scene) {
-  const auto ground = std::make_shared<const terrain::Heightfield>(data::loadElevationLayer(scene.elevationLayer));
+  const auto ground = std::make_shared<const terrain::Heightfield>(loadElevation(scene));
   return [ground](double lat, double lon) { return ground->heightM(lat, lon); };
 }
 

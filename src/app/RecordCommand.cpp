@@ -204,7 +204,7 @@ struct RecordingGl {
 /// Step 1, setup: data layers before the GL context (as `render` does: a bad file exits 2 at
 /// once), then the context and the renderer.
 RecordingGl setUpRenderer(const io::SceneSettings& scene, std::size_t frames, RecordResult& result) {
-  const data::LatLonGrid elevation = data::loadElevationLayer(scene.elevationLayer);
+  const data::LatLonGrid elevation = loadElevation(scene);
   const std::shared_ptr<const data::WindLayers> wind = loadWindLayers(scene);
   const std::vector<data::GeoImage> imagery = loadImageryLayers(scene);
 

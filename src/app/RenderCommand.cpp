@@ -57,7 +57,7 @@ Run addRenderCommand(CLI::App& parent) {
       throw InputError(out.string() + ": --aov needs an OpenEXR output (.exr): PNG has no extra channels");
     checkOutputWritable(out);  // fail before the (long) render, not after
     // Data layers before the GL context: a bad file exits 2 without rendering anything.
-    const data::LatLonGrid elevation = data::loadElevationLayer(scene.elevationLayer);
+    const data::LatLonGrid elevation = loadElevation(scene);
     const std::shared_ptr<const data::WindLayers> wind = loadWindLayers(scene);
     const std::vector<data::GeoImage> imagery = loadImageryLayers(scene);
 

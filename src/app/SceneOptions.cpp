@@ -51,6 +51,10 @@ void SceneOptions::add(CLI::App& cmd) {
   cmd.add_option("--elevation-layer", flags_.elevationLayer,
                  "relief/bathymetry FILE[:VAR] in metres: NetCDF, GRIB or GeoTIFF (default: "
                  "embedded ETOPO20)");
+  cmd.add_option("--elevation-correction", flags_.elevationCorrection,
+                 "auto (default: the embedded layer's ETOPO5 -10 m shallow-bank placeholder "
+                 "replaced near land, docs/coast.md), etopo5-banks (the same on any layer, e.g. "
+                 "etopo5.cdf) or none");
   cmd.add_option("--imagery-layer", flags_.imageryLayers,
                  "georeferenced imagery FILE draped over the land (GeoTIFF/COG, JPEG/PNG with a "
                  "world file, ... in EPSG:4326, 3857 or any CRS PROJ knows); repeat, later on top "
@@ -80,6 +84,7 @@ io::SceneSettings SceneOptions::resolve(io::SceneSettings s) const {
   if (given("--time-lapse")) s.timeLapse = flags_.timeLapse;
   if (given("--wind-layer")) s.windLayers = flags_.windLayers;
   if (given("--elevation-layer")) s.elevationLayer = flags_.elevationLayer;
+  if (given("--elevation-correction")) s.elevationCorrection = flags_.elevationCorrection;
   if (given("--imagery-layer")) s.imageryLayers = flags_.imageryLayers;
   if (given("--wind")) {
     const geo::Wind wind = geo::parseWindFlag(wind_, s.windFromDeg);
@@ -131,6 +136,10 @@ glm::dvec3 sunDirectionOf(const io::SceneSettings& s) {
 std::vector<data::GeoImage> loadImageryLayers(const io::SceneSettings& s) {
   std::vector<std::filesystem::path> files(s.imageryLayers.begin(), s.imageryLayers.end());
   return data::loadImageryLayers(files);
+}
+
+data::LatLonGrid loadElevation(const io::SceneSettings& scene) {
+  return data::loadElevationLayer(scene.elevationLayer, data::parseElevationCorrection(scene.elevationCorrection));
 }
 
 std::shared_ptr<const data::WindLayers> loadWindLayers(const io::SceneSettings& s) {

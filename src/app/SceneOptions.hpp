@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "data/Elevation.hpp"
 #include "data/Imagery.hpp"
 #include "data/WindLayers.hpp"
 #include "io/SceneFile.hpp"
@@ -49,6 +50,10 @@ render::FrameInput frameInputOf(const io::SceneSettings& scene);
 /// the given elevation/azimuth at the point under the camera, or a default afternoon Sun
 /// (elevation 50°, azimuth 150° there) when neither is given.
 glm::dvec3 sunDirectionOf(const io::SceneSettings& scene);
+
+/// The scene's elevation layer (the embedded default when it names none), corrected as its
+/// elevationCorrection says (data::ElevationCorrection). Throws og::InputError.
+data::LatLonGrid loadElevation(const io::SceneSettings& scene);
 
 /// The scene's wind layers, loaded and validated (og::InputError for a bad file), or nullptr
 /// when it names none: then the constant wind holds everywhere.

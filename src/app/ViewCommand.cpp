@@ -78,7 +78,7 @@ class Viewer {
   Viewer(const ViewOptions& options, io::SceneSettings scene, std::optional<io::CameraPath> path)
       : options_(options),
         scene_(std::move(scene)),
-        ground_(data::loadElevationLayer(scene_.elevationLayer)),
+        ground_(loadElevation(scene_)),
         imagery_(loadImageryLayers(scene_)),
         wind_(data::WindLayers::load(scene_.windLayers, scene_.wind().vector(), scene_.time)),
         controller_(scene_.camera, [this](double lat, double lon) {

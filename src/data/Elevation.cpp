@@ -114,26 +114,34 @@ LatLonGrid readElevationMemory(std::string_view bytes, const std::string& label,
   return readElevation(*openGridMemory(bytes, label), variable);
 }
 
-LatLonGrid loadElevationLayer(const std::string& spec) {
-  if (spec.empty()) return defaultElevation();
+LatLonGrid loadElevationLayer(const std::string& spec, ElevationCorrection correction) {
+  if (spec.empty()) return correction == ElevationCorrection::None ? uncorrectedDefaultElevation() : defaultElevation();
   const LayerSpec layer = parseLayerSpec(spec);
   if (layer.variables.size() > 1)
     throw InputError(layer.file.string() + ": an elevation layer takes one variable (FILE:VAR), got " +
                      std::to_string(layer.variables.size()));
-  return readElevationFile(layer.file, layer.variables.empty() ? std::string() : layer.variables[0]);
+  LatLonGrid grid = readElevationFile(layer.file, layer.variables.empty() ? std::string() : layer.variables[0]);
+  applyElevationCorrection(grid, correction, false);
+  return grid;
+}
+
+LatLonGrid uncorrectedDefaultElevation() {
+  const std::optional<std::string_view> bytes = og::embedded::data::find(kDefaultFile);
+  if (!bytes) throw InternalError("embedded data: " + std::string(kDefaultFile) + " is missing");
+  try {
+    return readElevationMemory(*bytes, "embedded:" + std::string(kDefaultFile));
+  } catch (const InputError& e) {
+    // The embedded file is ours, not the user's: a failure here is a build problem.
+    throw InternalError(e.what());
+  }
 }
 
 const LatLonGrid& defaultElevation() {
-  // Parsed once; a function-local static is initialised thread-safely.
+  // Parsed and corrected once; a function-local static is initialised thread-safely.
   static const LatLonGrid grid = [] {
-    const std::optional<std::string_view> bytes = og::embedded::data::find(kDefaultFile);
-    if (!bytes) throw InternalError("embedded data: " + std::string(kDefaultFile) + " is missing");
-    try {
-      return readElevationMemory(*bytes, "embedded:" + std::string(kDefaultFile));
-    } catch (const InputError& e) {
-      // The embedded file is ours, not the user's: a failure here is a build problem.
-      throw InternalError(e.what());
-    }
+    LatLonGrid g = uncorrectedDefaultElevation();
+    applyElevationCorrection(g, ElevationCorrection::Auto, true);
+    return g;
   }();
   return grid;
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "data/LatLonGrid.hpp"
+#include "data/ShallowBanks.hpp"
 
 namespace og::data {
 
@@ -29,14 +30,19 @@ LatLonGrid readElevationFile(const std::filesystem::path& file, const std::strin
 LatLonGrid readElevationMemory(std::string_view bytes, const std::string& label,
                                const std::string& variable = {});
 
-/// An `--elevation-layer` spec "FILE[:VAR]": the embedded default when `spec` is empty.
-LatLonGrid loadElevationLayer(const std::string& spec);
+/// An `--elevation-layer` spec "FILE[:VAR]": the embedded default when `spec` is empty;
+/// `correction` as --elevation-correction says (data/ShallowBanks.hpp: Auto corrects the
+/// default's shallow-bank placeholder only, None not even that).
+LatLonGrid loadElevationLayer(const std::string& spec, ElevationCorrection correction = ElevationCorrection::Auto);
 
 /// Names elevation fields go by (ROSE, z, elevation, topo, ...), tried in order when a file
 /// holds several fields and none is named.
 const std::vector<std::string>& elevationVariableNames();
 
-/// The default relief embedded in the binary (derived from ETOPO20, see data/README.md).
+/// The default relief embedded in the binary (ETOPO20, see data/README.md) with ETOPO5's
+/// shallow-bank placeholder corrected (correctShallowBanks; logged once).
 const LatLonGrid& defaultElevation();
+/// The same as the file has it, uncorrected.
+LatLonGrid uncorrectedDefaultElevation();
 
 }  // namespace og::data

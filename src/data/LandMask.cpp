@@ -93,10 +93,11 @@ float LandMask::landFraction(double latitudeDeg, double longitudeDeg) const {
   return static_cast<float>(v);
 }
 
-double LandMask::constrainHeightM(double heightM, double latitudeDeg, double longitudeDeg) const {
+double LandMask::constrainHeightM(double heightM, double latitudeDeg, double longitudeDeg,
+                                  double keepDepth) const {
   const double f = landFraction(latitudeDeg, longitudeDeg);
   const double edge = kCoastRampM * (f - 0.5);
-  return f >= 0.5 ? std::max(heightM, edge) : std::min(heightM, edge);
+  return f >= 0.5 ? std::max(heightM, edge) : std::min(heightM, edge * (1.0 - keepDepth));
 }
 
 bool LandMask::refines(const LatLonGrid& layer) const {

@@ -35,8 +35,10 @@ class LandMask {
 
   /// A layer height (m) made to agree with the mask: on land at least, on water at most,
   /// kCoastRampM × (fraction − 0.5), so the zero contour is the mask's coast and heights stay
-  /// continuous across it.
-  [[nodiscard]] double constrainHeightM(double heightM, double latitudeDeg, double longitudeDeg) const;
+  /// continuous across it. On water that bound is scaled by 1 − `keepDepth` (0-1, the layer's
+  /// LatLonGrid::keepDepth there): corrected shallow banks keep their depth (data/ShallowBanks).
+  [[nodiscard]] double constrainHeightM(double heightM, double latitudeDeg, double longitudeDeg,
+                                        double keepDepth = 0.0) const;
   static constexpr double kCoastRampM = 20.0;
 
   /// True when the mask should decide the coast for `layer`: a global layer coarser than the

@@ -19,9 +19,19 @@ bool LatLonGrid::coversPoles() const {
 }
 
 float LatLonGrid::sample(double latitudeDeg, double longitudeDeg) const {
+  return sampleField(values, latitudeDeg, longitudeDeg);
+}
+
+float LatLonGrid::sampleKeepDepth(double latitudeDeg, double longitudeDeg) const {
+  if (keepDepth.empty()) return 0.0f;
+  const float k = sampleField(keepDepth, latitudeDeg, longitudeDeg);
+  return std::isfinite(k) ? k : 0.0f;
+}
+
+float LatLonGrid::sampleField(const std::vector<float>& field, double latitudeDeg, double longitudeDeg) const {
   constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
   if (width <= 0 || height <= 0 || !(dLonDeg > 0.0) || !(dLatDeg > 0.0) ||
-      values.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
+      field.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
     return kNaN;
   if (!std::isfinite(latitudeDeg) || !std::isfinite(longitudeDeg)) return kNaN;
 
@@ -60,10 +70,14 @@ float LatLonGrid::sample(double latitudeDeg, double longitudeDeg) const {
   const int r1 = std::min(r0 + 1, height - 1);
   const double fy = y - static_cast<double>(r0);
 
-  const double v00 = static_cast<double>(at(c0, r0));
-  const double v10 = static_cast<double>(at(c1, r0));
-  const double v01 = static_cast<double>(at(c0, r1));
-  const double v11 = static_cast<double>(at(c1, r1));
+  auto at = [&](int column, int row) {
+    return static_cast<double>(field[static_cast<std::size_t>(row) * static_cast<std::size_t>(width) +
+                                     static_cast<std::size_t>(column)]);
+  };
+  const double v00 = at(c0, r0);
+  const double v10 = at(c1, r0);
+  const double v01 = at(c0, r1);
+  const double v11 = at(c1, r1);
   // Any NaN neighbour makes the sum NaN, even one with zero weight: no-data is never blended.
   const double south = v00 * (1.0 - fx) + v10 * fx;
   const double north = v01 * (1.0 - fx) + v11 * fx;

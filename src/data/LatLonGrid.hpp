@@ -19,6 +19,10 @@ struct LatLonGrid {
   double dLatDeg = 1.0;    ///< row spacing, > 0 (latitude increases with row)
   bool wrapsLongitude = false;  ///< true when the columns cover 360° (sampling wraps)
   std::vector<float> values;    ///< row-major [row][column], NaN where the file has no data
+  /// Cells whose depth a land mask must keep rather than push down to its offshore floor, 0-1
+  /// like `values` (data::correctShallowBanks marks the banks it sets; LandMask::constrainHeightM);
+  /// empty = none.
+  std::vector<float> keepDepth;
 
   [[nodiscard]] float at(int column, int row) const {
     return values[static_cast<std::size_t>(row) * static_cast<std::size_t>(width) +
@@ -32,6 +36,11 @@ struct LatLonGrid {
   /// Bilinear sample at a geodetic position (degrees). Longitude is taken modulo 360.
   /// Outside a regional grid, or where a neighbour is NaN, returns NaN.
   [[nodiscard]] float sample(double latitudeDeg, double longitudeDeg) const;
+  /// keepDepth sampled the same way, 0 where it is empty.
+  [[nodiscard]] float sampleKeepDepth(double latitudeDeg, double longitudeDeg) const;
+
+ private:
+  [[nodiscard]] float sampleField(const std::vector<float>& field, double latitudeDeg, double longitudeDeg) const;
 };
 
 }  // namespace og::data

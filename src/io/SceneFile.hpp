@@ -46,6 +46,9 @@ struct SceneSettings {
   [[nodiscard]] geo::Wind wind() const { return geo::Wind::blowingFrom(windSpeedMs, windFromDeg); }
   std::vector<std::string> windLayers;    ///< "FILE[:U,V]" specs, bottom of the stack first
   std::string elevationLayer;             ///< "FILE[:VAR]", empty = embedded default
+  /// "auto" (the default layer's shallow-bank placeholder corrected), "etopo5-banks" (any
+  /// layer's) or "none" (data::ElevationCorrection).
+  std::string elevationCorrection = "auto";
   /// Georeferenced imagery draped over the land (GDAL rasters), bottom first; the embedded
   /// Blue Marble is always underneath.
   std::vector<std::string> imageryLayers;

@@ -193,7 +193,11 @@ std::vector<SceneField> layerFields() {
     s.imageryLayers = list ? *list : std::vector<std::string>();
   };
   SceneField backend = text("gl", "backend", "GL backend", &SceneSettings::glBackend, {"auto", "egl", "osmesa"});
-  return {wind, elevation, imagery, backend};
+  // ETOPO5's -10 m shallow-bank placeholder (data/ShallowBanks.hpp): auto = the embedded
+  // default corrected, etopo5-banks = any layer, none = as the file has it.
+  SceneField correction = text("layers", "elevation_correction", "elevation correction",
+                               &SceneSettings::elevationCorrection, {"auto", "etopo5-banks", "none"});
+  return {wind, elevation, correction, imagery, backend};
 }
 
 std::vector<SceneField> atmosphereFields() {

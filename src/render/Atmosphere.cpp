@@ -131,8 +131,9 @@ SkyFilter Atmosphere::chooseSkyFilter() {
   const bool software = gl::isSoftwareRenderer();
   if (forced == "single") return {1, 1.0f, "forced single lookup (OCEANGLOBE_SKY_FILTER)"};
   if (forced == "probes" || (forced.empty() && software))
-    return {9, 1.0f, forced.empty() ? "CPU rasteriser: 9 isotropic lookups (Bruneton 2010 7.3)"
-                                    : "forced 9 lookups (OCEANGLOBE_SKY_FILTER)"};
+    // At most 4 (the paper's 9 less than a level apart at 8 bits: docs/performance.md).
+    return {4, 1.0f, forced.empty() ? "CPU rasteriser: up to 4 isotropic lookups (Bruneton 2010 7.3)"
+                                    : "forced up to 4 lookups (OCEANGLOBE_SKY_FILTER)"};
   GLfloat most = 1.0f;
   glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &most);
   glGetError();  // a driver without the (GL 4.6 / EXT) anisotropy leaves `most` at 1
@@ -293,7 +294,7 @@ void Atmosphere::computeSkyMaps() {
   glTextureParameteri(skyMaps_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(skyMaps_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   // Anisotropy per chooseSkyFilter(): hardware on a GPU, 1 on llvmpipe (where skymap.glsl
-  // averages 9 lookups instead); textureGrad selects the mip level from the gradients.
+  // averages up to 4 lookups instead); textureGrad selects the mip level from the gradients.
   if (skyFilter_.maxAnisotropy > 1.0f)
     glTextureParameterf(skyMaps_.id(), GL_TEXTURE_MAX_ANISOTROPY, skyFilter_.maxAnisotropy);
   skyIrradiance_ = gl::createTexture(GL_TEXTURE_1D_ARRAY);

@@ -24,7 +24,7 @@ struct AtmosphereOptions {
 /// textureGrad with the axes 2 sigma dU/dzeta; §7.3: "an average of nine texture2D samples
 /// inside the elliptical filter support"). Chosen in one place, Atmosphere::chooseSkyFilter.
 struct SkyFilter {
-  int probes = 1;             ///< most textureGrad lookups along the ellipse's major axis (1 or 9)
+  int probes = 1;             ///< most textureGrad lookups along the ellipse's major axis (1 or 4)
   float maxAnisotropy = 1.0f; ///< the sky maps' sampler anisotropy (hardware filtering)
   std::string reason;         ///< why, for logs and `info`
 };

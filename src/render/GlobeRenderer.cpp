@@ -38,14 +38,18 @@ GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
       wind_(std::make_unique<WindTextures>()) {
   if (elevation.width < 2 || elevation.height < 2)
     throw InternalError("elevation layer '" + elevation.name + "' is too small to render");
-  // Missing values (NaN) read as sea.
-  std::vector<float> texels(elevation.values);
-  for (float& v : texels)
-    if (!std::isfinite(v)) v = -1.0f;
+  // Height and keepDepth (the land mask leaves corrected banks' depth alone: data/ShallowBanks)
+  // per texel; missing values (NaN) read as sea.
+  std::vector<float> texels(2 * elevation.values.size(), 0.0f);
+  for (std::size_t i = 0; i < elevation.values.size(); ++i) {
+    const float v = elevation.values[i];
+    texels[2 * i] = std::isfinite(v) ? v : -1.0f;
+    if (!elevation.keepDepth.empty()) texels[2 * i + 1] = elevation.keepDepth[i];
+  }
   elevation_ = gl::createTexture(GL_TEXTURE_2D);
-  glTextureStorage2D(elevation_.id(), 1, GL_R32F, elevation.width, elevation.height);
+  glTextureStorage2D(elevation_.id(), 1, GL_RG32F, elevation.width, elevation.height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTextureSubImage2D(elevation_.id(), 0, 0, 0, elevation.width, elevation.height, GL_RED,
+  glTextureSubImage2D(elevation_.id(), 0, 0, 0, elevation.width, elevation.height, GL_RG,
                       GL_FLOAT, texels.data());
   glTextureParameteri(elevation_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(elevation_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -151,19 +155,25 @@ void GlobeRenderer::render(const FrameInput& f) {
   glClearNamedFramebufferfi(hdr_.fbo.id(), GL_DEPTH_STENCIL, 0, clearDepth, 0);
   glEnable(GL_DEPTH_TEST);
   landMask_->bind();  // gl::kUnitLandMask for every pass (render/elevation.glsl)
-  if (!grid) drawGlobe(view, f, grid);
+  if (!grid) classifyGlobe(view, f, grid);
 
   // Terrain over the globe's land (its far fallback), depth-tested; the ocean below is then
-  // depth-tested against it, so the shoreline is where sea surface and ground meet. Below
-  // 20 km the globe comes last, shading only what the two left empty (no pixel twice).
+  // depth-tested against it, so the shoreline is where sea surface and ground meet. Above
+  // 20 km its tiles all above the sea come first and zero the stencil where they draw, so the
+  // globe's parts leave those pixels alone, and the tiles with water come after the globe,
+  // over it; below, the globe comes last, shading only what the two left empty.
   terrain_->draw(view, f.width, f.height, f.sunDirectionEcef, !grid);
   glBindTextureUnit(gl::kUnitElevation, elevation_.id());
   glBindVertexArray(emptyVao_.id());
   if (grid) {
     drawOcean(view, f);
     glDepthMask(GL_FALSE);
-    drawGlobe(view, f, grid);
+    classifyGlobe(view, f, grid);
+    shadeGlobe(view, f, grid);
     glDepthMask(GL_TRUE);
+  } else {
+    shadeGlobe(view, f, grid);
+    terrain_->drawWaterTiles();
   }
 
   if (timer_ != nullptr) timer_->mark("tone mapping");
@@ -202,8 +212,11 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
 // orbit (or, below the grid's ceiling, the sea the grid leaves uncovered). llvmpipe skips a
 // fragment shader only for fragments that fail the depth or stencil test before it runs, so
 // three cheap classifying draws count into the stencil what each pixel needs (globe.frag's
-// header), and each part is then drawn over only its own pixels.
-void GlobeRenderer::drawGlobe(const geo::CameraView& view, const FrameInput& f, bool grid) {
+// header), and each part is then drawn over only its own pixels. Above 20 km the classifying
+// draws come before the terrain (their first writes the globe's depth, which the terrain is
+// tested against) and the parts after it, skipping what the terrain's land-only tiles covered
+// (they zero the stencil where they draw); below, both come after the terrain and the grid.
+void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput& f, bool grid) {
   if (timer_ != nullptr) timer_->mark("globe");
   glBindVertexArray(emptyVao_.id());
   glDepthFunc(grid ? GL_GEQUAL : GL_ALWAYS);
@@ -218,17 +231,13 @@ void GlobeRenderer::drawGlobe(const geo::CameraView& view, const FrameInput& f, 
     glBeginQuery(GL_ANY_SAMPLES_PASSED, uncoveredQuery_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glEndQuery(GL_ANY_SAMPLES_PASSED);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glBeginConditionalRender(uncoveredQuery_.id(), GL_QUERY_WAIT);
   }
   glEnable(GL_STENCIL_TEST);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glStencilFunc(GL_ALWAYS, 0, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
-  // Below 20 km no pixel sees pure space, and the depth test already leaves out what the
-  // terrain and the grid cover: step 0 is skipped and the counts start at 0 for the sky.
-  const int firstStep = grid ? 1 : 0;
-  for (int step = firstStep; step < 3; ++step) {
+  for (int step = firstClassifyingStep(grid); step < 3; ++step) {
     glDepthMask(step == 0 ? GL_TRUE : GL_FALSE);  // above 20 km step 0 writes the depth
     const gl::Program& classify = globeProgram(grid, step);
     setGlobeUniforms(classify, view, f);
@@ -236,10 +245,21 @@ void GlobeRenderer::drawGlobe(const geo::CameraView& view, const FrameInput& f, 
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(grid ? GL_FALSE : GL_TRUE);  // as the caller had it
+  glDisable(GL_STENCIL_TEST);
+  if (grid) glEndConditionalRender();
+}
+
+void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f, bool grid) {
+  if (timer_ != nullptr) timer_->mark("globe");
+  glBindVertexArray(emptyVao_.id());
+  glDepthFunc(grid ? GL_GEQUAL : GL_ALWAYS);
+  if (grid) glBeginConditionalRender(uncoveredQuery_.id(), GL_QUERY_WAIT);
+  glEnable(GL_STENCIL_TEST);
   glDepthMask(GL_FALSE);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   for (int part = 1; part <= 3; ++part) {  // sky, edge, surface: the stencil counts 1, 2, 3
-    glStencilFunc(GL_EQUAL, part - firstStep, 0xff);
+    glStencilFunc(GL_EQUAL, part - firstClassifyingStep(grid), 0xff);
     const gl::Program& globe = globeProgram(grid, part + 2);
     setGlobeUniforms(globe, view, f);
     globe.use();

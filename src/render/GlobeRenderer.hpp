@@ -140,7 +140,12 @@ class GlobeRenderer {
 
  private:
   void ensureTargets(int width, int height, int samples, bool auxiliary);
-  void drawGlobe(const geo::CameraView& view, const FrameInput& f, bool grid);
+  /// The globe pass's two halves (render/globe.frag): the classifying draws, then the parts.
+  void classifyGlobe(const geo::CameraView& view, const FrameInput& f, bool grid);
+  void shadeGlobe(const geo::CameraView& view, const FrameInput& f, bool grid);
+  /// Below 20 km no pixel sees pure space, and the depth test already leaves out what the
+  /// terrain and the grid cover: step 0 is skipped and the counts start at 0 for the sky.
+  static int firstClassifyingStep(bool grid) { return grid ? 1 : 0; }
   void drawOcean(const geo::CameraView& view, const FrameInput& f);
   /// The HDR target, resolved to one sample per pixel when multisampled (on first use after
   /// each render()).

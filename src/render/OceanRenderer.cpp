@@ -105,6 +105,25 @@ const gl::Program& OceanRenderer::program(unsigned features) {
   return p;
 }
 
+double OceanRenderer::farthestSeaAngleRad(const geo::CameraView& view) {
+  const double r = geo::kWgs84SemiMajorM, h = std::max(view.position.heightM, 0.0);
+  const double tanY = std::tan(0.5 * view.verticalFovRad), tanX = tanY * view.aspect;
+  const double horizon = std::acos(r / (r + h));
+  double most = 0.0;
+  for (const double sx : {-1.0, 0.0, 1.0}) {
+    const glm::dvec3 dir = glm::normalize(view.forward + sx * tanX * view.right + tanY * view.up);
+    // The ray from (r + h) up meets the sphere of radius r at the smaller root t of
+    // t² - 2 b t + (r + h)² - r² = 0, b = (r + h) cos(angle below the horizontal).
+    const double b = (r + h) * -glm::dot(dir, view.enu.up);
+    const double disc = b * b - h * (2.0 * r + h);
+    if (b <= 0.0 || disc < 0.0) return horizon;
+    const double t = b - std::sqrt(disc);
+    // Angle at the centre: cos = ((r + h) - t cos(down)) / r, the hit's height along up over r.
+    most = std::max(most, std::acos(std::clamp((r + h - t * b / (r + h)) / r, -1.0, 1.0)));
+  }
+  return std::min(most, horizon);
+}
+
 void OceanRenderer::ensureGrid(int columns, int rows) {
   if (columns == gridColumns_ && rows == gridRows_) return;
   std::vector<GLuint> idx;
@@ -144,6 +163,9 @@ void OceanRenderer::setCommon(const gl::Program& p, const geo::CameraView& view,
   p.set("uEcefToOcean", ecefToOcean);
   p.set("uEyeHeight", static_cast<float>(eyeHeight));
   p.set("uCellAngle", static_cast<float>(2.0 * tanY / height * cellPixels_));
+  p.set("uCellPixels", static_cast<float>(cellPixels_));
+  // Patterns whose texels span 2 cells or more are looked up per vertex (ocean/patterns.glsl).
+  p.set("uPatternVertexLod", static_cast<float>(-std::log2(static_cast<double>(cellPixels_))));
   p.set("uEyeScaled", toFloat(o));
   p.set("uEyeC", static_cast<float>(glm::dot(o, o) - 1.0));
   p.set("uSunDirOcean", ecefToOcean * toFloat(glm::normalize(lighting.sunDirectionEcef)));
@@ -196,7 +218,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     if (lighting.floorInReach) features |= kFeatureWaterVolume;
     if (lighting.landInView) features |= kFeatureCoastTest;
     if (lighting.shadows != nullptr && lighting.shadows->on) features |= kFeatureShadows;
-    if (atmosphere_ != nullptr && view.position.heightM < kFrameSkyMaxHeightM) {
+    if (atmosphere_ != nullptr && farthestSeaAngleRad(view) <= kFrameSkyMaxAngleRad) {
       features |= kFeatureFrameSky;
       const double cosSun = glm::dot(glm::normalize(lighting.sunDirectionEcef), view.enu.up);
       atmosphere_->prepareFrameSkyLayer(std::acos(std::clamp(cosSun, -1.0, 1.0)));

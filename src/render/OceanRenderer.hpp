@@ -68,6 +68,13 @@ class OceanRenderer {
   /// Weights of the Bruneton model's lighting terms (Sun, sky, refracted light, whitecaps), 1
   /// each by default; `validate` renders them one at a time (paper §7.2).
   void setLightingTerms(const glm::vec4& weights) { lightingTerms_ = weights; }
+  /// Largest angle at the Earth's centre (rad) between the camera's nadir and the sea in view:
+  /// where the screen's top corners' and top centre's rays meet the sphere of the semi-major
+  /// axis, or the horizon where one misses it. Decides the sky maps' frame layer.
+  [[nodiscard]] static double farthestSeaAngleRad(const geo::CameraView& view);
+  /// Up to this farthestSeaAngleRad the grid reads the sky maps' frame layer (1°, under a third
+  /// of the Sun layers' spacing; sea-8km's 0.70° changes its image by at most 1 level).
+  static constexpr double kFrameSkyMaxAngleRad = 0.0175;
   /// Grid cell size in pixels (the paper's ~8 px); smaller = finer geometry, slower.
   void setCellPixels(int pixels) { cellPixels_ = pixels; }
 
@@ -90,10 +97,11 @@ class OceanRenderer {
 
   static constexpr unsigned kFeatureWaterVolume = 1, kFeatureCoastTest = 2, kFeatureShadows = 4;
   /// The sky maps' frame layer alone (Atmosphere::prepareFrameSkyLayer) instead of two layers
-  /// blended per pixel: below kFrameSkyMaxHeightM, where the horizon is so near that the Sun's
-  /// zenith angle varies by under a quarter of a degree across the sea in view.
+  /// blended per pixel: where every sea point in view is within kFrameSkyMaxAngleRad of the
+  /// camera's nadir (angle at the Earth's centre, farthestSeaAngleRad), so that the Sun's zenith
+  /// angle varies by no more than that across the sea in view: the sea from a few metres (the
+  /// horizon 7 km away at 4 m: 0.06°), or looking down from a few km (sea-8km: 0.70°).
   static constexpr unsigned kFeatureFrameSky = 8;
-  static constexpr double kFrameSkyMaxHeightM = 50.0;
   const Atmosphere* atmosphere_;
   std::vector<std::string> defines_;        ///< the filtered model's, whatever the features
   std::array<gl::Program, 16> variants_;    ///< by feature bits; id() 0 until compiled

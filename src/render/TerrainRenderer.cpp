@@ -75,9 +75,7 @@ void TerrainRenderer::bindTile(const terrain::Tile& t) {
 void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
                                       const std::vector<const terrain::Tile*>& tiles,
                                       const glm::dvec3& sunDirectionEcef) {
-  const gl::Program& p = program_;
   shadows_.on = false;
-  shadows_.apply(p);
   const glm::dvec3 s = glm::normalize(sunDirectionEcef);
   const double h = view.position.heightM;
   // Shadows of relief matter within a few hundred km; from farther out they are sub-pixel.
@@ -167,7 +165,58 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
   shadows_.on = true;
   // The near cascade serves the points well inside its reach.
   shadows_.splitM = static_cast<float>(0.8 * farReach / std::pow(8.0, kShadowCascades - 1));
+}
+
+void TerrainRenderer::drawWaterTiles() {
+  if (waterTiles_.empty()) return;
+  if (timer_ != nullptr) timer_->mark("terrain");
+  drawTiles(waterView_, waterTiles_, program_);
+  waterTiles_.clear();
+  gl::checkErrors("TerrainRenderer::drawWaterTiles");
+}
+
+void TerrainRenderer::drawTiles(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
+                                const gl::Program& p) {
+  glBindTextureUnit(gl::kUnitShadowMap, shadowMap_.id());
+  p.use();
+  glBindVertexArray(vao_.id());
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_GREATER);
+  glDepthMask(GL_TRUE);
+  // A heightfield seen from above hides its back faces behind front ones: cull them (the
+  // skirts, seen from either side, are drawn without culling). Fragments are not free even
+  // when hidden: llvmpipe shades them before the depth test when multisampling.
+  const GLsizei gridIndices = 6 * terrain::kTileQuads * terrain::kTileQuads;
+  glFrontFace(GL_CCW);
+  glCullFace(GL_BACK);
+  for (const terrain::Tile* t : tiles) {
+    // Camera-relative tile origin in double, then float: never float world coordinates.
+    p.set("uTileOffset", glm::vec3(t->centreEcef - view.positionEcef));
+    p.set("uMorphScale", morphScale(*t, view));
+    p.set("uDetailFirst", t->normalOctaves);
+    // Only tiles with water at a vertex look the coast up per pixel (terrain.frag).
+    p.set("uTileHasWater", t->minHeightM <= 0.0 ? 1 : 0);
+    bindTile(*t);
+    glEnable(GL_CULL_FACE);
+    glDrawElements(GL_TRIANGLES, gridIndices, GL_UNSIGNED_INT, nullptr);
+    glDisable(GL_CULL_FACE);
+    glDrawElements(GL_TRIANGLES, indexCount_ - gridIndices, GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(static_cast<std::uintptr_t>(gridIndices) * sizeof(std::uint32_t)));
+  }
+}
+
+void TerrainRenderer::setFrameUniforms(const gl::Program& p, const geo::CameraView& view,
+                                       const glm::dvec3& sunDirectionEcef, bool seaFromGlobe) const {
+  p.set("uViewProjection", glm::mat4(view.viewProjection()));
+  p.set("uSunDir", glm::vec3(glm::normalize(sunDirectionEcef)));
+  p.set("uCamUp", glm::vec3(view.enu.up));
+  p.set("uCamAltitude", static_cast<float>(view.position.heightM));
+  p.set("uSeaFromGlobe", seaFromGlobe ? 1 : 0);
+  setDetailUniforms(p, view);
   shadows_.apply(p);
+  if (atmosphere_ != nullptr) atmosphere_->bind(p);
+  if (imagery_ != nullptr) imagery_->bind(p);
+  p.set("uImageryEnabled", imagery_ != nullptr && imagery_->enabled() ? 1 : 0);
 }
 
 void SunShadows::apply(const gl::Program& p) const {
@@ -178,7 +227,7 @@ void SunShadows::apply(const gl::Program& p) const {
   p.set("uShadowSplitM", splitM);
 }
 
-void TerrainRenderer::setDetailUniforms(const geo::CameraView& view) const {
+void TerrainRenderer::setDetailUniforms(const gl::Program& p, const geo::CameraView& view) const {
   // Each octave's lattice coordinate at the eye, split in double into a cell and a position
   // in it: the shader continues from there with small camera-relative offsets.
   const terrain::DetailOctaves& o = cache_.heights().octaves();
@@ -191,7 +240,6 @@ void TerrainRenderer::setDetailUniforms(const geo::CameraView& view) const {
     cells[static_cast<std::size_t>(k)] = glm::ivec3(c);
     fracs[static_cast<std::size_t>(k)] = glm::vec3(q - c);
   }
-  const gl::Program& p = program_;
   glProgramUniform3iv(p.id(), p.location("uDetailCell"), count, &cells[0].x);
   glProgramUniform3fv(p.id(), p.location("uDetailFrac"), count, &fracs[0].x);
   p.set("uDetailCount", count);
@@ -212,13 +260,6 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   const auto tiles = terrain::selectTiles(cache_, view, params_, &sel);
   for (const std::uint64_t key : cache_.takeEvicted()) gpu_.erase(key);
 
-  const gl::Program& p = program_;
-  p.set("uViewProjection", glm::mat4(view.viewProjection()));
-  p.set("uSunDir", glm::vec3(glm::normalize(sunDirectionEcef)));
-  p.set("uCamUp", glm::vec3(view.enu.up));
-  p.set("uCamAltitude", static_cast<float>(view.position.heightM));
-  p.set("uSeaFromGlobe", seaFromGlobe ? 1 : 0);
-  setDetailUniforms(view);
   if (timer_ != nullptr) timer_->mark("terrain shadows");
   // Casters: tiles that reach above the sea. Deep sea-floor tiles shadow nothing seen, so
   // over the open ocean no shadow map is drawn at all.
@@ -227,36 +268,33 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
     if (!t->coveredBySea()) casters.push_back(t);
   renderShadowMap(view, casters, sunDirectionEcef);
   if (timer_ != nullptr) timer_->mark("terrain");
-  glBindTextureUnit(gl::kUnitShadowMap, shadowMap_.id());
-  if (atmosphere_ != nullptr) atmosphere_->bind(p);
-  if (imagery_ != nullptr) imagery_->bind(p);
-  p.set("uImageryEnabled", imagery_ != nullptr && imagery_->enabled() ? 1 : 0);
-  p.use();
-  glBindVertexArray(vao_.id());
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_GREATER);
-  glDepthMask(GL_TRUE);
-  // A heightfield seen from above hides its back faces behind front ones: cull them (the
-  // skirts, seen from either side, are drawn without culling). Fragments are not free even
-  // when hidden: llvmpipe shades them before the depth test when multisampling.
-  const GLsizei gridIndices = 6 * terrain::kTileQuads * terrain::kTileQuads;
-  glFrontFace(GL_CCW);
-  glCullFace(GL_BACK);
+  if (seaFromGlobe && landProgram_.id() == 0)
+    landProgram_ = gl::Program({{GL_VERTEX_SHADER, "terrain/terrain.vert"},
+                                {GL_FRAGMENT_SHADER, "terrain/terrain.frag"}},
+                               {"TERRAIN_LAND_ONLY"});
+  for (const gl::Program* p : {&program_, &landProgram_})
+    if (p->id() != 0) setFrameUniforms(*p, view, sunDirectionEcef, seaFromGlobe);
+  // Above 20 km tiles all above the sea and away from the poles need none of terrain.frag's
+  // discards: drawn without them (landProgram_) they pass the depth test before the shader
+  // even with the stencil on (llvmpipe tests late in a shader that may discard), and zero the
+  // stencil, so the globe's parts skip what they cover (GlobeRenderer::shadeGlobe). The other
+  // tiles wait for drawWaterTiles(), after the globe, over which they draw as before.
+  waterTiles_.clear();
+  std::vector<const terrain::Tile*> now;
   for (const terrain::Tile* t : tiles) {
     if (t->coveredBySea()) continue;  // the grid's sea, or the globe's from orbit, hides it
-    // Camera-relative tile origin in double, then float: never float world coordinates.
-    p.set("uTileOffset", glm::vec3(t->centreEcef - view.positionEcef));
-    p.set("uMorphScale", morphScale(*t, view));
-    p.set("uDetailFirst", t->normalOctaves);
-    // Only tiles with water at a vertex look the coast up per pixel (terrain.frag).
-    p.set("uTileHasWater", t->minHeightM <= 0.0 ? 1 : 0);
-    bindTile(*t);
-    glEnable(GL_CULL_FACE);
-    glDrawElements(GL_TRIANGLES, gridIndices, GL_UNSIGNED_INT, nullptr);
-    glDisable(GL_CULL_FACE);
-    glDrawElements(GL_TRIANGLES, indexCount_ - gridIndices, GL_UNSIGNED_INT,
-                   reinterpret_cast<const void*>(static_cast<std::uintptr_t>(gridIndices) * sizeof(std::uint32_t)));
+    const int lastRow = (1 << t->key.level) - 1;
+    const bool landOnly = t->minHeightM > 0.0 && t->key.y > 0 && t->key.y < lastRow;
+    (seaFromGlobe && !landOnly ? waterTiles_ : now).push_back(t);
   }
+  if (seaFromGlobe) {
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, 0, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  }
+  drawTiles(view, now, seaFromGlobe ? landProgram_ : program_);
+  glDisable(GL_STENCIL_TEST);
+  waterView_ = view;
   stats_.tiles = static_cast<int>(tiles.size());
   stats_.landTiles = static_cast<int>(casters.size());
   stats_.maxHeightM = tiles.empty() ? 0.0 : -1e30;

@@ -56,6 +56,10 @@ class TerrainRenderer {
   /// fragments under sea level are left to it.
   void draw(const geo::CameraView& view, int width, int height, const glm::dvec3& sunDirectionEcef,
             bool seaFromGlobe);
+  /// With `seaFromGlobe`, draw() draws only the tiles all above the sea (zeroing the stencil
+  /// where they draw: GlobeRenderer's parts then skip those pixels); this draws the rest of
+  /// that frame's tiles, after the globe. Without, draw() drew them all and this does nothing.
+  void drawWaterTiles();
 
   [[nodiscard]] const TerrainStats& stats() const { return stats_; }
 
@@ -72,7 +76,12 @@ class TerrainRenderer {
   static constexpr int kMaxDetailOctaves = 24;  // MAX_DETAIL_OCTAVES in terrain.frag
   static constexpr int kShadowMapSize = 2048;   // texels per side
   static constexpr int kShadowCascades = SunShadows::kCascades;
-  void setDetailUniforms(const geo::CameraView& view) const;
+  void setDetailUniforms(const gl::Program& p, const geo::CameraView& view) const;
+  void drawTiles(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
+                 const gl::Program& p);
+  /// Everything terrain.frag/vert read that is the same for every tile of a frame.
+  void setFrameUniforms(const gl::Program& p, const geo::CameraView& view,
+                        const glm::dvec3& sunDirectionEcef, bool seaFromGlobe) const;
   /// Renders the Sun's depth map over the tiles in view and sets the terrain program's shadow
   /// uniforms (uShadowOn = 0 when there is none this frame).
   void renderShadowMap(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
@@ -89,6 +98,11 @@ class TerrainRenderer {
   terrain::TileCache cache_;
   terrain::SelectionParams params_;
   gl::Program program_;
+  /// terrain.frag without its discards (TERRAIN_LAND_ONLY), for tiles all above the sea and
+  /// away from the poles above 20 km; built on first use there.
+  gl::Program landProgram_;
+  std::vector<const terrain::Tile*> waterTiles_;  ///< left by draw() for drawWaterTiles()
+  geo::CameraView waterView_;
   gl::Program shadowProgram_;
   gl::Texture shadowMap_;
   gl::Framebuffer shadowFbo_;

@@ -82,7 +82,8 @@ Heightfield::Heightfield(data::LatLonGrid layer) : layer_(std::move(layer)) {
 double Heightfield::layerHeightM(double latitudeDeg, double longitudeDeg) const {
   const float v = layer_.sample(std::clamp(latitudeDeg, -90.0, 90.0), longitudeDeg);
   const double h = std::isfinite(v) ? static_cast<double>(v) : -1.0;
-  return mask_ != nullptr ? mask_->constrainHeightM(h, latitudeDeg, longitudeDeg) : h;
+  if (mask_ == nullptr) return h;
+  return mask_->constrainHeightM(h, latitudeDeg, longitudeDeg, layer_.sampleKeepDepth(latitudeDeg, longitudeDeg));
 }
 
 double Heightfield::detailAmplitudeM(double latitudeDeg, double longitudeDeg) const {

@@ -231,6 +231,39 @@ TEST(CoastWater, BahamaBankIsTurquoiseFromOrbit) {
   EXPECT_GT(hueSaturation(shallow[0].display).x, hsBank.x + 5.0);
 }
 
+// The same with the embedded default layer (ETOPO20, ETOPO5 averaged to 20'), whose bank is
+// ETOPO5's -10 m placeholder until data/ShallowBanks replaces it near land (a few metres west
+// of Andros; the GSHHG mask then keeps that depth): turquoise against the Tongue of the Ocean,
+// as at the charted depth above; uncorrected, cyan-blue.
+TEST(CoastWater, BahamaBankIsTurquoiseFromOrbitWithTheDefaultLayer) {
+  const double bank[2] = {24.0 + 1.0 / 6.0, -78.5}, tongue[2] = {24.0, -77.25};
+  const data::LatLonGrid& corrected = data::defaultElevation();
+  ASSERT_GT(corrected.sample(bank[0], bank[1]), -7.0f);
+  auto ctx = gl::createHeadlessContext();
+  OrbitColour shallow[2], deep[2];
+  for (int fixed = 0; fixed < 2; ++fixed) {
+    render::GlobeRenderer r(fixed == 1 ? corrected : data::uncorrectedDefaultElevation());
+    const std::string suffix = fixed == 1 ? "_default" : "_default_raw";
+    shallow[fixed] = orbitColour(r, bank[0], bank[1], "coast_orbit_bank" + suffix);
+    deep[fixed] = orbitColour(r, tongue[0], tongue[1], "coast_orbit_tongue" + suffix);
+    const glm::dvec2 hsBank = hueSaturation(shallow[fixed].display), hsDeep = hueSaturation(deep[fixed].display);
+    std::printf("%s: bank sRGB %.0f %.0f %.0f (hue %.0f, sat %.2f), tongue sRGB %.0f %.0f %.0f (hue %.0f, sat %.2f)\n",
+                suffix.c_str(), shallow[fixed].display.x, shallow[fixed].display.y, shallow[fixed].display.z, hsBank.x,
+                hsBank.y, deep[fixed].display.x, deep[fixed].display.y, deep[fixed].display.z, hsDeep.x, hsDeep.y);
+  }
+  // Measured: the added light G/B 1.2, G/R 3.9; displayed hue 196 against the Tongue's 217
+  // (saturation 0.39 and 0.40), as at the charted depth; uncorrected hue 205.
+  const glm::dvec3 added = shallow[1].radiance - deep[1].radiance;
+  EXPECT_GT(added.y / added.z, 1.05);
+  EXPECT_GT(added.y, 2.5 * added.x);
+  const glm::dvec2 hsBank = hueSaturation(shallow[1].display), hsDeep = hueSaturation(deep[1].display);
+  EXPECT_LT(hsBank.x, 200.0);
+  EXPECT_GT(hsDeep.x, hsBank.x + 15.0);
+  EXPECT_GT(hsBank.y, 0.8 * hsDeep.y);
+  // Uncorrected (the placeholder's 10 m, which the land mask keeps): bluer.
+  EXPECT_GT(hueSaturation(shallow[0].display).x, hsBank.x + 5.0);
+}
+
 namespace {
 // A shelf sloping from 5 m of land at 24.0°N down to 60 m deep 0.1° (11 km) south of the shore.
 data::LatLonGrid shelf() {

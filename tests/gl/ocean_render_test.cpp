@@ -4,8 +4,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "geo/Sun.hpp"
+#include "geo/Wgs84.hpp"
 #include "gl/Context.hpp"
 #include "gl/Readback.hpp"
 #include "render/OceanRenderer.hpp"
@@ -148,4 +150,26 @@ TEST_F(OceanFixture, FarFieldFlickersFarLessThanClassic) {
   RecordProperty("flicker_bruneton", std::to_string(flicker[0]));
   RecordProperty("flicker_classic", std::to_string(flicker[1]));
   EXPECT_LT(flicker[0], 0.35 * flicker[1]) << "bruneton " << flicker[0] << " classic " << flicker[1];
+}
+
+// The sky maps' frame layer is read where the sea in view lies within 1° of the camera's nadir
+// (OceanRenderer::kFrameSkyMaxAngleRad): from a few metres (the horizon), looking down from
+// 8 km (the screen's top edge meets the sea ~75 km away), not from 1 km with the horizon in view.
+TEST(OceanFrameSky, FarthestSeaAngleFollowsTheHorizonAndTheTopOfTheScreen) {
+  constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+  auto angleDeg = [](double heightM, double pitchDeg) {
+    geo::CameraPose pose;
+    pose.position = {20.0, -40.0, heightM};
+    pose.headingDeg = 270.0;
+    pose.pitchDeg = pitchDeg;
+    return render::OceanRenderer::farthestSeaAngleRad(geo::makeCameraView(pose, 1280, 720)) * kDegPerRad;
+  };
+  const double a = geo::kWgs84SemiMajorM;
+  EXPECT_NEAR(angleDeg(4.0, -10.0), std::acos(a / (a + 4.0)) * kDegPerRad, 1e-4);  // the horizon
+  // 8 km, 30° down, 45° tall 16:9 screen: the top corners' rays 6.6° below the horizontal.
+  EXPECT_NEAR(angleDeg(8000.0, -30.0), 0.70, 0.01);
+  EXPECT_NEAR(angleDeg(1000.0, -20.0), std::acos(a / (a + 1000.0)) * kDegPerRad, 1e-4);
+  const double limitDeg = render::OceanRenderer::kFrameSkyMaxAngleRad * kDegPerRad;
+  EXPECT_LT(angleDeg(8000.0, -30.0), limitDeg);
+  EXPECT_GT(angleDeg(1000.0, -20.0), limitDeg);  // 1.01°
 }
