@@ -220,13 +220,13 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
   if (timer_ != nullptr) timer_->mark("globe");
   glBindVertexArray(emptyVao_.id());
   glDepthFunc(grid ? GL_GEQUAL : GL_ALWAYS);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the query's and the steps' draws
   if (grid) {  // the classifying draws run on every pixel: skip them when nothing is left
     if (uncovered_.id() == 0) {
       uncovered_ = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
                                 {GL_FRAGMENT_SHADER, "render/uncovered.frag"}});
       uncoveredQuery_ = gl::createQuery(GL_ANY_SAMPLES_PASSED);
     }
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     uncovered_.use();
     glBeginQuery(GL_ANY_SAMPLES_PASSED, uncoveredQuery_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -234,7 +234,6 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
     glBeginConditionalRender(uncoveredQuery_.id(), GL_QUERY_WAIT);
   }
   glEnable(GL_STENCIL_TEST);
-  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glStencilFunc(GL_ALWAYS, 0, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
   for (int step = firstClassifyingStep(grid); step < 3; ++step) {
