@@ -1,4 +1,7 @@
 #version 450 core
+#ifdef GLOBE_CLASSIFY_EXPORT
+#extension GL_ARB_shader_stencil_export : require
+#endif
 // The globe as the WGS84 ellipsoid, ray-cast per pixel in the eye-relative frame, seen through
 // the precomputed atmosphere (Bruneton & Neyret 2008; shaders/atmosphere/): the sky behind the
 // globe from any altitude (with the Sun's disc), aerial perspective on the surface, and the
@@ -43,7 +46,10 @@
 // compiled with only its part's code. Below 20 km, where no pixel sees pure space and the
 // depth test leaves out what the terrain and the grid cover, the first step is skipped and the
 // counts are one lower. Above, the terrain is drawn between the classifying draws and the
-// parts, and zeroes the count where it draws.
+// parts, and zeroes the count where it draws. Where the driver lets a fragment shader write the
+// stencil value (GL_ARB_shader_stencil_export; llvmpipe does), one classifying draw
+// (GLOBE_CLASSIFY_EXPORT) writes the count the steps would have reached: the rays are traced
+// once instead of three times.
 #define GLOBE_PART_SKY 1
 #define GLOBE_PART_EDGE 2
 #define GLOBE_PART_SURFACE 3
@@ -196,10 +202,21 @@ SkyView skyOf(PixelRays rays) {
 #if GLOBE_PART == GLOBE_PART_CLASSIFY
 // The classifying draws (GlobeRenderer::classifyGlobe): each keeps the pixels that pass its step,
 // the stencil counting them: step 0 anything to shade (not pure space), 1 a ray on the globe,
-// 2 all four on it. Step 0 also writes the depth above 20 km.
+// 2 all four on it. Step 0 also writes the depth above 20 km. GLOBE_CLASSIFY_EXPORT: all the
+// steps in one draw, writing the count.
 void main() {
   PixelRays rays = traceRays();
-#if GLOBE_CLASSIFY_STEP == 0
+#ifdef GLOBE_CLASSIFY_EXPORT
+#ifdef GLOBE_BEHIND
+  int count = 0;  // below 20 km no pixel sees pure space: step 0 is skipped
+#else
+  SkyView sky = skyOf(rays);
+  int count = rays.nHit == 0 && sky.space && sky.sunDisc == 0.0 ? 0 : 1;
+#endif
+  count += (rays.nHit > 0 ? 1 : 0) + (rays.nHit == 4 ? 1 : 0);
+  if (count == 0) discard;
+  gl_FragStencilRefARB = count;
+#elif GLOBE_CLASSIFY_STEP == 0
   SkyView sky = skyOf(rays);
   if (rays.nHit == 0 && sky.space && sky.sunDisc == 0.0) discard;
 #elif GLOBE_CLASSIFY_STEP == 1
@@ -209,7 +226,7 @@ void main() {
 #endif
   fragRadiance = vec4(0.0);  // colour writes are masked off
   fragAux = vec4(0.0);
-#if !defined(GLOBE_BEHIND) && GLOBE_CLASSIFY_STEP == 0
+#if !defined(GLOBE_BEHIND) && (GLOBE_CLASSIFY_STEP == 0 || defined(GLOBE_CLASSIFY_EXPORT))
   // Depth of the surface on the pixel-centre ray where it hits the globe, as the terrain and
   // the grid rasterise theirs, so land at or above sea level always passes in front of this
   // fallback (the nearest sample would stand up to half a pixel's footprint closer: from 30

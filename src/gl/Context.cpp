@@ -2,6 +2,9 @@
 
 #include <glad/gl.h>
 
+#include <cstdlib>
+#include <string_view>
+
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "gl/Loader.hpp"
@@ -26,6 +29,22 @@ const char* backendName(Backend b) {
 
 namespace {
 const Context* gLoadedBy = nullptr;  // whose entry points glad currently holds
+
+bool hasGlExtension(std::string_view name) {
+  GLint n = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &n);
+  for (GLint i = 0; i < n; ++i) {
+    const auto* e = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
+    if (e != nullptr && name == e) return true;
+  }
+  return false;
+}
+
+// An environment switch set to "0" (the paths it turns off are for comparing, not for users).
+bool envSaysOff(const char* name) {
+  const char* v = std::getenv(name);
+  return v != nullptr && std::string_view(v) == "0";
+}
 }  // namespace
 
 Context::~Context() {
@@ -57,6 +76,8 @@ void Context::finishInit(std::string backend, void* (*getProcAddress)(const char
   while (glGetError() != GL_NO_ERROR) {
   }
   info_.profile = makeDriverProfile(info_.renderer, anisotropy);
+  info_.profile.stencilExport = hasGlExtension("GL_ARB_shader_stencil_export") &&
+                                !envSaysOff("OCEANGLOBE_STENCIL_EXPORT");
   log::info("GL context: " + info_.backend + ", " + info_.renderer + ", " + info_.version);
 }
 

@@ -18,6 +18,10 @@ struct DriverProfile {
   /// GL timestamp queries time the work (a GPU); on a software renderer they mark when commands
   /// were queued, so pass timers finish (glFinish) at each mark instead.
   bool timestampsTimeWork = true;
+  /// GL_ARB_shader_stencil_export: a fragment shader may write the stencil value, so the globe
+  /// classifies its pixels in one draw instead of one per class (GlobeRenderer::classifyGlobe).
+  /// Off when the driver lacks it, or with OCEANGLOBE_STENCIL_EXPORT=0 (to compare the paths).
+  bool stencilExport = false;
 };
 
 /// Whether a GL_RENDERER string names a software renderer: the one list of their names.

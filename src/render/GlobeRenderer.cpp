@@ -192,13 +192,15 @@ void GlobeRenderer::render(const FrameInput& f) {
 const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
   gl::Program& p = globePrograms_[static_cast<std::size_t>((behind ? kGlobeVariants : 0) + variant)];
   if (p.id() == 0) {
-    // Variants 0-2: GLOBE_PART_CLASSIFY (4) with its step; 3-5: the parts 1-3 (render/globe.frag).
+    // Variants 0-2: GLOBE_PART_CLASSIFY (4) with its step; 3: all steps in one draw; 4-6: the
+    // parts 1-3 (render/globe.frag).
     std::vector<std::string> defines = OceanPatterns::shaderDefines();
-    if (variant < 3) {
+    if (variant <= kClassifyExport) {
       defines.emplace_back("GLOBE_PART 4");
-      defines.push_back("GLOBE_CLASSIFY_STEP " + std::to_string(variant));
+      defines.push_back(variant == kClassifyExport ? std::string("GLOBE_CLASSIFY_EXPORT")
+                                                   : "GLOBE_CLASSIFY_STEP " + std::to_string(variant));
     } else {
-      defines.push_back("GLOBE_PART " + std::to_string(variant - 2));
+      defines.push_back("GLOBE_PART " + std::to_string(variant - kClassifyExport));
     }
     if (behind) defines.emplace_back("GLOBE_BEHIND");
     p = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
@@ -235,9 +237,13 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
   }
   glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_ALWAYS, 0, 0xff);
-  glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
-  for (int step = firstClassifyingStep(grid); step < 3; ++step) {
-    glDepthMask(step == 0 ? GL_TRUE : GL_FALSE);  // above 20 km step 0 writes the depth
+  // One draw writing the count where the driver allows it, else one draw per step counting.
+  const bool oneDraw = gl::driverProfile().stencilExport;
+  glStencilOp(GL_KEEP, GL_KEEP, oneDraw ? GL_REPLACE : GL_INCR);
+  const int first = oneDraw ? kClassifyExport : firstClassifyingStep(grid);
+  for (int step = first; step < (oneDraw ? kClassifyExport + 1 : 3); ++step) {
+    // Above 20 km the first draw writes the depth.
+    glDepthMask(!grid && step == first ? GL_TRUE : GL_FALSE);
     const gl::Program& classify = globeProgram(grid, step);
     setGlobeUniforms(classify, view, f);
     classify.use();
@@ -259,7 +265,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   for (int part = 1; part <= 3; ++part) {  // sky, edge, surface: the stencil counts 1, 2, 3
     glStencilFunc(GL_EQUAL, part - firstClassifyingStep(grid), 0xff);
-    const gl::Program& globe = globeProgram(grid, part + 2);
+    const gl::Program& globe = globeProgram(grid, kClassifyExport + part);
     setGlobeUniforms(globe, view, f);
     globe.use();
     glDrawArrays(GL_TRIANGLES, 0, 3);

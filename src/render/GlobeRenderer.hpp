@@ -155,10 +155,12 @@ class GlobeRenderer {
   const OceanPatterns& patternsFor(double referenceWindMs, std::uint64_t seed);
 
   std::shared_ptr<const Atmosphere> atmosphere_;
-  /// globe.frag's variants: three classifying steps then three parts (sky, edge, surface; see
-  /// its GLOBE_PART), drawn first above the grid's ceiling and last (GLOBE_BEHIND, after the
-  /// terrain and the grid) below; each compiled on first use. `variant` in [0, kGlobeVariants).
-  static constexpr int kGlobeVariants = 6;
+  /// globe.frag's variants: three classifying steps (0-2), the one-draw classification (3,
+  /// GLOBE_CLASSIFY_EXPORT), then three parts (4-6: sky, edge, surface; see its GLOBE_PART),
+  /// drawn first above the grid's ceiling and last (GLOBE_BEHIND, after the terrain and the
+  /// grid) below; each compiled on first use. `variant` in [0, kGlobeVariants).
+  static constexpr int kGlobeVariants = 7;
+  static constexpr int kClassifyExport = 3;
   const gl::Program& globeProgram(bool behind, int variant);
   void setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view, const FrameInput& f);
   std::array<gl::Program, 2 * kGlobeVariants> globePrograms_;

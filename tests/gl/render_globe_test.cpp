@@ -3,10 +3,13 @@
 
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include "geo/Sun.hpp"
 #include "gl/Context.hpp"
+#include "gl/DriverProfile.hpp"
 #include "render/GlobeRenderer.hpp"
+#include "support/GlFixtures.hpp"
 #include "support/GridFixtures.hpp"
 #include "support/ImageCompare.hpp"
 
@@ -115,4 +118,36 @@ TEST(GlobeRender, EglAndOsMesaAgree) {
   }
   const test::Comparison c = test::compareRgb(images[0], images[1], 1);
   EXPECT_LE(c.maxDiff, 1) << c.describe();
+}
+
+TEST(GlobeRender, OneClassifyingDrawMatchesOneDrawPerStep) {
+  // Where the driver lets a shader write the stencil (GL_ARB_shader_stencil_export) the globe
+  // classifies its pixels in one draw; OCEANGLOBE_STENCIL_EXPORT=0 takes the draw-per-step path.
+  // Both must give the same picture: from orbit (open sea, land, coasts, limb, space), from
+  // 300 km over the coast corner, and from 2 km (below the grid's ceiling, globe drawn last).
+  const render::FrameInput frames[] = {frame(10, -30, 2.0e7, -90, 96), frame(2, 2, 3.0e5, -60, 96),
+                                       frame(-1, -1, 2000.0, -2, 96)};
+  std::vector<io::ImageRgbaF> images[2];
+  for (int path = 0; path < 2; ++path) {
+    const std::optional<test::ScopedEnv> off =
+        path == 1 ? std::optional<test::ScopedEnv>(std::in_place, "OCEANGLOBE_STENCIL_EXPORT", "0")
+                  : std::nullopt;
+    auto ctx = gl::createHeadlessContext();
+    if (path == 1) {
+      EXPECT_FALSE(gl::driverProfile().stencilExport);
+    }
+    if (path == 0 && !gl::driverProfile().stencilExport) GTEST_SKIP() << "no stencil export here";
+    render::GlobeRenderer r(halfLand());
+    for (const render::FrameInput& f : frames) {
+      r.render(f);
+      images[path].push_back(r.radiance());
+    }
+  }
+  for (std::size_t i = 0; i < images[0].size(); ++i) {
+    ASSERT_EQ(images[0][i].pixels.size(), images[1][i].pixels.size());
+    std::size_t differ = 0;
+    for (std::size_t k = 0; k < images[0][i].pixels.size(); ++k)
+      differ += images[0][i].pixels[k] != images[1][i].pixels[k] ? 1 : 0;
+    EXPECT_EQ(differ, 0u) << "frame " << i;
+  }
 }
