@@ -1,7 +1,11 @@
 // Procedural relief below the elevation layer's resolution: octaves of ridged 3-D gradient
 // noise on the unit sphere (no seams at the antimeridian or the poles), amplitude falling as
-// wavelength^0.74 (gain 0.6 per octave: a fractal surface of Hurst exponent ~0.74, in the
-// range measured on real mountain relief, so slopes steepen at finer scales as real ones do).
+// wavelength^H (gain 0.6 per octave: a self-affine surface of Hurst exponent H = -log2 0.6 =
+// 0.737, in the range measured on real relief, H ≈ 0.7 (Gagnon, Lovejoy & Schertzer 2006,
+// Nonlin. Processes Geophys. 13, 541), so RMS slopes grow as wavelength^(H-1) at finer scales
+// as real ones do). The amplitude is calibrated on the CPU (terrain/Heightfield.cpp,
+// detailShadingAmplitudeM; docs/terrain.md "Calibration of the detail"); the sea floor's
+// detail (ocean/water_volume.glsl) uses the same weights.
 //
 // Compiled twice: as C++ in double (terrain/Heightfield.cpp: vertex heights and the normals
 // the mesh resolves) and as GLSL in float (terrain.frag: the finer octaves' normals per pixel,
