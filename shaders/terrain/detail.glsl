@@ -89,9 +89,22 @@ vec4 detailNoise(ivec3 cell, vec3 f) {
 
 // One ridged octave: 1 - 2|n| has sharp crests and rounded valleys, like eroded relief; 0.45
 // is its approximate mean, removed so the detail does not lift the terrain on average.
+// For a pixel `cellsPerPixel` lattice cells wide, the crest's kink (where |n| turns and the
+// gradient flips sign over no width) is rounded: |n| -> sqrt(n² + e²) - e with e the noise's
+// change across a quarter pixel (the gradient turns over about half a pixel; over a whole one
+// the Alps' contrast from 100 km drops by 10 % for no less shimmer). A point sample of the kink is the one part of a
+// faded octave that is not band-limited: a sub-pixel shift of the sample (another triangle's
+// interpolation at a shared edge with multisampling, a moving camera) would take the other
+// side's normal (docs/terrain.md, "Multisampling and the detail").
 // Returns (value, gradient in lattice units).
-vec4 detailRidged(ivec3 cell, vec3 f) {
+vec4 detailRidgedFiltered(ivec3 cell, vec3 f, Number cellsPerPixel) {
   vec4 n = detailNoise(cell, f);
-  Number s = n.x < 0.0 ? -2.0 : 2.0;
-  return vec4(1.0 - s * n.x - 0.45, -s * n.y, -s * n.z, -s * n.w);
+  Number e = 0.25 * cellsPerPixel * length(vec3(n.y, n.z, n.w));
+  Number a = sqrt(n.x * n.x + e * e);
+  Number s = a > 0.0 ? 2.0 * n.x / a : 0.0;
+  return vec4(1.0 - 2.0 * (a - e) - 0.45, -s * n.y, -s * n.z, -s * n.w);
 }
+
+// The kink point-sampled (e = 0): the heights' and the vertex normals' octaves, which the
+// mesh resolves.
+vec4 detailRidged(ivec3 cell, vec3 f) { return detailRidgedFiltered(cell, f, 0.0); }

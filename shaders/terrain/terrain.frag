@@ -58,7 +58,7 @@ vec3 pixelDetailGradient(vec3 dUp, float footprint) {
     if (w <= 0.0) break;
     vec3 q = uDetailFrac[k] + dUp * scale;
     vec3 c = floor(q);
-    vec4 r = detailRidged(uDetailCell[k] + ivec3(c), q - c);
+    vec4 r = detailRidgedFiltered(uDetailCell[k] + ivec3(c), q - c, footprint * scale);
     grad += (w * detailOctaveWeight(k) / uDetailNorm * scale) * r.yzw;
     scale *= 2.0;
   }
