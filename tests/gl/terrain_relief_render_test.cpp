@@ -12,21 +12,13 @@
 #include "geo/Sun.hpp"
 #include "gl/Context.hpp"
 #include "render/GlobeRenderer.hpp"
+#include "support/GlFixtures.hpp"
 
 using namespace og;
 
 namespace {
 
 constexpr int kW = 192, kH = 108;
-
-std::vector<double> luminance(const io::ImageRgbaF& img) {
-  std::vector<double> y(static_cast<std::size_t>(kW * kH));
-  for (int i = 0; i < kW * kH; ++i) {
-    const float* p = &img.pixels[static_cast<std::size_t>(i) * 4];
-    y[static_cast<std::size_t>(i)] = 0.2126 * double{p[0]} + 0.7152 * double{p[1]} + 0.0722 * double{p[2]};
-  }
-  return y;
-}
 
 // The image minus its 9x9 box mean at each pixel (the shading of ridges and valleys, not the
 // haze's or the imagery's broad gradients), over the frame less a 4-pixel border.
@@ -64,7 +56,7 @@ std::vector<double> renderView(render::GlobeRenderer& r, double lat, double lon,
   f.samples = 1;
   f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 30.0, 135.0);
   r.render(f);
-  return luminance(r.radiance());
+  return test::luminance(r.radiance());
 }
 
 // Relief contrast: RMS of the high-passed luminance over its mean.
