@@ -8,9 +8,9 @@
 // equator (~4800 m) but in the dry subtropics and the continental interiors around 30-35°
 // (~5900 m: Tibet's interior, where the plateau at 4500-5200 m is brown, not white; the
 // Andes' Puna), then falling fast to ~3000 m at 46° (the Alps), ~1200 m at 62° (Norway) and
-// sea level near 76°. Piecewise linear through those reference heights, the classic shape of
-// the snow line against latitude (Flint 1971, "Glacial and Quaternary Geology", ch. 4);
-// one curve for both hemispheres, a stand-in, not a climatology.
+// sea level near 76°. Piecewise linear through those reference heights, the textbook shape of
+// the snow line against latitude (e.g. Flint 1971, "Glacial and Quaternary Geology"); one
+// curve for both hemispheres, a stand-in, not a climatology.
 float terrainSnowLineM(float latitudeDeg) {
   const int N = 11;
   const float lat[N] = float[N](0.0, 20.0, 28.0, 33.0, 37.0, 42.0, 46.0, 55.0, 62.0, 70.0, 76.0);
