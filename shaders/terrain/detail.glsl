@@ -1,7 +1,11 @@
 // Procedural relief below the elevation layer's resolution: octaves of ridged 3-D gradient
 // noise on the unit sphere (no seams at the antimeridian or the poles), amplitude falling as
-// wavelength^0.74 (gain 0.6 per octave: a fractal surface of Hurst exponent ~0.74, in the
-// range measured on real mountain relief, so slopes steepen at finer scales as real ones do).
+// wavelength^H (gain 0.6 per octave: a self-affine surface of Hurst exponent H = -log2 0.6 =
+// 0.737, in the range measured on real relief, H ≈ 0.7 (Gagnon, Lovejoy & Schertzer 2006,
+// Nonlin. Processes Geophys. 13, 541), so RMS slopes grow as wavelength^(H-1) at finer scales
+// as real ones do). The amplitude is calibrated on the CPU (terrain/Heightfield.cpp,
+// detailShadingAmplitudeM; docs/terrain.md "Calibration of the detail"); the sea floor's
+// detail (ocean/water_volume.glsl) uses the same weights.
 //
 // Compiled twice: as C++ in double (terrain/Heightfield.cpp: vertex heights and the normals
 // the mesh resolves) and as GLSL in float (terrain.frag: the finer octaves' normals per pixel,
@@ -85,9 +89,22 @@ vec4 detailNoise(ivec3 cell, vec3 f) {
 
 // One ridged octave: 1 - 2|n| has sharp crests and rounded valleys, like eroded relief; 0.45
 // is its approximate mean, removed so the detail does not lift the terrain on average.
+// For a pixel `cellsPerPixel` lattice cells wide, the crest's kink (where |n| turns and the
+// gradient flips sign over no width) is rounded: |n| -> sqrt(n² + e²) - e with e the noise's
+// change across a quarter pixel (the gradient turns over about half a pixel; over a whole one
+// the Alps' contrast from 100 km drops by 10 % for no less shimmer). A point sample of the kink is the one part of a
+// faded octave that is not band-limited: a sub-pixel shift of the sample (another triangle's
+// interpolation at a shared edge with multisampling, a moving camera) would take the other
+// side's normal (docs/terrain.md, "Multisampling and the detail").
 // Returns (value, gradient in lattice units).
-vec4 detailRidged(ivec3 cell, vec3 f) {
+vec4 detailRidgedFiltered(ivec3 cell, vec3 f, Number cellsPerPixel) {
   vec4 n = detailNoise(cell, f);
-  Number s = n.x < 0.0 ? -2.0 : 2.0;
-  return vec4(1.0 - s * n.x - 0.45, -s * n.y, -s * n.z, -s * n.w);
+  Number e = 0.25 * cellsPerPixel * length(vec3(n.y, n.z, n.w));
+  Number a = sqrt(n.x * n.x + e * e);
+  Number s = a > 0.0 ? 2.0 * n.x / a : 0.0;
+  return vec4(1.0 - 2.0 * (a - e) - 0.45, -s * n.y, -s * n.z, -s * n.w);
 }
+
+// The kink point-sampled (e = 0): the heights' and the vertex normals' octaves, which the
+// mesh resolves.
+vec4 detailRidged(ivec3 cell, vec3 f) { return detailRidgedFiltered(cell, f, 0.0); }

@@ -58,11 +58,23 @@ vec3 pixelDetailGradient(vec3 dUp, float footprint) {
     if (w <= 0.0) break;
     vec3 q = uDetailFrac[k] + dUp * scale;
     vec3 c = floor(q);
-    vec4 r = detailRidged(uDetailCell[k] + ivec3(c), q - c);
+    vec4 r = detailRidgedFiltered(uDetailCell[k] + ivec3(c), q - c, footprint * scale);
     grad += (w * detailOctaveWeight(k) / uDetailNorm * scale) * r.yzw;
     scale *= 2.0;
   }
   return grad;
+}
+
+// The finest imagery texel over (latitude, longitude) radians, radians: the base image's, or a
+// user layer's where one's bounds hold the point (terrain/imagery.glsl's uniforms).
+float imageryFinestTexelRad(vec2 latLon) {
+  float texel = uImageryDayTexelRad;
+  for (int i = 0; i < min(uImageryLayerCount, MAX_IMAGERY_LAYERS); ++i) {
+    vec2 st = imageryBoxCoord(latLon, uImageryLayerBounds[i]);
+    if (all(greaterThanEqual(st, vec2(0.0))) && all(lessThanEqual(st, vec2(1.0))))
+      texel = min(texel, uImageryLayerTexelRad);
+  }
+  return texel;
 }
 
 // Aerial perspective to a point at altitude hP (the tables' sphere, as in globe.frag): the
@@ -132,7 +144,8 @@ void main() {
                                     uAtmosphere.bottomRadius + hP, dot(up, uSunDir), skyIrr);
   vec3 albedo = terrainAlbedo(heightM, slope, lat);
   if (uImageryEnabled == 1 && heightM >= 0.0)
-    albedo = terrainAlbedoOverImagery(imageryAlbedo(vec2(lat, lon), footprint), albedo, heightM, slope, lat);
+    albedo = terrainAlbedoOverImagery(imageryAlbedo(vec2(lat, lon), footprint), albedo, heightM, slope, lat,
+                                      footprint / imageryFinestTexelRad(vec2(lat, lon)));
   // Sky light on a tilted surface: the part of the sky dome it sees.
   float skyView = 0.5 + 0.5 * dot(n, up);
   float sunSeen = dot(n, uSunDir) > 0.0 ? sunVisibility(vRelative, nGeometric) : 0.0;

@@ -14,10 +14,9 @@ namespace og::terrain {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
-// Detail amplitude per metre of the layer's relief across one cell. A layer averages its cell,
-// so its relief understates the ground's (ETOPO5's Himalaya peaks are kilometres low); 2.5
-// gives mountain slopes of ~25° at the 100 m scale, like real ranges.
-constexpr double kReliefGain = 2.5;
+// Under the sea (the coast's floor, issue 15): detail amplitude per metre of the layer's relief
+// across two cells, as before the land's calibration.
+constexpr double kSeaReliefGain = 2.5;
 
 namespace glsl {
 using namespace og::glsl;
@@ -25,6 +24,8 @@ using namespace og::glsl;
 }  // namespace glsl
 
 }  // namespace
+
+double detailHurst() { return -std::log2(glsl::DETAIL_GAIN); }
 
 double DetailOctaves::wavelengthM(int k) const { return std::ldexp(longestM, -k); }
 
@@ -71,6 +72,11 @@ Heightfield::Heightfield(data::LatLonGrid layer) : layer_(std::move(layer)) {
     ++octaves_.normalCount;
   }
   if (octaves_.norm <= 0.0) octaves_.norm = 1.0;
+  // The land's detail amplitude per metre of the layer's RMS difference σ(Δ) (below): the
+  // weights' sum times octave 0's a_0 = (λ_0 / c) S(λ_0) sqrt(1 - 4^(H-1)) for σ(Δ) = 1 m.
+  amplitudePerRms_ = octaves_.norm * octaves_.longestM / kRidgedSlopeRms *
+                     calibratedRmsSlope(1.0, octaves_.longestM) *
+                     std::sqrt(1.0 - std::pow(4.0, detailHurst() - 1.0));
 }
 
 double Heightfield::layerHeightM(double latitudeDeg, double longitudeDeg) const {
@@ -84,16 +90,70 @@ double Heightfield::detailAmplitudeM(double latitudeDeg, double longitudeDeg) co
   return detailAmplitudeM(latitudeDeg, longitudeDeg, layerHeightM(latitudeDeg, longitudeDeg));
 }
 
+double Heightfield::detailShadingAmplitudeM(double latitudeDeg, double longitudeDeg) const {
+  return detailShadingAmplitudeM(latitudeDeg, longitudeDeg, layerHeightM(latitudeDeg, longitudeDeg));
+}
+
+double Heightfield::layerRmsDifferenceM(double latitudeDeg, double longitudeDeg) const {
+  return layerRmsDifferenceM(latitudeDeg, longitudeDeg, layerHeightM(latitudeDeg, longitudeDeg));
+}
+
+double Heightfield::layerRmsDifferenceM(double latitudeDeg, double longitudeDeg, double h) const {
+  // The layer's own heights, not the coastline mask's constraint (which would make a cliff of
+  // every lake shore), each at least sea level: land's relief is measured from the sea's
+  // surface, not from the sea floor a cell offshore.
+  auto height = [&](double lat, double lon) {
+    const float v = layer_.sample(std::clamp(lat, -90.0, 90.0), lon);
+    return std::isfinite(v) ? std::max(static_cast<double>(v), 0.0) : 0.0;
+  };
+  h = std::max(h, 0.0);
+  // One cell north, south, east and west, the east-west step widened to the same metres.
+  const double d = layer_.dLatDeg;
+  const double dLon = d / std::max(std::cos(latitudeDeg * kDeg), 0.05);
+  const double n = height(latitudeDeg + d, longitudeDeg) - h;
+  const double s = height(latitudeDeg - d, longitudeDeg) - h;
+  const double e = height(latitudeDeg, longitudeDeg + dLon) - h;
+  const double w = height(latitudeDeg, longitudeDeg - dLon) - h;
+  return std::sqrt(0.25 * (n * n + s * s + e * e + w * w));
+}
+
+double Heightfield::calibratedRmsSlope(double rmsDifferenceM, double scaleM) const {
+  // S(L) = G (σ(Δ) / Δ) (L / Δ)^(H - 1): the self-affine law (structure function σ(L) ∝ L^H,
+  // Gagnon et al. 2006) anchored on the layer's RMS slope at its cell Δ, times G for what the
+  // layer's averaging over its cells smooths away (docs/terrain.md, "Calibration").
+  return kLayerSlopeGain * (rmsDifferenceM / cellM_) * std::pow(scaleM / cellM_, detailHurst() - 1.0);
+}
+
 double Heightfield::detailAmplitudeM(double latitudeDeg, double longitudeDeg, double h) const {
+  if (h <= 0.0) return seaDetailAmplitudeM(latitudeDeg, longitudeDeg, h);
+  // Never more than 80 % of the height, so the coastline stays on the layer's zero contour,
+  // which the globe and ocean passes use too.
+  const double amplitude = std::min(detailShadingAmplitudeM(latitudeDeg, longitudeDeg, h), 0.8 * h);
+  return amplitude < 0.5 ? 0.0 : amplitude;
+}
+
+double Heightfield::detailShadingAmplitudeM(double latitudeDeg, double longitudeDeg, double h) const {
+  if (h <= 0.0) return seaDetailAmplitudeM(latitudeDeg, longitudeDeg, h);
+  // Land: octave k adds the slope variance the law puts between scales 2 λ_k and λ_k,
+  // S(λ_k)² (1 - 4^(H-1)); its slope is a_k c / λ_k (c: the ridged noise's RMS gradient), so
+  // a_k = (λ_k / c) S(λ_k) sqrt(1 - 4^(H-1)), which falls as λ_k^H like the octaves' weights:
+  // the detail's amplitude (octave 0's times the weights' sum) follows from octave 0.
+  // Linear in σ(Δ): the factor is amplitudePerRms_ (the constructor's).
+  // Flat plains stay flat (a smooth layer gives little); plateaus keep some relief (3 % of
+  // their height).
+  const double amplitude =
+      std::max(amplitudePerRms_ * layerRmsDifferenceM(latitudeDeg, longitudeDeg, h), 0.03 * h);
+  return amplitude < 0.5 ? 0.0 : amplitude;
+}
+
+double Heightfield::seaDetailAmplitudeM(double latitudeDeg, double longitudeDeg, double h) const {
   const double d = layer_.dLatDeg;
   const double relief =
       0.5 * (std::abs(layerHeightM(latitudeDeg + d, longitudeDeg) -
                       layerHeightM(latitudeDeg - d, longitudeDeg)) +
              std::abs(layerHeightM(latitudeDeg, longitudeDeg + d) -
                       layerHeightM(latitudeDeg, longitudeDeg - d)));
-  // Rugged where the layer is rugged, flat plains stay flat; never more than 80 % of |h|, so
-  // the coastline stays on the layer's zero contour, which the globe and ocean passes use too.
-  const double amplitude = std::min(std::max(kReliefGain * relief, 0.03 * std::abs(h)), 0.8 * std::abs(h));
+  const double amplitude = std::min(std::max(kSeaReliefGain * relief, 0.03 * std::abs(h)), 0.8 * std::abs(h));
   return amplitude < 0.5 ? 0.0 : amplitude;
 }
 
@@ -103,11 +163,13 @@ HeightSample Heightfield::sample(double latitudeDeg, double longitudeDeg, int no
   const double h = layerHeightM(latitudeDeg, longitudeDeg);
   const glm::dvec3 up = geodeticUpFast(latitudeDeg, longitudeDeg);
   s.detailAmplitudeM = detailAmplitudeM(latitudeDeg, longitudeDeg, h);
+  s.shadingAmplitudeM = detailShadingAmplitudeM(latitudeDeg, longitudeDeg, h);
   glm::dvec3 grad(0.0);
   s.heightM = h;
-  if (s.detailAmplitudeM > 0.0)
-    s.heightM = h + s.detailAmplitudeM * detailSum(octaves_, up, octaves_.heightCount,
-                                                   normalOctaves, &grad);
+  if (s.shadingAmplitudeM > 0.0) {
+    const double sum = detailSum(octaves_, up, octaves_.heightCount, normalOctaves, &grad);
+    if (s.detailAmplitudeM > 0.0) s.heightM = h + s.detailAmplitudeM * sum;
+  }
   // The layer's normal from central differences on the ellipsoid (ECEF), over at least half a
   // cell so the bilinear layer's facets do not show in the lighting.
   const double latN = std::min(latitudeDeg + stepDeg, 90.0), latS = std::max(latitudeDeg - stepDeg, -90.0);
@@ -122,8 +184,10 @@ HeightSample Heightfield::sample(double latitudeDeg, double longitudeDeg, int no
   // At the poles the east-west difference vanishes: the vertical stands in.
   glm::dvec3 n = len > 1e-6 * ns * ns ? c / len : up;
   // Tilt by the detail's height gradient per metre along the surface (the unit sphere's
-  // coordinates move 1/a per metre), tangential part only.
-  const glm::dvec3 g = grad * (s.detailAmplitudeM / geo::kWgs84SemiMajorM);
+  // coordinates move 1/a per metre), tangential part only. With the shading's amplitude, as
+  // the fragment shader's finer octaves: an octave lights the same whether a tile's vertex
+  // normals or its pixels carry it, so tiles of different levels meet without a seam.
+  const glm::dvec3 g = grad * (s.shadingAmplitudeM / geo::kWgs84SemiMajorM);
   n = glm::normalize(n - (g - glm::dot(g, n) * n));
   s.normal = n;
   return s;

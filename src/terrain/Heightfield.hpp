@@ -31,7 +31,8 @@ struct DetailOctaves {
 /// Height and surface normal at a point.
 struct HeightSample {
   double heightM = 0.0;         ///< above mean sea level, detail included
-  double detailAmplitudeM = 0;  ///< the detail's local amplitude (scales its normalised sum)
+  double detailAmplitudeM = 0;  ///< the detail's local amplitude in the heights (scales its normalised sum)
+  double shadingAmplitudeM = 0; ///< the same in the normals (vertex and pixel), without the 80 % bound
   glm::dvec3 normal{0.0};       ///< unit, ECEF axes
 };
 
@@ -52,9 +53,32 @@ class Heightfield {
   /// The layer alone (bilinear, no detail), metres; for a global layer coarser than the GSHHG
   /// land mask (data::LandMask::refines), constrained to it so its coast is the mask's.
   [[nodiscard]] double layerHeightM(double latitudeDeg, double longitudeDeg) const;
-  /// The detail's amplitude at a point, m: the layer's local relief (height differences over
-  /// one cell), at least 3 % of |h| and at most 80 % of it, so detail never crosses sea level.
+  /// The detail's amplitude at a point, m (the scale of its normalised sum). On land,
+  /// calibrated so the octaves add the slope variance the self-affine law puts below the
+  /// layer's cell (calibratedRmsSlope, docs/terrain.md "Calibration of the detail"); under the
+  /// sea 2.5 × the layer's relief across two cells (the coast's floor). At least 3 % of |h|
+  /// and at most 80 % of it, so detail never crosses sea level.
   [[nodiscard]] double detailAmplitudeM(double latitudeDeg, double longitudeDeg) const;
+  /// The detail's amplitude in the normals (the tile's vertex normals and the pixels' finer
+  /// octaves alike, so levels meet without a shading step): detailAmplitudeM without the 80 %
+  /// bound (it guards the coastline's heights), so low valleys near the sea keep the law's
+  /// slopes.
+  [[nodiscard]] double detailShadingAmplitudeM(double latitudeDeg, double longitudeDeg) const;
+  /// RMS of the layer's height differences to its four neighbours one cell (cellM()) away,
+  /// m: its structure function at lag Δ, σ(Δ).
+  [[nodiscard]] double layerRmsDifferenceM(double latitudeDeg, double longitudeDeg) const;
+  /// The ground's RMS slope (one horizontal component, tan) at scale `scaleM` ≤ the cell
+  /// where the layer's RMS difference is `rmsDifferenceM`: G (σ(Δ)/Δ) (L/Δ)^(H-1) with
+  /// H = detailHurst() and G = kLayerSlopeGain.
+  [[nodiscard]] double calibratedRmsSlope(double rmsDifferenceM, double scaleM) const;
+
+  /// What the layer's cell averaging smooths away, as a factor on its RMS slope at its own
+  /// cell: calibrated so the law meets published 90 m slopes of steep ranges from ETOPO5
+  /// (docs/terrain.md, "Calibration of the detail").
+  static constexpr double kLayerSlopeGain = 3.3;
+  /// RMS of one horizontal component of a ridged octave's gradient per unit of its amplitude,
+  /// in lattice units (terrain/detail.glsl's detailRidged on the sphere; measured, tested).
+  static constexpr double kRidgedSlopeRms = 1.41;
 
   /// Shortest wavelength of the procedural detail in the heights, m.
   static constexpr double kDetailShortestM = 40.0;
@@ -69,12 +93,20 @@ class Heightfield {
  private:
   /// detailAmplitudeM for a layer height `h` already read there.
   [[nodiscard]] double detailAmplitudeM(double latitudeDeg, double longitudeDeg, double h) const;
+  [[nodiscard]] double detailShadingAmplitudeM(double latitudeDeg, double longitudeDeg, double h) const;
+  [[nodiscard]] double seaDetailAmplitudeM(double latitudeDeg, double longitudeDeg, double h) const;
+  [[nodiscard]] double layerRmsDifferenceM(double latitudeDeg, double longitudeDeg, double h) const;
 
   data::LatLonGrid layer_;
   const data::LandMask* mask_ = nullptr;  ///< decides the coast when the layer is coarser
   double cellM_ = 0.0;
   DetailOctaves octaves_;
+  double amplitudePerRms_ = 0.0;  ///< land detail amplitude per metre of σ(Δ)
 };
+
+/// The detail's Hurst exponent: its octaves' amplitudes fall as wavelength^H (gain 2^-H per
+/// octave, terrain/detail.glsl's DETAIL_GAIN = 0.6, H = 0.737).
+double detailHurst();
 
 /// The detail's normalised sum (in [-1, 1]) at a point of the unit sphere, over octaves
 /// [0, count), and the gradient (per unit of the sphere's coordinates) of its first

@@ -102,7 +102,7 @@ Tile buildTile(const Heightfield& heights, const TileKey& key) {
     t.positions.push_back(p);
     t.vertices.push_back({glm::vec3(p), glm::vec3(samples[k].normal),
                           static_cast<float>(samples[k].heightM - depth), static_cast<float>(lat),
-                          static_cast<float>(lon), static_cast<float>(samples[k].detailAmplitudeM),
+                          static_cast<float>(lon), static_cast<float>(samples[k].shadingAmplitudeM),
                           glm::vec3(morph[k])});
   };
   for (std::size_t k = 0; k < samples.size(); ++k) push(k, 0.0);

@@ -45,7 +45,7 @@ struct TileVertex {
   float heightM;       ///< above sea level, m
   float latitudeRad;
   float longitudeRad;
-  float detailAmplitudeM;  ///< scale of the detail's normalised sum here, m (0: none)
+  float detailAmplitudeM;  ///< scale of the detail's normalised sum in the pixel normals here, m (0: none; HeightSample::shadingAmplitudeM)
   /// Where the parent tile's mesh puts this vertex, minus its position, m (ECEF axes): zero at
   /// the vertices the parent shares, the midpoint of the parent's edge or diagonal elsewhere.
   /// The vertex shader morphs towards it as the tile nears its parent's detail (no popping).

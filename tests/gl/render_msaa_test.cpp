@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -127,14 +128,54 @@ TEST(Multisampling, SilhouetteAgainstTheSkyIsBlendedWithFourSamples) {
   EXPECT_GE(s[1].blendedOnScreen, s[1].contrasted / 2);
 }
 
+namespace {
+
+// Whether the ground seen in pixel (x, y) lies within a pixel of a geometric edge: where the
+// ground hides farther ground, or folds. On a plane the inverse view distance is affine in
+// screen space, so its second difference across the pixel, relative to its value, is ~0; over
+// 1 % there is an edge (a step of a few hundred metres at 20-30 km, a fold) inside the pixel,
+// which the 4 samples resolve and 1 sample steps over. `distance`: viewDistance() of a frame.
+bool nearGeometricEdge(const std::vector<float>& distance, int w, int h, int x, int y) {
+  auto inv = [&](int px, int py) { return 1.0 / double{distance[static_cast<std::size_t>(py * w + px)]}; };
+  for (int py = std::max(1, y - 1); py <= std::min(h - 2, y + 1); ++py)
+    for (int px = std::max(1, x - 1); px <= std::min(w - 2, x + 1); ++px) {
+      const double c = inv(px, py);
+      const double kink = std::max(std::abs(inv(px - 1, py) - 2.0 * c + inv(px + 1, py)),
+                                   std::abs(inv(px, py - 1) - 2.0 * c + inv(px, py + 1)));
+      if (kink > 0.01 * c) return true;
+    }
+  return false;
+}
+
+// The images and their difference (x16) as PNGs, to look at.
+void writeInteriorImages(const io::ImageRgba8& one, const io::ImageRgba8& four) {
+  io::ImageRgba8 diff = one;
+  for (std::size_t i = 0; i < diff.pixels.size(); i += 4)
+    for (std::size_t c = 0; c < 3; ++c)
+      diff.pixels[i + c] = static_cast<std::uint8_t>(
+          std::min(255, 16 * std::abs(int(one.pixels[i + c]) - int(four.pixels[i + c]))));
+  const std::string prefix = std::string(OG_TEST_OUT_DIR) + "/msaa_interior_";
+  io::writePng(prefix + "1.png", one);
+  io::writePng(prefix + "4.png", four);
+  io::writePng(prefix + "diff_x16.png", diff);
+}
+
+}  // namespace
+
 // The extra samples change edges only: away from them both images agree, and sky pixels
-// (one value in every sample) are identical after the per-sample tone mapping.
+// (one value in every sample) are identical after the per-sample tone mapping. Edges are the
+// sky's and the ground's own (a nearer slope over a farther one, a fold): with the calibrated
+// relief detail (docs/terrain.md) the distant ridge is full of them. Measured: of 11352
+// interior ground pixels 493 differ by > 2 levels, 426 of them within a pixel of a geometric
+// edge; elsewhere 66-67 of 9142 (0.7 %; 50 without the per-pixel detail, 93 with its crests
+// point-sampled, 1050 with its octaves unfaded, i.e. aliasing).
 TEST(Multisampling, InteriorsMatchOneSampleAndDepthReadsBack) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(ridge());
   r.render(ridgeView(1));
   const io::ImageRgba8 one = r.display();
   const io::ImageRgbaF oneRadiance = r.radiance();
+  const std::vector<float> oneDistance = r.viewDistance();
   r.render(ridgeView(4));
   const io::ImageRgba8 four = r.display();
   const io::ImageRgbaF fourRadiance = r.radiance();
@@ -146,7 +187,7 @@ TEST(Multisampling, InteriorsMatchOneSampleAndDepthReadsBack) {
     return img.pixels[4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
                            static_cast<std::size_t>(x)) + 3];
   };
-  int sky = 0, ground = 0, skyDiffer = 0, groundOver2 = 0;
+  int sky = 0, ground = 0, skyDiffer = 0, groundOver2 = 0, smooth = 0, smoothOver2 = 0;
   for (int y = 1; y + 1 < h; ++y)
     for (int x = 1; x + 1 < w; ++x) {
       // Interior: the 3x3 neighbourhood wholly sky or wholly covered in both renders.
@@ -168,15 +209,23 @@ TEST(Multisampling, InteriorsMatchOneSampleAndDepthReadsBack) {
         EXPECT_EQ(depth[i], 0.0f) << x << "," << y;
       } else if (lo == 1.0f) {
         ++ground;
-        groundOver2 += diff > 2 ? 1 : 0;
         EXPECT_GT(depth[i], 0.0f) << x << "," << y;
+        groundOver2 += diff > 2 ? 1 : 0;
+        if (nearGeometricEdge(oneDistance, w, h, x, y)) continue;
+        ++smooth;
+        smoothOver2 += diff > 2 ? 1 : 0;
       }
     }
+  std::printf("interior ground %d (%d differ by > 2 levels), away from its edges %d (%d differ)\n", ground,
+              groundOver2, smooth, smoothOver2);
+  if (smoothOver2 > smooth / 100) writeInteriorImages(one, four);
   ASSERT_GT(sky, w * h / 10);
   ASSERT_GT(ground, w * h / 10);
+  ASSERT_GT(smooth, ground * 3 / 4) << "the edge test should leave most of the ground";
   EXPECT_EQ(skyDiffer, 0);
-  // Inside the ground, triangle edges between tiles and skirts may still shift a little.
-  EXPECT_LE(groundOver2, ground / 100) << groundOver2 << " of " << ground;
+  // Away from edges, triangle edges between tiles and skirts may still shift a little; the
+  // detail, filtered to the pixel, must not (aliasing detail fails this by ten times).
+  EXPECT_LE(smoothOver2, smooth / 100) << smoothOver2 << " of " << smooth;
 }
 
 // From orbit the globe's sea hides the bathymetry. With 4 samples llvmpipe's per-sample depth

@@ -12,6 +12,7 @@
 #include "geo/Sun.hpp"
 #include "gl/Context.hpp"
 #include "render/GlobeRenderer.hpp"
+#include "support/GlFixtures.hpp"
 #include "support/GridFixtures.hpp"
 
 using namespace og;
@@ -19,16 +20,6 @@ using namespace og;
 namespace {
 
 constexpr int kW = 192, kH = 108;
-
-// Luminance of the linear radiance.
-std::vector<double> luminance(const io::ImageRgbaF& img) {
-  std::vector<double> y(static_cast<std::size_t>(kW * kH));
-  for (int i = 0; i < kW * kH; ++i) {
-    const float* p = &img.pixels[static_cast<std::size_t>(i) * 4];
-    y[static_cast<std::size_t>(i)] = 0.2126 * double{p[0]} + 0.7152 * double{p[1]} + 0.0722 * double{p[2]};
-  }
-  return y;
-}
 
 // The image minus its 5x5 box mean: the pixel-scale shading, not the haze or the materials'
 // broad gradients.
@@ -55,7 +46,7 @@ TEST(TerrainRender, MountainShadingSwapsWhenTheSunCrossesTheSky) {
   for (int k = 0; k < 2; ++k) {
     f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 35.0, azimuths[k]);
     r.render(f);
-    y[k] = luminance(r.radiance());
+    y[k] = test::luminance(r.radiance());
   }
   // Correlation of the two high-passed images over the ground (the lower half of the frame).
   double sxy = 0.0, sxx = 0.0, syy = 0.0;
@@ -99,7 +90,7 @@ TEST(TerrainRender, RidgeCastsItsShadowAwayFromTheSun) {
   auto sides = [&](double sunAzimuthDeg) {
     f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 15.0, sunAzimuthDeg);
     r.render(f);
-    const std::vector<double> y = luminance(r.radiance());
+    const std::vector<double> y = test::luminance(r.radiance());
     double west = 0.0, east = 0.0;
     for (int row = kH / 4; row < 3 * kH / 4; ++row)
       for (int dx = -3; dx <= 3; ++dx) {
@@ -136,7 +127,7 @@ TEST(TerrainRender, RidgeShadesTheSeaAtItsFoot) {
   // Sun 10° up in the east: the ridge's shadow reaches ~17 km west over the sea.
   f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 10.0, 90.0);
   r.render(f);
-  const std::vector<double> y = luminance(r.radiance());
+  const std::vector<double> y = test::luminance(r.radiance());
   double north = 0.0, south = 0.0;
   for (int row = 4; row < kH / 4; ++row)
     for (int x = kW / 4; x < 2 * kW / 5; ++x) {  // the sea, 8 to 13 km west of the ridge

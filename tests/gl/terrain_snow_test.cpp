@@ -1,0 +1,57 @@
+// GL tier (issue 14): the snow line follows latitude (terrain/material.glsl, terrainSnowLineM)
+// and, where imagery covers the ground, the imagery's colour wins over procedural snow at
+// coarse scale. From orbit the Tibetan plateau (4500-5200 m at 30-36° N) is dry and brown in
+// the Blue Marble; a snow line that only fell with latitude (5600 m at the equator to sea
+// level at 75°, ~4900 m at 33°) painted it white.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "support/GlFixtures.hpp"
+
+using namespace og;
+
+namespace {
+
+class TerrainSnow : public test::GlobeSuite {};
+
+struct Rgb {
+  double r = 0.0, g = 0.0, b = 0.0;
+};
+
+// Mean display (sRGB, 0-255) colour of the centre's 5x5 pixels.
+Rgb centreColour(const io::ImageRgba8& img) {
+  Rgb c;
+  for (int y = img.height / 2 - 2; y <= img.height / 2 + 2; ++y)
+    for (int x = img.width / 2 - 2; x <= img.width / 2 + 2; ++x) {
+      const std::uint8_t* p = &img.pixels[4 * static_cast<std::size_t>(y * img.width + x)];
+      c.r += p[0] / 25.0;
+      c.g += p[1] / 25.0;
+      c.b += p[2] / 25.0;
+    }
+  return c;
+}
+
+}  // namespace
+
+TEST_F(TerrainSnow, TibetanPlateauFromOrbitIsNotWhite) {
+  // Straight down on the Changtang (33° N, 88° E; ~4900 m in the default layer) from 2000 km,
+  // the Sun 60° up.
+  test::View v;
+  v.latDeg = 33.0;
+  v.lonDeg = 88.0;
+  v.heightM = 2.0e6;
+  v.pitchDeg = -90.0;
+  v.fovDeg = 30.0;
+  v.width = 128;
+  v.height = 96;
+  renderer_->render(test::frameOf(v, 60.0, 180.0));
+  test::savePng(*renderer_, "snow_tibet_2000km");
+  const Rgb c = centreColour(renderer_->display());
+  std::printf("Tibetan plateau from 2000 km: sRGB (%.0f, %.0f, %.0f)\n", c.r, c.g, c.b);
+  // Measured: (171, 156, 140), brown like the imagery; (209, 206, 208) with the old snow line,
+  // snow. White would be bright in every channel and as blue as it is red.
+  EXPECT_LT(std::min({c.r, c.g, c.b}), 160.0) << "the plateau should not be snow-white";
+  EXPECT_GT(c.r - c.b, 15.0) << "the plateau should be brown (red over blue), as in the imagery";
+}
