@@ -35,6 +35,7 @@
 #include "render/elevation.glsl"
 #include "render/aerial.glsl"
 #include "terrain/imagery.glsl"
+#include "terrain/material.glsl"
 
 // The globe is drawn in parts (GlobeRenderer::classifyGlobe, shadeGlobe). llvmpipe runs a
 // shader's code after a `discard` too, masked, so a part cannot leave early by discarding;
@@ -94,7 +95,7 @@ vec3 landAlbedo(float elevation, float latitude) {
   vec3 upland = vec3(0.22, 0.17, 0.11);
   vec3 snow = vec3(0.80, 0.82, 0.86);
   vec3 c = mix(lowland, upland, smoothstep(200.0, 1800.0, elevation));
-  float snowLine = mix(5000.0, 0.0, smoothstep(0.6, 1.2, abs(latitude)));
+  float snowLine = terrainSnowLineM(degrees(latitude));  // the terrain's (terrain/material.glsl)
   return mix(c, snow, smoothstep(snowLine - 300.0, snowLine + 300.0, elevation));
 }
 
