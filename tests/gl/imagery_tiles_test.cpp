@@ -121,7 +121,7 @@ TEST(ImageryTiles, TilesArriveInTheBackgroundWhileTheWholeTextureStandsIn) {
 TEST(ImageryTiles, GpuCacheStaysWithinATinyBudget) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(data::defaultElevation());
-  const std::size_t gpuBudget = std::size_t{1} << 20;  // three tiles with their mip-maps
+  const std::size_t gpuBudget = std::size_t{1} << 20;  // two tiles with their borders and mip-maps
   r.imagery().setCacheBudgets(std::size_t{2} << 20, gpuBudget);
   r.imagery().setLayers(checkerLayer(checker()));
   for (const double lonDeg : {21.0, 21.4, 21.8, 22.2}) {  // a different level-9 tile each time
