@@ -17,7 +17,9 @@ uniform int uImageryLayerCount;
 uniform float uImageryLayerTexelRad;
 uniform vec4 uImageryLayerBounds[MAX_IMAGERY_LAYERS];  // west, south, east, north, radians
 // Streamed tiles (render/ImageryTiles), per draw and layer: the slot in uImageryTiles (-1: none,
-// the whole layer texture), the tile's bounds (west, south, east, north, radians) and texel size.
+// the whole layer texture), the bounds of the stored tile (west, south, east, north, radians:
+// the tile and its border of data::kImageryTileBorderPx texels, the neighbours' edge texels, so
+// filtering at the tile's edge blends into its neighbour) and its texel size.
 layout(binding = OG_UNIT_IMAGERY_TILES) uniform sampler2DArray uImageryTiles;
 uniform int uImageryTileSlot[MAX_IMAGERY_LAYERS];
 uniform vec4 uImageryTileBounds[MAX_IMAGERY_LAYERS];

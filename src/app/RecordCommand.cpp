@@ -24,6 +24,7 @@
 #include "core/Progress.hpp"
 #include "data/Elevation.hpp"
 #include "data/WindLayers.hpp"
+#include "geo/Camera.hpp"
 #include "geo/Sun.hpp"
 #include "gl/Context.hpp"
 #include "io/Image.hpp"
@@ -251,6 +252,9 @@ class FrameRenderer {
     frame.simulationTimeS = scene.simulationTimeS + t;
     frame.auxiliaryOutputs = needsAuxiliaryOutputs(job_.aovs);
     renderer_.render(frame);
+    // The next frame's imagery tiles, read in the background while this one is written.
+    renderer_.imagery().prefetchTiles(geo::makeCameraView(poseAt(i + job_.stride), frame.width, frame.height),
+                                      frame.width, frame.height);
   }
 
  private:

@@ -24,6 +24,7 @@
 #include "core/Log.hpp"
 #include "data/Elevation.hpp"
 #include "data/WindLayers.hpp"
+#include "geo/Camera.hpp"
 #include "geo/FlightPath.hpp"
 #include "geo/Sun.hpp"
 #include "gl/GlfwWindow.hpp"
@@ -43,6 +44,7 @@ constexpr double kTimeStepS = 3600.0;       // time-of-day keys: one hour, 10 mi
 constexpr double kExposureStep = 1.4142135623730951;  // half a stop
 constexpr double kScrollFactor = 0.8;       // distance to the cursor's point per scroll notch
 constexpr double kMessageS = 4.0;           // how long a status message stays on screen
+constexpr double kPrefetchAheadS = 1.0;     // imagery tiles are asked for this far ahead
 
 struct ViewOptions {
   SceneOptions scene;
@@ -347,6 +349,21 @@ class Viewer {
       }
     }
     controller_.update(in, dt);
+    frameDtS_ = dt;
+  }
+
+  // Imagery tiles the camera will want kPrefetchAheadS from now, read while this frame shows:
+  // where the path will be, else where the last frame's motion leads (viewer::poseAhead).
+  void prefetchAhead(int width, int height) {
+    const geo::CameraPose& pose = controller_.pose();
+    const glm::dvec3 eye = geo::geodeticToEcef(pose.position);
+    const glm::dvec3 velocity = frameDtS_ > 0.0 && hasLastEye_ ? (eye - lastEyeEcef_) / frameDtS_ : glm::dvec3(0.0);
+    lastEyeEcef_ = eye;
+    hasLastEye_ = true;
+    const geo::CameraPose ahead =
+        playing_ && flight_ ? flight_->at(flight_->startS() + std::min(playS_ + kPrefetchAheadS, flight_->durationS()))
+                            : viewer::poseAhead(pose, velocity, kPrefetchAheadS, controller_.surfaceHeightM());
+    renderer_->imagery().prefetchTiles(geo::makeCameraView(ahead, width, height), width, height);
   }
 
   void drawFrame(int width, int height) {
@@ -369,6 +386,7 @@ class Viewer {
     frame.wind.speedMs = std::min(frame.wind.speedMs, 50.0);
     frame.oceanFrame = &oceanFrame_;
     renderer_->render(frame);
+    prefetchAhead(width, height);
     glBlitNamedFramebuffer(renderer_->displayFramebuffer(), 0, 0, 0, width, height, 0, 0, width,
                            height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   }
@@ -472,6 +490,9 @@ class Viewer {
   double timeOffsetS_ = 0.0;
   double playS_ = 0.0;
   bool playing_ = true;  // a path given with --path starts playing at once
+  double frameDtS_ = 0.0;          // the last step's time step, s
+  glm::dvec3 lastEyeEcef_{0.0};    // the eye at the last frame (prefetchAhead)
+  bool hasLastEye_ = false;
   render::OceanModel oceanModel_ = render::OceanModel::Bruneton;
   bool layersOn_ = false;
   bool showOverlay_ = true;

@@ -24,10 +24,23 @@
 
 namespace og::data {
 
-/// Texels along a tile's side (the level-0 image of its mip chain).
+/// Texels along the side of a tile's interior (the quadtree tile itself), level 0.
 inline constexpr int kImageryTilePx = 256;
-/// Mip levels of a tile: kImageryTilePx down to 1 texel.
+/// Border texels stored around the interior on every side: the source read past the tile's
+/// edges (its neighbours' edge texels, on the same grid), so that linear filtering at an edge
+/// blends with the neighbour as inside one texture instead of clamping (a half-texel seam when
+/// magnified). 4 level-0 texels are one whole texel of mip level 2 and half one of level 3,
+/// where the interior's edge falls on a texel centre, so filtering at the edge is exact down to
+/// level 3 (8 × 8 level-0 texels a texel); the coarser levels (sampled where a pixel covers 16
+/// level-0 texels or more) clamp at most a quarter of their texel past the border.
+inline constexpr int kImageryTileBorderPx = 4;
+/// Texels along a stored tile's side, borders included (level 0 of its mip chain): 264.
+inline constexpr int kImageryTileStoredPx = kImageryTilePx + 2 * kImageryTileBorderPx;
+/// Mip levels of a stored tile, 264² down to 1² as GL sizes them (264, 132, 66, 33, 16, ... 1).
 inline constexpr int kImageryTileMips = 9;
+/// Side of mip level m (0 .. kImageryTileMips - 1) of a stored tile, texels: floor(264 / 2^m).
+constexpr int imageryTileMipPx(int m) { return (kImageryTileStoredPx >> m) > 0 ? kImageryTileStoredPx >> m : 1; }
+static_assert((kImageryTileStoredPx >> (kImageryTileMips - 1)) == 1, "the mip chain ends at 1 texel");
 /// Finest tile level (the terrain's kMaxLevel: ~2.7 m texels).
 inline constexpr int kImageryMaxLevel = 16;
 
@@ -43,22 +56,34 @@ struct ImageryTileKey {
   [[nodiscard]] double sizeDeg() const { return 180.0 / static_cast<double>(1 << level); }
   [[nodiscard]] double westDeg() const { return -180.0 + x * sizeDeg(); }
   [[nodiscard]] double southDeg() const { return -90.0 + y * sizeDeg(); }
+  /// Side of a level-0 texel, degrees.
+  [[nodiscard]] double texelDeg() const { return sizeDeg() / kImageryTilePx; }
   /// The tile `levels` levels up (levels <= level).
   [[nodiscard]] ImageryTileKey ancestor(int levels) const { return {layer, level - levels, x >> levels, y >> levels}; }
   friend bool operator==(const ImageryTileKey&, const ImageryTileKey&) = default;
 };
 
-/// Bytes of a tile's texels with its mip chain.
+/// Bytes of a tile's texels with its borders and mip chain.
 std::size_t imageryTileBytes();
+
+/// Byte offset of mip level m in ImageryTile::rgba.
+std::size_t imageryTileMipOffset(int m);
 
 struct ImageryTile {
   ImageryTileKey key;
   /// sRGB RGBA texels, rows south to north, alpha = coverage: the kImageryTileMips levels one
-  /// after the other (kImageryTilePx², then half that, ... 1²), each averaged from the one
-  /// before in linear colour.
+  /// after the other (imageryTileMipPx(m)² each, borders included), each the mean of the one
+  /// before over its footprint in linear colour.
   std::vector<std::uint8_t> rgba;
   std::uint64_t lastUsedFrame = 0;
   [[nodiscard]] std::size_t bytes() const { return sizeof(ImageryTile) + rgba.capacity(); }
+  /// Channel c of level-0 texel (x, y) counted from the interior's south-west texel: 0 ..
+  /// kImageryTilePx - 1 inside, -kImageryTileBorderPx .. -1 and kImageryTilePx .. in the border.
+  [[nodiscard]] std::uint8_t texel(int x, int y, int c) const {
+    const auto s = static_cast<std::size_t>(kImageryTileStoredPx);
+    return rgba[((static_cast<std::size_t>(y + kImageryTileBorderPx)) * s + static_cast<std::size_t>(x + kImageryTileBorderPx)) * 4 +
+                static_cast<std::size_t>(c)];
+  }
 };
 
 /// One user layer's tiles. read() is thread-safe (each thread reads with its own GDAL handle).
@@ -76,10 +101,15 @@ class ImageryTileSource {
   [[nodiscard]] int maxLevel() const { return maxLevel_; }
   /// Whether the tile overlaps the layer's footprint.
   [[nodiscard]] bool overlaps(const ImageryTileKey& key) const;
-  /// Reads and mip-maps a tile. Throws og::InputError "FILE: problem" (e.g. truncated).
+  /// Reads a tile with its borders (kImageryTileBorderPx texels past each edge; past a pole the
+  /// edge row repeated; across the antimeridian of a source that goes round the globe, read
+  /// from its other end) and mip-maps it. Throws og::InputError "FILE: problem" (truncated).
   [[nodiscard]] ImageryTile read(const ImageryTileKey& key) const;
 
  private:
+  /// Level 0 of a stored tile (kImageryTileStoredPx², borders included), as read() describes.
+  [[nodiscard]] std::vector<std::uint8_t> readBordered(const GeoImageReader& reader, const ImageryTileKey& key) const;
+
   std::string path_;
   int layer_;
   GeoFootprint footprint_;
@@ -104,6 +134,8 @@ class ImageryTileCache {
   std::vector<ImageryTileKey> collect();
   /// The cached tile (marked most recently used) or nullptr.
   const ImageryTile* find(const ImageryTileKey& key);
+  /// Whether the tile is cached (its use unchanged).
+  [[nodiscard]] bool contains(const ImageryTileKey& key) const { return map_.count(key.packed()) != 0; }
   /// Background requests, most wanted first, replacing earlier ones still queued.
   void request(std::span<const ImageryTileKey> keys);
   /// Reads these keys now (in parallel) and collects them; returns the keys that arrived.

@@ -99,6 +99,10 @@ void ImageryTextures::prepareTiles(std::span<const terrain::TileKey> drawn, bool
   if (tiles_ && enabled_) tiles_->prepare(drawn, wait && !tilesInBackground_);
 }
 
+void ImageryTextures::prefetchTiles(const geo::CameraView& view, int widthPx, int heightPx) {
+  if (tiles_ && enabled_) tiles_->prefetch(view, widthPx, heightPx);
+}
+
 void ImageryTextures::bindTile(const gl::Program& program, const terrain::TileKey& key) {
   if (tiles_ && enabled_) tiles_->bindTile(program, key);
 }

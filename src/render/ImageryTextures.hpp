@@ -49,6 +49,9 @@ class ImageryTextures {
   /// Before the terrain draws these tiles: streams the imagery tiles they want (with `wait`,
   /// reads them before returning). No-op without streamed layers.
   void prepareTiles(std::span<const terrain::TileKey> drawn, bool wait);
+  /// Asks in the background for the tiles a coming view will want (ImageryTiles::prefetch):
+  /// the viewer's camera a second ahead, record's next frame. No-op without streamed layers.
+  void prefetchTiles(const geo::CameraView& view, int widthPx, int heightPx);
   /// Sets the per-draw uniforms for terrain tile `key` (after bind()).
   void bindTile(const gl::Program& program, const terrain::TileKey& key);
   /// true: never wait for imagery tiles, even in frames whose terrain waits for its own (they

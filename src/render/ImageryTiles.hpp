@@ -4,7 +4,8 @@
 // grown on demand up to a byte budget and recycled in least-recently-used order, fed from the
 // CPU cache. Each terrain tile drawn samples, per layer, the finest resident imagery tile that
 // covers it: its own level's tile when resident, else the nearest resident ancestor (the texels
-// scaled onto the terrain tile), else the layer's whole texture. A tile that arrives replaces
+// scaled onto the terrain tile), else the layer's whole texture. Slots hold the tiles with their
+// borders (data::kImageryTileBorderPx), so filtering blends across tile edges. A tile that arrives replaces
 // its stand-in at once (no blend): the change is of texel size only, at the terrain's own tile
 // boundaries, like the terrain's own LOD.
 #include <cstddef>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "data/ImageryTiles.hpp"
+#include "geo/Camera.hpp"
 #include "gl/Objects.hpp"
 #include "gl/Shader.hpp"
 #include "terrain/Tile.hpp"
@@ -40,7 +42,22 @@ class ImageryTiles {
 
   /// Before the terrain draws `drawn`: uploads the tiles they want that have arrived and asks
   /// for the missing ones, in the background, or with `wait` reads them first (render, record).
+  /// In the background each wanted tile's ancestors (down to the layer's first streamed level)
+  /// are uploaded and kept resident with it, and asked for before it, coarse first: the first
+  /// to arrive stands in, so a fast descent shows a coarser tile, not the whole texture.
   void prepare(std::span<const terrain::TileKey> drawn, bool wait);
+  /// Asks in the background, after the frame's own requests, for the tiles a coming view will
+  /// want (viewer: the camera a second ahead; record: the next frame), with their ancestors:
+  /// those the terrain's split rule (terrain::SelectionParams) would pick there, judged on
+  /// spheres round the tiles' ground, not on built terrain tiles. Until the next prefetch().
+  void prefetch(const geo::CameraView& view, int widthPx, int heightPx);
+  /// The imagery tiles `view` would want (keysForView), without ancestors, per layer.
+  [[nodiscard]] std::vector<data::ImageryTileKey> keysForView(const geo::CameraView& view, int widthPx,
+                                                              int heightPx) const;
+  /// Whether `key` is on the GPU, in the CPU cache, or asked for (queued, being read, read).
+  [[nodiscard]] bool residentOrRequested(const data::ImageryTileKey& key) const;
+  /// The layer's tile wanted for drawing terrain tile `key` (level < 0: none).
+  [[nodiscard]] data::ImageryTileKey wanted(int layer, const terrain::TileKey& key) const;
   /// Sets imagery.glsl's per-draw tile uniforms for terrain tile `key` on `program`.
   void bindTile(const gl::Program& program, const terrain::TileKey& key);
   /// Sets the per-draw uniforms to "no tiles" (the whole layer textures), e.g. the globe pass.
@@ -57,8 +74,11 @@ class ImageryTiles {
     std::uint64_t lastUsedFrame = 0;
     bool used = false;
   };
-  /// The imagery tile terrain tile `key` would like for `layer` (level < 0: none).
-  [[nodiscard]] data::ImageryTileKey wanted(int layer, const terrain::TileKey& key) const;
+  /// `keys` with their ancestors down to their layer's first streamed level, each once, coarse
+  /// levels first.
+  [[nodiscard]] std::vector<data::ImageryTileKey> withAncestors(std::span<const data::ImageryTileKey> keys) const;
+  /// Asks the workers for missing_ then prefetch_ (those not resident), replacing older requests.
+  void requestMissing();
   /// The slot holding `key`, or -1.
   [[nodiscard]] int slotOf(const data::ImageryTileKey& key) const;
   /// Uploads a cached tile to a free or least recently used slot; -1 when every slot is in use
@@ -74,6 +94,8 @@ class ImageryTiles {
   gl::Texture texture_;
   std::vector<Slot> slots_;  // size = the texture's layers
   std::unordered_map<std::uint64_t, int> slotByKey_;
+  std::vector<data::ImageryTileKey> missing_;   ///< the last prepare()'s tiles not yet read
+  std::vector<data::ImageryTileKey> prefetch_;  ///< the last prefetch()'s tiles
   std::uint64_t frame_ = 1;
   std::uint64_t gpuEvictions_ = 0;
   int finestLevel_ = -1;

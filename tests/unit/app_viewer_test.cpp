@@ -1,5 +1,6 @@
 // Unit tier: the viewer's CPU side: camera controls over seven orders of magnitude of height,
-// the bitmap font, and keyframe files that `record` accepts.
+// the pose a second ahead that imagery is prefetched for, the bitmap font, and keyframe files
+// that `record` accepts.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include "core/Error.hpp"
 #include "geo/FlightPath.hpp"
 #include "geo/Sun.hpp"
+#include "geo/Wgs84.hpp"
 #include "io/CameraPath.hpp"
 #include "io/KmlTour.hpp"
 
@@ -170,6 +172,23 @@ TEST(ViewerController, LookRollAndNorthUp) {
   c.resetNorthUp();
   EXPECT_DOUBLE_EQ(c.pose().headingDeg, 0.0);
   EXPECT_DOUBLE_EQ(c.pose().rollDeg, 0.0);
+}
+
+TEST(ViewerPrefetch, PoseAheadFollowsTheMotionButStopsAboveTheGround) {
+  // Level flight east at 100 m/s from 1 km: a second on, 100 m east, same height and view.
+  const geo::CameraPose now = poseAt(45.0, 10.0, 1000.0, 90.0, -20.0);
+  const geo::EnuFrame enu = geo::enuFrameAt(45.0, 10.0);
+  const geo::CameraPose ahead = poseAhead(now, 100.0 * enu.east, 1.0, 0.0);
+  const glm::dvec3 moved = geo::geodeticToEcef(ahead.position) - geo::geodeticToEcef(now.position);
+  EXPECT_NEAR(glm::dot(moved, enu.east), 100.0, 0.01);
+  EXPECT_NEAR(ahead.position.heightM, 1000.0, 0.01);
+  EXPECT_EQ(ahead.headingDeg, now.headingDeg);
+  EXPECT_EQ(ahead.pitchDeg, now.pitchDeg);
+  // Diving at 2 km/s from 1 km over land 200 m high: no lower than a quarter of the way down.
+  const geo::CameraPose dive = poseAhead(now, -2000.0 * enu.up, 1.0, 200.0);
+  EXPECT_NEAR(dive.position.heightM, 400.0, 1e-6);
+  // At rest: where it is.
+  EXPECT_NEAR(poseAhead(now, glm::dvec3(0.0), 1.0, 0.0).position.heightM, 1000.0, 1e-6);
 }
 
 TEST(ViewerFont, EveryOverlayCharacterHasAGlyph) {

@@ -57,6 +57,14 @@ geo::CameraPose poseFromOrientation(const geo::Geodetic& position, const glm::dv
   return pose;
 }
 
+geo::CameraPose poseAhead(const geo::CameraPose& pose, const glm::dvec3& velocityEcef, double aheadS, double surfaceM) {
+  geo::CameraPose ahead = pose;
+  ahead.position = geo::ecefToGeodetic(geo::geodeticToEcef(pose.position) + aheadS * velocityEcef);
+  const double floorM = surfaceM + 0.25 * std::max(pose.position.heightM - surfaceM, 0.0);
+  ahead.position.heightM = std::max(ahead.position.heightM, floorM);
+  return ahead;
+}
+
 FlightController::FlightController(const geo::CameraPose& pose, SurfaceHeight surface)
     : pose_(pose), surface_(std::move(surface)) {
   clamp();

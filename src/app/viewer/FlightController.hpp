@@ -44,6 +44,13 @@ struct MoveInput {
 geo::CameraPose poseFromOrientation(const geo::Geodetic& position, const glm::dvec3& forward,
                                     const glm::dvec3& up, double verticalFovDeg);
 
+/// Where a camera now at `pose` and moving at `velocityEcef` (m/s) will be `aheadS` seconds on,
+/// for fetching what that view needs before it is reached: the straight line, orientation kept
+/// (heading, pitch, roll), but no nearer the surface `surfaceM` (metres above the ellipsoid)
+/// than a quarter of its height above it now, since speeds scale with that height and a
+/// descent slows as it nears the ground.
+geo::CameraPose poseAhead(const geo::CameraPose& pose, const glm::dvec3& velocityEcef, double aheadS, double surfaceM);
+
 class FlightController {
  public:
   /// `surface` may be empty: then the surface is the sea everywhere.
