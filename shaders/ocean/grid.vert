@@ -42,6 +42,8 @@ out vec3 vTransmittance;      // of the eye-to-vertex path
 out vec3 vInscatter;          // light scattered towards the eye along it (units of the Sun's irradiance)
 #endif
 #include "ocean/water_volume_vertex.glsl"  // the water volume's smooth terms per vertex
+// The same position in every program of the grid (the sea's classes: render/OceanRenderer).
+invariant gl_Position;
 
 void main() {
   int ix = gl_VertexID % uGridSize.x;
@@ -70,6 +72,7 @@ void main() {
   vec2 wind = localWind(latLon);
   vec3 d = oceanDisplacement(local.xy, cell, wind) * shoreWaveFactor(latLon, seaStateWaveHeightM(wind.x));
   prepareWaterVolumeVertex(latLon, ellipsoidNormal(dir, t));
+  prepareSeaClassVertex(latLon, rel);  // the classes' draw only (OCEAN_SEA_CLASSIFY)
   // Displacement along the frame's axes; near the camera (where waves are resolved at all)
   // they coincide with the local tangent frame.
   vRelative = rel + transpose(uEcefToOcean) * d;

@@ -25,3 +25,96 @@ void prepareWaterVolumeVertex(vec2 latLon, vec3 up) {
 #else
 void prepareWaterVolumeVertex(vec2 latLon, vec3 up) {}
 #endif
+
+// The sea's classes (render/OceanRenderer's split, ocean/sea_classify.frag): whether land may lie
+// within reach of the vertex (every triangle touching it is inside that radius), so that only
+// triangles with a flagged vertex need the per-pixel coast test (ocean/coast.glsl). With the
+// GSHHG mask the coast is its land fraction's 0.5 contour (terrain/landmask.glsl: the layer
+// cannot make land where the fraction is below 0.5), and the fraction's quadratic B-spline
+// changes by at most sqrt(2) per mask cell (its derivative is a linear spline of the cells'
+// differences, each in [-1, 1]); without it, the layer's own height with its steepest slope
+// (uLayerMaxSlope, m/m, from the CPU: render/WaterVolume's layerMaxSlope).
+#ifdef OCEAN_SEA_CLASSIFY
+uniform float uLayerMaxSlope;
+uniform float uWaveReachM;  // how far the waves move a point of the grid, m (their amplitude bound)
+out float vNearLand;  // > 0 in triangles that may hold land (1 at a flagged vertex)
+
+// The undisplaced point of grid vertex `i` (camera-relative, m): grid.vert's cast of its ray
+// onto the ellipsoid, rays above the horizon lowered onto it.
+vec3 seaClassGridPoint(ivec2 i) {
+  vec2 lo = -1.0 - uGridMarginNdc.xz, hi = 1.0 + uGridMarginNdc.yw;
+  vec2 ndc = mix(lo, hi, vec2(clamp(i, ivec2(0), uGridSize - 1)) / vec2(uGridSize - 1));
+  vec3 dir = normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp);
+  float t = intersectEllipsoid(dir);
+  if (t < 0.0) {
+    vec3 up = transpose(uEcefToOcean)[2];
+    float dip = acos(clamp(WGS84_A / (WGS84_A + uEyeHeight), 0.0, 1.0)) + 1e-5;
+    vec3 horizontal = normalize(dir - dot(dir, up) * up);
+    dir = normalize(horizontal * cos(dip) - up * sin(dip));
+    t = intersectEllipsoid(dir);
+    if (t < 0.0) t = sqrt(uEyeHeight * (2.0 * WGS84_A + uEyeHeight));
+  }
+  return t * dir;
+}
+
+// How far from this vertex's undisplaced point any pixel of the triangles around it can lie:
+// the farthest of its 8 neighbours' points (the triangles are their convex hulls) plus what the
+// waves move the vertices by, m.
+float seaClassReachM(vec3 rel) {
+  ivec2 i = ivec2(gl_VertexID % uGridSize.x, gl_VertexID / uGridSize.x);
+  float most = 0.0;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) most = max(most, distance(rel, seaClassGridPoint(i + ivec2(dx, dy))));
+  return most + 2.0 * uWaveReachM;
+}
+
+// The first and last grid row (vertex rows) whose vertices may make each class's pixels, per
+// class 1-3 (render/OceanRenderer reads them back and draws each class over those rows only):
+// a pixel is class 1 or 2 as its interpolated floor depth is beyond or within the reach, so
+// only in triangles with a vertex on that side; class 3 only in triangles with a flagged vertex.
+layout(std430, binding = 3) buffer SeaClassRows { int seaClassRows[6]; };
+uniform float uWaterReachM;  // as ocean/sea_classify.frag
+uniform int uCoastClass;
+
+void countSeaClassRow(int seaClass) {
+  int row = gl_VertexID / uGridSize.x;
+  atomicMin(seaClassRows[2 * seaClass - 2], row);
+  atomicMax(seaClassRows[2 * seaClass - 1], row);
+}
+
+// Whether a regional layer's border is within `reachM` of (latitude, longitude): the -1 m
+// outside it is sea, but the slope bound does not hold across the border.
+bool seaClassNearLayerBorder(vec2 latLon, float reachM) {
+  if (uElevationWraps == 1) return false;
+  vec2 cell = vec2((latLon.y - uElevationMap.x) / uElevationMap.z, (latLon.x - uElevationMap.y) / uElevationMap.w);
+  vec2 margin = reachM / (WGS84_A * vec2(uElevationMap.z * max(cos(latLon.x), 1e-3), uElevationMap.w));
+  return any(lessThan(cell, margin - 0.5)) || any(greaterThan(cell, uElevationSize - 0.5 - margin));
+}
+
+void prepareSeaClassVertex(vec2 latLon, vec3 rel) {
+  float reachM = seaClassReachM(rel);
+  if (uElevationSize.x <= 0.0) {
+    vNearLand = 0.0;  // no layer: sea everywhere (seaAt)
+  } else if (landMaskOn()) {
+    float cellM = WGS84_A * PI / float(textureSize(uLandMask, 0).y);
+    float perCell = reachM / (cellM * max(cos(latLon.x), 1e-3));
+    vNearLand = landFraction(latLon) + 1.4143 * perCell >= 0.5 ? 1.0 : 0.0;
+  } else {
+    bool nearLand = elevationAt(latLon) + uLayerMaxSlope * reachM >= 0.0;
+    vNearLand = nearLand || seaClassNearLayerBorder(latLon, reachM) ? 1.0 : 0.0;
+  }
+  countSeaClassRow(vFloorDepthM <= uWaterReachM ? 2 : 1);
+  if (uCoastClass == 1 && vNearLand > 0.0) countSeaClassRow(3);
+}
+#else
+// Whether a regional layer's border is within `reachM` of (latitude, longitude): the -1 m
+// outside it is sea, but the slope bound does not hold across the border.
+bool seaClassNearLayerBorder(vec2 latLon, float reachM) {
+  if (uElevationWraps == 1) return false;
+  vec2 cell = vec2((latLon.y - uElevationMap.x) / uElevationMap.z, (latLon.x - uElevationMap.y) / uElevationMap.w);
+  vec2 margin = reachM / (WGS84_A * vec2(uElevationMap.z * max(cos(latLon.x), 1e-3), uElevationMap.w));
+  return any(lessThan(cell, margin - 0.5)) || any(greaterThan(cell, uElevationSize - 0.5 - margin));
+}
+
+void prepareSeaClassVertex(vec2 latLon, vec3 rel) {}
+#endif

@@ -61,6 +61,7 @@ GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
   elevationSize_ = glm::vec2(elevation.width, elevation.height);
   elevationWraps_ = elevation.wrapsLongitude ? 1 : 0;
   ocean_->setElevationLayer(elevationMap_, elevationSize_, elevationWraps_);
+  ocean_->setLayerMaxSlope(layerMaxSlope(elevation));  // the sea's classes (OceanRenderer)
   terrain_ = std::make_unique<TerrainRenderer>(elevation, atmosphere_.get());
   imagery_ = std::make_unique<ImageryTextures>();
   terrain_->setImagery(imagery_.get());
@@ -323,6 +324,7 @@ void GlobeRenderer::drawOcean(const geo::CameraView& view, const FrameInput& f) 
   const double reachM = ocean::waterMaxPathM(ocean::jerlovWater(ocean::kDefaultWater).attenuationPerM,
                                              ocean::kWaterEpsilon);
   lighting.floorInReach = ts.tiles == 0 || ts.maxHeightM > -2.0 * reachM;
+  lighting.classes = f.oceanClasses;
   // Waves fade out on the way up so the grid meets the orbit model at the switch.
   const double h = view.position.heightM;
   const double x = std::clamp((h - kOceanFadeStartM) / (kOceanGridMaxHeightM - kOceanFadeStartM), 0.0, 1.0);

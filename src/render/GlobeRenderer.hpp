@@ -55,6 +55,9 @@ struct FrameInput {
   /// moves); nullptr starts a fresh frame under the camera.
   const ocean::OceanFrame* oceanFrame = nullptr;
   int oceanCellPixels = 8;         ///< projected-grid cell size, pixels
+  /// The grid's sea drawn in classes, each pixel by a program with only the code it needs
+  /// (render/OceanRenderer, docs/coast.md); false: one program for all (the tests' reference).
+  bool oceanClasses = true;
   std::uint64_t waveSeed = 1;      ///< the waves' random amplitudes and phases
   /// Samples per pixel of the HDR target: 1, 2, 4 or 8 (clamped, with a warning, to what the
   /// GL device offers), or kAutoSamples. Shaders still run once per pixel; the extra samples

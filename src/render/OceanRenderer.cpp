@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "gl/DriverProfile.hpp"
 #include "gl/ShaderContract.hpp"
 #include "render/WaterVolume.hpp"
 
@@ -223,11 +224,12 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
       const double cosSun = glm::dot(glm::normalize(lighting.sunDirectionEcef), view.enu.up);
       atmosphere_->prepareFrameSkyLayer(std::acos(std::clamp(cosSun, -1.0, 1.0)));
     }
+    if ((features & kFeatureWaterVolume) != 0) caustics_.update(patterns, timeS);
   }
-  const gl::Program& p = model == OceanModel::Classic ? classic_ : program(features);
-  setCommon(p, view, height, frame, lighting, features);
-  p.set("uGridMarginNdc", margin);
   if (model == OceanModel::Classic) {
+    const gl::Program& p = classic_;
+    setCommon(p, view, height, frame, lighting, features);
+    p.set("uGridMarginNdc", margin);
     // The classic pattern repeats every 800 m (see classic.vert/.frag): fold the offset there.
     const glm::dvec2 off = frame.fieldOffsetM();
     p.set("uFieldOffset", glm::vec2(static_cast<float>(std::fmod(off.x, 800.0)),
@@ -235,20 +237,113 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     p.set("uTime", static_cast<float>(std::fmod(timeS, 1000.0)));
     glBindTextureUnit(gl::kUnitBumpMap, bumpMap_.id());
     glBindTextureUnit(gl::kUnitFresnelRamp, fresnelRamp_.id());
+    drawGrid(p);
+  } else if (lighting.classes && (features & (kFeatureWaterVolume | kFeatureCoastTest)) != 0 &&
+             drawTargetHasStencil() && gl::driverProfile().stencilExport) {  // sea_classify.frag
+    drawClassified(view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
   } else {
-    if ((features & kFeatureWaterVolume) != 0) {
-      caustics_.update(patterns, timeS);
-      caustics_.bind();
-    }
-    patterns.bind();
-    patterns.setUniforms(p, &frame, amplitudeScale);
-    p.set("uLightingTerms", lightingTerms_);
-    wind.bind(p);
+    const gl::Program& p = program(features);
+    prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
+    drawGrid(p);
   }
+  gl::checkErrors("OceanRenderer::draw");
+}
+
+void OceanRenderer::prepare(const gl::Program& p, const geo::CameraView& view, int height,
+                            const OceanPatterns& patterns, const ocean::OceanFrame& frame,
+                            const OceanLighting& lighting, double amplitudeScale,
+                            const WindTextures& wind, unsigned features, const glm::vec4& margin) const {
+  setCommon(p, view, height, frame, lighting, features);
+  p.set("uGridMarginNdc", margin);
+  if ((features & kFeatureWaterVolume) != 0) caustics_.bind();
+  patterns.bind();
+  patterns.setUniforms(p, &frame, amplitudeScale);
+  p.set("uLightingTerms", lightingTerms_);
+  wind.bind(p);
+}
+
+void OceanRenderer::drawGrid(const gl::Program& p) const { drawGridRows(p, 0, gridRows_ - 2); }
+
+void OceanRenderer::drawGridRows(const gl::Program& p, int firstRow, int lastRow) const {
+  if (lastRow < firstRow) return;
+  const auto perRow = static_cast<std::size_t>(6 * (gridColumns_ - 1));
   p.use();
   glBindVertexArray(vao_.id());
-  glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
-  gl::checkErrors("OceanRenderer::draw");
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(perRow * static_cast<std::size_t>(lastRow - firstRow + 1)),
+                 GL_UNSIGNED_INT,
+                 reinterpret_cast<const void*>(perRow * static_cast<std::size_t>(firstRow) * sizeof(GLuint)));
+}
+
+bool OceanRenderer::drawTargetHasStencil() {
+  GLint fbo = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
+  const auto name = static_cast<GLuint>(fbo);
+  const GLenum attachment = name == 0 ? GL_STENCIL : GL_STENCIL_ATTACHMENT;
+  GLint type = GL_NONE;
+  glGetNamedFramebufferAttachmentParameteriv(name, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+  if (type == GL_NONE) return false;
+  GLint bits = 0;
+  glGetNamedFramebufferAttachmentParameteriv(name, attachment, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &bits);
+  return bits >= 2;
+}
+
+void OceanRenderer::drawClassified(const geo::CameraView& view, int height, const OceanPatterns& patterns,
+                                   const ocean::OceanFrame& frame, const OceanLighting& lighting,
+                                   double amplitudeScale, const WindTextures& wind, unsigned features,
+                                   const glm::vec4& margin) {
+  if (classify_.id() == 0) {
+    std::vector<std::string> d = defines_;
+    d.emplace_back("OCEAN_SEA_CLASSIFY");
+    classify_ = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_classify.frag"}}, d);
+    classRows_ = gl::createBuffer();
+    glNamedBufferStorage(classRows_.id(), 6 * sizeof(GLint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  }
+  const bool volume = (features & kFeatureWaterVolume) != 0, coast = (features & kFeatureCoastTest) != 0;
+  prepare(classify_, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
+  const double reachM = ocean::waterMaxPathM(ocean::jerlovWater(ocean::kDefaultWater).attenuationPerM,
+                                             ocean::kWaterEpsilon);
+  classify_.set("uWaterReachM", volume ? static_cast<float>(reachM) : -1e30f);
+  classify_.set("uCoastClass", coast ? 1 : 0);
+  classify_.set("uLayerMaxSlope", layerMaxSlope_);
+  classify_.set("uWaveReachM", static_cast<float>(amplitudeScale * patterns.amplitudeBoundM()));
+  // The classes: the largest of the grid's fragments in a pixel (folds at grazing angles),
+  // only where the sea passes the depth test (in front of the terrain).
+  glEnable(GL_STENCIL_TEST);
+  glStencilMask(0xff);
+  glClear(GL_STENCIL_BUFFER_BIT);
+  glStencilFunc(GL_GEQUAL, 0, 0xff);  // the reference is the shader's (gl_FragStencilRefARB)
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glDepthMask(GL_FALSE);
+  const std::array<GLint, 6> none{kNoRow, -1, kNoRow, -1, kNoRow, -1};
+  glNamedBufferSubData(classRows_.id(), 0, sizeof none, none.data());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kClassRowsBinding, classRows_.id());
+  drawGrid(classify_);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::array<GLint, 6> rows{};
+  glGetNamedBufferSubData(classRows_.id(), 0, sizeof rows, rows.data());
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  // Each class by its program over the grid rows that can make its pixels. No stencil writes:
+  // llvmpipe then tests depth and stencil before the shader even where it may discard (the
+  // coast test), so a class's shading costs only its pixels, and its vertices only its rows.
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glStencilMask(0);
+  const unsigned routed = kFeatureWaterVolume | kFeatureCoastTest;
+  const std::array<unsigned, 3> classFeatures{features & ~routed, features & ~kFeatureCoastTest, features};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const GLint first = rows.at(2 * k), last = rows.at(2 * k + 1);
+    if (last < first) continue;  // no vertex of the grid makes this class
+    const gl::Program& p = program(classFeatures.at(k));
+    prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, classFeatures.at(k), margin);
+    glStencilFunc(GL_EQUAL, static_cast<GLint>(k + 1), 0xff);
+    // Triangle rows r span vertex rows r and r + 1; kFoldRows more each side for the grid's
+    // folds (a nearer fragment of another row in a pixel whose class a farther one set).
+    drawGridRows(p, std::max(first - 1 - kFoldRows, 0), std::min(last + kFoldRows, gridRows_ - 2));
+  }
+  glStencilMask(0xff);
+  glClear(GL_STENCIL_BUFFER_BIT);  // as the caller had it (the globe's parts count from 0)
+  glDisable(GL_STENCIL_TEST);
 }
 
 }  // namespace og::render

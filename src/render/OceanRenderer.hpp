@@ -33,6 +33,9 @@ struct OceanLighting {
   /// Whether a sea floor within the water's reach (ocean::waterMaxPathM) may be in view: false
   /// compiles the water volume out (ocean/water_volume.glsl): the open ocean's colour is exact.
   bool floorInReach = true;
+  /// Whether the sea may be drawn in classes (OceanRenderer's stencil split); false draws every
+  /// pixel with the program of the whole frame's features (the reference of the split's test).
+  bool classes = true;
 };
 
 enum class OceanModel {
@@ -65,6 +68,10 @@ class OceanRenderer {
     elevationWraps_ = wraps;
   }
 
+  /// The layer's steepest slope (m/m, render/WaterVolume's layerMaxSlope): how far from land
+  /// the sea's classes need the coast test where no land mask decides the coast.
+  void setLayerMaxSlope(double slope) { layerMaxSlope_ = static_cast<float>(slope); }
+
   /// Weights of the Bruneton model's lighting terms (Sun, sky, refracted light, whitecaps), 1
   /// each by default; `validate` renders them one at a time (paper §7.2).
   void setLightingTerms(const glm::vec4& weights) { lightingTerms_ = weights; }
@@ -94,6 +101,27 @@ class OceanRenderer {
   /// on first use. llvmpipe pays for code no pixel runs (it evaluates both sides of an `if`
   /// and a loop's first trip, masked), so what a frame does not need is left out of it.
   const gl::Program& program(unsigned features);
+  /// Sets everything a program of the filtered model reads for this frame.
+  void prepare(const gl::Program& p, const geo::CameraView& view, int height, const OceanPatterns& patterns,
+               const ocean::OceanFrame& frame, const OceanLighting& lighting, double amplitudeScale,
+               const WindTextures& wind, unsigned features, const glm::vec4& margin) const;
+  void drawGrid(const gl::Program& p) const;
+  /// The grid's triangle rows firstRow ... lastRow (row r between vertex rows r and r + 1).
+  void drawGridRows(const gl::Program& p, int firstRow, int lastRow) const;
+  static constexpr GLint kNoRow = 1 << 30;
+  static constexpr GLuint kClassRowsBinding = 3;  ///< ocean/water_volume_vertex.glsl's SeaClassRows
+  static constexpr int kFoldRows = 2;
+  /// The sea in classes (shaders/ocean/sea_classify.frag): one cheap draw of the grid writes
+  /// each pixel's class into the stencil, then each class is drawn by the program with only the
+  /// `features` it needs (the open sea without the water volume and the coast test, the floor
+  /// within reach without the coast test, land near with both), stencil-tested before its
+  /// shader runs. The stencil is left 0. Needs a stencil buffer in the bound framebuffer.
+  void drawClassified(const geo::CameraView& view, int height, const OceanPatterns& patterns,
+                      const ocean::OceanFrame& frame, const OceanLighting& lighting,
+                      double amplitudeScale, const WindTextures& wind, unsigned features,
+                      const glm::vec4& margin);
+  /// Whether the bound draw framebuffer has a stencil buffer.
+  [[nodiscard]] static bool drawTargetHasStencil();
 
   static constexpr unsigned kFeatureWaterVolume = 1, kFeatureCoastTest = 2, kFeatureShadows = 4;
   /// The sky maps' frame layer alone (Atmosphere::prepareFrameSkyLayer) instead of two layers
@@ -105,6 +133,8 @@ class OceanRenderer {
   const Atmosphere* atmosphere_;
   std::vector<std::string> defines_;        ///< the filtered model's, whatever the features
   std::array<gl::Program, 16> variants_;    ///< by feature bits; id() 0 until compiled
+  gl::Program classify_;                    ///< ocean/sea_classify.frag; id() 0 until compiled
+  gl::Buffer classRows_;  ///< per class, the first and last grid row of its vertices (6 ints)
   CausticCurvature caustics_;  ///< the water volume's caustics (render/WaterVolume)
   gl::Program classic_;
   gl::Texture bumpMap_;      ///< classic: tileable ripple normals, mip-mapped
@@ -118,6 +148,7 @@ class OceanRenderer {
   glm::vec4 elevationMap_{0.0f};
   glm::vec2 elevationSize_{0.0f};
   int elevationWraps_ = 0;
+  float layerMaxSlope_ = 1e6f;  ///< unknown: any layer height is near land
 };
 
 }  // namespace og::render

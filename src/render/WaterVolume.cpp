@@ -1,5 +1,6 @@
 #include "render/WaterVolume.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -13,6 +14,27 @@ namespace og::render {
 void setWaterOptics(const gl::Program& p, const ocean::WaterType& water) {
   p.set("uWaterAttenuation", glm::vec3(water.attenuationPerM));
   p.set("uFloorAlbedo", glm::vec3(ocean::kCoralSandAlbedo));
+}
+
+double layerMaxSlope(const data::LatLonGrid& layer) {
+  const auto height = [&](int column, int row) {
+    const float v = layer.at(column, row);
+    return std::isfinite(v) ? static_cast<double>(v) : -1.0;
+  };
+  const double deg = 3.14159265358979323846 / 180.0;
+  const double rowM = geo::kWgs84SemiMajorM * layer.dLatDeg * deg;
+  double most = 0.0;
+  for (int row = 0; row < layer.height; ++row) {
+    const double lat = (layer.lat0Deg + row * layer.dLatDeg) * deg;
+    const double columnM = geo::kWgs84SemiMajorM * layer.dLonDeg * deg * std::max(std::cos(lat), 1e-3);
+    for (int column = 0; column < layer.width; ++column) {
+      const double h = height(column, row);
+      const int next = column + 1 < layer.width ? column + 1 : (layer.wrapsLongitude ? 0 : -1);
+      if (next >= 0) most = std::max(most, std::abs(height(next, row) - h) / columnM);
+      if (row + 1 < layer.height) most = std::max(most, std::abs(height(column, row + 1) - h) / rowM);
+    }
+  }
+  return most;
 }
 
 void setFloorDetail(const gl::Program& p, const geo::CameraView& view) {

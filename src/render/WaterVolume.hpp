@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "data/LatLonGrid.hpp"
 #include "geo/Camera.hpp"
 #include "gl/Objects.hpp"
 #include "gl/Shader.hpp"
@@ -25,6 +26,13 @@ void setWaterOptics(const gl::Program& p, const ocean::WaterType& water);
 /// The floor detail's lattice at the eye (for the grid's sea): each octave's lattice coordinate
 /// split in double into a cell and a position in it, as the terrain does for its detail.
 void setFloorDetail(const gl::Program& p, const geo::CameraView& view);
+
+/// The steepest slope of `layer`'s bilinear surface (m of height per m along the ellipsoid of
+/// the semi-major axis), over every pair of neighbouring cells, missing values read as -1 m as
+/// the elevation texture has them. Bounds how far land can lie from a point by its height (the
+/// sea's classes: shaders/ocean/water_volume_vertex.glsl's prepareSeaClassVertex, without the
+/// land mask; a regional layer's border, where the -1 m outside meets it, is handled there).
+double layerMaxSlope(const data::LatLonGrid& layer);
 
 /// How many of the finest wave patterns focus the Sun onto the floor (water_volume.glsl's
 /// caustics): the ones whose curvature matters at a few metres (longer waves focus far deeper).

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "data/Elevation.hpp"
@@ -340,4 +341,53 @@ TEST(CoastWater, SwitchAtTwentyKilometresIsInvisibleOverABank) {
   if (!c.within({12, 0.2, 2, 0.03}))
     io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / "coast_switch.diff.png", c.diff);
   EXPECT_TRUE(c.within({12, 0.2, 2, 0.03})) << c.describe();
+}
+
+namespace {
+// A shore at kLat (5 m of land north of it), a shelf falling 20 m per km to 60 m at 3 km, then
+// a slope of 100 m per km beyond the water's reach (154 m, from 3.9 km out) to 400 m: every
+// class of the grid's sea in one view (render/OceanRenderer's split).
+data::LatLonGrid shoreShelfAndDeep() {
+  return test::grid("shore-shelf-deep", kLat - 0.1, kLon - 0.1, 0.001, 201, 201, false,
+                    [](double lat, double) {
+                      const double offshoreKm = (kLat - lat) * 111.2;
+                      if (offshoreKm <= 0.0) return 5.0;
+                      return offshoreKm < 3.0 ? -20.0 * offshoreKm : std::max(-60.0 - 100.0 * (offshoreKm - 3.0), -400.0);
+                    });
+}
+}  // namespace
+
+// The sea in classes (open sea, floor within reach, land near; each drawn by a program with
+// only its code) against the one program of all the frame's features, looking at the shore
+// with the Sun's glitter: over the shelf and deep layer 4.2 km offshore (180 m of water), 100 m
+// up (the open sea's and the land's classes), and over shelf() 2.2 km offshore (14 m), 20 m up
+// (the floor's and the land's). A pixel sent to the wrong class shows the deep sea where the
+// floor is (tens of levels), or the sea over the beach. Measured: identical (max 0).
+TEST(CoastWater, SeaClassesMatchTheSingleProgram) {
+  auto ctx = gl::createHeadlessContext();
+  for (const auto& [deep, offshoreKm, heightM, pitch] :
+       {std::tuple{true, 4.2, 100.0, -20.0}, std::tuple{false, 2.2, 20.0, -15.0}}) {
+    render::GlobeRenderer r(deep ? shoreShelfAndDeep() : shelf());
+    render::FrameInput f;
+    f.camera.position = {kLat - offshoreKm / 111.2, kLon, heightM};
+    f.camera.headingDeg = 10.0;
+    f.camera.pitchDeg = pitch;
+    f.camera.verticalFovDeg = 50.0;
+    f.width = 192;
+    f.height = 108;
+    f.wind.speedMs = 6.0;
+    f.simulationTimeS = 1.5;
+    f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 40.0, 20.0);
+    r.render(f);
+    const io::ImageRgba8 classes = r.display();
+    save(r, "coast_classes_" + std::to_string(int(-pitch)));
+    f.oceanClasses = false;
+    r.render(f);
+    const io::ImageRgba8 single = r.display();
+    save(r, "coast_classes_single_" + std::to_string(int(-pitch)));
+    const test::Comparison c = test::compareRgb(classes, single, 1);
+    if (!c.within({2, 0.01, 1, 0.001}))
+      io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / ("coast_classes_" + std::to_string(int(-pitch)) + ".diff.png"), c.diff);
+    EXPECT_TRUE(c.within({2, 0.01, 1, 0.001})) << "pitch " << pitch << ": " << c.describe();
+  }
 }
