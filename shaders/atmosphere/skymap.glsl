@@ -56,14 +56,12 @@ vec3 skyMapLayerFiltered(vec2 tc, float layer, vec2 gx, vec2 gy) {
   if (uSkyFilterProbes <= 1) return textureGrad(uSkyMap, vec3(tc, layer), gx, gy).rgb;
   // Up to uSkyFilterProbes isotropic lookups spread along the major axis, each over 1/n of it
   // and the minor axis: together they tile the ellipse's extent. n follows the ellipse's
-  // elongation (major / minor rounded to the nearest, at most uSkyFilterProbes), so footprints
-  // up to 1.5 times longer than wide cost one lookup (ceil(ratio) gave 2 to any ratio above 1:
-  // the ocean pass's dearest term, docs/performance.md); each lookup blurs along the major axis
-  // over at most 1.5 times the minor one, and a longer ellipse's over more.
+  // elongation (major / minor, at most uSkyFilterProbes), so near-round footprints cost one
+  // lookup; a longer ellipse's lookups each blur over more than the minor axis.
   bool xMajor = dot(gx, gx) >= dot(gy, gy);
   vec2 major = xMajor ? gx : gy, minor = xMajor ? gy : gx;
   float ratio = length(major) / max(length(minor), 1e-8);
-  int n = int(clamp(ceil(ratio - 0.5), 1.0, float(uSkyFilterProbes)));
+  int n = int(clamp(ceil(ratio), 1.0, float(uSkyFilterProbes)));
   vec2 step = major / float(n);
   vec3 sum = vec3(0.0);
   for (int k = 0; k < n; ++k)
