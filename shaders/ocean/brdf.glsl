@@ -68,7 +68,7 @@ Number rossSun(vec3 v, vec3 l, vec3 n, vec3 tx, vec3 ty, vec2 sigma2) {
 Number effectiveFresnel(Number cosV, Number sigmaV) {
   Number x = 1.0 - clamp(cosV, 0.0, 1.0);
   return BRDF_R0 + (1.0 - BRDF_R0) * pow(x, 5.0 * exp(-2.69 * sigmaV)) /
-                       (1.0 + 22.7 * pow(sigmaV, 1.5));
+                       (1.0 + 22.7 * sigmaV * sqrt(sigmaV));  // sigma^1.5 without a pow
 }
 
 // Reflected direction for the facet of slope zeta (used for the filtered sky lookup, §5.2):

@@ -15,6 +15,7 @@ layout(binding = 0, rgba32f) readonly uniform image2DArray uFields;
 layout(binding = 1, rgba16f) writeonly uniform image2DArray uDisplacement;
 layout(binding = 2, rgba32f) writeonly uniform image2DArray uSlopes;
 uniform float uChoppiness[PATTERN_COUNT];
+uniform int uPatternCount;  // the first patterns transformed this time (the others are left)
 
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
@@ -29,7 +30,7 @@ void main() {
   float windAngle = float(set) * 0.25 * FFT_PI;
   vec2 along = vec2(cos(windAngle), sin(windAngle));
   int slot = 0;
-  for (int p = 0; p < PATTERN_COUNT; ++p) {
+  for (int p = 0; p < uPatternCount; ++p) {
     ivec3 at = ivec3(texel, set * PATTERN_COUNT + p);
     float lambda = uChoppiness[p];
     vec2 a = slots[slot++];  // h, dh/dx

@@ -21,7 +21,8 @@ int bitReverse(int i) { return int(bitfieldReverse(uint(i)) >> uint(32 - FFT_LOG
 void main() {
   int t = int(gl_LocalInvocationID.x);
   int line = int(gl_WorkGroupID.x);
-  int layer = int(gl_WorkGroupID.y);
+  // Work groups (line, layer within the set, set): only the layers of the patterns needed.
+  int layer = int(gl_WorkGroupID.z) * FFT_LAYERS_PER_SET + int(gl_WorkGroupID.y);
   sLine[bitReverse(t)] = imageLoad(uSource, texel(t, line, layer));
   sLine[bitReverse(t + FFT_SIZE / 2)] = imageLoad(uSource, texel(t + FFT_SIZE / 2, line, layer));
   barrier();

@@ -14,6 +14,7 @@ layout(binding = 2, rgba32f) writeonly uniform image2DArray uFields;
 uniform float uPatternSizeM[PATTERN_COUNT];  // tile sizes, m
 uniform uint uTimeSteps;     // floor(tau * 4096)
 uniform float uTimeFine;     // tau - uTimeSteps / 4096, [0, 1/4096)
+uniform int uPatternCount;   // the first patterns to transform (the others' slots stay 0)
 
 vec2 timesI(vec2 z) { return vec2(-z.y, z.x); }
 
@@ -25,7 +26,7 @@ void main() {
   vec2 slots[FFT_SLOTS];
   for (int s = 0; s < FFT_SLOTS; ++s) slots[s] = vec2(0.0);
   int slot = 0;
-  for (int p = 0; p < PATTERN_COUNT; ++p) {
+  for (int p = 0; p < uPatternCount; ++p) {
     ivec3 at = ivec3(texel, set * PATTERN_COUNT + p);
     vec2 k = vec2(m) * (2.0 * FFT_PI / uPatternSizeM[p]);
     float kl = max(length(k), 1e-9);

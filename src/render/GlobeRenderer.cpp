@@ -331,7 +331,11 @@ void GlobeRenderer::drawOcean(const geo::CameraView& view, const FrameInput& f) 
   const double amplitude = 1.0 - x * x * (3.0 - 2.0 * x);
   if (f.oceanModel == OceanModel::Bruneton) {
     if (timer_ != nullptr) timer_->mark("ocean waves");
-    patterns_->update(f.simulationTimeS);
+    // Only the patterns some pixel resolves (all for the water volume's caustics).
+    patterns_->update(f.simulationTimeS, lighting.floorInReach ? ocean::kPatternCount
+                                         : OceanPatterns::resolvedPatternCount(
+                                               patterns_->patterns().params,
+                                               OceanPatterns::finestSeaFootprintM(view, f.height)));
   }
   if (timer_ != nullptr) timer_->mark("ocean");
   glDepthFunc(GL_GREATER);

@@ -1,6 +1,9 @@
 #include "render/OceanPatterns.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -146,14 +149,48 @@ void OceanPatterns::setLayerUniforms(const gl::Program& program) const {
   }
 }
 
-void OceanPatterns::update(double timeS) {
-  if (current_ && timeS == timeS_) return;
-  runFft(timeS);
+void OceanPatterns::update(double timeS, int patternCount) {
+  patternCount = std::clamp(patternCount, 1, ocean::kPatternCount);
+  if (computed_ >= patternCount && timeS == timeS_) return;
+  runFft(timeS, patternCount);
   timeS_ = timeS;
-  current_ = true;
+  computed_ = patternCount;
 }
 
-void OceanPatterns::runFft(double timeS) {
+int OceanPatterns::resolvedPatternCount(const ocean::WavePatternParams& params, double finestFootprintM) {
+  // Half a level of detail of margin: the CPU's rays against the grid's interpolated positions.
+  const double footprint = finestFootprintM * std::sqrt(0.5);
+  int count = 1;
+  while (count < ocean::kPatternCount && params.sizesM[static_cast<std::size_t>(count)] > footprint) ++count;
+  return count;
+}
+
+double OceanPatterns::finestSeaFootprintM(const geo::CameraView& view, int heightPx) {
+  constexpr int kSteps = 16;
+  const double pixel = 2.0 / std::max(heightPx, 1);  // one pixel in NDC (both axes: square pixels)
+  const glm::dvec3 up = view.enu.up;
+  // The sea point of a ray, in the tangent plane under the eye (as vOceanXY, ocean/grid.vert).
+  auto hit = [&](double x, double y, glm::dvec3& p) {
+    const glm::dvec3 dir = view.rayDirection(x, y);
+    const std::optional<double> t = geo::intersectEllipsoid(view.positionEcef, dir);
+    if (!t) return false;
+    p = *t * dir;
+    p -= glm::dot(p, up) * up;
+    return true;
+  };
+  double finest = std::numeric_limits<double>::infinity();
+  for (int j = 0; j <= kSteps; ++j)
+    for (int i = 0; i <= kSteps; ++i) {
+      const double x = -1.0 + 2.0 * i / kSteps, y = -1.0 + 2.0 * j / kSteps;
+      const double dx = i < kSteps ? pixel / view.aspect : -pixel / view.aspect, dy = j < kSteps ? pixel : -pixel;
+      glm::dvec3 p, px, py;
+      if (!hit(x, y, p) || !hit(x + dx, y, px) || !hit(x, y + dy, py)) continue;
+      finest = std::min(finest, std::max(glm::length(px - p), glm::length(py - p)));
+    }
+  return finest;
+}
+
+void OceanPatterns::runFft(double timeS, int patternCount) {
   const ocean::WavePatterns& w = *patterns_;
   const int n = w.params.fftSize;
   // tau = (t mod period) / period, split into a 12-bit integer part and the rest (exact).
@@ -162,6 +199,12 @@ void OceanPatterns::runFft(double timeS) {
   const double coarse = std::floor(tau * 4096.0);
   glProgramUniform1ui(spectrum_.id(), spectrum_.location("uTimeSteps"), static_cast<GLuint>(coarse));
   spectrum_.set("uTimeFine", static_cast<float>(tau - coarse / 4096.0));
+  spectrum_.set("uPatternCount", patternCount);
+  finish_.set("uPatternCount", patternCount);
+  // The FFT layers the first patternCount patterns fill (slots in pattern order, two a layer).
+  int slots = 0;
+  for (int i = 0; i < patternCount; ++i) slots += (displacedMask(w.params) >> i & 1) != 0 ? 3 : 2;
+  const int lineLayers = std::min((slots + 1) / 2, fftLayersPerSet(w.params));
   glBindImageTexture(0, h0_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
   glBindImageTexture(1, steps_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
   glBindImageTexture(2, fields_[0].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
@@ -176,7 +219,7 @@ void OceanPatterns::runFft(double timeS) {
     line_.set("uVertical", vertical);
     glBindImageTexture(0, fields_[source].id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(1, fields_[1 - source].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glDispatchCompute(static_cast<GLuint>(n), static_cast<GLuint>(fftLayers_), 1);
+    glDispatchCompute(static_cast<GLuint>(n), static_cast<GLuint>(lineLayers), ocean::kPatternSets);
     source = 1 - source;
   }
 
@@ -187,9 +230,33 @@ void OceanPatterns::runFft(double timeS) {
   finish_.use();
   glDispatchCompute(static_cast<GLuint>(n / 8), static_cast<GLuint>(n / 8), ocean::kPatternSets);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-  for (const gl::Texture* t : {&displacement_, &slopes_}) glGenerateTextureMipmap(t->id());
+  generateMipmaps(patternCount);
   for (GLuint unit = 0; unit < 4; ++unit) glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
   gl::checkErrors("OceanPatterns::update");
+}
+
+// Mip-maps of the patterns transformed this time: whole textures, or views of each set's first
+// patternCount layers (glGenerateTextureMipmap has no layer range).
+void OceanPatterns::generateMipmaps(int patternCount) {
+  const gl::Texture* textures[2] = {&displacement_, &slopes_};
+  if (patternCount >= ocean::kPatternCount) {
+    for (const gl::Texture* t : textures) glGenerateTextureMipmap(t->id());
+    return;
+  }
+  const GLenum formats[2] = {GL_RGBA16F, GL_RGBA32F};
+  const auto levels = static_cast<GLuint>(log2Of(patterns_->params.fftSize) + 1);
+  for (int t = 0; t < 2; ++t)
+    for (int set = 0; set < ocean::kPatternSets; ++set) {
+      gl::Texture& view = prefixViews_[t][set][patternCount - 1];
+      if (!view) {
+        GLuint id = 0;
+        glGenTextures(1, &id);  // a view needs a name never bound (glCreateTextures binds)
+        glTextureView(id, GL_TEXTURE_2D_ARRAY, textures[t]->id(), formats[t], 0, levels,
+                      static_cast<GLuint>(set * ocean::kPatternCount), static_cast<GLuint>(patternCount));
+        view = gl::Texture(id);
+      }
+      glGenerateTextureMipmap(view.id());
+    }
 }
 
 std::vector<std::string> OceanPatterns::shaderDefines() {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "geo/Camera.hpp"
 #include "gl/Objects.hpp"
 #include "gl/Shader.hpp"
 #include "ocean/OceanFrame.hpp"
@@ -29,8 +30,21 @@ class OceanPatterns {
   [[nodiscard]] const ocean::PatternTables& tables() const { return tables_; }
 
   /// Makes the textures show the sea at simulation time `timeS` (seconds, any value): runs the
-  /// FFTs unless the textures already hold that time.
-  void update(double timeS);
+  /// FFTs unless the textures already hold that time. Only the first `patternCount` patterns
+  /// (largest first, 1..kPatternCount) are transformed; the others keep an earlier time and
+  /// must not be sampled (resolvedPatternCount says which a frame can need).
+  void update(double timeS, int patternCount = ocean::kPatternCount);
+
+  /// Patterns (a prefix of the list, largest first) that a pixel of footprint `finestFootprintM`
+  /// (m, the smallest on the screen) or larger can resolve: pattern i is averaged out wholly
+  /// (patterns.glsl: level of detail >= log2(fftSize)) where the footprint is at least its
+  /// tile's size. With a margin of half a level of detail; at least 1.
+  [[nodiscard]] static int resolvedPatternCount(const ocean::WavePatternParams& params, double finestFootprintM);
+
+  /// Smallest pixel footprint (m) of the sea on a `heightPx`-row image of `view`, as the sea
+  /// shader measures it (the larger of the undisplaced position's steps between neighbouring
+  /// pixels), from rays over a 17 x 17 grid of the screen; infinity when no ray meets the sea.
+  [[nodiscard]] static double finestSeaFootprintM(const geo::CameraView& view, int heightPx);
 
   /// Binds the textures to their units (12, 13 and the table on 10).
   void bind() const;
@@ -55,7 +69,8 @@ class OceanPatterns {
   [[nodiscard]] std::size_t gpuBytes() const { return gpuBytes_; }
 
  private:
-  void runFft(double timeS);
+  void runFft(double timeS, int patternCount);
+  void generateMipmaps(int patternCount);
   void uploadSpectra();
   void setLayerUniforms(const gl::Program& program) const;
 
@@ -73,7 +88,10 @@ class OceanPatterns {
   double requestedWindMs_ = -1.0;
   int fftLayers_ = 0;         ///< layers of the FFT buffers (1 or 2 per pattern layer)
   double timeS_ = 0.0;
-  bool current_ = false;
+  int computed_ = 0;          ///< patterns the textures hold at timeS_ (0: none)
+  /// Views of the first k patterns' layers of each set, [texture][set][k - 1], made on first use
+  /// (mip-maps of a prefix of the layers).
+  gl::Texture prefixViews_[2][ocean::kPatternSets][ocean::kPatternCount];
   std::size_t gpuBytes_ = 0;
 };
 

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <vector>
 
+#include "geo/Camera.hpp"
 #include "gl/Context.hpp"
 #include "ocean/WavePatterns.hpp"
 #include "render/OceanPatterns.hpp"
@@ -130,6 +131,80 @@ TEST(OceanPatterns, GpuFftMatchesCpuSynthesis) {
   }
 }
 
+// A frame that resolves only the largest patterns transforms only those (the "ocean waves"
+// pass at altitude): they, and their mip-maps, are exact at the new time; the rest keep the
+// time they were last transformed at until a frame needs them again.
+TEST(OceanPatterns, PrefixUpdateTransformsOnlyTheLargestPatterns) {
+  auto ctx = gl::createHeadlessContext();
+  ocean::WavePatternParams p;
+  p.fftSize = 64;
+  p.referenceWindMs = 12.0;
+  auto w = std::make_shared<const ocean::WavePatterns>(ocean::makeWavePatterns(p));
+  render::OceanPatterns gpu(w);
+  const int n = p.fftSize;
+  auto heightError = [&](int set, int pattern, double t) {
+    const std::vector<float> disp = readLayer(gpu.displacementTexture(), set * ocean::kPatternCount + pattern, n, 4);
+    return relativeError(disp, 4, 2, synthesize(*w, set, pattern, t, kHeight));
+  };
+  // Level 1 of the mip chain is the 2x2 mean of level 0: a prefix whose mip-maps were not
+  // regenerated would still show the previous time there.
+  auto mipError = [&](int layer) {
+    const std::vector<float> fine = readLayer(gpu.displacementTexture(), layer, n, 4);
+    std::vector<float> coarse(static_cast<std::size_t>(n / 2) * (n / 2) * 4);
+    glGetTextureSubImage(gpu.displacementTexture(), 1, 0, 0, layer, n / 2, n / 2, 1, GL_RGBA, GL_FLOAT,
+                         static_cast<GLsizei>(coarse.size() * sizeof(float)), coarse.data());
+    std::vector<double> mean(coarse.size() / 4);
+    for (int y = 0; y < n / 2; ++y)
+      for (int x = 0; x < n / 2; ++x) {
+        double sum = 0.0;
+        for (int k = 0; k < 4; ++k)
+          sum += static_cast<double>(fine[4 * static_cast<std::size_t>((2 * y + k / 2) * n + 2 * x + k % 2) + 2]);
+        mean[static_cast<std::size_t>(y * (n / 2) + x)] = 0.25 * sum;
+      }
+    return relativeError(coarse, 4, 2, mean);
+  };
+  gpu.update(0.0);
+  gpu.update(37.25, 3);
+  glFinish();
+  for (int set = 0; set < ocean::kPatternSets; ++set) {
+    for (int pattern = 0; pattern < 3; ++pattern) {
+      SCOPED_TRACE("set " + std::to_string(set) + " pattern " + std::to_string(pattern));
+      EXPECT_LT(heightError(set, pattern, 37.25), 4e-3);
+      EXPECT_LT(mipError(set * ocean::kPatternCount + pattern), 4e-3);
+    }
+    for (int pattern = 3; pattern < ocean::kPatternCount; ++pattern) EXPECT_LT(heightError(set, pattern, 0.0), 4e-3);
+  }
+  gpu.update(37.25, 4);  // the same time, one pattern more: transformed again
+  gpu.update(37.25);
+  glFinish();
+  for (int set = 0; set < ocean::kPatternSets; ++set)
+    for (int pattern = 0; pattern < ocean::kPatternCount; ++pattern) EXPECT_LT(heightError(set, pattern, 37.25), 4e-3);
+}
+
+// Which patterns a view needs: straight down from 1000 m onto the sea, 1000 rows over 60°, a
+// pixel spans 2 tan(30°) = 1.155 m (a flat sea under a rectilinear camera: the same over the
+// whole image; the Earth's curve widens it off the centre). Patterns of 4983, 530, 56.5 and 6.0
+// m tiles are resolved there, the 0.64 m one is not (even with the half level of margin).
+TEST(OceanPatterns, ResolvedPatternsFollowTheFinestFootprint) {
+  geo::CameraPose pose;
+  pose.position = {20.0, -40.0, 1000.0};
+  pose.pitchDeg = -90.0;
+  pose.verticalFovDeg = 60.0;
+  const geo::CameraView view = geo::makeCameraView(pose, 1000, 1000);
+  const double finest = render::OceanPatterns::finestSeaFootprintM(view, 1000);
+  EXPECT_NEAR(finest, 2.0 * std::tan(kPi / 6.0), 0.01);
+  ocean::WavePatternParams p;
+  p.sizesM = ocean::defaultPatternSizes(p.fftSize);
+  EXPECT_EQ(render::OceanPatterns::resolvedPatternCount(p, finest), 4);
+  EXPECT_EQ(render::OceanPatterns::resolvedPatternCount(p, 0.01), ocean::kPatternCount);
+  EXPECT_EQ(render::OceanPatterns::resolvedPatternCount(p, 1e4), 1);
+  pose.pitchDeg = 10.0;  // looking above the horizon from 1000 m: the top half is sky
+  const geo::CameraView up = geo::makeCameraView(pose, 1000, 1000);
+  EXPECT_GT(render::OceanPatterns::finestSeaFootprintM(up, 1000), finest);
+  pose.pitchDeg = 60.0;  // only sky
+  EXPECT_TRUE(std::isinf(render::OceanPatterns::finestSeaFootprintM(geo::makeCameraView(pose, 1000, 1000), 1000)));
+}
+
 TEST(OceanPatterns, FftCostAtProductionSize) {
   auto ctx = gl::createHeadlessContext();
   for (int n : {64, 128}) {
@@ -139,14 +214,16 @@ TEST(OceanPatterns, FftCostAtProductionSize) {
     render::OceanPatterns gpu(w);
     gpu.update(0.0);
     glFinish();
-    timespec c0{}, c1{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c0);
-    const auto t0 = std::chrono::steady_clock::now();
-    for (int i = 1; i <= 5; ++i) gpu.update(i / 30.0);
-    glFinish();
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / 5;
-    const double cpu = (static_cast<double>(c1.tv_sec - c0.tv_sec) * 1e3 + static_cast<double>(c1.tv_nsec - c0.tv_nsec) * 1e-6) / 5;
-    std::printf("FFT patterns %d: %.1f ms per update (process CPU %.1f ms)\n", n, ms, cpu);
+    for (const int patterns : {ocean::kPatternCount, 3}) {
+      timespec c0{}, c1{};
+      clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c0);
+      const auto t0 = std::chrono::steady_clock::now();
+      for (int i = 1; i <= 5; ++i) gpu.update(i / 30.0 + patterns, patterns);
+      glFinish();
+      clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
+      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / 5;
+      const double cpu = (static_cast<double>(c1.tv_sec - c0.tv_sec) * 1e3 + static_cast<double>(c1.tv_nsec - c0.tv_nsec) * 1e-6) / 5;
+      std::printf("FFT patterns %d, %d of them: %.1f ms per update (process CPU %.1f ms)\n", n, patterns, ms, cpu);
+    }
   }
 }
