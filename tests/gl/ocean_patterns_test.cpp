@@ -65,6 +65,15 @@ double rms(const std::vector<double>& v) {
   for (double x : v) s += x * x;
   return std::sqrt(s / static_cast<double>(v.size()));
 }
+
+// 64² patterns for a 12 m/s reference wind: small enough to synthesise on the CPU.
+ocean::WavePatternParams smallPatternParams() {
+  ocean::WavePatternParams p;
+  p.fftSize = 64;
+  p.referenceWindMs = 12.0;
+  return p;
+}
+
 }  // namespace
 
 using Multiplier = std::complex<double> (*)(double kx, double ky);
@@ -85,9 +94,7 @@ double relativeError(const std::vector<float>& gpu, int channels, int channel, c
 
 TEST(OceanPatterns, GpuFftMatchesCpuSynthesis) {
   auto ctx = gl::createHeadlessContext();
-  ocean::WavePatternParams p;
-  p.fftSize = 64;
-  p.referenceWindMs = 12.0;
+  const ocean::WavePatternParams p = smallPatternParams();
   auto w = std::make_shared<const ocean::WavePatterns>(ocean::makeWavePatterns(p));
   render::OceanPatterns gpu(w);
   // A large time exercises the exact phase path (t mod period on the CPU, integer steps on the GPU).
@@ -136,9 +143,7 @@ TEST(OceanPatterns, GpuFftMatchesCpuSynthesis) {
 // time they were last transformed at until a frame needs them again.
 TEST(OceanPatterns, PrefixUpdateTransformsOnlyTheLargestPatterns) {
   auto ctx = gl::createHeadlessContext();
-  ocean::WavePatternParams p;
-  p.fftSize = 64;
-  p.referenceWindMs = 12.0;
+  const ocean::WavePatternParams p = smallPatternParams();
   auto w = std::make_shared<const ocean::WavePatterns>(ocean::makeWavePatterns(p));
   render::OceanPatterns gpu(w);
   const int n = p.fftSize;
