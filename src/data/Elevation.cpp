@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/Error.hpp"
+#include "core/StartupTrace.hpp"
 #include "data/GeoRaster.hpp"
 #include "data/GridFile.hpp"
 
@@ -129,6 +130,7 @@ LatLonGrid uncorrectedDefaultElevation() {
   const std::optional<std::string_view> bytes = og::embedded::data::find(kDefaultFile);
   if (!bytes) throw InternalError("embedded data: " + std::string(kDefaultFile) + " is missing");
   try {
+    const core::startup::Scope timed("data: embedded elevation (NetCDF parse)");
     return readElevationMemory(*bytes, "embedded:" + std::string(kDefaultFile));
   } catch (const InputError& e) {
     // The embedded file is ours, not the user's: a failure here is a build problem.

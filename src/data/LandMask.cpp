@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/Error.hpp"
+#include "core/StartupTrace.hpp"
 #include "data/BitPng.hpp"
 #include "data/GeoRaster.hpp"
 
@@ -118,6 +119,7 @@ bool LandMask::refines(const LatLonGrid& layer) const {
 const LandMask& defaultLandMask() {
   // libpng straight to packed bits: GDAL's byte-per-cell read of the same PNG took ~1.7 s.
   static const LandMask mask = [] {
+    const core::startup::Scope timed("data: embedded land mask (PNG decode)");
     const std::string stem = "gshhg_landmask_2m";
     const auto png = og::embedded::data::find(stem + ".png");
     const auto pgw = og::embedded::data::find(stem + ".pgw");

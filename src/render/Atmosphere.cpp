@@ -13,6 +13,7 @@
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "core/StartupTrace.hpp"
 #include "gl/Probe.hpp"
 #include "gl/ShaderContract.hpp"
 
@@ -167,11 +168,15 @@ Atmosphere::Atmosphere(const atmosphere::Parameters& parameters, const Atmospher
   }
   glFinish();
   timing_.tablesMs = msSince(t0);
+  core::startup::add(timing_.fromCache ? "atmosphere: cached tables (load + upload)"
+                                       : "atmosphere: tables precomputed (cache miss)",
+                     t0, timing_.tablesMs);
   timing_.cacheFile = file;
   const auto t1 = Clock::now();
   computeSkyMaps();
   glFinish();
   timing_.skyMapsMs = msSince(t1);
+  core::startup::add("atmosphere: sky maps + sea-level irradiance", t1, timing_.skyMapsMs);
   gl::checkErrors("Atmosphere");
   log::debug("atmosphere: sky filter: " + skyFilter_.reason);
   log::debug("atmosphere: tables " + std::to_string(timing_.tablesMs) + " ms" +
