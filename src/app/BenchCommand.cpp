@@ -8,6 +8,7 @@
 #include <numeric>
 #include <string>
 #include <system_error>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "app/Commands.hpp"
 #include "app/Recording.hpp"
 #include "app/SceneOptions.hpp"
+#include "app/Startup.hpp"
 #include "core/Error.hpp"
 #include "data/Elevation.hpp"
 #include "data/SyntheticWind.hpp"
@@ -72,6 +74,8 @@ struct BenchOptions {
   std::string timer = "auto";  // how passes are timed: auto, queries, finish
   std::vector<std::string> views;  // only these views (all when empty)
   io::SceneSettings imagery;  // --imagery-layer and its cache budgets
+  bool startup = false;  // --startup: time cached starts of `render` instead
+  int startupRuns = 5;
 };
 
 /// The imagery tile caches' use (render::ImageryTileStats) for --json.
@@ -239,10 +243,15 @@ Run addBenchCommand(CLI::App& parent) {
                   "queries (GL timestamps), finish (glFinish + wall clock) or cpu (glFinish + the "
                   "process's CPU time: llvmpipe's work whatever the machine's load)")
       ->check(CLI::IsMember({"auto", "queries", "finish", "cpu"}));
+  cmd->add_flag("--startup", o->startup,
+                "instead: time cached starts of `render` (sea-4m at the first --size, else 64x36) to "
+                "the first frame written, stage by stage (median; one start first to fill the caches)");
+  cmd->add_option("--startup-runs", o->startupRuns, "timed starts for --startup (default 5)")
+      ->check(CLI::Range(1, 100));
   cmd->add_option("--record", o->record,
                   "instead: frames/s recording this camera path (e.g. config/flythrough.toml) to "
                   "MP4 at each --size, encoding included");
-  return [o]() {
+  return [o, cmd]() {
     std::vector<int> samples;
     for (const std::string& n : o->samples) samples.push_back(parseSampleCount(n));
     std::vector<std::pair<int, int>> sizes;
@@ -253,6 +262,14 @@ Run addBenchCommand(CLI::App& parent) {
     }
     if (!o->record.empty())
       return benchRecord(o->record, sizes, o->frames, o->gl, samples, o->json);
+    if (o->startup) {
+      StartupBenchOptions s{.gl = o->gl, .runs = o->startupRuns};
+      if (cmd->count("--size") > 0) std::tie(s.width, s.height) = sizes.front();
+      nlohmann::json report;
+      benchStartup(s, report, o->json);
+      if (o->json) std::printf("%s\n", report.dump(2).c_str());
+      return static_cast<int>(kExitOk);
+    }
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
     const std::vector<data::GeoImage> imagery = loadImageryLayers(o->imagery);

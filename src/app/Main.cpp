@@ -8,12 +8,14 @@
 #include <utility>
 
 #include "app/Commands.hpp"
+#include "app/Startup.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "core/Version.hpp"
 
 int main(int argc, char** argv) {
   using namespace og;
+  app::noteMainEntry();
   CLI::App app{"oceanglobe - planet-scale ocean and terrain globe renderer", "oceanglobe"};
   app.set_version_flag("--version", std::string("oceanglobe ") + kVersion);
   app.require_subcommand(1);

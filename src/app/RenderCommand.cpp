@@ -2,15 +2,18 @@
 #include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/Aovs.hpp"
 #include "app/Commands.hpp"
 #include "app/SceneOptions.hpp"
+#include "app/Startup.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "core/StartupTrace.hpp"
 #include "data/Elevation.hpp"
 #include "data/WindLayers.hpp"
 #include "gl/Context.hpp"
@@ -63,22 +66,35 @@ Run addRenderCommand(CLI::App& parent) {
     const std::vector<data::GeoImage> imagery = loadImageryLayers(scene);
 
     const auto backend = gl::parseBackend(scene.glBackend);
-    auto context = gl::createHeadlessContext(*backend);
+    auto context = [&] {
+      const core::startup::Scope timed("GL context");
+      return gl::createHeadlessContext(*backend);
+    }();
     log::info("rendering " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
               " with " + context->info().backend + " (" + context->info().renderer + ")");
+    std::optional<core::startup::Scope> setup(std::in_place, "renderer set-up (all of it)");
     render::GlobeRenderer renderer(elevation, scene.atmosphere);
     renderer.setWindLayers(wind);
     setImageryLayers(renderer.imagery(), scene, imagery);
+    setup.reset();
     render::FrameInput frame = frameInputOf(scene);
     frame.auxiliaryOutputs = needsAuxiliaryOutputs(opts->aovs);
-    renderer.render(frame);
-    if (format == Format::Png)
-      io::writePng(out, renderer.display());
-    else
-      io::writeExr(out, renderer.radiance(),
-                   opts->exrType == "float" ? io::ExrPixelType::Float : io::ExrPixelType::Half,
-                   aovChannels(renderer, opts->aovs));
+    {
+      const core::startup::Scope timed("first frame (render + glFinish)");
+      renderer.render(frame);
+      render::GlobeRenderer::finish();
+    }
+    {
+      const core::startup::Scope timed("read-back + write image");
+      if (format == Format::Png)
+        io::writePng(out, renderer.display());
+      else
+        io::writeExr(out, renderer.radiance(),
+                     opts->exrType == "float" ? io::ExrPixelType::Float : io::ExrPixelType::Half,
+                     aovChannels(renderer, opts->aovs));
+    }
     log::info("wrote " + out.string());
+    writeStartupTrace();
     return static_cast<int>(kExitOk);
   };
 }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/Error.hpp"
+#include "core/StartupTrace.hpp"
 #include "geo/Sun.hpp"
 #include "io/SceneSchema.hpp"
 #include "render/GlobeRenderer.hpp"
@@ -141,6 +142,8 @@ glm::dvec3 sunDirectionOf(const io::SceneSettings& s) {
 
 std::vector<data::GeoImage> loadImageryLayers(const io::SceneSettings& s) {
   std::vector<std::filesystem::path> files(s.imageryLayers.begin(), s.imageryLayers.end());
+  if (files.empty()) return {};
+  const core::startup::Scope timed("data: imagery layers");
   return data::loadImageryLayers(files);
 }
 
@@ -152,6 +155,7 @@ std::future<void> prefetchDefaultImagery() {
 }
 
 data::LatLonGrid loadElevation(const io::SceneSettings& scene) {
+  const core::startup::Scope timed("data: elevation layer (all of it)");
   return data::loadElevationLayer(scene.elevationLayer, data::parseElevationCorrection(scene.elevationCorrection));
 }
 
@@ -165,6 +169,7 @@ void setImageryLayers(render::ImageryTextures& imagery, const io::SceneSettings&
 
 std::shared_ptr<const data::WindLayers> loadWindLayers(const io::SceneSettings& s) {
   if (s.windLayers.empty()) return nullptr;
+  const core::startup::Scope timed("data: wind layers");
   return std::make_shared<const data::WindLayers>(data::WindLayers::load(
       s.windLayers, s.wind().vector(), s.time));
 }

@@ -5,9 +5,13 @@
 #include <cstdio>
 #include <optional>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/Error.hpp"
+#include "core/Log.hpp"
+#include "core/StartupTrace.hpp"
+#include "data/EmbeddedCache.hpp"
 #include "data/GeoRaster.hpp"
 #include "data/GridFile.hpp"
 
@@ -129,6 +133,7 @@ LatLonGrid uncorrectedDefaultElevation() {
   const std::optional<std::string_view> bytes = og::embedded::data::find(kDefaultFile);
   if (!bytes) throw InternalError("embedded data: " + std::string(kDefaultFile) + " is missing");
   try {
+    const core::startup::Scope timed("data: embedded elevation (NetCDF parse)");
     return readElevationMemory(*bytes, "embedded:" + std::string(kDefaultFile));
   } catch (const InputError& e) {
     // The embedded file is ours, not the user's: a failure here is a build problem.
@@ -136,11 +141,66 @@ LatLonGrid uncorrectedDefaultElevation() {
   }
 }
 
+namespace {
+
+std::vector<std::uint8_t> serialize(const LatLonGrid& g) {
+  ByteWriter w;
+  w.put(g.name);
+  w.put(g.units);
+  w.put(g.width);
+  w.put(g.height);
+  w.put(g.lon0Deg);
+  w.put(g.lat0Deg);
+  w.put(g.dLonDeg);
+  w.put(g.dLatDeg);
+  w.put(static_cast<std::uint8_t>(g.wrapsLongitude ? 1 : 0));
+  w.put(g.values);
+  w.put(g.keepDepth);
+  return std::move(w.bytes());
+}
+
+/// nullopt when the payload does not hold a consistent grid.
+std::optional<LatLonGrid> deserializeGrid(const std::vector<std::uint8_t>& bytes) {
+  try {
+    ByteReader r(bytes);
+    LatLonGrid g;
+    g.name = r.getString();
+    g.units = r.getString();
+    g.width = r.get<int>();
+    g.height = r.get<int>();
+    g.lon0Deg = r.get<double>();
+    g.lat0Deg = r.get<double>();
+    g.dLonDeg = r.get<double>();
+    g.dLatDeg = r.get<double>();
+    g.wrapsLongitude = r.get<std::uint8_t>() != 0;
+    g.values = r.getVector<float>();
+    g.keepDepth = r.getVector<float>();
+    const auto cells = static_cast<std::size_t>(g.width) * static_cast<std::size_t>(g.height);
+    if (r.atEnd() && g.width > 1 && g.height > 1 && g.values.size() == cells &&
+        (g.keepDepth.empty() || g.keepDepth.size() == cells))
+      return g;
+  } catch (const InputError&) {
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 const LatLonGrid& defaultElevation() {
-  // Parsed and corrected once; a function-local static is initialised thread-safely.
+  // Parsed and corrected once; a function-local static is initialised thread-safely. The
+  // result is cached on disk (data/EmbeddedCache.hpp): the correction depends on the land mask.
   static const LatLonGrid grid = [] {
+    const auto relief = og::embedded::data::find(kDefaultFile);
+    const auto mask = og::embedded::data::find("gshhg_landmask_2m.png");
+    const std::uint64_t key = embeddedCacheKey({relief.value_or(""), mask.value_or("")});
+    if (const auto bytes = loadEmbeddedCache("elevation-etopo20", key)) {
+      const core::startup::Scope timed("data: embedded elevation (from the cache)");
+      if (auto g = deserializeGrid(*bytes)) return std::move(*g);
+      log::info("embedded elevation: the cached grid is inconsistent; rebuilding it");
+    }
     LatLonGrid g = uncorrectedDefaultElevation();
     applyElevationCorrection(g, ElevationCorrection::Auto, true);
+    storeEmbeddedCache("elevation-etopo20", key, serialize(g));
     return g;
   }();
   return grid;

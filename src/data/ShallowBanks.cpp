@@ -11,6 +11,7 @@
 
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "core/StartupTrace.hpp"
 #include "data/LandMask.hpp"
 
 namespace og::data {
@@ -214,7 +215,9 @@ ElevationCorrection parseElevationCorrection(const std::string& text) {
 
 void applyElevationCorrection(LatLonGrid& grid, ElevationCorrection mode, bool isDefault) {
   if (mode == ElevationCorrection::None || (mode == ElevationCorrection::Auto && !isDefault)) return;
-  const BankCorrection c = correctShallowBanks(grid, &defaultLandMask());
+  const LandMask& mask = defaultLandMask();
+  const core::startup::Scope timed("data: shallow-bank correction");
+  const BankCorrection c = correctShallowBanks(grid, &mask);
   char line[200];
   std::snprintf(line, sizeof line,
                 "elevation '%s': ETOPO5's -10 m shallow-bank placeholder on %d plateaus, %zu cells "

@@ -12,6 +12,7 @@
 
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "core/StartupTrace.hpp"
 #include "gl/ShaderContract.hpp"
 
 namespace og::embedded::shaders {
@@ -114,6 +115,8 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::string>&
 
 Program::Program(const std::vector<std::pair<GLenum, std::string>>& stages,
                  const std::vector<std::string>& defines) {
+  const core::startup::Scope timed("shaders: compile + link");
+  const auto t0 = core::startup::Clock::now();
   program_ = ProgramObject(glCreateProgram());
   std::vector<ShaderObject> shaders;
   for (const auto& [stage, path] : stages) {
@@ -150,6 +153,11 @@ Program::Program(const std::vector<std::pair<GLenum, std::string>>& stages,
   for (const auto& s : shaders) glDetachShader(program_.id(), s.id());
   for (const auto& st : stages) name_ += (name_.empty() ? "shaders/" : " shaders/") + st.second;
   readActiveUniforms();
+  std::string variant;
+  for (const auto& s : defines) variant += (variant.empty() ? " [" : ", ") + s;
+  // One row per program, "program: " first: bench --startup lists them apart from the stages.
+  core::startup::add("program: " + name_ + (variant.empty() ? "" : variant + "]"), t0,
+                     std::chrono::duration<double, std::milli>(core::startup::Clock::now() - t0).count());
 }
 
 void Program::readActiveUniforms() {

@@ -13,6 +13,7 @@
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "core/StartupTrace.hpp"
 #include "gl/Probe.hpp"
 #include "gl/ShaderContract.hpp"
 
@@ -25,6 +26,7 @@ double msSince(Clock::time_point t0) {
 }
 
 constexpr char kMagic[8] = {'O', 'G', 'A', 'T', 'M', '0', '0', '1'};
+constexpr char kSkyMagic[8] = {'O', 'G', 'S', 'K', 'Y', '0', '0', '1'};
 
 // Pass numbers of shaders/atmosphere/precompute.comp.
 enum Pass : int {
@@ -167,11 +169,26 @@ Atmosphere::Atmosphere(const atmosphere::Parameters& parameters, const Atmospher
   }
   glFinish();
   timing_.tablesMs = msSince(t0);
+  core::startup::add(timing_.fromCache ? "atmosphere: cached tables (load + upload)"
+                                       : "atmosphere: tables precomputed (cache miss)",
+                     t0, timing_.tablesMs);
   timing_.cacheFile = file;
   const auto t1 = Clock::now();
-  computeSkyMaps();
+  allocateSkyMaps();
+  // The sky maps are cached beside the tables they derive from (start-up: no compute passes,
+  // no mip-map generation, whose shaders llvmpipe compiles at first use).
+  const std::filesystem::path skyFile =
+      file.empty() ? file : file.parent_path() / (file.stem().string() + "-skymaps-" + hex(skyMapKey()) + ".bin");
+  const bool skyCached = !skyFile.empty() && loadSkyMaps(skyFile);
+  if (!skyCached) {
+    computeSkyMaps();
+    if (!skyFile.empty()) saveSkyMaps(skyFile);
+  }
   glFinish();
   timing_.skyMapsMs = msSince(t1);
+  core::startup::add(skyCached ? "atmosphere: cached sky maps (load + upload)"
+                               : "atmosphere: sky maps + sea-level irradiance computed",
+                     t1, timing_.skyMapsMs);
   gl::checkErrors("Atmosphere");
   log::debug("atmosphere: sky filter: " + skyFilter_.reason);
   log::debug("atmosphere: tables " + std::to_string(timing_.tablesMs) + " ms" +
@@ -282,10 +299,15 @@ void Atmosphere::precompute() {
   gl::checkErrors("Atmosphere::precompute");
 }
 
-void Atmosphere::computeSkyMaps() {
-  const atmosphere::TableSizes& s = parameters_.tables;
+int Atmosphere::skyMapLevels() const {
   int levels = 1;
-  while ((s.skyMapSize >> levels) > 0) ++levels;
+  while ((parameters_.tables.skyMapSize >> levels) > 0) ++levels;
+  return levels;
+}
+
+void Atmosphere::allocateSkyMaps() {
+  const atmosphere::TableSizes& s = parameters_.tables;
+  const int levels = skyMapLevels();
   skyMaps_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
   // One layer per Sun zenith angle, plus the frame layer (prepareFrameSkyLayer).
   glTextureStorage3D(skyMaps_.id(), levels, GL_RGBA16F, s.skyMapSize, s.skyMapSize, s.skyMapLayers + 1);
@@ -302,7 +324,10 @@ void Atmosphere::computeSkyMaps() {
   glTextureParameteri(skyIrradiance_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(skyIrradiance_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(skyIrradiance_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+}
 
+void Atmosphere::computeSkyMaps() {
+  const atmosphere::TableSizes& s = parameters_.tables;
   glBindTextureUnit(0, transmittance_.id());
   glBindTextureUnit(5, scattering_.id());
   glBindTextureUnit(2, singleMie_.id());
@@ -381,6 +406,99 @@ void Atmosphere::saveCache(const std::filesystem::path& file) const {
     out.write(reinterpret_cast<const char*>(&sum), sizeof sum);
     if (!out) throw InternalError(tmp.string() + ": write failed");
   });
+}
+
+std::uint64_t Atmosphere::skyMapKey() const {
+  const atmosphere::TableSizes& s = parameters_.tables;
+  const std::string salt = hex(atmosphere::cacheKey(parameters_, tableCodeSalt())) +
+                           gl::readShaderFile("atmosphere/definitions.glsl") +
+                           gl::readShaderFile("atmosphere/skymap_common.glsl") + " " +
+                           std::to_string(s.skyMapSize) + " " + std::to_string(s.skyMapLayers) + " " +
+                           std::to_string(s.skyIrradianceEntries);
+  return fnv(salt.data(), salt.size());
+}
+
+std::size_t Atmosphere::skyMapHalfs() const {
+  const atmosphere::TableSizes& s = parameters_.tables;
+  std::size_t n = 0;
+  for (int level = 0; level < skyMapLevels(); ++level) {
+    const auto side = static_cast<std::size_t>(std::max(1, s.skyMapSize >> level));
+    n += 4 * side * side * static_cast<std::size_t>(s.skyMapLayers + 1);
+  }
+  return n;
+}
+
+void Atmosphere::saveSkyMaps(const std::filesystem::path& file) const {
+  const atmosphere::TableSizes& s = parameters_.tables;
+  std::vector<std::uint16_t> halfs(skyMapHalfs());
+  std::size_t at = 0;
+  glPixelStorei(GL_PACK_ALIGNMENT, 2);
+  for (int level = 0; level < skyMapLevels(); ++level) {
+    const auto side = static_cast<std::size_t>(std::max(1, s.skyMapSize >> level));
+    const std::size_t n = 4 * side * side * static_cast<std::size_t>(s.skyMapLayers + 1);
+    glGetTextureImage(skyMaps_.id(), level, GL_RGBA, GL_HALF_FLOAT, static_cast<GLsizei>(n * 2), halfs.data() + at);
+    at += n;
+  }
+  const std::vector<float> irradiance = download(skyIrradiance_, static_cast<std::size_t>(s.skyIrradianceEntries) * 2);
+  const std::uint64_t key = skyMapKey(), count = halfs.size();
+  const std::uint64_t sum = fnv(irradiance.data(), irradiance.size() * sizeof(float),
+                                fnv(halfs.data(), halfs.size() * sizeof(std::uint16_t)));
+  try {
+    std::filesystem::create_directories(file.parent_path());
+    writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
+      std::ofstream out(tmp, std::ios::binary);
+      out.write(kSkyMagic, sizeof kSkyMagic);
+      out.write(reinterpret_cast<const char*>(&key), sizeof key);
+      out.write(reinterpret_cast<const char*>(&count), sizeof count);
+      out.write(reinterpret_cast<const char*>(halfs.data()), static_cast<std::streamsize>(halfs.size() * 2));
+      out.write(reinterpret_cast<const char*>(irradiance.data()), static_cast<std::streamsize>(irradiance.size() * 4));
+      out.write(reinterpret_cast<const char*>(&sum), sizeof sum);
+      if (!out.flush()) throw InputError(tmp.string() + ": cannot write");
+    });
+  } catch (const std::exception& e) {
+    log::warn(std::string("atmosphere: sky maps not cached: ") + e.what());
+  }
+}
+
+bool Atmosphere::loadSkyMaps(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return false;
+  const atmosphere::TableSizes& s = parameters_.tables;
+  char magic[sizeof kSkyMagic] = {};
+  std::uint64_t key = 0, count = 0, sum = 0;
+  in.read(magic, sizeof magic);
+  in.read(reinterpret_cast<char*>(&key), sizeof key);
+  in.read(reinterpret_cast<char*>(&count), sizeof count);
+  auto reject = [&](const std::string& why) {
+    log::warn("atmosphere: ignoring sky-map cache " + file.string() + " (" + why + "); recomputing");
+    return false;
+  };
+  if (!in || std::memcmp(magic, kSkyMagic, sizeof kSkyMagic) != 0) return reject("not a sky-map file");
+  if (key != skyMapKey()) return reject("other parameters");
+  if (count != skyMapHalfs()) return reject("wrong size");
+  std::vector<std::uint16_t> halfs(count);
+  std::vector<float> irradiance(static_cast<std::size_t>(s.skyIrradianceEntries) * 2 * 4);
+  in.read(reinterpret_cast<char*>(halfs.data()), static_cast<std::streamsize>(halfs.size() * 2));
+  in.read(reinterpret_cast<char*>(irradiance.data()), static_cast<std::streamsize>(irradiance.size() * 4));
+  in.read(reinterpret_cast<char*>(&sum), sizeof sum);
+  if (!in) return reject("truncated");
+  if (in.peek() != std::char_traits<char>::eof()) return reject("trailing bytes");
+  if (sum != fnv(irradiance.data(), irradiance.size() * sizeof(float), fnv(halfs.data(), halfs.size() * 2)))
+    return reject("checksum mismatch");
+  for (float v : irradiance)
+    if (!std::isfinite(v) || v < 0.0f) return reject("invalid values");
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
+  std::size_t at = 0;
+  for (int level = 0; level < skyMapLevels(); ++level) {
+    const int side = std::max(1, s.skyMapSize >> level);
+    glTextureSubImage3D(skyMaps_.id(), level, 0, 0, 0, side, side, s.skyMapLayers + 1, GL_RGBA,
+                        GL_HALF_FLOAT, halfs.data() + at);
+    at += 4 * static_cast<std::size_t>(side) * static_cast<std::size_t>(side) * static_cast<std::size_t>(s.skyMapLayers + 1);
+  }
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage2D(skyIrradiance_.id(), 0, 0, 0, s.skyIrradianceEntries, 2, GL_RGBA, GL_FLOAT, irradiance.data());
+  gl::checkErrors("Atmosphere::loadSkyMaps");
+  return true;
 }
 
 bool Atmosphere::loadCache(const std::filesystem::path& file) {

@@ -4,6 +4,8 @@
 // the on-disk cache), then the sea-level sky maps for the ocean and the sea-level irradiance
 // table. Rendering passes include shaders/atmosphere/model.glsl (tables) and
 // shaders/atmosphere/skymap.glsl (sky maps) and call bind() / bindSkyMaps().
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -87,7 +89,17 @@ class Atmosphere {
   void precompute();
   bool loadCache(const std::filesystem::path& file);
   void saveCache(const std::filesystem::path& file) const;
+  /// The sky maps' and sea-level irradiance table's storage (mip levels: skyMapLevels()).
+  void allocateSkyMaps();
   void computeSkyMaps();
+  /// The sky-map cache, beside the tables' file: its key (tables, sky-map code, sizes), its
+  /// size in halfs, and loading (false when missing, stale or corrupt: then recomputed) and
+  /// saving (written to a temporary name, then renamed; a failure is a warning).
+  [[nodiscard]] int skyMapLevels() const;
+  [[nodiscard]] std::uint64_t skyMapKey() const;
+  [[nodiscard]] std::size_t skyMapHalfs() const;
+  bool loadSkyMaps(const std::filesystem::path& file);
+  void saveSkyMaps(const std::filesystem::path& file) const;
 
   atmosphere::Parameters parameters_;
   Timing timing_;

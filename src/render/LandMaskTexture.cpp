@@ -24,14 +24,17 @@ LandMaskTexture::LandMaskTexture(const data::LandMask* mask) {
   std::vector<std::uint16_t> texels(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0);
   if (mask != nullptr) {
     const std::vector<std::uint8_t>& bits = mask->packedBits();
+    const auto n = static_cast<std::size_t>(w);
     for (int r = 0; r < h; ++r) {
-      const std::size_t row = static_cast<std::size_t>(r) * static_cast<std::size_t>(w);
-      for (int x = 0; x < w; ++x) {
-        const unsigned before = bits[row + static_cast<std::size_t>((x + w - 1) % w)];
-        const unsigned here = bits[row + static_cast<std::size_t>(x)];
-        const unsigned after = bits[row + static_cast<std::size_t>((x + 1) % w)];
-        texels[row + static_cast<std::size_t>(x)] =
-            static_cast<std::uint16_t>((before >> 4) | (here << 4) | ((after & 0xFu) << 12));
+      // Start-up: no modulo per texel (14.6 M of them); the row's ends wrap.
+      const std::uint8_t* in = bits.data() + static_cast<std::size_t>(r) * n;
+      std::uint16_t* out = texels.data() + static_cast<std::size_t>(r) * n;
+      unsigned before = in[n - 1], here = in[0];
+      for (std::size_t x = 0; x < n; ++x) {
+        const unsigned after = in[x + 1 < n ? x + 1 : 0];
+        out[x] = static_cast<std::uint16_t>((before >> 4) | (here << 4) | ((after & 0xFu) << 12));
+        before = here;
+        here = after;
       }
     }
   }

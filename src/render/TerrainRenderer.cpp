@@ -19,8 +19,6 @@ TerrainRenderer::TerrainRenderer(const data::LatLonGrid& elevation, const Atmosp
                 {GL_FRAGMENT_SHADER, "terrain/terrain.frag"}}),
       shadowProgram_({{GL_VERTEX_SHADER, "terrain/terrain.vert"},
                       {GL_FRAGMENT_SHADER, "terrain/shadow_depth.frag"}}),
-      shadowMap_(gl::createTexture(GL_TEXTURE_2D_ARRAY)),
-      shadowFbo_(gl::createFramebuffer()),
       vao_(gl::createVertexArray()),
       indices_(gl::createBuffer()) {
   const auto& idx = terrain::tileIndices();
@@ -38,6 +36,15 @@ TerrainRenderer::TerrainRenderer(const data::LatLonGrid& elevation, const Atmosp
   glVertexArrayAttribFormat(vao, 2, 4, GL_FLOAT, GL_FALSE, offsetof(terrain::TileVertex, heightM));
   glVertexArrayAttribFormat(vao, 3, 3, GL_FLOAT, GL_FALSE, offsetof(terrain::TileVertex, morph));
   for (GLuint a = 0; a < 4; ++a) glVertexArrayAttribBinding(vao, a, 0);
+  gl::checkErrors("TerrainRenderer setup");
+}
+
+void TerrainRenderer::ensureShadowMap() {
+  // Made on the first frame that casts shadows: 32 MiB that llvmpipe zeroes, which a view of
+  // the open ocean never needs (start-up, docs/performance.md).
+  if (shadowMap_.id() != 0) return;
+  shadowMap_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
+  shadowFbo_ = gl::createFramebuffer();
   glTextureStorage3D(shadowMap_.id(), 1, GL_DEPTH_COMPONENT32F, kShadowMapSize, kShadowMapSize,
                      kShadowCascades);
   glTextureParameteri(shadowMap_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -50,7 +57,6 @@ TerrainRenderer::TerrainRenderer(const data::LatLonGrid& elevation, const Atmosp
   glNamedFramebufferDrawBuffer(shadowFbo_.id(), GL_NONE);
   if (glCheckNamedFramebufferStatus(shadowFbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw InternalError("terrain shadow map framebuffer incomplete");
-  gl::checkErrors("TerrainRenderer setup");
 }
 
 float TerrainRenderer::morphScale(const terrain::Tile& t, const geo::CameraView& view) const {
@@ -81,6 +87,7 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
   // Shadows of relief matter within a few hundred km; from farther out they are sub-pixel.
   // With the Sun below the horizon the terrain gets no direct light to shadow.
   if (h > 1.0e6 || glm::dot(s, view.enu.up) < -0.2 || tiles.empty()) return;
+  ensureShadowMap();
   // Cascades: the far one over the receivers within reach of the eye (by height: 30 h,
   // 20..400 km), the near one over an eighth of that, in a frame whose z axis points at the
   // Sun. Camera-relative throughout.

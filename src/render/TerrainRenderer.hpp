@@ -86,6 +86,8 @@ class TerrainRenderer {
   /// uniforms (uShadowOn = 0 when there is none this frame).
   void renderShadowMap(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
                        const glm::dvec3& sunDirectionEcef);
+  /// Creates the shadow map and its framebuffer on first use (none over the open ocean).
+  void ensureShadowMap();
   void bindTile(const terrain::Tile& tile);
   /// Streams the imagery tiles the land tiles to draw want (ImageryTextures::prepareTiles).
   void prepareImagery(const std::vector<const terrain::Tile*>& tiles);
@@ -106,7 +108,7 @@ class TerrainRenderer {
   std::vector<const terrain::Tile*> waterTiles_;  ///< left by draw() for drawWaterTiles()
   geo::CameraView waterView_;
   gl::Program shadowProgram_;
-  gl::Texture shadowMap_;
+  gl::Texture shadowMap_;      ///< id 0 until ensureShadowMap()
   gl::Framebuffer shadowFbo_;
   gl::VertexArray vao_;
   gl::Buffer indices_;
