@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -144,7 +143,8 @@ TEST(LandMask, SyntheticGlobesKeepTheirOwnCoast) {
 }
 
 // The embedded mask is decoded straight from its 1-bit PNG into packed bits (data/BitPng):
-// bit for bit what GDAL's general reader gives, in a fraction of its time.
+// bit for bit what GDAL's general reader gives. Its speed is measured by `bench --startup`
+// (the "embedded land mask" stage), not by a timed assertion here.
 namespace og::embedded::data {
 std::optional<std::string_view> find(std::string_view path);
 }
@@ -153,9 +153,7 @@ TEST(LandMask, FastDecodeMatchesGdalBitForBit) {
   const auto png = og::embedded::data::find("gshhg_landmask_2m.png");
   const auto pgw = og::embedded::data::find("gshhg_landmask_2m.pgw");
   ASSERT_TRUE(png && pgw);
-  const auto t0 = std::chrono::steady_clock::now();
   const og::data::PackedBitImage image = og::data::decodeBitPng(*png, "embedded mask");
-  const double fastS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const LandMask& fast = og::data::defaultLandMask();
   const auto raster = og::data::readGeographicBytesMemory(*png, *pgw, "png", "gdal");
   const LandMask slow(raster.width, raster.height, raster.westDeg, raster.southDeg, raster.cellLatDeg,
@@ -167,8 +165,6 @@ TEST(LandMask, FastDecodeMatchesGdalBitForBit) {
   EXPECT_NEAR(fast.cellDeg(), slow.cellDeg(), 1e-12);
   EXPECT_TRUE(fast.packedBits() == slow.packedBits());
   EXPECT_TRUE(image.bits == slow.packedBits());
-  // Generous (a loaded 2-core machine, Debug builds): GDAL's path took ~1.7 s.
-  EXPECT_LT(fastS, 1.0);
 }
 
 TEST(LandMask, BadBitPngIsAnInputErrorNamingTheFile) {
