@@ -19,6 +19,7 @@
 #include "app/SceneOptions.hpp"
 #include "app/Startup.hpp"
 #include "core/Error.hpp"
+#include "core/ScratchDirectory.hpp"
 #include "data/Elevation.hpp"
 #include "data/SyntheticWind.hpp"
 #include "data/WindLayers.hpp"
@@ -140,17 +141,9 @@ void benchWindData(nlohmann::json& report, bool json) {
     std::sort(v.begin(), v.end());
     return v[v.size() / 2];
   };
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() /
-      ("oceanglobe-bench-data-" + std::to_string(Clock::now().time_since_epoch().count()));
-  std::filesystem::create_directories(dir);
-  struct Remover {
-    std::filesystem::path dir;
-    ~Remover() {
-      std::error_code ignored;
-      std::filesystem::remove_all(dir, ignored);
-    }
-  } remover{dir};
+  const core::ScratchDirectory scratch("oceanglobe-bench-data-",
+                                      std::to_string(Clock::now().time_since_epoch().count()));
+  const std::filesystem::path& dir = scratch.path();
   constexpr int kColumns = 1440, kRows = 721, kTextureW = 720, kTextureH = 360;
   const std::pair<data::SyntheticFormat, const char*> formats[] = {
       {data::SyntheticFormat::kClassic64, "netcdf3-64bit"},

@@ -16,6 +16,7 @@
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "core/ScratchDirectory.hpp"
 #include "core/StartupTrace.hpp"
 
 extern char** environ;
@@ -142,17 +143,8 @@ void writeStartupTrace() {
 }
 
 void benchStartup(const StartupBenchOptions& o, nlohmann::json& report, bool json) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() /
-      ("oceanglobe-bench-startup-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  struct Remover {
-    std::filesystem::path dir;
-    ~Remover() {
-      std::error_code ignored;
-      std::filesystem::remove_all(dir, ignored);
-    }
-  } remover{dir};
+  const core::ScratchDirectory scratch("oceanglobe-bench-startup-", std::to_string(::getpid()));
+  const std::filesystem::path& dir = scratch.path();
   // The sea-4m view of `bench` (docs/performance.md).
   const std::vector<std::string> args = {
       selfExecutable(), "-q", "render", "--lat", "20", "--lon", "-40", "--alt", "4", "--heading", "270",
