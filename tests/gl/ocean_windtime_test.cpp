@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "data/Elevation.hpp"
@@ -18,9 +19,11 @@ using namespace og;
 
 namespace {
 
-/// A global layer blowing east at 3 m/s at 00:00 UTC and 20 m/s at 06:00 UTC.
+/// A global layer blowing east at 3 m/s at 00:00 UTC and 20 m/s at 06:00 UTC, in a file of the
+/// running test's own (CTest runs this file's tests in parallel).
 fs::path writeTwoSteps() {
-  const fs::path file = test::fixtureDir("ocean_windtime") / "two.nc";
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const fs::path file = test::fixtureDir("ocean_windtime") / (test + "_two.nc");
   test::TimedWind wind;
   wind.times = {0.0, 6.0};
   wind.units = "hours since 2024-06-20 00:00:00";
