@@ -193,15 +193,12 @@ const LatLonGrid& defaultElevation() {
     const auto relief = og::embedded::data::find(kDefaultFile);
     const auto mask = og::embedded::data::find("gshhg_landmask_2m.png");
     const std::uint64_t key = embeddedCacheKey({relief.value_or(""), mask.value_or("")});
-    if (const auto bytes = loadEmbeddedCache("elevation-etopo20", key)) {
-      const core::startup::Scope timed("data: embedded elevation (from the cache)");
-      if (auto g = deserializeGrid(*bytes)) return std::move(*g);
-      log::info("embedded elevation: the cached grid is inconsistent; rebuilding it");
-    }
-    LatLonGrid g = uncorrectedDefaultElevation();
-    applyElevationCorrection(g, ElevationCorrection::Auto, true);
-    storeEmbeddedCache("elevation-etopo20", key, serialize(g));
-    return g;
+    return cachedEmbedded<LatLonGrid>("elevation-etopo20", key, "elevation", deserializeGrid,
+                                      [](const LatLonGrid& g) { return serialize(g); }, [] {
+                                        LatLonGrid g = uncorrectedDefaultElevation();
+                                        applyElevationCorrection(g, ElevationCorrection::Auto, true);
+                                        return g;
+                                      });
   }();
   return grid;
 }

@@ -16,9 +16,12 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "core/Error.hpp"
+#include "core/Log.hpp"
+#include "core/StartupTrace.hpp"
 
 namespace og::data {
 
@@ -36,6 +39,23 @@ std::optional<std::vector<std::uint8_t>> loadEmbeddedCache(const std::string& na
 /// Writes `payload` as `embedded-NAME-KEY.bin` (temporary name, then rename) and removes older
 /// `embedded-NAME-*.bin`. Never throws: a failure is a warning, the next start rebuilds.
 void storeEmbeddedCache(const std::string& name, std::uint64_t key, const std::vector<std::uint8_t>& payload);
+
+/// `what` derived from embedded data, through the cache: the payload of `embedded-NAME-KEY.bin`
+/// decoded (`decode(bytes)` -> std::optional<T>, nullopt when inconsistent) when it is intact,
+/// else `build()`, stored (`encode(value)` -> bytes) for the next start. The cached read is
+/// timed in the start-up trace as "data: embedded WHAT (from the cache)".
+template <class T, class Decode, class Encode, class Build>
+T cachedEmbedded(const std::string& name, std::uint64_t key, const std::string& what, Decode decode,
+                 Encode encode, Build build) {
+  if (const auto bytes = loadEmbeddedCache(name, key)) {
+    const core::startup::Scope timed("data: embedded " + what + " (from the cache)");
+    if (std::optional<T> cached = decode(*bytes)) return std::move(*cached);
+    log::info("embedded " + what + ": the cached copy is inconsistent; rebuilding it");
+  }
+  T value = build();
+  storeEmbeddedCache(name, key, encode(value));
+  return value;
+}
 
 /// Flat little-endian serialisation for the cache payloads.
 class ByteWriter {

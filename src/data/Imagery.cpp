@@ -60,19 +60,15 @@ GeoImage embeddedImage(const std::string& stem, const std::string& what) {
   const std::optional<std::string_view> jgw = og::embedded::data::find(stem + ".jgw");
   if (!jpg || !jgw) throw InternalError("embedded data: " + stem + ".jpg/.jgw is missing");
   const std::uint64_t key = embeddedCacheKey({*jpg, *jgw});
-  if (const auto bytes = loadEmbeddedCache(stem, key)) {
-    const core::startup::Scope timed("data: embedded " + what + " (from the cache)");
-    if (auto image = deserializeImage(*bytes)) return std::move(*image);
-    log::info("embedded:" + stem + ".jpg: the cached image is inconsistent; rebuilding it");
-  }
-  const core::startup::Scope timed("data: embedded " + what + " (JPEG decode)");
-  try {
-    GeoImage image = readGeoImageMemory(*jpg, *jgw, "jpg", "embedded:" + stem + ".jpg", {.maxSizePx = 2048});
-    storeEmbeddedCache(stem, key, serialize(image));
-    return image;
-  } catch (const InputError& e) {
-    throw InternalError(e.what());  // ours, not the user's: a build problem
-  }
+  return cachedEmbedded<GeoImage>(stem, key, what, deserializeImage,
+                                  [](const GeoImage& g) { return serialize(g); }, [&] {
+    const core::startup::Scope timed("data: embedded " + what + " (JPEG decode)");
+    try {
+      return readGeoImageMemory(*jpg, *jgw, "jpg", "embedded:" + stem + ".jpg", {.maxSizePx = 2048});
+    } catch (const InputError& e) {
+      throw InternalError(e.what());  // ours, not the user's: a build problem
+    }
+  });
 }
 
 }  // namespace

@@ -156,25 +156,21 @@ const LandMask& defaultLandMask() {
     const auto pgw = og::embedded::data::find(stem + ".pgw");
     if (!png || !pgw) throw InternalError("embedded data: " + stem + ".png/.pgw is missing");
     const std::uint64_t key = embeddedCacheKey({*png, *pgw});
-    if (const auto bytes = loadEmbeddedCache("landmask-2m", key)) {
-      const core::startup::Scope timed("data: embedded land mask (from the cache)");
-      if (auto m = deserializeMask(*bytes)) return std::move(*m);
-      log::info("embedded land mask: the cached mask is inconsistent; rebuilding it");
-    }
-    const core::startup::Scope timed("data: embedded land mask (PNG decode)");
-    try {
-      const WorldFileGrid grid = parseWorldFile(*pgw, "embedded:" + stem + ".pgw");
-      PackedBitImage image = decodeBitPng(*png, "embedded:" + stem + ".png");
-      if (std::abs(grid.cellLonDeg - grid.cellLatDeg) > 1e-9 * grid.cellLatDeg)
-        throw InputError("embedded:" + stem + ".pgw: a land mask needs square cells");
-      LandMask m = LandMask::fromPackedBits(image.width, image.height, grid.westDeg,
-                                            grid.northDeg - image.height * grid.cellLatDeg,
-                                            grid.cellLatDeg, std::move(image.bits));
-      storeEmbeddedCache("landmask-2m", key, serialize(m));
-      return m;
-    } catch (const InputError& e) {
-      throw InternalError(e.what());
-    }
+    return cachedEmbedded<LandMask>("landmask-2m", key, "land mask", deserializeMask,
+                                    [](const LandMask& m) { return serialize(m); }, [&] {
+      const core::startup::Scope timed("data: embedded land mask (PNG decode)");
+      try {
+        const WorldFileGrid grid = parseWorldFile(*pgw, "embedded:" + stem + ".pgw");
+        PackedBitImage image = decodeBitPng(*png, "embedded:" + stem + ".png");
+        if (std::abs(grid.cellLonDeg - grid.cellLatDeg) > 1e-9 * grid.cellLatDeg)
+          throw InputError("embedded:" + stem + ".pgw: a land mask needs square cells");
+        return LandMask::fromPackedBits(image.width, image.height, grid.westDeg,
+                                        grid.northDeg - image.height * grid.cellLatDeg,
+                                        grid.cellLatDeg, std::move(image.bits));
+      } catch (const InputError& e) {
+        throw InternalError(e.what());
+      }
+    });
   }();
   return mask;
 }
