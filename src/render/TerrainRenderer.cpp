@@ -46,7 +46,8 @@ void TerrainRenderer::ensureShadowMap() {
   // the open ocean never needs (start-up, docs/performance.md).
   if (shadowMap_.id() != 0) return;
   shadowProgram_ = gl::Program({{GL_VERTEX_SHADER, "terrain/terrain.vert"},
-                                {GL_FRAGMENT_SHADER, "terrain/shadow_depth.frag"}});  // so is its program
+                                {GL_FRAGMENT_SHADER, "terrain/shadow_depth.frag"}},
+                               {"TERRAIN_DEPTH_ONLY"});  // so is its program
   shadowMap_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
   shadowFbo_ = gl::createFramebuffer();
   glTextureStorage3D(shadowMap_.id(), 1, GL_DEPTH_COMPONENT32F, kShadowMapSize, kShadowMapSize,
