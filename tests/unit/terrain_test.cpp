@@ -603,9 +603,9 @@ TEST(TerrainSelection, UnseenSeaFloorIsNotBuiltAndWhatIsDrawnIsUnchanged) {
       EXPECT_LT(withRule.builtCount() * 4, without.builtCount() * 3)
           << where << ": " << withRule.builtCount() << " tiles built against " << without.builtCount();
     }
-    std::printf("%s: %llu tiles built with the rule, %llu without\n", where.c_str(),
+    std::printf("%s: %llu tiles built with the rule, %llu without; highest selected point %.0f m\n", where.c_str(),
                 static_cast<unsigned long long>(withRule.builtCount()),
-                static_cast<unsigned long long>(without.builtCount()));
+                static_cast<unsigned long long>(without.builtCount()), highestM(tiles));
   }
 }
 
