@@ -4,11 +4,12 @@
 // flat arrays instead of parsing NetCDF, decoding PNG/JPEG through GDAL and re-running the
 // shallow-bank correction (docs/performance.md, "Start-up").
 //
-// A file is `embedded-NAME-KEY.bin`: magic, key, payload size, CRC-32 of the payload, payload.
-// The key hashes the embedded source bytes and this executable's identity (its size and
-// modification time), so a rebuild or new data invalidates it. A missing, stale, truncated or
-// corrupt file is rebuilt, never trusted and never fatal; writes go to a temporary name and are
-// renamed into place.
+// A file is `embedded-NAME-KEY.bin` in core/CacheFile's format (magic, key, payload size,
+// CRC-32 of the payload, payload; the reader and writer are core's, shared with the
+// atmosphere's tables and sky maps). The key hashes the embedded source bytes and this
+// executable's identity (its size and modification time), so a rebuild or new data
+// invalidates it. A missing, stale, truncated or corrupt file is rebuilt, never trusted and
+// never fatal; writes go to a temporary name and are renamed into place.
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -25,8 +26,7 @@
 
 namespace og::data {
 
-/// $OCEANGLOBE_CACHE_DIR, else $XDG_CACHE_HOME/oceanglobe, else ~/.cache/oceanglobe (the
-/// atmosphere's rule); empty when OCEANGLOBE_NO_DATA_CACHE=1 turns the data cache off.
+/// core::cacheDirectory() (the atmosphere's too); empty when OCEANGLOBE_NO_DATA_CACHE=1 turns the data cache off.
 std::filesystem::path embeddedCacheDirectory();
 
 /// The cache key of data derived from `sources` (their bytes) by this executable.

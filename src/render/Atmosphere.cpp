@@ -6,11 +6,12 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
+#include <functional>
+#include <optional>
 #include <sstream>
 #include <vector>
 
-#include "core/AtomicFile.hpp"
+#include "core/CacheFile.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "core/StartupTrace.hpp"
@@ -24,9 +25,6 @@ using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
-
-constexpr char kMagic[8] = {'O', 'G', 'A', 'T', 'M', '0', '0', '1'};
-constexpr char kSkyMagic[8] = {'O', 'G', 'S', 'K', 'Y', '0', '0', '1'};
 
 // Pass numbers of shaders/atmosphere/precompute.comp.
 enum Pass : int {
@@ -114,15 +112,60 @@ std::string hex(std::uint64_t v) {
   return s.str();
 }
 
+// The text of the code that computes the sky maps from the tables: part of their key.
+std::string skyMapCodeSalt() {
+  return gl::readShaderFile("atmosphere/definitions.glsl") + gl::readShaderFile("atmosphere/skymap_common.glsl");
+}
+
+// Cache files (core/CacheFile's format): `atmosphere-KIND-CODE-PARAMS.bin`, KIND tables or
+// skymaps, CODE hashing the code that computes them, PARAMS the parameters and sizes. A file of
+// another CODE was made by another build and is superseded (removed when the new one is
+// written, as are the files of the older one-key format); one of other PARAMS is another
+// scene's and stays.
+std::filesystem::path cacheFileOf(const std::filesystem::path& dir, const std::string& kind, std::uint64_t code,
+                                  std::uint64_t params) {
+  return dir / ("atmosphere-" + kind + "-" + core::hex16(code) + "-" + core::hex16(params) + ".bin");
+}
+
+std::function<bool(const std::string&)> supersededBy(const std::filesystem::path& file) {
+  const std::string name = file.filename().string();
+  const std::string kind = name.substr(0, name.find('-', std::string("atmosphere-").size()) + 1);
+  const std::string current = name.substr(0, kind.size() + 17);  // atmosphere-KIND-CODE-
+  return [kind, current](const std::string& f) {
+    if (f.rfind("atmosphere-", 0) != 0 || f.size() < 4 || f.substr(f.size() - 4) != ".bin") return false;
+    const bool oldFormat = f.rfind("atmosphere-tables-", 0) != 0 && f.rfind("atmosphere-skymaps-", 0) != 0;
+    return oldFormat || (f.rfind(kind, 0) == 0 && f.rfind(current, 0) != 0);
+  };
+}
+
+template <class T>
+void appendBytes(std::vector<std::uint8_t>& out, const std::vector<T>& v) {
+  const auto* p = reinterpret_cast<const std::uint8_t*>(v.data());
+  out.insert(out.end(), p, p + v.size() * sizeof(T));
+}
+
+// A cached payload of `bytes` bytes whose float32 part (from byte `floatsFrom` on) is finite and
+// ≥ 0; nullopt (with a warning naming the file and the reason, none when it is missing) else.
+std::optional<std::vector<std::uint8_t>> readPayload(const std::filesystem::path& file, std::uint64_t key,
+                                                     std::size_t bytes, std::size_t floatsFrom, const char* what) {
+  std::string why;
+  auto payload = core::readCacheFile(file, key, &why);
+  if (payload && payload->size() != bytes) why = "wrong size";
+  for (std::size_t at = floatsFrom; payload && why.empty() && at + 4 <= payload->size(); at += 4) {
+    float v = 0.0f;
+    std::memcpy(&v, payload->data() + at, 4);
+    if (!std::isfinite(v) || v < 0.0f) why = "invalid values";
+  }
+  if (payload && why.empty()) return payload;
+  if (why != "missing")
+    log::warn(std::string("atmosphere: ignoring ") + what + " " + file.string() + " (" + why + "); recomputing");
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::filesystem::path Atmosphere::defaultCacheDirectory() {
-  if (const char* d = std::getenv("OCEANGLOBE_CACHE_DIR"); d && *d) return d;
-  if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d)
-    return std::filesystem::path(d) / "oceanglobe";
-  if (const char* d = std::getenv("HOME"); d && *d)
-    return std::filesystem::path(d) / ".cache" / "oceanglobe";
-  return std::filesystem::temp_directory_path() / "oceanglobe-cache";
+  return core::cacheDirectory();
 }
 
 SkyFilter Atmosphere::chooseSkyFilter() {
@@ -152,14 +195,14 @@ Atmosphere::Atmosphere(const atmosphere::Parameters& parameters, const Atmospher
   if (options.useCache) {
     const std::filesystem::path dir =
         options.cacheDirectory.empty() ? defaultCacheDirectory() : options.cacheDirectory;
-    file = dir / ("atmosphere-" + hex(atmosphere::cacheKey(parameters_, tableCodeSalt())) + ".bin");
+    file = cacheFileOf(dir, "tables", fnv(tableCodeSalt().data(), tableCodeSalt().size()),
+                       atmosphere::cacheKey(parameters_, ""));
     timing_.fromCache = loadCache(file);
   }
   if (!timing_.fromCache) {
     precompute();
     if (!file.empty()) {
       try {
-        std::filesystem::create_directories(file.parent_path());
         saveCache(file);
       } catch (const std::exception& e) {
         log::warn(std::string("atmosphere: tables not cached: ") + e.what());
@@ -177,8 +220,14 @@ Atmosphere::Atmosphere(const atmosphere::Parameters& parameters, const Atmospher
   allocateSkyMaps();
   // The sky maps are cached beside the tables they derive from (start-up: no compute passes,
   // no mip-map generation, whose shaders llvmpipe compiles at first use).
+  const atmosphere::TableSizes& s = parameters_.tables;
+  const std::string skyCode = tableCodeSalt() + skyMapCodeSalt();
+  const std::string skySizes = std::to_string(s.skyMapSize) + " " + std::to_string(s.skyMapLayers) + " " +
+                               std::to_string(s.skyIrradianceEntries);
   const std::filesystem::path skyFile =
-      file.empty() ? file : file.parent_path() / (file.stem().string() + "-skymaps-" + hex(skyMapKey()) + ".bin");
+      file.empty() ? file
+                   : cacheFileOf(file.parent_path(), "skymaps", fnv(skyCode.data(), skyCode.size()),
+                                 fnv(skySizes.data(), skySizes.size(), atmosphere::cacheKey(parameters_, "")));
   const bool skyCached = !skyFile.empty() && loadSkyMaps(skyFile);
   if (!skyCached) {
     computeSkyMaps();
@@ -381,38 +430,23 @@ void Atmosphere::bindSkyMaps() const {
   glBindTextureUnit(gl::kUnitSkyIrradiance, skyIrradiance_.id());
 }
 
-// Cache file: magic, key, sizes, the four tables as float32 RGBA, FNV-1a of the payload.
+// The tables' payload: the four tables as float32 RGBA, in this order.
 void Atmosphere::saveCache(const std::filesystem::path& file) const {
   const atmosphere::TableSizes& s = parameters_.tables;
   const std::size_t n3 = static_cast<std::size_t>(s.scatteringNu * s.scatteringMuS *
                                                   s.scatteringMu * s.scatteringR);
-  std::vector<float> payload;
+  std::vector<std::uint8_t> payload;
   for (auto [tex, n] : {std::pair{&transmittance_, static_cast<std::size_t>(s.transmittanceWidth * s.transmittanceHeight)},
                         std::pair{&irradiance_, static_cast<std::size_t>(s.irradianceWidth * s.irradianceHeight)},
-                        std::pair{&scattering_, n3}, std::pair{&singleMie_, n3}}) {
-    const std::vector<float> v = download(*tex, n);
-    payload.insert(payload.end(), v.begin(), v.end());
-  }
-  const std::uint64_t key = atmosphere::cacheKey(parameters_, tableCodeSalt());
-  const std::uint64_t sum = fnv(payload.data(), payload.size() * sizeof(float));
-  const std::uint64_t count = payload.size();
-  writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
-    std::ofstream out(tmp, std::ios::binary);
-    out.write(kMagic, sizeof kMagic);
-    out.write(reinterpret_cast<const char*>(&key), sizeof key);
-    out.write(reinterpret_cast<const char*>(&count), sizeof count);
-    out.write(reinterpret_cast<const char*>(payload.data()),
-              static_cast<std::streamsize>(payload.size() * sizeof(float)));
-    out.write(reinterpret_cast<const char*>(&sum), sizeof sum);
-    if (!out) throw InternalError(tmp.string() + ": write failed");
-  });
+                        std::pair{&scattering_, n3}, std::pair{&singleMie_, n3}})
+    appendBytes(payload, download(*tex, n));
+  core::writeCacheFile(file, atmosphere::cacheKey(parameters_, tableCodeSalt()), payload,
+                       supersededBy(file));
 }
 
 std::uint64_t Atmosphere::skyMapKey() const {
   const atmosphere::TableSizes& s = parameters_.tables;
-  const std::string salt = hex(atmosphere::cacheKey(parameters_, tableCodeSalt())) +
-                           gl::readShaderFile("atmosphere/definitions.glsl") +
-                           gl::readShaderFile("atmosphere/skymap_common.glsl") + " " +
+  const std::string salt = hex(atmosphere::cacheKey(parameters_, tableCodeSalt())) + skyMapCodeSalt() + " " +
                            std::to_string(s.skyMapSize) + " " + std::to_string(s.skyMapLayers) + " " +
                            std::to_string(s.skyIrradianceEntries);
   return fnv(salt.data(), salt.size());
@@ -428,6 +462,8 @@ std::size_t Atmosphere::skyMapHalfs() const {
   return n;
 }
 
+// The sky maps' payload: every mip level as half-float RGBA, then the sea-level irradiance
+// table as float32 RGBA.
 void Atmosphere::saveSkyMaps(const std::filesystem::path& file) const {
   const atmosphere::TableSizes& s = parameters_.tables;
   std::vector<std::uint16_t> halfs(skyMapHalfs());
@@ -439,109 +475,57 @@ void Atmosphere::saveSkyMaps(const std::filesystem::path& file) const {
     glGetTextureImage(skyMaps_.id(), level, GL_RGBA, GL_HALF_FLOAT, static_cast<GLsizei>(n * 2), halfs.data() + at);
     at += n;
   }
-  const std::vector<float> irradiance = download(skyIrradiance_, static_cast<std::size_t>(s.skyIrradianceEntries) * 2);
-  const std::uint64_t key = skyMapKey(), count = halfs.size();
-  const std::uint64_t sum = fnv(irradiance.data(), irradiance.size() * sizeof(float),
-                                fnv(halfs.data(), halfs.size() * sizeof(std::uint16_t)));
+  std::vector<std::uint8_t> payload;
+  appendBytes(payload, halfs);
+  appendBytes(payload, download(skyIrradiance_, static_cast<std::size_t>(s.skyIrradianceEntries) * 2));
   try {
-    std::filesystem::create_directories(file.parent_path());
-    writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
-      std::ofstream out(tmp, std::ios::binary);
-      out.write(kSkyMagic, sizeof kSkyMagic);
-      out.write(reinterpret_cast<const char*>(&key), sizeof key);
-      out.write(reinterpret_cast<const char*>(&count), sizeof count);
-      out.write(reinterpret_cast<const char*>(halfs.data()), static_cast<std::streamsize>(halfs.size() * 2));
-      out.write(reinterpret_cast<const char*>(irradiance.data()), static_cast<std::streamsize>(irradiance.size() * 4));
-      out.write(reinterpret_cast<const char*>(&sum), sizeof sum);
-      if (!out.flush()) throw InputError(tmp.string() + ": cannot write");
-    });
+    core::writeCacheFile(file, skyMapKey(), payload, supersededBy(file));
   } catch (const std::exception& e) {
     log::warn(std::string("atmosphere: sky maps not cached: ") + e.what());
   }
 }
 
 bool Atmosphere::loadSkyMaps(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return false;
   const atmosphere::TableSizes& s = parameters_.tables;
-  char magic[sizeof kSkyMagic] = {};
-  std::uint64_t key = 0, count = 0, sum = 0;
-  in.read(magic, sizeof magic);
-  in.read(reinterpret_cast<char*>(&key), sizeof key);
-  in.read(reinterpret_cast<char*>(&count), sizeof count);
-  auto reject = [&](const std::string& why) {
-    log::warn("atmosphere: ignoring sky-map cache " + file.string() + " (" + why + "); recomputing");
-    return false;
-  };
-  if (!in || std::memcmp(magic, kSkyMagic, sizeof kSkyMagic) != 0) return reject("not a sky-map file");
-  if (key != skyMapKey()) return reject("other parameters");
-  if (count != skyMapHalfs()) return reject("wrong size");
-  std::vector<std::uint16_t> halfs(count);
-  std::vector<float> irradiance(static_cast<std::size_t>(s.skyIrradianceEntries) * 2 * 4);
-  in.read(reinterpret_cast<char*>(halfs.data()), static_cast<std::streamsize>(halfs.size() * 2));
-  in.read(reinterpret_cast<char*>(irradiance.data()), static_cast<std::streamsize>(irradiance.size() * 4));
-  in.read(reinterpret_cast<char*>(&sum), sizeof sum);
-  if (!in) return reject("truncated");
-  if (in.peek() != std::char_traits<char>::eof()) return reject("trailing bytes");
-  if (sum != fnv(irradiance.data(), irradiance.size() * sizeof(float), fnv(halfs.data(), halfs.size() * 2)))
-    return reject("checksum mismatch");
-  for (float v : irradiance)
-    if (!std::isfinite(v) || v < 0.0f) return reject("invalid values");
+  const std::size_t halfBytes = skyMapHalfs() * 2;
+  const std::size_t irradianceFloats = static_cast<std::size_t>(s.skyIrradianceEntries) * 2 * 4;
+  const auto payload = readPayload(file, skyMapKey(), halfBytes + irradianceFloats * 4, halfBytes, "sky-map cache");
+  if (!payload) return false;
   glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
   std::size_t at = 0;
   for (int level = 0; level < skyMapLevels(); ++level) {
     const int side = std::max(1, s.skyMapSize >> level);
     glTextureSubImage3D(skyMaps_.id(), level, 0, 0, 0, side, side, s.skyMapLayers + 1, GL_RGBA,
-                        GL_HALF_FLOAT, halfs.data() + at);
-    at += 4 * static_cast<std::size_t>(side) * static_cast<std::size_t>(side) * static_cast<std::size_t>(s.skyMapLayers + 1);
+                        GL_HALF_FLOAT, payload->data() + at);
+    at += 8 * static_cast<std::size_t>(side) * static_cast<std::size_t>(side) * static_cast<std::size_t>(s.skyMapLayers + 1);
   }
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage2D(skyIrradiance_.id(), 0, 0, 0, s.skyIrradianceEntries, 2, GL_RGBA, GL_FLOAT, irradiance.data());
+  glTextureSubImage2D(skyIrradiance_.id(), 0, 0, 0, s.skyIrradianceEntries, 2, GL_RGBA, GL_FLOAT, payload->data() + at);
   gl::checkErrors("Atmosphere::loadSkyMaps");
   return true;
 }
 
 bool Atmosphere::loadCache(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return false;
   const atmosphere::TableSizes& s = parameters_.tables;
   const std::size_t nT = static_cast<std::size_t>(s.transmittanceWidth * s.transmittanceHeight);
   const std::size_t nI = static_cast<std::size_t>(s.irradianceWidth * s.irradianceHeight);
   const std::size_t n3 = static_cast<std::size_t>(s.scatteringNu * s.scatteringMuS *
                                                   s.scatteringMu * s.scatteringR);
-  const std::uint64_t expectedCount = 4 * (nT + nI + 2 * n3);
-  char magic[sizeof kMagic] = {};
-  std::uint64_t key = 0, count = 0, sum = 0;
-  in.read(magic, sizeof magic);
-  in.read(reinterpret_cast<char*>(&key), sizeof key);
-  in.read(reinterpret_cast<char*>(&count), sizeof count);
-  auto reject = [&](const std::string& why) {
-    log::warn("atmosphere: ignoring cache " + file.string() + " (" + why + "); recomputing");
-    return false;
-  };
-  if (!in || std::memcmp(magic, kMagic, sizeof kMagic) != 0) return reject("not a table file");
-  if (key != atmosphere::cacheKey(parameters_, tableCodeSalt())) return reject("other parameters");
-  if (count != expectedCount) return reject("wrong size");
-  std::vector<float> payload(count);
-  in.read(reinterpret_cast<char*>(payload.data()), static_cast<std::streamsize>(count * sizeof(float)));
-  in.read(reinterpret_cast<char*>(&sum), sizeof sum);
-  if (!in) return reject("truncated");
-  if (in.peek() != std::char_traits<char>::eof()) return reject("trailing bytes");
-  if (sum != fnv(payload.data(), payload.size() * sizeof(float))) return reject("checksum mismatch");
-  for (float v : payload)
-    if (!std::isfinite(v) || v < 0.0f) return reject("invalid values");
-  const float* p = payload.data();
+  const auto payload = readPayload(file, atmosphere::cacheKey(parameters_, tableCodeSalt()),
+                                   16 * (nT + nI + 2 * n3), 0, "cache");
+  if (!payload) return false;
+  const std::uint8_t* p = payload->data();
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTextureSubImage2D(transmittance_.id(), 0, 0, 0, s.transmittanceWidth, s.transmittanceHeight,
                       GL_RGBA, GL_FLOAT, p);
-  p += 4 * nT;
+  p += 16 * nT;
   glTextureSubImage2D(irradiance_.id(), 0, 0, 0, s.irradianceWidth, s.irradianceHeight, GL_RGBA,
                       GL_FLOAT, p);
-  p += 4 * nI;
+  p += 16 * nI;
   const int sw = s.scatteringNu * s.scatteringMuS;
   glTextureSubImage3D(scattering_.id(), 0, 0, 0, 0, sw, s.scatteringMu, s.scatteringR, GL_RGBA,
                       GL_FLOAT, p);
-  p += 4 * n3;
+  p += 16 * n3;
   glTextureSubImage3D(singleMie_.id(), 0, 0, 0, 0, sw, s.scatteringMu, s.scatteringR, GL_RGBA,
                       GL_FLOAT, p);
   gl::checkErrors("Atmosphere::loadCache");

@@ -30,9 +30,6 @@ GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
     : atmosphere_(std::move(atmosphere)),
       tonemap_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
                 {GL_FRAGMENT_SHADER, "render/tonemap.frag"}}),
-      tonemapMs_({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
-                  {GL_FRAGMENT_SHADER, "render/tonemap.frag"}},
-                 {"TONEMAP_MULTISAMPLE"}),
       emptyVao_(gl::createVertexArray()),
       ocean_(std::make_unique<OceanRenderer>(atmosphere_.get())),
       wind_(std::make_unique<WindTextures>()) {
@@ -180,6 +177,9 @@ void GlobeRenderer::render(const FrameInput& f) {
   if (timer_ != nullptr) timer_->mark("tone mapping");
   glDisable(GL_DEPTH_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, ldr_.fbo.id());
+  if (hdr_.samples > 1 && tonemapMs_.id() == 0)  // compiled on first use (start-up)
+    tonemapMs_ = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "render/tonemap.frag"}},
+                             {"TONEMAP_MULTISAMPLE"});
   const gl::Program& tonemap = hdr_.samples > 1 ? tonemapMs_ : tonemap_;
   tonemap.set("uExposure", static_cast<float>(f.exposure));
   glBindTextureUnit(gl::kUnitToneRadiance, hdr_.color.id());

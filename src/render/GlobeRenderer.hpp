@@ -172,7 +172,7 @@ class GlobeRenderer {
   gl::Program uncovered_;
   gl::Query uncoveredQuery_;
   gl::Program tonemap_;
-  gl::Program tonemapMs_;  ///< per-sample tone mapping of a multisampled target
+  gl::Program tonemapMs_;  ///< per-sample tone mapping of a multisampled target; id() 0 until first used
   gl::VertexArray emptyVao_;
   gl::Texture elevation_;
   glm::vec4 elevationMap_{};

@@ -136,7 +136,7 @@ class OceanRenderer {
   gl::Program classify_;                    ///< ocean/sea_classify.frag; id() 0 until compiled
   gl::Buffer classRows_;  ///< per class, the first and last grid row of its vertices (6 ints)
   CausticCurvature caustics_;  ///< the water volume's caustics (render/WaterVolume)
-  gl::Program classic_;
+  gl::Program classic_;      ///< id() 0 until first used, as the next two
   gl::Texture bumpMap_;      ///< classic: tileable ripple normals, mip-mapped
   gl::Texture fresnelRamp_;  ///< classic: water colour and Fresnel by N.V
   gl::VertexArray vao_;

@@ -10,17 +10,18 @@
 #include "geo/Sun.hpp"
 #include "geo/Wgs84.hpp"
 #include "gl/ShaderContract.hpp"
+#include "ocean/WaterOptics.hpp"
 
 namespace og::render {
 
 TerrainRenderer::TerrainRenderer(const data::LatLonGrid& elevation, const Atmosphere* atmosphere)
     : atmosphere_(atmosphere),
       cache_(std::make_shared<const terrain::Heightfield>(elevation)),
-      shadowProgram_({{GL_VERTEX_SHADER, "terrain/terrain.vert"},
-                      {GL_FRAGMENT_SHADER, "terrain/shadow_depth.frag"}},
-                     {"TERRAIN_DEPTH_ONLY"}),
       vao_(gl::createVertexArray()),
       indices_(gl::createBuffer()) {
+  // Sea floor beyond the water volume's reach is never seen (GlobeRenderer::drawOcean's test).
+  params_.unseenFloorDepthM = 2.0 * ocean::waterMaxPathM(ocean::jerlovWater(ocean::kDefaultWater).attenuationPerM,
+                                                         ocean::kWaterEpsilon);
   const auto& idx = terrain::tileIndices();
   indexCount_ = static_cast<int>(idx.size());
   glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(idx.size() * sizeof(std::uint32_t)),
@@ -56,6 +57,9 @@ void TerrainRenderer::ensureShadowMap() {
   // Made on the first frame that casts shadows: 32 MiB that llvmpipe zeroes, which a view of
   // the open ocean never needs (start-up, docs/performance.md).
   if (shadowMap_.id() != 0) return;
+  shadowProgram_ = gl::Program({{GL_VERTEX_SHADER, "terrain/terrain.vert"},
+                                {GL_FRAGMENT_SHADER, "terrain/shadow_depth.frag"}},
+                               {"TERRAIN_DEPTH_ONLY"});  // so is its program
   shadowMap_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
   shadowFbo_ = gl::createFramebuffer();
   glTextureStorage3D(shadowMap_.id(), 1, GL_DEPTH_COMPONENT32F, kShadowMapSize, kShadowMapSize,

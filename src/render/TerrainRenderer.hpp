@@ -111,7 +111,7 @@ class TerrainRenderer {
   const gl::Program* waterProgram_ = nullptr;  ///< drawWaterTiles()' program this frame
   std::vector<const terrain::Tile*> waterTiles_;  ///< left by draw() for drawWaterTiles()
   geo::CameraView waterView_;
-  gl::Program shadowProgram_;
+  gl::Program shadowProgram_;  ///< id 0 until ensureShadowMap()
   gl::Texture shadowMap_;      ///< id 0 until ensureShadowMap()
   gl::Framebuffer shadowFbo_;
   gl::VertexArray vao_;

@@ -75,6 +75,10 @@ double tileSpacingPx(const geo::CameraView& view, int heightPx, const Tile& tile
   return weight * tile.spacingM / distanceM * pixelsPerRadian;
 }
 
+bool deepSeaFloorOnly(const Tile& tile, double unseenFloorDepthM) {
+  return tile.coveredBySea() && tile.maxHeightM < -(unseenFloorDepthM + kHiddenRisePerSpacing * tile.spacingM);
+}
+
 double tileErrorPx(const geo::CameraView& view, int heightPx, const Tile& tile) {
   const double distance =
       std::max(glm::length(tile.boundCentreEcef - view.positionEcef) - tile.boundRadiusM, 1.0);
@@ -115,6 +119,11 @@ std::vector<const Tile*> selectTiles(TileCache& cache, const geo::CameraView& vi
       const bool split = key.level < maxLevel && (key.level < p.minLevel || errorPx > p.maxSpacingPx);
       if (!split) {
         out.push_back(&t);
+        continue;
+      }
+      if (key.level >= p.minLevel && deepSeaFloorOnly(t, p.unseenFloorDepthM)) {
+        out.push_back(&t);
+        ++st.deepSeaFloor;
         continue;
       }
       if (!p.wait && l + 1 >= syncBelow) {

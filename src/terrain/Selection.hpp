@@ -5,6 +5,7 @@
 // the tiles a level needs are built together (in parallel) or, in progressive mode, asked for in
 // the background while a built ancestor stands in.
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "geo/Camera.hpp"
@@ -24,7 +25,25 @@ struct SelectionParams {
   /// children are not built yet is drawn in their place and the children are requested from
   /// the background workers, arriving in a later frame.
   bool wait = true;
+  /// Sea floor deeper than this below sea level (m, ≥ 0; infinity: off) is out of sight: no
+  /// pass draws a tile the sea covers (Tile::coveredBySea; the sea pass computes the floor it
+  /// sees through the water itself), so such a tile is split only to find land or a floor
+  /// within this depth in it. One whose highest sample is deeper than this plus the rise its
+  /// sample spacing could hide (kHiddenRisePerSpacing) is selected as it is (and, covered, not
+  /// drawn): none of its descendants would be drawn either (start-up and every frame after:
+  /// no sea-floor tiles built over the open ocean, docs/performance.md).
+  double unseenFloorDepthM = std::numeric_limits<double>::infinity();
 };
+
+/// How far the relief can rise between two samples of a tile, per metre of their spacing:
+/// steeper than the layer's bilinear slopes (< 0.1 for ETOPO20) and than sea-floor flanks
+/// (seamounts, continental slopes: < 0.5). The coast mask can raise an island out of deep water
+/// within about one of its 2′ cells (data::LandMask::constrainHeightM); tiles as fine as the
+/// mask sample it, coarser ones are split on unless the water is deeper than their spacing.
+inline constexpr double kHiddenRisePerSpacing = 1.0;
+
+/// Whether a tile's descendants are all as unseen as it is (SelectionParams::unseenFloorDepthM).
+bool deepSeaFloorOnly(const Tile& tile, double unseenFloorDepthM);
 
 struct SelectionStats {
   int visited = 0;
@@ -32,6 +51,7 @@ struct SelectionStats {
   int culledHorizon = 0;
   int finestLevel = 0;
   int standIns = 0;          ///< tiles drawn in place of children not built yet (wait = false)
+  int deepSeaFloor = 0;      ///< tiles not split because only unseen sea floor lies under them
   std::size_t pending = 0;   ///< tiles requested or being built after this frame
 };
 

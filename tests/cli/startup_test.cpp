@@ -52,11 +52,13 @@ TEST(Startup, CorruptOrTruncatedDataCacheIsRebuiltAndRendersTheSame) {
   const fs::path dir = og::test::scratchDir("startup");
   const fs::path cache = dir / "cache";
   fs::create_directories(cache);
-  // The atmosphere's tables from the tests' shared cache, when there: only the data is rebuilt.
+  // The atmosphere's tables from the tests' shared cache, when there: only the data and the sky
+  // maps (one file then: this view's) are rebuilt.
   const fs::path shared = fs::path(OG_TEST_OUT_DIR) / "atmosphere-cache";
   if (fs::exists(shared))
     for (const auto& e : fs::directory_iterator(shared))
-      if (e.path().extension() == ".bin") fs::copy_file(e.path(), cache / e.path().filename());
+      if (e.path().filename().string().rfind("atmosphere-tables-", 0) == 0)
+        fs::copy_file(e.path(), cache / e.path().filename());
   const std::string env = "OCEANGLOBE_CACHE_DIR=" + cache.string() + " ";
   const std::string view = " render --lat 24.2 --lon -78.2 --alt 3000 --pitch -30 --width 64 --height 36 --output ";
   auto render = [&](const std::string& prefix, const fs::path& out, const std::string& tag) {

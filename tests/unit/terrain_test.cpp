@@ -6,12 +6,15 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <numbers>
 #include <set>
 #include <stdexcept>
+#include <string>
 #include <thread>
 #include <tuple>
 #include <vector>
@@ -535,4 +538,75 @@ TEST(TerrainCache, WorkersDefaultToTheHardware) {
 }
 
 }  // namespace
+}  // namespace og::terrain
+
+namespace og::terrain {
+namespace {
+
+/// The keys of the tiles some pass draws (those the sea does not cover), sorted.
+std::vector<std::uint64_t> drawnKeys(const std::vector<const Tile*>& tiles) {
+  std::vector<std::uint64_t> keys;
+  for (const Tile* t : tiles)
+    if (!t->coveredBySea()) keys.push_back(t->key.packed());
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+double highestM(const std::vector<const Tile*>& tiles) {
+  double h = -1e30;
+  for (const Tile* t : tiles) h = std::max(h, t->maxHeightM);
+  return h;
+}
+
+}  // namespace
+
+// bench's sea-4m view over the deep Atlantic: no pass draws the sea floor there (the water
+// volume's floor is out of reach), so tiles under unseen sea floor are not split (start-up).
+// Land views select exactly the same tiles with the rule as without.
+TEST(TerrainSelection, UnseenSeaFloorIsNotBuiltAndWhatIsDrawnIsUnchanged) {
+  constexpr double kUnseenM = 300.0;  // about twice the default water's reach
+  struct Case {
+    double lat, lon, altM, heading, pitch;
+    int w, h;
+    bool deep;
+  };
+  for (const Case& c : {Case{20.0, -40.0, 4.0, 270.0, -10.0, 64, 36, true},
+                        Case{20.0, -40.0, 4.0, 270.0, -10.0, 1280, 720, true},
+                        Case{24.2, -78.2, 3000.0, 0.0, -30.0, 320, 180, false},  // Bahamas banks
+                        Case{28.0, 87.0, 15000.0, 0.0, -10.0, 320, 180, false}}) {
+    const geo::CameraView view = viewAt(c.lat, c.lon, c.altM, c.heading, c.pitch, c.w, c.h);
+    SelectionParams on;
+    on.widthPx = c.w;
+    on.heightPx = c.h;
+    on.unseenFloorDepthM = kUnseenM;
+    SelectionParams off = on;
+    off.unseenFloorDepthM = std::numeric_limits<double>::infinity();
+    TileCache withRule(heights()), without(heights());
+    SelectionStats stats;
+    const auto tiles = selectTiles(withRule, view, on, &stats);
+    const auto every = selectTiles(without, view, off);
+    const std::string where = std::to_string(c.lat) + "," + std::to_string(c.lon) + " " + std::to_string(c.w);
+    // What is drawn, and the water volume's test on the highest point, are the same.
+    EXPECT_EQ(drawnKeys(tiles), drawnKeys(every)) << where;
+    EXPECT_EQ(highestM(tiles) > -kUnseenM, highestM(every) > -kUnseenM) << where;
+    // No tile below one whose descendants are all unseen sea floor was built.
+    for (const Tile* t : tiles) {
+      if (t->key.level <= on.minLevel) continue;
+      const TileKey parent{t->key.level - 1, t->key.x / 2, t->key.y / 2};
+      ASSERT_TRUE(withRule.contains(parent));
+      EXPECT_FALSE(deepSeaFloorOnly(withRule.get(parent), kUnseenM)) << where << " level " << t->key.level;
+    }
+    if (c.deep) {
+      EXPECT_GT(stats.deepSeaFloor, 0) << where;
+      // At least a quarter fewer (58 against 82 at 64x36, 94 against 154 at 1280x720; the
+      // 42 tiles of levels 0-2 are always built).
+      EXPECT_LT(withRule.builtCount() * 4, without.builtCount() * 3)
+          << where << ": " << withRule.builtCount() << " tiles built against " << without.builtCount();
+    }
+    std::printf("%s: %llu tiles built with the rule, %llu without; highest selected point %.0f m\n", where.c_str(),
+                static_cast<unsigned long long>(withRule.builtCount()),
+                static_cast<unsigned long long>(without.builtCount()), highestM(tiles));
+  }
+}
+
 }  // namespace og::terrain

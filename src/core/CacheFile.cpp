@@ -1,0 +1,108 @@
+#include "core/CacheFile.hpp"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <system_error>
+
+#include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
+
+namespace og::core {
+namespace {
+
+constexpr std::array<char, 8> kMagic = {'O', 'G', 'C', 'A', 'C', 'H', 'E', '1'};
+
+struct Header {
+  std::array<char, 8> magic{};
+  std::uint64_t key = 0;
+  std::uint64_t size = 0;  ///< payload bytes
+  std::uint32_t crc = 0;   ///< CRC-32 of the payload
+  std::uint32_t reserved = 0;
+};
+static_assert(sizeof(Header) == 32);
+
+void removeSuperseded(const std::filesystem::path& file,
+                      const std::function<bool(const std::string& fileName)>& superseded) {
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(file.parent_path(), ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    std::error_code ignored;
+    if (name != file.filename().string() && superseded(name)) std::filesystem::remove(it->path(), ignored);
+  }
+}
+
+}  // namespace
+
+std::filesystem::path cacheDirectory() {
+  if (const char* d = std::getenv("OCEANGLOBE_CACHE_DIR"); d && *d) return d;
+  if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d) return std::filesystem::path(d) / "oceanglobe";
+  if (const char* d = std::getenv("HOME"); d && *d) return std::filesystem::path(d) / ".cache" / "oceanglobe";
+  return std::filesystem::temp_directory_path() / "oceanglobe-cache";
+}
+
+std::uint32_t crc32Of(const void* data, std::size_t n) {
+  const auto* p = static_cast<const Bytef*>(data);
+  uLong crc = crc32(0L, Z_NULL, 0);
+  while (n > 0) {  // zlib takes uInt lengths
+    const auto chunk = static_cast<uInt>(std::min<std::size_t>(n, std::size_t{1} << 30));
+    crc = crc32(crc, p, chunk);
+    p += chunk;
+    n -= chunk;
+  }
+  return static_cast<std::uint32_t>(crc);
+}
+
+std::string hex16(std::uint64_t v) {
+  char s[17];
+  std::snprintf(s, sizeof s, "%016llx", static_cast<unsigned long long>(v));
+  return s;
+}
+
+std::optional<std::vector<std::uint8_t>> readCacheFile(const std::filesystem::path& file, std::uint64_t key,
+                                                       std::string* whyNot) {
+  auto reject = [&](const char* why) -> std::optional<std::vector<std::uint8_t>> {
+    if (whyNot != nullptr) *whyNot = why;
+    return std::nullopt;
+  };
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return reject("missing");
+  std::error_code ec;
+  const std::uintmax_t fileSize = std::filesystem::file_size(file, ec);
+  Header h;
+  if (ec || !in.read(reinterpret_cast<char*>(&h), sizeof h)) return reject("truncated header");
+  if (h.magic != kMagic) return reject("not an oceanglobe cache file");
+  if (h.key != key) return reject("stale key");
+  // Before allocating: a corrupt size field must not ask for terabytes.
+  if (h.size != fileSize - sizeof h) return reject("size field disagrees with the file's size");
+  std::vector<std::uint8_t> payload(static_cast<std::size_t>(h.size));
+  if (!in.read(reinterpret_cast<char*>(payload.data()), static_cast<std::streamsize>(payload.size())))
+    return reject("truncated payload");
+  if (crc32Of(payload.data(), payload.size()) != h.crc) return reject("CRC mismatch");
+  return payload;
+}
+
+void writeCacheFile(const std::filesystem::path& file, std::uint64_t key, const std::vector<std::uint8_t>& payload,
+                    const std::function<bool(const std::string& fileName)>& superseded) {
+  std::error_code ec;
+  std::filesystem::create_directories(file.parent_path(), ec);
+  if (ec) throw InputError(file.parent_path().string() + ": cannot create the cache directory: " + ec.message());
+  removeSuperseded(file, superseded);
+  Header h;
+  h.magic = kMagic;
+  h.key = key;
+  h.size = payload.size();
+  h.crc = crc32Of(payload.data(), payload.size());
+  writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(&h), sizeof h);
+    out.write(reinterpret_cast<const char*>(payload.data()), static_cast<std::streamsize>(payload.size()));
+    if (!out.flush()) throw InputError(tmp.string() + ": cannot write");
+  });
+}
+
+}  // namespace og::core

@@ -1,0 +1,43 @@
+#pragma once
+// One on-disk cache format for everything derived at start-up that a second start can read
+// back: the embedded data's decoded arrays (data/EmbeddedCache), the atmosphere's tables and
+// its sky maps (render/Atmosphere). docs/performance.md, "Start-up"; docs/atmosphere.md.
+//
+// A file is a 32-byte header (magic "OGCACHE1", the key, the payload's size in bytes, the
+// payload's CRC-32, 4 reserved bytes) and the payload. A missing, truncated, over- or
+// under-long, foreign (wrong magic), stale (wrong key) or corrupt (CRC) file is rejected with a
+// reason, never trusted and never fatal; the size field is checked against the file's size
+// before anything is allocated. Writes go to a temporary name and are renamed into place, after
+// the directory's superseded files (the caller says which) are removed.
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace og::core {
+
+/// $OCEANGLOBE_CACHE_DIR, else $XDG_CACHE_HOME/oceanglobe, else ~/.cache/oceanglobe, else
+/// <temp>/oceanglobe-cache.
+std::filesystem::path cacheDirectory();
+
+/// CRC-32 (zlib's, ISO 3309) of `n` bytes.
+std::uint32_t crc32Of(const void* data, std::size_t n);
+
+/// 64-bit hex, zero-padded to 16 digits (cache file names).
+std::string hex16(std::uint64_t v);
+
+/// The payload of cache file `file` when it is intact and was written with `key`; nullopt
+/// otherwise, with the reason in `*whyNot` when given ("missing" when there is no file).
+std::optional<std::vector<std::uint8_t>> readCacheFile(const std::filesystem::path& file, std::uint64_t key,
+                                                       std::string* whyNot = nullptr);
+
+/// Writes `payload` as cache file `file` (its directory created; temporary name, then rename)
+/// with `key`, first removing the files of that directory for which `superseded(fileName)` is
+/// true (never `file` itself). Throws og::InputError when the file cannot be written.
+void writeCacheFile(const std::filesystem::path& file, std::uint64_t key, const std::vector<std::uint8_t>& payload,
+                    const std::function<bool(const std::string& fileName)>& superseded);
+
+}  // namespace og::core
