@@ -69,6 +69,11 @@ GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
   // of a global layer coarser than it.
   const data::LandMask& mask = data::defaultLandMask();
   landMask_ = std::make_unique<LandMaskTexture>(mask.refines(elevation) ? &mask : nullptr);
+  // The open sea's floor must lie beyond the water's reach (shallow.glsl's prepareWaterColumn),
+  // with a margin for the shader's float arithmetic.
+  const double reachM = ocean::waterMaxPathM(ocean::jerlovWater(ocean::kDefaultWater).attenuationPerM,
+                                             ocean::kWaterEpsilon);
+  openSeaBlockedByLayer_ = blockedByLayer(elevation, 1.5 * reachM);
   maxSamples_ = gl::maxSamples(GL_RGBA32F);
   gl::checkErrors("GlobeRenderer setup");
 }
@@ -193,15 +198,16 @@ void GlobeRenderer::render(const FrameInput& f) {
 const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
   gl::Program& p = globePrograms_[static_cast<std::size_t>((behind ? kGlobeVariants : 0) + variant)];
   if (p.id() == 0) {
-    // Variants 0-2: GLOBE_PART_CLASSIFY (4) with its step; 3: all steps in one draw; 4-6: the
-    // parts 1-3 (render/globe.frag).
+    // Variants 0-3: GLOBE_PART_CLASSIFY (4) with its step; 4: all steps in one draw; 5-7: the
+    // parts 1-3, 8: the open sea (GLOBE_PART_OPEN_SEA, 5) (render/globe.frag).
     std::vector<std::string> defines = OceanPatterns::shaderDefines();
     if (variant <= kClassifyExport) {
       defines.emplace_back("GLOBE_PART 4");
       defines.push_back(variant == kClassifyExport ? std::string("GLOBE_CLASSIFY_EXPORT")
                                                    : "GLOBE_CLASSIFY_STEP " + std::to_string(variant));
     } else {
-      defines.push_back("GLOBE_PART " + std::to_string(variant - kClassifyExport));
+      const int part = variant - kClassifyExport;
+      defines.push_back("GLOBE_PART " + std::to_string(part == 4 ? 5 : part));
     }
     if (behind) defines.emplace_back("GLOBE_BEHIND");
     p = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
@@ -242,11 +248,13 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
   const bool oneDraw = gl::driverProfile().stencilExport;
   glStencilOp(GL_KEEP, GL_KEEP, oneDraw ? GL_REPLACE : GL_INCR);
   const int first = oneDraw ? kClassifyExport : firstClassifyingStep(grid);
-  for (int step = first; step < (oneDraw ? kClassifyExport + 1 : 3); ++step) {
+  if (!grid) bindOpenSeaMap();
+  for (int step = first; step <= (oneDraw ? kClassifyExport : lastClassifyingStep(grid)); ++step) {
     // Above 20 km the first draw writes the depth.
     glDepthMask(!grid && step == first ? GL_TRUE : GL_FALSE);
     const gl::Program& classify = globeProgram(grid, step);
     setGlobeUniforms(classify, view, f);
+    if (!grid) classify.set("uOpenSeaOn", openSeaPart_ ? 1 : 0);
     classify.use();
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
@@ -254,6 +262,17 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
   glDepthMask(grid ? GL_FALSE : GL_TRUE);  // as the caller had it
   glDisable(GL_STENCIL_TEST);
   if (grid) glEndConditionalRender();
+}
+
+void GlobeRenderer::bindOpenSeaMap() {
+  if (openSeaTexture_ == nullptr) {
+    // Made on the first frame above 20 km: the land mask's pass (~29 M cells) is not start-up's.
+    std::vector<unsigned char> blocked = openSeaBlockedByLayer_;
+    if (landMask_->active()) addBlockedByMask(data::defaultLandMask(), blocked);
+    openSeaMap_ = std::make_unique<OpenSeaMap>(makeOpenSeaMap(std::move(blocked)));
+    openSeaTexture_ = std::make_unique<OpenSeaTexture>(*openSeaMap_);
+  }
+  openSeaTexture_->bind();
 }
 
 void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f, bool grid) {
@@ -264,7 +283,8 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   glEnable(GL_STENCIL_TEST);
   glDepthMask(GL_FALSE);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-  for (int part = 1; part <= 3; ++part) {  // sky, edge, surface: the stencil counts 1, 2, 3
+  // Sky, edge, surface, open sea: the stencil counts 1, 2, 3, 4.
+  for (int part = 1; part <= lastClassifyingStep(grid) + 1; ++part) {
     glStencilFunc(GL_EQUAL, part - firstClassifyingStep(grid), 0xff);
     const gl::Program& globe = globeProgram(grid, kClassifyExport + part);
     setGlobeUniforms(globe, view, f);

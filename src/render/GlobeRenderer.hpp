@@ -25,6 +25,7 @@
 #include "render/LandMaskTexture.hpp"
 #include "render/OceanPatterns.hpp"
 #include "render/OceanRenderer.hpp"
+#include "render/OpenSeaMap.hpp"
 #include "render/TerrainRenderer.hpp"
 #include "render/WindTextures.hpp"
 
@@ -141,6 +142,12 @@ class GlobeRenderer {
   /// The GSHHG land mask deciding the coast (active for global layers coarser than it).
   [[nodiscard]] const LandMaskTexture& landMask() const { return *landMask_; }
 
+  /// Above 20 km, pixels in the open deep sea (render/OpenSeaMap) go to a part of their own
+  /// (render/globe.frag); false shades them with the rest of the surface (the tests' reference).
+  void setOpenSeaPart(bool on) { openSeaPart_ = on; }
+  /// The coarse open-sea map (made on the first frame above 20 km; nullptr before).
+  [[nodiscard]] const OpenSeaMap* openSeaMap() const { return openSeaMap_.get(); }
+
  private:
   void ensureTargets(int width, int height, int samples, bool auxiliary);
   /// The globe pass's two halves (render/globe.frag): the classifying draws, then the parts.
@@ -158,12 +165,17 @@ class GlobeRenderer {
   const OceanPatterns& patternsFor(double referenceWindMs, std::uint64_t seed);
 
   std::shared_ptr<const Atmosphere> atmosphere_;
-  /// globe.frag's variants: three classifying steps (0-2), the one-draw classification (3,
-  /// GLOBE_CLASSIFY_EXPORT), then three parts (4-6: sky, edge, surface; see its GLOBE_PART),
-  /// drawn first above the grid's ceiling and last (GLOBE_BEHIND, after the terrain and the
-  /// grid) below; each compiled on first use. `variant` in [0, kGlobeVariants).
-  static constexpr int kGlobeVariants = 7;
-  static constexpr int kClassifyExport = 3;
+  /// globe.frag's variants: four classifying steps (0-3; the last, the open sea, above 20 km
+  /// only), the one-draw classification (4, GLOBE_CLASSIFY_EXPORT), then four parts (5-8: sky,
+  /// edge, surface, open sea; see its GLOBE_PART), drawn first above the grid's ceiling and last
+  /// (GLOBE_BEHIND, after the terrain and the grid) below; each compiled on first use.
+  /// `variant` in [0, kGlobeVariants).
+  static constexpr int kGlobeVariants = 9;
+  static constexpr int kClassifyExport = 4;
+  /// The classifying steps and parts of a frame: the open sea's only above 20 km.
+  [[nodiscard]] int lastClassifyingStep(bool grid) const { return grid || !openSeaPart_ ? 2 : 3; }
+  /// The open-sea map on its texture unit (made on first use).
+  void bindOpenSeaMap();
   const gl::Program& globeProgram(bool behind, int variant);
   void setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view, const FrameInput& f);
   std::array<gl::Program, 2 * kGlobeVariants> globePrograms_;
@@ -182,6 +194,10 @@ class GlobeRenderer {
   std::unique_ptr<TerrainRenderer> terrain_;
   std::unique_ptr<ImageryTextures> imagery_;
   std::unique_ptr<LandMaskTexture> landMask_;
+  std::vector<unsigned char> openSeaBlockedByLayer_;  ///< the layer's share, from the constructor
+  std::unique_ptr<OpenSeaMap> openSeaMap_;
+  std::unique_ptr<OpenSeaTexture> openSeaTexture_;
+  bool openSeaPart_ = true;
   std::unique_ptr<WindTextures> wind_;
   std::unique_ptr<OceanPatterns> patterns_;
   gl::RenderTarget hdr_;
