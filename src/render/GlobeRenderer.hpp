@@ -78,6 +78,15 @@ using io::isValidSampleCount;
 inline constexpr double kOceanGridMaxHeightM = 20000.0;
 inline constexpr double kOceanFadeStartM = 12000.0;
 
+/// The screen rectangle (x, y, width, height in pixels, lower-left origin) outside which the
+/// globe pass colours nothing above the atmosphere: the projections of the cones from the eye
+/// around the ellipsoid, around the atmosphere's sphere under the eye (render/globe.frag's sky)
+/// and around the Sun's disc, with two pixels of margin; the whole screen when the eye is
+/// within 1 % of either sphere's radius or a cone reaches behind it.
+std::array<int, 4> globeScissor(const geo::CameraView& view, int width, int height,
+                                const atmosphere::Parameters& atmosphere,
+                                const glm::dvec3& sunDirectionEcef);
+
 class GlobeRenderer {
  public:
   /// Needs a current GL 4.5 context. Uploads the elevation layer once and prepares the
@@ -145,6 +154,9 @@ class GlobeRenderer {
   /// Above 20 km, pixels in the open deep sea (render/OpenSeaMap) go to a part of their own
   /// (render/globe.frag); false shades them with the rest of the surface (the tests' reference).
   void setOpenSeaPart(bool on) { openSeaPart_ = on; }
+  /// Above 20 km the globe pass is scissored to the rectangle around the globe, its atmosphere
+  /// and the Sun (globeScissor); false draws it over the whole screen (the tests' reference).
+  void setGlobeScissor(bool on) { scissorGlobe_ = on; }
   /// The coarse open-sea map (made on the first frame above 20 km; nullptr before).
   [[nodiscard]] const OpenSeaMap* openSeaMap() const { return openSeaMap_.get(); }
 
@@ -176,6 +188,8 @@ class GlobeRenderer {
   [[nodiscard]] int lastClassifyingStep(bool grid) const { return grid || !openSeaPart_ ? 2 : 3; }
   /// The open-sea map on its texture unit (made on first use).
   void bindOpenSeaMap();
+  /// Enables the scissor test on globeScissor's box (when setGlobeScissor is on).
+  void scissorToGlobe(const geo::CameraView& view, const FrameInput& f);
   const gl::Program& globeProgram(bool behind, int variant);
   void setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view, const FrameInput& f);
   std::array<gl::Program, 2 * kGlobeVariants> globePrograms_;
@@ -198,6 +212,7 @@ class GlobeRenderer {
   std::unique_ptr<OpenSeaMap> openSeaMap_;
   std::unique_ptr<OpenSeaTexture> openSeaTexture_;
   bool openSeaPart_ = true;
+  bool scissorGlobe_ = true;
   std::unique_ptr<WindTextures> wind_;
   std::unique_ptr<OceanPatterns> patterns_;
   gl::RenderTarget hdr_;

@@ -135,3 +135,47 @@ TEST(GlobeRender, OpenSeaPartMatchesTheSurfacePart) {
   for (float c : r.openSeaMap()->clearanceRad) open += c > 0.0f ? 1 : 0;
   EXPECT_GT(open, 10000);  // the part is in use
 }
+
+TEST(GlobeRender, ScissorToTheGlobeLeavesThePictureUnchanged) {
+  // Above the atmosphere the globe pass is scissored to the box around the globe, its sky and
+  // the Sun's disc: the pictures with and without must be the same, pixel for pixel, from far
+  // (a small globe, the box a fraction of the screen), with the Sun in view beside the globe,
+  // and from low orbit (the box the whole screen).
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(islandWorld());
+  std::vector<render::FrameInput> frames;
+  for (const auto& [h, pitch] : {std::pair{3.0e7, -90.0}, std::pair{2.0e7, -75.0}, std::pair{4.0e5, -15.0}}) {
+    render::FrameInput f;
+    f.camera.position = {10.0, -30.0, h};
+    f.camera.pitchDeg = pitch;
+    f.width = 128;
+    f.height = 72;
+    f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 60, 150);
+    if (pitch == -75.0) {  // the Sun in view, above the globe in the picture
+      const geo::CameraView v = geo::makeCameraView(f.camera, f.width, f.height);
+      f.sunDirectionEcef = glm::normalize(v.forward + 0.25 * v.up + 0.3 * v.right);
+    }
+    frames.push_back(f);
+  }
+  const geo::CameraView far = geo::makeCameraView(frames[0].camera, 128, 72);
+  const std::array<int, 4> box = render::globeScissor(far, 128, 72, r.atmosphere().parameters(), frames[0].sunDirectionEcef);
+  EXPECT_LT(box[2] * box[3], 128 * 72 / 2) << "the far globe's box is most of the screen";
+  EXPECT_GT(box[2] * box[3], 0);
+  for (const render::FrameInput& f : frames) {
+    r.setGlobeScissor(false);
+    r.render(f);
+    const io::ImageRgbaF whole = r.radiance();
+    r.setGlobeScissor(true);
+    r.render(f);
+    const io::ImageRgbaF scissored = r.radiance();
+    std::size_t differ = 0, sunlit = 0;
+    for (std::size_t k = 0; k < whole.pixels.size(); ++k) {
+      differ += whole.pixels[k] != scissored.pixels[k] ? 1 : 0;
+      sunlit += whole.pixels[k] > 1.0f ? 1 : 0;
+    }
+    EXPECT_EQ(differ, 0u) << "camera at " << f.camera.position.heightM << " m, pitch " << f.camera.pitchDeg;
+    if (f.camera.pitchDeg == -75.0) {
+      EXPECT_GT(sunlit, 0u) << "the Sun's disc is not in the picture";
+    }
+  }
+}
