@@ -50,11 +50,15 @@
 // parts, and zeroes the count where it draws. Where the driver lets a fragment shader write the
 // stencil value (GL_ARB_shader_stencil_export; llvmpipe does), one classifying draw
 // (GLOBE_CLASSIFY_EXPORT) writes the count the steps would have reached: the rays are traced
-// once instead of three times.
+// once instead of three times. Above 20 km a fourth class, the open deep sea (render/OpenSeaMap:
+// the four samples within a coarse map's clearance of land and shallow floors), goes to a part
+// without the land's code, the per-sample coast test and the water column (a fourth
+// classifying step, count 4).
 #define GLOBE_PART_SKY 1
 #define GLOBE_PART_EDGE 2
 #define GLOBE_PART_SURFACE 3
 #define GLOBE_PART_CLASSIFY 4
+#define GLOBE_PART_OPEN_SEA 5
 #ifndef GLOBE_PART
 #define GLOBE_PART GLOBE_PART_EDGE  // all the shading code
 #endif
@@ -128,7 +132,11 @@ vec3 shadeSea(vec3 v, vec3 n) {
   vec3 wind = sin(w.y) * east + cos(w.y) * north;
   float foam = whitecapCoverage(vec2(1.0, seaJacobianVarianceTotal(w.x)));
   gSeaFoam = foam;
+#if GLOBE_PART == GLOBE_PART_OPEN_SEA
+  gWater = WaterVolume(true, uSeaColor);  // deeper than the water's reach: prepareWaterColumn's
+#else
   prepareWaterColumn(v, n, uSunDir, 1.0);  // the floor through the water (terrain/shallow.glsl)
+#endif
   return seaRadianceWithFoam(v, n, wind, seaSlopeVarianceTotal(w.x), n, uSunDir, foam);
 }
 
@@ -148,6 +156,24 @@ vec3 surfaceRadiance(vec3 dir, float t, bool sea) {
   float footprint = t * uPixelNdc.y * uTanHalfFov.y / (WGS84_A * max(dot(n, -dir), 0.2));
   return shadeLand(landColour(latLon, elevation, footprint), muSP, sunIrr, skyIrr) +
          nightLightsRadiance(latLon, footprint, muSP);
+}
+
+// The `coverage` samples on the globe (of a pixel's four: their summed directions hitDir and
+// distances hitT, m), whose surface radiance sums to `surface`, through the aerial perspective
+// of their mean path (see the header); the sum of what reaches the eye from them.
+vec3 throughAerialPerspective(vec3 surface, vec3 hitDir, float hitT, float coverage) {
+  float R = uAtmosphere.bottomRadius;
+  float h = uCamAltitude;
+  float r = R + h;
+  float rho2 = h * (2.0 * R + h);
+  vec3 dir = normalize(hitDir);
+  float d = min(hitT / coverage, sqrt(rho2));
+  float mu = -(rho2 + d * d) / (2.0 * r * max(d, 1e-3));
+  vec3 transmittance;
+  vec3 inscatter = skyRadianceToPoint(uAtmosphere, uAtmTransmittance, uAtmScattering,
+                                      uAtmSingleMie, r, mu, dot(uSunDir, uCamUp),
+                                      dot(dir, uSunDir), d, transmittance);
+  return surface * transmittance + inscatter * coverage;
 }
 
 // A pixel's four rays: 4 rotated-grid samples, for an anti-aliased limb, horizon and coastline;
@@ -201,18 +227,49 @@ SkyView skyOf(PixelRays rays) {
 }
 
 #if GLOBE_PART == GLOBE_PART_CLASSIFY
+layout(binding = OG_UNIT_OPEN_SEA) uniform sampler2D uOpenSea;  // render/OpenSeaMap: clearance, rad
+uniform int uOpenSeaOn;  // 0: no pixel is classed open sea (GlobeRenderer::setOpenSeaPart)
+
+// Whether all four of a pixel's samples lie in the open deep sea: within the clearance radius
+// (render/OpenSeaMap) of the 1° cell under the pixel-centre ray's hit (geodetic normal
+// nCentre at latLon, radians). The radius holds for every point of the cell, so the samples'
+// largest angle from nCentre is compared with it, with a 10 % margin (the shading point, the
+// samples' mean ray, lies among them; float rounding).
+bool inOpenSea(PixelRays rays, vec3 nCentre, vec2 latLon) {
+  vec2 cell = floor(degrees(vec2(latLon.y + PI, latLon.x + 0.5 * PI)));
+  float clearance = texelFetch(uOpenSea, ivec2(clamp(cell, vec2(0.0), vec2(359.0, 179.0))), 0).r;
+  float minDot = 1.0;
+  for (int i = 0; i < 4; ++i) minDot = min(minDot, dot(ellipsoidNormal(rays.dirs[i], rays.ts[i]), nCentre));
+  return uOpenSeaOn != 0 && rays.nHit == 4 && minDot > cos(0.9 * clearance);
+}
+
 // The classifying draws (GlobeRenderer::classifyGlobe): each keeps the pixels that pass its step,
 // the stencil counting them: step 0 anything to shade (not pure space), 1 a ray on the globe,
-// 2 all four on it. Step 0 also writes the depth above 20 km. GLOBE_CLASSIFY_EXPORT: all the
-// steps in one draw, writing the count.
+// 2 all four on it, 3 (above 20 km) all four in the open deep sea. Step 0 also writes the
+// depth above 20 km. GLOBE_CLASSIFY_EXPORT: all the steps in one draw, writing the count.
+#if !defined(GLOBE_BEHIND) && (GLOBE_CLASSIFY_STEP == 0 || GLOBE_CLASSIFY_STEP == 3 || defined(GLOBE_CLASSIFY_EXPORT))
+#define GLOBE_CLASSIFY_CENTRE
+#endif
 void main() {
   PixelRays rays = traceRays();
+#ifdef GLOBE_CLASSIFY_CENTRE
+  // The pixel-centre ray: its hit decides the open sea and gives the depth.
+  vec3 centreDir = normalize(uForward + vNdc.x * uTanHalfFov.x * uRight + vNdc.y * uTanHalfFov.y * uUp);
+  float centreT = rays.nHit > 0 ? intersectEllipsoid(centreDir) : -1.0;
+  vec3 centreNormal = ellipsoidNormal(centreDir, max(centreT, 0.0));
+  vec2 centreLatLon = latLonOfNormal(centreNormal);
+  // Not at grazing incidence (the limb's last pixels), where the shading is ill-conditioned
+  // enough that the two parts' compiled code rounds differently.
+  bool openSea = centreT >= 0.0 && dot(centreNormal, -centreDir) > 0.2 &&
+                 inOpenSea(rays, centreNormal, centreLatLon);
+#endif
 #ifdef GLOBE_CLASSIFY_EXPORT
 #ifdef GLOBE_BEHIND
   int count = 0;  // below 20 km no pixel sees pure space: step 0 is skipped
 #else
   SkyView sky = skyOf(rays);
   int count = rays.nHit == 0 && sky.space && sky.sunDisc == 0.0 ? 0 : 1;
+  count += openSea ? 1 : 0;
 #endif
   count += (rays.nHit > 0 ? 1 : 0) + (rays.nHit == 4 ? 1 : 0);
   if (count == 0) discard;
@@ -222,8 +279,10 @@ void main() {
   if (rays.nHit == 0 && sky.space && sky.sunDisc == 0.0) discard;
 #elif GLOBE_CLASSIFY_STEP == 1
   if (rays.nHit == 0) discard;
-#else
+#elif GLOBE_CLASSIFY_STEP == 2
   if (rays.nHit < 4) discard;
+#else
+  if (!openSea) discard;
 #endif
   fragRadiance = vec4(0.0);  // colour writes are masked off
   fragAux = vec4(0.0);
@@ -236,17 +295,36 @@ void main() {
   float depthZ = 1e30;
   for (int i = 0; i < 4; ++i)
     depthZ = rays.ts[i] >= 0.0 ? min(depthZ, rays.ts[i] * dot(rays.dirs[i], uForward)) : depthZ;
-  vec3 centreDir = normalize(uForward + vNdc.x * uTanHalfFov.x * uRight + vNdc.y * uTanHalfFov.y * uUp);
-  float centreT = rays.nHit > 0 ? intersectEllipsoid(centreDir) : -1.0;
   if (centreT >= 0.0) {
     depthZ = centreT * dot(centreDir, uForward);
     // Over land the terrain draws the ground and this flat fallback must never stand in front
     // of a tile: the coarsest tiles' chords sag up to ~0.5 km below the ellipsoid. Over the sea
     // (from orbit) the depth stays exact, so the sea surface hides the bathymetry.
-    if (elevationAt(latLonOfNormal(ellipsoidNormal(centreDir, centreT))) > 0.0) depthZ += 20000.0;
+    if (elevationAt(centreLatLon) > 0.0) depthZ += 20000.0;
   }
   gl_FragDepth = rays.nHit > 0 ? clamp(uNear / depthZ, 0.0, 1.0) : 0.0;
 #endif
+}
+#elif GLOBE_PART == GLOBE_PART_OPEN_SEA
+// The open deep sea (classified above): four samples on the sea away from coasts, shaded once
+// at their mean ray as the surface part shades such a pixel, without its land code, its
+// per-sample coast test and the water column (deeper than the water's reach everywhere here).
+void main() {
+  PixelRays rays = traceRays();
+  vec3 hitDir = vec3(0.0);
+  float hitT = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    hitDir += rays.dirs[i];
+    hitT += rays.ts[i];
+  }
+  vec3 dir = normalize(hitDir);
+  float t = intersectEllipsoid(dir);
+  vec3 surface = vec3(0.0);
+  surface += 4.0 * shadeSea(-dir, ellipsoidNormal(dir, t));
+  float foam = 0.0;
+  foam += 4.0 * gSeaFoam;
+  fragRadiance = vec4(throughAerialPerspective(surface, hitDir, hitT, 4.0) * 0.25, 1.0);
+  fragAux = vec4(foam * 0.25, 0.0, 0.0, 0.0);
 }
 #else
 void main() {
@@ -306,17 +384,8 @@ void main() {
   vec3 radiance = vec3(0.0);
   // Two loops of 0 or 1 trips rather than one if/else (see above): the globe's samples through
   // the aerial perspective of their mean path, the sky's through the sky to the boundary.
-  for (int k = 0; k < (PART_HAS_SURFACE && nHit > 0 ? 1 : 0); ++k) {
-    vec3 dir = normalize(hitDir);
-    // Aerial perspective over the camera-to-surface path (see the header).
-    float d = min(hitT / coverage, sqrt(rho2));
-    float mu = -(rho2 + d * d) / (2.0 * r * max(d, 1e-3));
-    vec3 transmittance;
-    vec3 inscatter = skyRadianceToPoint(uAtmosphere, uAtmTransmittance, uAtmScattering,
-                                        uAtmSingleMie, r, mu, muS, dot(dir, uSunDir), d,
-                                        transmittance);
-    radiance += surface * transmittance + inscatter * coverage;
-  }
+  for (int k = 0; k < (PART_HAS_SURFACE && nHit > 0 ? 1 : 0); ++k)
+    radiance += throughAerialPerspective(surface, hitDir, hitT, coverage);
   if (PART_HAS_SKY) {
     SkyView sky = skyOf(rays);
     if (skyCount > 0.0 && sky.space) radiance += sky.sunDisc * sunDiscRadiance(uAtmosphere);

@@ -19,7 +19,58 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 glm::vec3 toFloat(const glm::dvec3& v) { return glm::vec3(v); }
+
+/// Grows `box` (pixels: x0, y0, x1, y1, lower-left origin) to hold the cone of directions within
+/// `halfAngleRad` of `axis` (unit, ECEF) as the view projects it, sampled on its rim; false
+/// when the cone reaches behind the eye (`box` is then the whole screen's business).
+bool addCone(const geo::CameraView& view, int width, int height, const glm::dvec3& axis,
+             double halfAngleRad, glm::dvec4& box) {
+  const glm::dvec3 u = glm::normalize(glm::cross(axis, std::abs(axis.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0)));
+  const glm::dvec3 v = glm::cross(axis, u);
+  const double tanY = std::tan(0.5 * view.verticalFovRad), tanX = tanY * view.aspect;
+  constexpr int kRim = 96;
+  for (int i = 0; i < kRim; ++i) {
+    const double phi = 2.0 * std::numbers::pi * i / kRim;
+    const glm::dvec3 d = std::cos(halfAngleRad) * axis +
+                         std::sin(halfAngleRad) * (std::cos(phi) * u + std::sin(phi) * v);
+    const double z = glm::dot(d, view.forward);
+    if (z <= 1e-6) return false;
+    const double x = (glm::dot(d, view.right) / (z * tanX) + 1.0) * 0.5 * width;
+    const double y = (glm::dot(d, view.up) / (z * tanY) + 1.0) * 0.5 * height;
+    box = glm::dvec4(std::min(box.x, x), std::min(box.y, y), std::max(box.z, x), std::max(box.w, y));
+  }
+  return true;
+}
 }  // namespace
+
+std::array<int, 4> globeScissor(const geo::CameraView& view, int width, int height,
+                                const atmosphere::Parameters& atmosphere,
+                                const glm::dvec3& sunDirectionEcef) {
+  const std::array<int, 4> screen{0, 0, width, height};
+  glm::dvec4 box(1e30, 1e30, -1e30, -1e30);
+  // The ellipsoid lies within the sphere of radius a (+1 km); the sky is the atmosphere's
+  // sphere under the eye (globe.frag: radius top, centre R + h below the eye along the normal).
+  const double eyeM = glm::length(view.positionEcef);
+  const double r = atmosphere.bottomRadiusM + view.position.heightM;
+  const double sinGlobe = (geo::kWgs84SemiMajorM + 1000.0) / eyeM;
+  const double sinSky = (atmosphere.topRadiusM() + 1000.0) / r;
+  if (sinGlobe >= 0.99 || sinSky >= 0.99) return screen;
+  // 1 % wider: the rim's samples are chords of the projected ellipse.
+  if (!addCone(view, width, height, -view.positionEcef / eyeM, 1.01 * std::asin(sinGlobe), box) ||
+      !addCone(view, width, height, -view.enu.up, 1.01 * std::asin(sinSky), box))
+    return screen;
+  // The Sun's disc in space (globe.frag's sky part paints it there too), when in front.
+  const glm::dvec3 sun = glm::normalize(sunDirectionEcef);
+  if (glm::dot(sun, view.forward) > 0.0 &&
+      !addCone(view, width, height, sun, 2.0 * atmosphere.sunAngularRadiusRad, box))
+    return screen;
+  // Two pixels of margin, clamped to the screen (an empty box draws nothing: no globe in view).
+  const int x0 = std::clamp(static_cast<int>(std::floor(box.x)) - 2, 0, width);
+  const int y0 = std::clamp(static_cast<int>(std::floor(box.y)) - 2, 0, height);
+  const int x1 = std::clamp(static_cast<int>(std::ceil(box.z)) + 2, x0, width);
+  const int y1 = std::clamp(static_cast<int>(std::ceil(box.w)) + 2, y0, height);
+  return {x0, y0, x1 - x0, y1 - y0};
+}
 
 GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
                              const atmosphere::Parameters& atmosphere)
@@ -66,6 +117,11 @@ GlobeRenderer::GlobeRenderer(const data::LatLonGrid& elevation,
   // of a global layer coarser than it.
   const data::LandMask& mask = data::defaultLandMask();
   landMask_ = std::make_unique<LandMaskTexture>(mask.refines(elevation) ? &mask : nullptr);
+  // The open sea's floor must lie beyond the water's reach (shallow.glsl's prepareWaterColumn),
+  // with a margin for the shader's float arithmetic.
+  const double reachM = ocean::waterMaxPathM(ocean::jerlovWater(ocean::kDefaultWater).attenuationPerM,
+                                             ocean::kWaterEpsilon);
+  openSeaBlockedByLayer_ = blockedByLayer(elevation, 1.5 * reachM);
   maxSamples_ = gl::maxSamples(GL_RGBA32F);
   gl::checkErrors("GlobeRenderer setup");
 }
@@ -193,15 +249,16 @@ void GlobeRenderer::render(const FrameInput& f) {
 const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
   gl::Program& p = globePrograms_[static_cast<std::size_t>((behind ? kGlobeVariants : 0) + variant)];
   if (p.id() == 0) {
-    // Variants 0-2: GLOBE_PART_CLASSIFY (4) with its step; 3: all steps in one draw; 4-6: the
-    // parts 1-3 (render/globe.frag).
+    // Variants 0-3: GLOBE_PART_CLASSIFY (4) with its step; 4: all steps in one draw; 5-7: the
+    // parts 1-3, 8: the open sea (GLOBE_PART_OPEN_SEA, 5) (render/globe.frag).
     std::vector<std::string> defines = OceanPatterns::shaderDefines();
     if (variant <= kClassifyExport) {
       defines.emplace_back("GLOBE_PART 4");
       defines.push_back(variant == kClassifyExport ? std::string("GLOBE_CLASSIFY_EXPORT")
                                                    : "GLOBE_CLASSIFY_STEP " + std::to_string(variant));
     } else {
-      defines.push_back("GLOBE_PART " + std::to_string(variant - kClassifyExport));
+      const int part = variant - kClassifyExport;
+      defines.push_back("GLOBE_PART " + std::to_string(part == 4 ? 5 : part));
     }
     if (behind) defines.emplace_back("GLOBE_BEHIND");
     p = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
@@ -221,6 +278,7 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
 // (they zero the stencil where they draw); below, both come after the terrain and the grid.
 void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput& f, bool grid) {
   if (timer_ != nullptr) timer_->mark("globe");
+  if (!grid) scissorToGlobe(view, f);
   glBindVertexArray(emptyVao_.id());
   glDepthFunc(grid ? GL_GEQUAL : GL_ALWAYS);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the query's and the steps' draws
@@ -242,18 +300,43 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
   const bool oneDraw = gl::driverProfile().stencilExport;
   glStencilOp(GL_KEEP, GL_KEEP, oneDraw ? GL_REPLACE : GL_INCR);
   const int first = oneDraw ? kClassifyExport : firstClassifyingStep(grid);
-  for (int step = first; step < (oneDraw ? kClassifyExport + 1 : 3); ++step) {
+  if (!grid) bindOpenSeaMap();
+  for (int step = first; step <= (oneDraw ? kClassifyExport : lastClassifyingStep(grid)); ++step) {
     // Above 20 km the first draw writes the depth.
     glDepthMask(!grid && step == first ? GL_TRUE : GL_FALSE);
     const gl::Program& classify = globeProgram(grid, step);
     setGlobeUniforms(classify, view, f);
+    if (!grid) classify.set("uOpenSeaOn", openSeaPart_ ? 1 : 0);
     classify.use();
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(grid ? GL_FALSE : GL_TRUE);  // as the caller had it
   glDisable(GL_STENCIL_TEST);
+  glDisable(GL_SCISSOR_TEST);
   if (grid) glEndConditionalRender();
+}
+
+// Above 20 km the globe pass runs only within the screen rectangle that can hold the globe, its
+// atmosphere or the Sun's disc: llvmpipe rasterises no fragment outside the scissor box, so
+// the classifying draw (a full-screen triangle) skips the space around a distant globe.
+void GlobeRenderer::scissorToGlobe(const geo::CameraView& view, const FrameInput& f) {
+  if (!scissorGlobe_) return;
+  const std::array<int, 4> box = globeScissor(view, f.width, f.height, atmosphere_->parameters(),
+                                              f.sunDirectionEcef);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(box[0], box[1], box[2], box[3]);
+}
+
+void GlobeRenderer::bindOpenSeaMap() {
+  if (openSeaTexture_ == nullptr) {
+    // Made on the first frame above 20 km: the land mask's pass (~29 M cells) is not start-up's.
+    std::vector<unsigned char> blocked = openSeaBlockedByLayer_;
+    if (landMask_->active()) addBlockedByMask(data::defaultLandMask(), blocked);
+    openSeaMap_ = std::make_unique<OpenSeaMap>(makeOpenSeaMap(std::move(blocked)));
+    openSeaTexture_ = std::make_unique<OpenSeaTexture>(*openSeaMap_);
+  }
+  openSeaTexture_->bind();
 }
 
 void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f, bool grid) {
@@ -264,7 +347,9 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   glEnable(GL_STENCIL_TEST);
   glDepthMask(GL_FALSE);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-  for (int part = 1; part <= 3; ++part) {  // sky, edge, surface: the stencil counts 1, 2, 3
+  if (!grid) scissorToGlobe(view, f);
+  // Sky, edge, surface, open sea: the stencil counts 1, 2, 3, 4.
+  for (int part = 1; part <= lastClassifyingStep(grid) + 1; ++part) {
     glStencilFunc(GL_EQUAL, part - firstClassifyingStep(grid), 0xff);
     const gl::Program& globe = globeProgram(grid, kClassifyExport + part);
     setGlobeUniforms(globe, view, f);
@@ -272,6 +357,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
   glDisable(GL_STENCIL_TEST);
+  glDisable(GL_SCISSOR_TEST);
   glDepthMask(grid ? GL_FALSE : GL_TRUE);  // as the caller had it
   if (grid) glEndConditionalRender();
 }

@@ -25,6 +25,7 @@
 #include "render/LandMaskTexture.hpp"
 #include "render/OceanPatterns.hpp"
 #include "render/OceanRenderer.hpp"
+#include "render/OpenSeaMap.hpp"
 #include "render/TerrainRenderer.hpp"
 #include "render/WindTextures.hpp"
 
@@ -76,6 +77,15 @@ using io::isValidSampleCount;
 /// (kOceanFadeStartM), so the two agree at the switch.
 inline constexpr double kOceanGridMaxHeightM = 20000.0;
 inline constexpr double kOceanFadeStartM = 12000.0;
+
+/// The screen rectangle (x, y, width, height in pixels, lower-left origin) outside which the
+/// globe pass colours nothing above the atmosphere: the projections of the cones from the eye
+/// around the ellipsoid, around the atmosphere's sphere under the eye (render/globe.frag's sky)
+/// and around the Sun's disc, with two pixels of margin; the whole screen when the eye is
+/// within 1 % of either sphere's radius or a cone reaches behind it.
+std::array<int, 4> globeScissor(const geo::CameraView& view, int width, int height,
+                                const atmosphere::Parameters& atmosphere,
+                                const glm::dvec3& sunDirectionEcef);
 
 class GlobeRenderer {
  public:
@@ -141,6 +151,15 @@ class GlobeRenderer {
   /// The GSHHG land mask deciding the coast (active for global layers coarser than it).
   [[nodiscard]] const LandMaskTexture& landMask() const { return *landMask_; }
 
+  /// Above 20 km, pixels in the open deep sea (render/OpenSeaMap) go to a part of their own
+  /// (render/globe.frag); false shades them with the rest of the surface (the tests' reference).
+  void setOpenSeaPart(bool on) { openSeaPart_ = on; }
+  /// Above 20 km the globe pass is scissored to the rectangle around the globe, its atmosphere
+  /// and the Sun (globeScissor); false draws it over the whole screen (the tests' reference).
+  void setGlobeScissor(bool on) { scissorGlobe_ = on; }
+  /// The coarse open-sea map (made on the first frame above 20 km; nullptr before).
+  [[nodiscard]] const OpenSeaMap* openSeaMap() const { return openSeaMap_.get(); }
+
  private:
   void ensureTargets(int width, int height, int samples, bool auxiliary);
   /// The globe pass's two halves (render/globe.frag): the classifying draws, then the parts.
@@ -158,12 +177,19 @@ class GlobeRenderer {
   const OceanPatterns& patternsFor(double referenceWindMs, std::uint64_t seed);
 
   std::shared_ptr<const Atmosphere> atmosphere_;
-  /// globe.frag's variants: three classifying steps (0-2), the one-draw classification (3,
-  /// GLOBE_CLASSIFY_EXPORT), then three parts (4-6: sky, edge, surface; see its GLOBE_PART),
-  /// drawn first above the grid's ceiling and last (GLOBE_BEHIND, after the terrain and the
-  /// grid) below; each compiled on first use. `variant` in [0, kGlobeVariants).
-  static constexpr int kGlobeVariants = 7;
-  static constexpr int kClassifyExport = 3;
+  /// globe.frag's variants: four classifying steps (0-3; the last, the open sea, above 20 km
+  /// only), the one-draw classification (4, GLOBE_CLASSIFY_EXPORT), then four parts (5-8: sky,
+  /// edge, surface, open sea; see its GLOBE_PART), drawn first above the grid's ceiling and last
+  /// (GLOBE_BEHIND, after the terrain and the grid) below; each compiled on first use.
+  /// `variant` in [0, kGlobeVariants).
+  static constexpr int kGlobeVariants = 9;
+  static constexpr int kClassifyExport = 4;
+  /// The classifying steps and parts of a frame: the open sea's only above 20 km.
+  [[nodiscard]] int lastClassifyingStep(bool grid) const { return grid || !openSeaPart_ ? 2 : 3; }
+  /// The open-sea map on its texture unit (made on first use).
+  void bindOpenSeaMap();
+  /// Enables the scissor test on globeScissor's box (when setGlobeScissor is on).
+  void scissorToGlobe(const geo::CameraView& view, const FrameInput& f);
   const gl::Program& globeProgram(bool behind, int variant);
   void setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view, const FrameInput& f);
   std::array<gl::Program, 2 * kGlobeVariants> globePrograms_;
@@ -182,6 +208,11 @@ class GlobeRenderer {
   std::unique_ptr<TerrainRenderer> terrain_;
   std::unique_ptr<ImageryTextures> imagery_;
   std::unique_ptr<LandMaskTexture> landMask_;
+  std::vector<unsigned char> openSeaBlockedByLayer_;  ///< the layer's share, from the constructor
+  std::unique_ptr<OpenSeaMap> openSeaMap_;
+  std::unique_ptr<OpenSeaTexture> openSeaTexture_;
+  bool openSeaPart_ = true;
+  bool scissorGlobe_ = true;
   std::unique_ptr<WindTextures> wind_;
   std::unique_ptr<OceanPatterns> patterns_;
   gl::RenderTarget hdr_;

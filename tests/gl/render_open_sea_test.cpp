@@ -1,0 +1,181 @@
+// The globe's open deep sea (render/OpenSeaMap, globe.frag's open-sea part): the coarse map
+// never lets a pixel that could see land or a shallow floor into the part without the land's
+// code, and the part paints what the surface part would have.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "data/LandMask.hpp"
+#include "geo/Sun.hpp"
+#include "gl/Context.hpp"
+#include "render/GlobeRenderer.hpp"
+#include "render/OpenSeaMap.hpp"
+#include "support/GridFixtures.hpp"
+
+using namespace og;
+
+namespace {
+constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kMinDepthM = 200.0;
+
+// 2° cells: an island at 1000 m around (10° N, 30° W), a shelf 50 m deep around it, and a
+// continent east of 60° E; the ocean 4000 m deep elsewhere.
+data::LatLonGrid islandWorld() {
+  return test::globalGrid("islands", 2.0, [](double lat, double lon) {
+    const double d = std::hypot(lat - 10.0, lon + 30.0);
+    if (d < 3.0) return 1000.0;
+    if (d < 8.0) return -50.0;
+    return lon > 60.0 ? 500.0 : -4000.0;
+  });
+}
+
+// A point `angle` radians from (lat, lon) degrees in direction `bearing` radians (great circle).
+std::pair<double, double> moved(double latDeg, double lonDeg, double angle, double bearing) {
+  const double lat = latDeg * kDeg, lon = lonDeg * kDeg;
+  const double lat2 = std::asin(std::sin(lat) * std::cos(angle) + std::cos(lat) * std::sin(angle) * std::cos(bearing));
+  const double lon2 = lon + std::atan2(std::sin(bearing) * std::sin(angle) * std::cos(lat),
+                                       std::cos(angle) - std::sin(lat) * std::sin(lat2));
+  return {lat2 / kDeg, std::remainder(lon2 / kDeg, 360.0)};
+}
+
+// Every point within a cell's clearance of random points of that cell passes `isOpen`; and the
+// map is not empty (at least `minOpenCells` cells with a clearance).
+template <class IsOpen>
+void expectClearanceHolds(const render::OpenSeaMap& map, IsOpen&& isOpen, int minOpenCells) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int open = 0, bad = 0;
+  for (int row = 0; row < render::OpenSeaMap::kHeight; ++row)
+    for (int col = 0; col < render::OpenSeaMap::kWidth; ++col) {
+      const double c = map.clearanceRad[static_cast<std::size_t>(row) * render::OpenSeaMap::kWidth + static_cast<std::size_t>(col)];
+      if (c <= 0.0) continue;
+      ++open;
+      for (int k = 0; k < 6; ++k) {
+        const double lat = -90.0 + row + unit(rng), lon = -180.0 + col + unit(rng);
+        // Out to the clearance's edge, in any direction.
+        const auto [qLat, qLon] = moved(lat, lon, c * (k < 3 ? 1.0 : unit(rng)), 2.0 * std::numbers::pi * unit(rng));
+        if (!isOpen(qLat, qLon)) {
+          if (++bad <= 5) ADD_FAILURE() << "cell (" << row << ", " << col << ") clearance " << c / kDeg << "°: (" << qLat << ", " << qLon << ") is not open sea";
+        }
+      }
+    }
+  EXPECT_EQ(bad, 0);
+  EXPECT_GE(open, minOpenCells);
+}
+}  // namespace
+
+TEST(OpenSeaMap, ClearanceHoldsNoLandNoShallowFloor) {
+  const data::LatLonGrid layer = islandWorld();
+  const render::OpenSeaMap map = render::makeOpenSeaMap(render::blockedByLayer(layer, kMinDepthM));
+  expectClearanceHolds(map, [&](double lat, double lon) { return static_cast<double>(layer.sample(lat, lon)) <= -kMinDepthM; },
+                       20000);
+  // The island and its shelf are blocked, and the sea 20° west of it is open by more than 5°.
+  EXPECT_EQ(map.blocked[static_cast<std::size_t>(100) * 360 + 150], 1);  // 10° N, 30° W
+  EXPECT_EQ(map.blocked[static_cast<std::size_t>(100) * 360 + 155], 1);  // on the shelf
+  EXPECT_GT(map.clearanceRad[static_cast<std::size_t>(100) * 360 + 120], 5.0 * kDeg);  // 10° N, 60° W
+}
+
+TEST(OpenSeaMap, ClearanceHoldsAgainstTheLandMask) {
+  // A layer all deep: only the GSHHG mask blocks. Every point within a clearance has a land
+  // fraction of 0 (so elevationAt keeps the layer's depth there), and the open ocean is open.
+  const data::LatLonGrid deep = test::globalGrid("deep", 2.0, [](double, double) { return -4000.0; });
+  std::vector<unsigned char> blocked = render::blockedByLayer(deep, kMinDepthM);
+  const data::LandMask& mask = data::defaultLandMask();
+  render::addBlockedByMask(mask, blocked);
+  const render::OpenSeaMap map = render::makeOpenSeaMap(std::move(blocked));
+  expectClearanceHolds(map, [&](double lat, double lon) { return mask.landFraction(lat, lon) == 0.0f; }, 20000);
+  EXPECT_EQ(map.blocked[static_cast<std::size_t>(90 + 51) * 360 + 180], 1);  // London
+  EXPECT_GT(map.clearanceRad[static_cast<std::size_t>(90) * 360 + 180 - 140], 5.0 * kDeg);  // 0° N, 140° W
+}
+
+TEST(OpenSeaMap, ARegionalLayerHasNoOpenSea) {
+  // elevationAt reads -1 m (a shallow sea) outside a regional layer: nothing may be open.
+  const data::LatLonGrid regional = test::grid("regional", 0.0, 0.0, 1.0, 10, 10, false,
+                                               [](double, double) { return -4000.0; });
+  const render::OpenSeaMap map = render::makeOpenSeaMap(render::blockedByLayer(regional, kMinDepthM));
+  for (float c : map.clearanceRad) ASSERT_EQ(c, 0.0f);
+}
+
+TEST(GlobeRender, OpenSeaPartMatchesTheSurfacePart) {
+  // Orbit views over the island world: the open sea shaded by its own part against the
+  // unsplit surface part. A pixel misrouted to the open sea (land, the shelf, a coast) would be
+  // shaded as deep sea: far outside this bound.
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(islandWorld());
+  std::vector<render::FrameInput> frames;
+  for (const auto& [lat, lon, h] : {std::tuple{10.0, -30.0, 2.0e7}, std::tuple{10.0, -30.0, 3.0e6},
+                                    std::tuple{20.0, 40.0, 8.0e6}}) {
+    render::FrameInput f;
+    f.camera.position = {lat, lon, h};
+    f.camera.pitchDeg = -90;
+    f.width = f.height = 96;
+    f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 60, 150);
+    frames.push_back(f);
+  }
+  for (const render::FrameInput& f : frames) {
+    r.setOpenSeaPart(false);
+    r.render(f);
+    const io::ImageRgbaF reference = r.radiance();
+    r.setOpenSeaPart(true);
+    r.render(f);
+    const io::ImageRgbaF split = r.radiance();
+    ASSERT_EQ(reference.pixels.size(), split.pixels.size());
+    double maxDiff = 0.0, maxValue = 0.0;
+    for (std::size_t k = 0; k < split.pixels.size(); ++k) {
+      maxDiff = std::max(maxDiff, static_cast<double>(std::abs(split.pixels[k] - reference.pixels[k])));
+      maxValue = std::max(maxValue, static_cast<double>(std::abs(reference.pixels[k])));
+    }
+    EXPECT_LE(maxDiff, 1e-5 * maxValue + 1e-7) << "camera at " << f.camera.position.heightM << " m";
+  }
+  ASSERT_NE(r.openSeaMap(), nullptr);
+  int open = 0;
+  for (float c : r.openSeaMap()->clearanceRad) open += c > 0.0f ? 1 : 0;
+  EXPECT_GT(open, 10000);  // the part is in use
+}
+
+TEST(GlobeRender, ScissorToTheGlobeLeavesThePictureUnchanged) {
+  // Above the atmosphere the globe pass is scissored to the box around the globe, its sky and
+  // the Sun's disc: the pictures with and without must be the same, pixel for pixel, from far
+  // (a small globe, the box a fraction of the screen), with the Sun in view beside the globe,
+  // and from low orbit (the box the whole screen).
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(islandWorld());
+  std::vector<render::FrameInput> frames;
+  for (const auto& [h, pitch] : {std::pair{3.0e7, -90.0}, std::pair{2.0e7, -75.0}, std::pair{4.0e5, -15.0}}) {
+    render::FrameInput f;
+    f.camera.position = {10.0, -30.0, h};
+    f.camera.pitchDeg = pitch;
+    f.width = 128;
+    f.height = 72;
+    f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 60, 150);
+    if (pitch == -75.0) {  // the Sun in view, above the globe in the picture
+      const geo::CameraView v = geo::makeCameraView(f.camera, f.width, f.height);
+      f.sunDirectionEcef = glm::normalize(v.forward + 0.25 * v.up + 0.3 * v.right);
+    }
+    frames.push_back(f);
+  }
+  const geo::CameraView far = geo::makeCameraView(frames[0].camera, 128, 72);
+  const std::array<int, 4> box = render::globeScissor(far, 128, 72, r.atmosphere().parameters(), frames[0].sunDirectionEcef);
+  EXPECT_LT(box[2] * box[3], 128 * 72 / 2) << "the far globe's box is most of the screen";
+  EXPECT_GT(box[2] * box[3], 0);
+  for (const render::FrameInput& f : frames) {
+    r.setGlobeScissor(false);
+    r.render(f);
+    const io::ImageRgbaF whole = r.radiance();
+    r.setGlobeScissor(true);
+    r.render(f);
+    const io::ImageRgbaF scissored = r.radiance();
+    std::size_t differ = 0, sunlit = 0;
+    for (std::size_t k = 0; k < whole.pixels.size(); ++k) {
+      differ += whole.pixels[k] != scissored.pixels[k] ? 1 : 0;
+      sunlit += whole.pixels[k] > 1.0f ? 1 : 0;
+    }
+    EXPECT_EQ(differ, 0u) << "camera at " << f.camera.position.heightM << " m, pitch " << f.camera.pitchDeg;
+    if (f.camera.pitchDeg == -75.0) {
+      EXPECT_GT(sunlit, 0u) << "the Sun's disc is not in the picture";
+    }
+  }
+}
