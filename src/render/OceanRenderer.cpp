@@ -224,7 +224,11 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
       const double cosSun = glm::dot(glm::normalize(lighting.sunDirectionEcef), view.enu.up);
       atmosphere_->prepareFrameSkyLayer(std::acos(std::clamp(cosSun, -1.0, 1.0)));
     }
-    if ((features & kFeatureWaterVolume) != 0) caustics_.update(patterns, timeS);
+    if ((features & kFeatureWaterVolume) != 0) {
+      if (timer_ != nullptr) timer_->mark("ocean caustics");
+      caustics_.update(patterns, timeS);
+      if (timer_ != nullptr) timer_->mark("ocean");
+    }
   }
   if (model == OceanModel::Classic) {
     const gl::Program& p = classic_;
@@ -318,10 +322,12 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
   const std::array<GLint, 6> none{kNoRow, -1, kNoRow, -1, kNoRow, -1};
   glNamedBufferSubData(classRows_.id(), 0, sizeof none, none.data());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kClassRowsBinding, classRows_.id());
+  if (timer_ != nullptr) timer_->mark("ocean classify");
   drawGrid(classify_);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::array<GLint, 6> rows{};
   glGetNamedBufferSubData(classRows_.id(), 0, sizeof rows, rows.data());
+  if (timer_ != nullptr) timer_->mark("ocean");
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);
   // Each class by its program over the grid rows that can make its pixels. No stencil writes:
@@ -334,6 +340,8 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
   for (std::size_t k = 0; k < 3; ++k) {
     const GLint first = rows.at(2 * k), last = rows.at(2 * k + 1);
     if (last < first) continue;  // no vertex of the grid makes this class
+    static constexpr std::array<const char*, 3> kClassPass{"ocean open sea", "ocean floor", "ocean coast"};
+    if (timer_ != nullptr) timer_->mark(kClassPass.at(k));
     const gl::Program& p = program(classFeatures.at(k));
     prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, classFeatures.at(k), margin);
     glStencilFunc(GL_EQUAL, static_cast<GLint>(k + 1), 0xff);
@@ -341,6 +349,7 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
     // folds (a nearer fragment of another row in a pixel whose class a farther one set).
     drawGridRows(p, std::max(first - 1 - kFoldRows, 0), std::min(last + kFoldRows, gridRows_ - 2));
   }
+  if (timer_ != nullptr) timer_->mark("ocean");
   glStencilMask(0xff);
   glClear(GL_STENCIL_BUFFER_BIT);  // as the caller had it (the globe's parts count from 0)
   glDisable(GL_STENCIL_TEST);

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "geo/Camera.hpp"
+#include "gl/PassTimer.hpp"
 #include "gl/Objects.hpp"
 #include "gl/Shader.hpp"
 #include "ocean/OceanFrame.hpp"
@@ -82,6 +83,9 @@ class OceanRenderer {
   /// Up to this farthestSeaAngleRad the grid reads the sky maps' frame layer (1°, under a third
   /// of the Sun layers' spacing; sea-8km's 0.70° changes its image by at most 1 level).
   static constexpr double kFrameSkyMaxAngleRad = 0.0175;
+  /// Times the sea's own steps within the caller's "ocean" pass (`bench --breakdown`): the
+  /// caustics' update ("ocean caustics") and the classifying draw ("ocean classify"); nullptr: none.
+  void setPassTimer(gl::PassTimer* timer) { timer_ = timer; }
   /// Grid cell size in pixels (the paper's ~8 px); smaller = finer geometry, slower.
   void setCellPixels(int pixels) { cellPixels_ = pixels; }
 
@@ -149,6 +153,7 @@ class OceanRenderer {
   glm::vec2 elevationSize_{0.0f};
   int elevationWraps_ = 0;
   float layerMaxSlope_ = 1e6f;  ///< unknown: any layer height is near land
+  gl::PassTimer* timer_ = nullptr;
 };
 
 }  // namespace og::render
