@@ -37,7 +37,12 @@ void prepareWaterVolumeVertex(vec2 latLon, vec3 up) {}
 #ifdef OCEAN_SEA_CLASSIFY
 uniform float uLayerMaxSlope;
 uniform float uWaveReachM;  // how far the waves move a point of the grid, m (their amplitude bound)
-out float vNearLand;  // > 0 in triangles that may hold land (1 at a flagged vertex)
+// How far from land the terrain's shadows can fall on the sea or on the floor seen through it,
+// m (render/OceanRenderer::shadowReachM); negative: the frame's shadows are not routed (every
+// class keeps them).
+uniform float uShadowReachM;
+out float vNearLand;    // > 0 in triangles that may hold land (1 at a flagged vertex)
+out float vNearShadow;  // > 0 in triangles that the terrain's shadows may reach
 
 // The undisplaced point of grid vertex `i` (camera-relative, m): grid.vert's cast of its ray
 // onto the ellipsoid, rays above the horizon lowered onto it.
@@ -72,7 +77,7 @@ float seaClassReachM(vec3 rel) {
 // class 1-3 (render/OceanRenderer reads them back and draws each class over those rows only):
 // a pixel is class 1 or 2 as its interpolated floor depth is beyond or within the reach, so
 // only in triangles with a vertex on that side; class 3 only in triangles with a flagged vertex.
-layout(std430, binding = 3) buffer SeaClassRows { int seaClassRows[6]; };
+layout(std430, binding = 3) buffer SeaClassRows { int seaClassRows[8]; };
 uniform float uWaterReachM;  // as ocean/sea_classify.frag
 uniform int uCoastClass;
 
@@ -91,20 +96,27 @@ bool seaClassNearLayerBorder(vec2 latLon, float reachM) {
   return any(lessThan(cell, margin - 0.5)) || any(greaterThan(cell, uElevationSize - 0.5 - margin));
 }
 
-void prepareSeaClassVertex(vec2 latLon, vec3 rel) {
-  float reachM = seaClassReachM(rel);
-  if (uElevationSize.x <= 0.0) {
-    vNearLand = 0.0;  // no layer: sea everywhere (seaAt)
-  } else if (landMaskOn()) {
+// Whether land may lie within `reachM` of (latitude, longitude) (1) or not (0).
+float seaClassLandWithin(vec2 latLon, float reachM) {
+  if (uElevationSize.x <= 0.0) return 0.0;  // no layer: sea everywhere (seaAt)
+  if (landMaskOn()) {
     float cellM = WGS84_A * PI / float(textureSize(uLandMask, 0).y);
     float perCell = reachM / (cellM * max(cos(latLon.x), 1e-3));
-    vNearLand = landFraction(latLon) + 1.4143 * perCell >= 0.5 ? 1.0 : 0.0;
-  } else {
-    bool nearLand = elevationAt(latLon) + uLayerMaxSlope * reachM >= 0.0;
-    vNearLand = nearLand || seaClassNearLayerBorder(latLon, reachM) ? 1.0 : 0.0;
+    return landFraction(latLon) + 1.4143 * perCell >= 0.5 ? 1.0 : 0.0;
   }
+  bool nearLand = elevationAt(latLon) + uLayerMaxSlope * reachM >= 0.0;
+  return nearLand || seaClassNearLayerBorder(latLon, reachM) ? 1.0 : 0.0;
+}
+
+// Class 3 (the terrain's shadows without the coast test) where shadows are routed and may
+// reach; class 4 (land near: every feature) where the coast test is routed and land may be near.
+void prepareSeaClassVertex(vec2 latLon, vec3 rel) {
+  float reachM = seaClassReachM(rel);
+  vNearLand = seaClassLandWithin(latLon, reachM);
+  vNearShadow = uShadowReachM < 0.0 ? 0.0 : seaClassLandWithin(latLon, reachM + uShadowReachM);
   countSeaClassRow(vFloorDepthM <= uWaterReachM ? 2 : 1);
-  if (uCoastClass == 1 && vNearLand > 0.0) countSeaClassRow(3);
+  if (vNearShadow > 0.0) countSeaClassRow(3);
+  if (uCoastClass == 1 && vNearLand > 0.0) countSeaClassRow(4);
 }
 #else
 // Whether a regional layer's border is within `reachM` of (latitude, longitude): the -1 m

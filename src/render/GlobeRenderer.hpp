@@ -136,6 +136,7 @@ class GlobeRenderer {
   void setPassTimer(gl::PassTimer* timer) {
     timer_ = timer;
     terrain_->setPassTimer(timer);
+    ocean_->setPassTimer(timer);
   }
 
   /// The wave patterns of the last frame (nullptr before the first).

@@ -220,7 +220,11 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
       const double cosSun = glm::dot(glm::normalize(lighting.sunDirectionEcef), view.enu.up);
       atmosphere_->prepareFrameSkyLayer(std::acos(std::clamp(cosSun, -1.0, 1.0)));
     }
-    if ((features & kFeatureWaterVolume) != 0) caustics_.update(patterns, timeS);
+    if ((features & kFeatureWaterVolume) != 0) {
+      if (timer_ != nullptr) timer_->mark("ocean caustics");
+      caustics_.update(patterns, timeS);
+      if (timer_ != nullptr) timer_->mark("ocean");
+    }
   }
   if (model == OceanModel::Classic) {
     if (classic_.id() == 0) {  // made on first use (start-up: bench --startup)
@@ -289,6 +293,22 @@ bool OceanRenderer::drawTargetHasStencil() {
   return bits >= 2;
 }
 
+double OceanRenderer::shadowReachM(const OceanLighting& lighting, const geo::CameraView& view, bool volume,
+                                   double waterReachM) {
+  if (lighting.shadows == nullptr || !lighting.shadows->on) return -1.0;
+  // The Sun's elevation at the eye; across the sea in view (a few km from a few metres up) the
+  // vertical turns by less than the 0.01 rad taken off.
+  const double sinElevation = glm::dot(glm::normalize(lighting.sunDirectionEcef), view.enu.up);
+  const double elevation = std::asin(std::clamp(sinElevation, -1.0, 1.0)) - 0.01;
+  if (elevation < 0.0175) return -1.0;
+  // The maps hold no ground below sea level (terrain/shadow_depth.frag): no caster, no shadow.
+  if (lighting.shadows->casterMaxHeightM < 0.0) return 0.0;
+  // The casters' meshes with a margin for their morphing between levels.
+  const double heightM = 1.05 * std::max(lighting.shadows->casterMaxHeightM, 0.0) + 5.0;
+  constexpr double kTanCritical = 1.13;  // tan(asin(1 / 1.34)): a refracted ray's steepest slope
+  return heightM / std::tan(elevation) + (volume ? (1.0 + kTanCritical) * waterReachM : 0.0);
+}
+
 void OceanRenderer::drawClassified(const geo::CameraView& view, int height, const OceanPatterns& patterns,
                                    const ocean::OceanFrame& frame, const OceanLighting& lighting,
                                    double amplitudeScale, const WindTextures& wind, unsigned features,
@@ -298,7 +318,7 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
     d.emplace_back("OCEAN_SEA_CLASSIFY");
     classify_ = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_classify.frag"}}, d);
     classRows_ = gl::createBuffer();
-    glNamedBufferStorage(classRows_.id(), 6 * sizeof(GLint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferStorage(classRows_.id(), 2 * kSeaClasses * sizeof(GLint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   }
   const bool volume = (features & kFeatureWaterVolume) != 0, coast = (features & kFeatureCoastTest) != 0;
   prepare(classify_, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
@@ -308,6 +328,10 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
   classify_.set("uCoastClass", coast ? 1 : 0);
   classify_.set("uLayerMaxSlope", layerMaxSlope_);
   classify_.set("uWaveReachM", static_cast<float>(amplitudeScale * patterns.amplitudeBoundM()));
+  // The terrain's shadows routed to class 3 (and 4) where they can reach, if the frame has them.
+  const double shadowReach = (features & kFeatureShadows) != 0 ? shadowReachM(lighting, view, volume, reachM) : -1.0;
+  classify_.set("uShadowReachM", static_cast<float>(shadowReach));
+  const unsigned routedShadows = shadowReach >= 0.0 ? kFeatureShadows : 0u;
   // The classes: the largest of the grid's fragments in a pixel (folds at grazing angles),
   // only where the sea passes the depth test (in front of the terrain).
   glEnable(GL_STENCIL_TEST);
@@ -317,13 +341,15 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthMask(GL_FALSE);
-  const std::array<GLint, 6> none{kNoRow, -1, kNoRow, -1, kNoRow, -1};
+  const std::array<GLint, 2 * kSeaClasses> none{kNoRow, -1, kNoRow, -1, kNoRow, -1, kNoRow, -1};
   glNamedBufferSubData(classRows_.id(), 0, sizeof none, none.data());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kClassRowsBinding, classRows_.id());
+  if (timer_ != nullptr) timer_->mark("ocean classify");
   drawGrid(classify_);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::array<GLint, 6> rows{};
+  std::array<GLint, 2 * kSeaClasses> rows{};
   glGetNamedBufferSubData(classRows_.id(), 0, sizeof rows, rows.data());
+  if (timer_ != nullptr) timer_->mark("ocean");
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);
   // Each class by its program over the grid rows that can make its pixels. No stencil writes:
@@ -331,11 +357,15 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
   // coast test), so a class's shading costs only its pixels, and its vertices only its rows.
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glStencilMask(0);
-  const unsigned routed = kFeatureWaterVolume | kFeatureCoastTest;
-  const std::array<unsigned, 3> classFeatures{features & ~routed, features & ~kFeatureCoastTest, features};
-  for (std::size_t k = 0; k < 3; ++k) {
+  const unsigned routed = kFeatureWaterVolume | kFeatureCoastTest | routedShadows;
+  const std::array<unsigned, kSeaClasses> classFeatures{
+      features & ~routed, features & ~(kFeatureCoastTest | routedShadows), features & ~kFeatureCoastTest, features};
+  for (std::size_t k = 0; k < kSeaClasses; ++k) {
     const GLint first = rows.at(2 * k), last = rows.at(2 * k + 1);
     if (last < first) continue;  // no vertex of the grid makes this class
+    static constexpr std::array<const char*, kSeaClasses> kClassPass{"ocean open sea", "ocean floor",
+                                                                     "ocean shadows", "ocean coast"};
+    if (timer_ != nullptr) timer_->mark(kClassPass.at(k));
     const gl::Program& p = program(classFeatures.at(k));
     prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, classFeatures.at(k), margin);
     glStencilFunc(GL_EQUAL, static_cast<GLint>(k + 1), 0xff);
@@ -343,6 +373,7 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
     // folds (a nearer fragment of another row in a pixel whose class a farther one set).
     drawGridRows(p, std::max(first - 1 - kFoldRows, 0), std::min(last + kFoldRows, gridRows_ - 2));
   }
+  if (timer_ != nullptr) timer_->mark("ocean");
   glStencilMask(0xff);
   glClear(GL_STENCIL_BUFFER_BIT);  // as the caller had it (the globe's parts count from 0)
   glDisable(GL_STENCIL_TEST);

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "geo/Camera.hpp"
+#include "gl/PassTimer.hpp"
 #include "gl/Objects.hpp"
 #include "gl/Shader.hpp"
 #include "ocean/OceanFrame.hpp"
@@ -82,6 +83,9 @@ class OceanRenderer {
   /// Up to this farthestSeaAngleRad the grid reads the sky maps' frame layer (1°, under a third
   /// of the Sun layers' spacing; sea-8km's 0.70° changes its image by at most 1 level).
   static constexpr double kFrameSkyMaxAngleRad = 0.0175;
+  /// Times the sea's own steps within the caller's "ocean" pass (`bench --breakdown`): the
+  /// caustics' update ("ocean caustics") and the classifying draw ("ocean classify"); nullptr: none.
+  void setPassTimer(gl::PassTimer* timer) { timer_ = timer; }
   /// Grid cell size in pixels (the paper's ~8 px); smaller = finer geometry, slower.
   void setCellPixels(int pixels) { cellPixels_ = pixels; }
 
@@ -111,15 +115,28 @@ class OceanRenderer {
   static constexpr GLint kNoRow = 1 << 30;
   static constexpr GLuint kClassRowsBinding = 3;  ///< ocean/water_volume_vertex.glsl's SeaClassRows
   static constexpr int kFoldRows = 2;
+  /// The sea's classes (shaders/ocean/sea_classify.frag): open sea, floor, shadows, coast.
+  static constexpr std::size_t kSeaClasses = 4;
   /// The sea in classes (shaders/ocean/sea_classify.frag): one cheap draw of the grid writes
   /// each pixel's class into the stencil, then each class is drawn by the program with only the
-  /// `features` it needs (the open sea without the water volume and the coast test, the floor
-  /// within reach without the coast test, land near with both), stencil-tested before its
+  /// `features` it needs (the open sea without the water volume, the coast test and the shadows,
+  /// the floor within reach without the coast test and the shadows, the shadows' reach without
+  /// the coast test, land near with all), stencil-tested before its
   /// shader runs. The stencil is left 0. Needs a stencil buffer in the bound framebuffer.
   void drawClassified(const geo::CameraView& view, int height, const OceanPatterns& patterns,
                       const ocean::OceanFrame& frame, const OceanLighting& lighting,
                       double amplitudeScale, const WindTextures& wind, unsigned features,
                       const glm::vec4& margin);
+  /// How far from land (m along the sea) the terrain's shadows can fall on the sea's surface or
+  /// on the floor seen through it: the casters' height over the tangent of the Sun's elevation
+  /// (the longest shadow on the sea), plus, with the water volume, how far from its pixel the
+  /// floor's shadow is looked up (ocean/water_volume.glsl's floorSunVisibility: the refracted
+  /// view ray's horizontal run to a floor within the water's reach `waterReachM`, at most
+  /// waterReachM, and the refracted Sun ray's back up, at most its depth x tan 48.3°, the
+  /// critical angle: 1.13 waterReachM); 0 when no caster rises above the sea. Negative where
+  /// the shadows are not routed (no shadow maps, the Sun within 1° of the horizon).
+  [[nodiscard]] static double shadowReachM(const OceanLighting& lighting, const geo::CameraView& view,
+                                           bool volume, double waterReachM);
   /// Whether the bound draw framebuffer has a stencil buffer.
   [[nodiscard]] static bool drawTargetHasStencil();
 
@@ -134,7 +151,7 @@ class OceanRenderer {
   std::vector<std::string> defines_;        ///< the filtered model's, whatever the features
   std::array<gl::Program, 16> variants_;    ///< by feature bits; id() 0 until compiled
   gl::Program classify_;                    ///< ocean/sea_classify.frag; id() 0 until compiled
-  gl::Buffer classRows_;  ///< per class, the first and last grid row of its vertices (6 ints)
+  gl::Buffer classRows_;  ///< per class, the first and last grid row of its vertices (8 ints)
   CausticCurvature caustics_;  ///< the water volume's caustics (render/WaterVolume)
   gl::Program classic_;      ///< id() 0 until first used, as the next two
   gl::Texture bumpMap_;      ///< classic: tileable ripple normals, mip-mapped
@@ -149,6 +166,7 @@ class OceanRenderer {
   glm::vec2 elevationSize_{0.0f};
   int elevationWraps_ = 0;
   float layerMaxSlope_ = 1e6f;  ///< unknown: any layer height is near land
+  gl::PassTimer* timer_ = nullptr;
 };
 
 }  // namespace og::render

@@ -95,10 +95,32 @@ void TerrainRenderer::bindTile(const terrain::Tile& t) {
   glVertexArrayVertexBuffer(vao_.id(), 0, it->second.vertices.id(), 0, sizeof(terrain::TileVertex));
 }
 
+namespace {
+// The highest vertex of `t` (m above sea level) over the square box |xy - mid| <= half of a
+// shadow map (xy camera-relative along lx, ly), widened by two of its cells so that the
+// triangles reaching in count: what the tile casts into that map (the sea's classes bound its
+// shadows' reach by it, render/OceanRenderer::shadowReachM). Coarse tiles' bounding spheres
+// overlap the box while their heights (a far island's peaks) lie outside it.
+double maxHeightOverBox(const terrain::Tile& t, const glm::dvec3& eyeEcef, const glm::dvec3& lx,
+                        const glm::dvec3& ly, const glm::dvec2& mid, double half) {
+  const glm::dvec3 c = t.centreEcef - eyeEcef;
+  const double reach = half + 2.0 * t.spacingM;
+  double most = -1e30;
+  for (std::size_t k = 0; k < t.positions.size() && k < t.vertices.size(); ++k) {
+    const glm::dvec3 p = c + t.positions[k];
+    const glm::dvec2 xy(glm::dot(p, lx), glm::dot(p, ly));
+    if (std::abs(xy.x - mid.x) <= reach && std::abs(xy.y - mid.y) <= reach)
+      most = std::max(most, static_cast<double>(t.vertices[k].heightM));
+  }
+  return most;
+}
+}  // namespace
+
 void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
                                       const std::vector<const terrain::Tile*>& tiles,
                                       const glm::dvec3& sunDirectionEcef) {
   shadows_.on = false;
+  shadows_.casterMaxHeightM = -1e30;
   const glm::dvec3 s = glm::normalize(sunDirectionEcef);
   const double h = view.position.heightM;
   // Shadows of relief matter within a few hundred km; from farther out they are sub-pixel.
@@ -177,6 +199,7 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
       const glm::dvec3 c = t->boundCentreEcef - view.positionEcef;
       const glm::dvec2 xy(glm::dot(c, lx), glm::dot(c, ly));
       if (glm::any(glm::greaterThan(glm::abs(xy - mid), glm::dvec2(half + t->boundRadiusM)))) continue;
+      shadows_.casterMaxHeightM = std::max(shadows_.casterMaxHeightM, maxHeightOverBox(*t, view.positionEcef, lx, ly, mid, half));
       shadowProgram_.set("uTileOffset", glm::vec3(t->centreEcef - view.positionEcef));
       shadowProgram_.set("uMorphScale", morphScale(*t, view));
       bindTile(*t);

@@ -32,6 +32,9 @@ struct SunShadows {
   std::array<glm::mat4, kCascades> matrices{};
   std::array<float, kCascades> texelM{};
   float splitM = 0.0f;
+  /// The highest point of the tiles drawn into the maps, m above sea level: bounds how far
+  /// from land their shadows fall (the sea's classes, render/OceanRenderer).
+  double casterMaxHeightM = -1e30;
   /// Sets terrain/shadow.glsl's uniforms on `p`.
   void apply(const gl::Program& p) const;
 };

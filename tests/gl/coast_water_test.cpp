@@ -357,6 +357,54 @@ data::LatLonGrid shoreShelfAndDeep() {
 }
 }  // namespace
 
+namespace {
+// A cliff coast: 300 m of land north of kLat, the floor falling 10 m per km from the foot of
+// the cliff (the floor within reach over 15 km): with the Sun low behind the cliff its shadow
+// falls ~2 km out over the sea and the floor seen through it.
+data::LatLonGrid cliffCoast() {
+  return test::grid("cliff", kLat - 0.1, kLon - 0.1, 0.001, 201, 201, false, [](double lat, double) {
+    const double offshoreKm = (kLat - lat) * 111.2;
+    return offshoreKm <= 0.0 ? 300.0 : -1.0 - 10.0 * offshoreKm;
+  });
+}
+}  // namespace
+
+// The terrain's shadows routed to their own class (render/OceanRenderer::shadowReachM): the
+// classes without them (open sea, floor) must lie beyond every shadow the cliff casts. Looking
+// at the cliff 2.5 km offshore from 100 m, the Sun 8° up behind it: its shadow covers the sea
+// (and the Sun's glitter) from the cliff's foot to ~2.1 km out, the lower half of the picture
+// but its bottom rows, so a shadow reach too short leaves a lit band where the single program
+// has the shadow (the glitter: hundreds of levels). Measured: identical.
+TEST(CoastWater, ShadowClassCoversEveryShadowOnTheSea) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(cliffCoast());
+  render::FrameInput f;
+  f.camera.position = {kLat - 2.5 / 111.2, kLon, 100.0};
+  f.camera.headingDeg = 0.0;
+  f.camera.pitchDeg = -12.0;
+  f.camera.verticalFovDeg = 50.0;
+  f.width = 192;
+  f.height = 108;
+  f.wind.speedMs = 6.0;
+  f.simulationTimeS = 1.5;
+  f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 8.0, 0.0);
+  r.render(f);
+  const io::ImageRgba8 classes = r.display();
+  save(r, "coast_classes_cliff");
+  f.oceanClasses = false;
+  r.render(f);
+  const io::ImageRgba8 single = r.display();
+  save(r, "coast_classes_cliff_single");
+  const test::Comparison c = test::compareRgb(classes, single, 1);
+  if (!c.within({2, 0.01, 1, 0.001}))
+    io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / "coast_classes_cliff.diff.png", c.diff);
+  EXPECT_TRUE(c.within({2, 0.01, 1, 0.001})) << c.describe();
+  // The comparison means something only with the cliff in the shadow maps (the routing's
+  // reach comes from the casters' height: 300 m / tan 8° = 2.1 km).
+  EXPECT_TRUE(r.terrain().shadows().on);
+  EXPECT_GT(r.terrain().shadows().casterMaxHeightM, 250.0);
+}
+
 // The sea in classes (open sea, floor within reach, land near; each drawn by a program with
 // only its code) against the one program of all the frame's features, looking at the shore
 // with the Sun's glitter: over the shelf and deep layer 4.2 km offshore (180 m of water), 100 m
