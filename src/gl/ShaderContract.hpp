@@ -30,6 +30,7 @@ enum TextureUnit : unsigned {
   kUnitImageryNight = 16,
   kUnitImageryLayers = 17,
   kUnitLandMask = 18,            ///< terrain/landmask.glsl (render/LandMaskTexture)
+  kUnitSkyRipMap = 20,           ///< atmosphere/skymap.glsl SKY_RIP_MAP (render/SkyRipMap; 19: WaterVolume.hpp)
   // Passes of their own, which bind nothing else, reuse unit 0:
   kUnitToneRadiance = 0,         ///< render/tonemap.frag uRadiance (the HDR target)
   kUnitOverlayText = 0,          ///< viewer/text.frag uText (the viewer's text overlay)
