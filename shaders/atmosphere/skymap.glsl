@@ -14,8 +14,9 @@
 //       filtered over the footprint given by the two stereographic-space gradients dUdx, dUdy
 //       (the axes of the filter ellipse, e.g. Bruneton 2010 Fig. 9: 2 sigma_x dU/dzeta_x and
 //       2 sigma_y dU/dzeta_y; pass zeros for a point sample), with textureGrad: hardware
-//       anisotropy on a GPU, up to 4 lookups along the ellipse on llvmpipe (uSkyFilterProbes,
-//       Atmosphere::chooseSkyFilter). sunZenith: the Sun's zenith angle
+//       anisotropy on a GPU; on llvmpipe one lookup in the frame layer's rip-map (SKY_RIP_MAP)
+//       where the view reads the frame layer, else up to 4 lookups along the ellipse
+//       (uSkyFilterProbes; Atmosphere::chooseSkyFilter). sunZenith: the Sun's zenith angle
 //       at the surface point, radians [0, pi] (beyond 105° the last, dark layer is used);
 //       sunAzimuth: the Sun's azimuth in the same local frame, radians, counter-clockwise from
 //       +x towards +y (atan(sun.y, sun.x)). Directions below the horizon return the light the
@@ -69,6 +70,29 @@ vec3 skyMapLayerFiltered(vec2 tc, float layer, vec2 gx, vec2 gy) {
   return sum / float(n);
 }
 
+#ifdef SKY_RIP_MAP
+// The frame layer's radial rip-map (render/SkyRipMap, atmosphere/skymap_rip.comp): layer j
+// blurred along the map's radial direction by 2^j texels of every mip level.
+layout(binding = OG_UNIT_SKY_RIP_MAP) uniform sampler2DArray uSkyRipMap;
+
+// The frame layer over the footprint with axes gx, gy (texture space) in one lookup: the layer
+// whose radial blur matches the ellipse's radial extent over its tangential one (nearest power
+// of 2), read with the gradients' radial parts shrunk by that blur, so that the isotropic
+// lookup's level of detail follows what is left (the tangential extent, or radial / 8 for
+// longer ellipses). Reflected footprints stretch radially (atmosphere/skymap_rip.comp).
+vec3 skyRipMapFiltered(vec2 tc, vec2 gx, vec2 gy) {
+  vec2 centred = tc - 0.5;
+  float r = length(centred);
+  vec2 radial = r > 1e-6 ? centred / r : vec2(1.0, 0.0);
+  vec2 along = vec2(dot(gx, radial), dot(gy, radial));                              // radial parts
+  vec2 across = vec2(dot(gx, vec2(-radial.y, radial.x)), dot(gy, vec2(-radial.y, radial.x)));
+  float layers = float(textureSize(uSkyRipMap, 0).z - 1);
+  float j = clamp(round(0.5 * log2(max(dot(along, along), 1e-20) / max(dot(across, across), 1e-20))), 0.0, layers);
+  float shrink = exp2(-j) - 1.0;
+  return textureGrad(uSkyRipMap, vec3(tc, j), gx + shrink * along.x * radial, gy + shrink * along.y * radial).rgb;
+}
+#endif
+
 vec3 skyMapRadianceStereo(vec2 u, float sunZenith, float sunAzimuth, vec2 dUdx, vec2 dUdy) {
   // Rotate by -sunAzimuth so the Sun lies along +x, as in the stored maps.
   float c = cos(sunAzimuth), s = sin(sunAzimuth);
@@ -81,7 +105,11 @@ vec3 skyMapRadianceStereo(vec2 u, float sunZenith, float sunAzimuth, vec2 dUdx, 
   // A view whose Sun zenith angle hardly varies (the sea from a few metres: the horizon is a
   // few km away) reads the two layers around the camera's, blended once per frame: one
   // filtered lookup instead of two.
+#ifdef SKY_RIP_MAP
+  return skyRipMapFiltered(tc, gx, gy);
+#else
   return skyMapLayerFiltered(tc, float(layers), gx, gy);
+#endif
 #else
   float f = clamp(sunZenith / SKYMAP_MAX_ZENITH, 0.0, 1.0) * float(layers - 1);
   float l0 = min(floor(f), float(layers - 2));

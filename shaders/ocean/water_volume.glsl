@@ -62,7 +62,7 @@ vec4 floorDetail(vec3 dUp, float footprintM) {
 
 // The caustics' curvature map (render/WaterVolume's CausticCurvature, ocean/caustic_curvature.comp):
 // tr H of the CAUSTIC_PATTERNS finest patterns per texel (1/texel), mip-mapped.
-layout(binding = 19) uniform sampler2DArray uCausticCurvature;
+layout(binding = OG_UNIT_CAUSTIC_CURVATURE) uniform sampler2DArray uCausticCurvature;
 
 // Trace of the height's Hessian (1/m) of the sea surface at xy (frame axes) filtered over a
 // footprint of `footprintM`, from the finest patterns only (the ones that focus light at these

@@ -27,6 +27,7 @@ std::vector<std::string> contractDefines() {
           define("OG_UNIT_ATM_IRRADIANCE", kUnitAtmIrradiance),
           define("OG_UNIT_SKY_MAP", kUnitSkyMap),
           define("OG_UNIT_SKY_IRRADIANCE", kUnitSkyIrradiance),
+          define("OG_UNIT_SKY_RIP_MAP", kUnitSkyRipMap),
           define("OG_UNIT_BUMP_MAP", kUnitBumpMap),
           define("OG_UNIT_FRESNEL_RAMP", kUnitFresnelRamp),
           define("OG_UNIT_PATTERN_TABLE", kUnitPatternTable),
@@ -39,6 +40,7 @@ std::vector<std::string> contractDefines() {
           define("OG_UNIT_IMAGERY_TILES", kUnitImageryTiles),
           define("OG_UNIT_LAND_MASK", kUnitLandMask),
           define("OG_UNIT_OPEN_SEA", kUnitOpenSea),
+          define("OG_UNIT_CAUSTIC_CURVATURE", kUnitCausticCurvature),
           define("OG_UNIT_TONE_RADIANCE", kUnitToneRadiance),
           define("OG_UNIT_OVERLAY_TEXT", kUnitOverlayText)};
 }

@@ -13,6 +13,7 @@
 #include "atmosphere/Reference.hpp"
 #include "gl/Objects.hpp"
 #include "gl/Shader.hpp"
+#include "render/SkyRipMap.hpp"
 
 namespace og::render {
 
@@ -27,6 +28,9 @@ struct AtmosphereOptions {
 /// inside the elliptical filter support"). Chosen in one place, Atmosphere::chooseSkyFilter.
 struct SkyFilter {
   int probes = 1;             ///< most textureGrad lookups along the ellipse's major axis (1 or 4)
+  /// The frame layer's rip-map (render/SkyRipMap): one lookup for the views that read the frame
+  /// layer (the sea from below ~1 km), the probes elsewhere. On CPU rasterisers.
+  bool ripMap = false;
   float maxAnisotropy = 1.0f; ///< the sky maps' sampler anisotropy (hardware filtering)
   std::string reason;         ///< why, for logs and `info`
 };
@@ -59,6 +63,8 @@ class Atmosphere {
   /// any other value throws og::InputError.
   static SkyFilter chooseSkyFilter();
   [[nodiscard]] const SkyFilter& skyFilter() const { return skyFilter_; }
+  /// The frame layer's rip-map as last prepared (prepareFrameSkyLayer), for tests.
+  [[nodiscard]] const SkyRipMap& skyRipMap() const { return rip_; }
 
   /// Sets `program`'s uAtmosphere uniforms and the sky filter's uSkyFilterProbes
   /// (skymap.glsl) and binds the tables to units 2-5 (model.glsl).
@@ -68,6 +74,7 @@ class Atmosphere {
   /// Fills the sky maps' frame layer (the array's last) with the maps at Sun zenith angle
   /// `sunZenithRad` (the two layers around it blended, every mip level), for shaders built with
   /// SKY_FRAME_LAYER (skymap.glsl), which read it alone: views whose Sun zenith hardly varies.
+  /// With SkyFilter::ripMap also its radial rip-map (render/SkyRipMap), when the Sun moved.
   void prepareFrameSkyLayer(double sunZenithRad) const;
 
   [[nodiscard]] const atmosphere::Parameters& parameters() const { return parameters_; }
@@ -110,6 +117,7 @@ class Atmosphere {
   gl::Texture singleMie_;
   gl::Texture skyMaps_;
   mutable gl::Program frameLayer_;  ///< atmosphere/skymap_frame.comp, compiled on first use
+  mutable SkyRipMap rip_;           ///< the frame layer prefiltered radially (SkyFilter::ripMap)
   gl::Texture skyIrradiance_;
 };
 

@@ -98,6 +98,7 @@ const gl::Program& OceanRenderer::program(unsigned features) {
   if ((features & kFeatureCoastTest) == 0) d.emplace_back("SEA_NO_COAST_TEST");
   if ((features & kFeatureShadows) == 0) d.emplace_back("SHADOWS_OFF");
   if ((features & kFeatureFrameSky) != 0) d.emplace_back("SKY_FRAME_LAYER");
+  if ((features & kFeatureFrameSky) != 0 && atmosphere_->skyFilter().ripMap) d.emplace_back("SKY_RIP_MAP");
   p = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}}, d);
   return p;
 }

@@ -38,7 +38,7 @@ double layerMaxSlope(const data::LatLonGrid& layer);
 /// caustics): the ones whose curvature matters at a few metres (longer waves focus far deeper).
 inline constexpr int kCausticPatterns = 2;
 /// The texture unit of the caustics' curvature map (water_volume.glsl's uCausticCurvature).
-inline constexpr unsigned kCausticCurvatureUnit = 19;
+inline constexpr unsigned kCausticCurvatureUnit = gl::kUnitCausticCurvature;
 
 /// The defines of programs including shaders/ocean/water_volume.glsl (CAUSTIC_PATTERNS).
 std::vector<std::string> waterVolumeDefines();

@@ -12,6 +12,7 @@
 #include "atmosphere/Reference.hpp"
 #include "gl/Context.hpp"
 #include "render/Atmosphere.hpp"
+#include "support/GlFixtures.hpp"
 
 using namespace og;
 namespace fs = std::filesystem;
@@ -123,6 +124,33 @@ TEST(AtmospherePrecompute, FrameSkyLayerBlendsTheLayersAroundTheSun) {
   }
   EXPECT_LT(worst, 2e-3 * largest);  // half floats
   EXPECT_GT(largest, 0.0);
+}
+
+// The frame layer's radial rip-map (render/SkyRipMap, on CPU rasterisers): layer 0 is the frame
+// layer itself; layer j averages 2^j texels along the radius (atmosphere/skymap_rip.comp), so a
+// texel's value lies between the frame layer's values along its radius and differs from it
+// where the sky varies radially.
+TEST(AtmospherePrecompute, SkyRipMapCopiesAndBlursTheFrameLayerRadially) {
+  auto ctx = gl::createHeadlessContext();
+  const test::ScopedEnv env("OCEANGLOBE_SKY_FILTER", "rip");
+  const atmosphere::Parameters p = smallEarth(2);
+  render::Atmosphere gpu(p, noCache());
+  const int layers = p.tables.skyMapLayers;
+  gpu.prepareFrameSkyLayer(0.4 * render::Atmosphere::kSkyMapMaxZenithRad);
+  const std::vector<float> frame = gpu.readSkyMap(layers);
+  const std::vector<float> rip = gpu.skyRipMap().read();
+  const std::size_t layerSize = frame.size();
+  ASSERT_EQ(rip.size(), layerSize * render::SkyRipMap::kLayers);
+  double worst = 0.0, largest = 0.0, blurred = 0.0;
+  for (std::size_t i = 0; i < layerSize; ++i) {
+    worst = std::max(worst, std::abs(static_cast<double>(rip[i]) - static_cast<double>(frame[i])));
+    largest = std::max(largest, std::abs(static_cast<double>(frame[i])));
+    blurred = std::max(blurred, std::abs(static_cast<double>(rip[3 * layerSize + i]) - static_cast<double>(frame[i])));
+  }
+  std::printf("rip-map layer 0 against the frame layer: worst %.3g of %.3g; layer 3 differs by up to %.3g\n",
+              worst, largest, blurred);
+  EXPECT_LT(worst, 2e-3 * largest);
+  EXPECT_GT(blurred, 0.01 * largest);
 }
 
 TEST(AtmospherePrecompute, CacheIsHitAndCorruptCacheIsRebuilt) {

@@ -43,7 +43,7 @@ TEST(ShaderContract, EverySamplerOfTheFrameIsNamedInTheContract) {
   for (const char* file : {"render/elevation.glsl", "ocean/wind.glsl", "atmosphere/model.glsl",
                            "atmosphere/skymap.glsl", "ocean/classic.frag", "ocean/patterns.glsl",
                            "terrain/shadow.glsl", "terrain/imagery.glsl", "terrain/landmask.glsl",
-                           "render/tonemap.frag", "viewer/text.frag", "render/globe.frag"}) {
+                           "render/tonemap.frag", "viewer/text.frag", "render/globe.frag", "ocean/water_volume.glsl"}) {
     const std::string text = og::gl::readShaderFile(file);
     EXPECT_FALSE(std::regex_search(text, literalSampler)) << file << " binds a sampler to a literal unit";
     for (auto it = std::sregex_iterator(text.begin(), text.end(), namedSampler); it != std::sregex_iterator(); ++it)
@@ -61,7 +61,8 @@ TEST(ShaderContract, EverySamplerOfTheFrameIsNamedInTheContract) {
                      og::gl::kUnitFresnelRamp, og::gl::kUnitPatternTable, og::gl::kUnitShadowMap,
                      og::gl::kUnitPatternDisplacement, og::gl::kUnitPatternSlopes, og::gl::kUnitImageryDay,
                      og::gl::kUnitImageryNight, og::gl::kUnitImageryLayers, og::gl::kUnitLandMask,
-                     og::gl::kUnitImageryTiles, og::gl::kUnitOpenSea})
+                     og::gl::kUnitImageryTiles, og::gl::kUnitOpenSea, og::gl::kUnitSkyRipMap,
+                     og::gl::kUnitCausticCurvature})
     EXPECT_TRUE(units.insert(u).second) << "unit " << u << " named twice";
 }
 
