@@ -10,6 +10,7 @@
 #include "geo/Camera.hpp"
 #include "gl/Objects.hpp"
 #include "gl/Shader.hpp"
+#include "gl/ShaderContract.hpp"
 #include "ocean/WaterOptics.hpp"
 #include "render/OceanPatterns.hpp"
 
