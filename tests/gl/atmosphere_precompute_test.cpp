@@ -157,7 +157,9 @@ TEST(AtmospherePrecompute, CacheIsHitAndCorruptCacheIsRebuilt) {
   auto ctx = gl::createHeadlessContext();
   atmosphere::Parameters p = smallEarth(2);
   render::AtmosphereOptions o;
-  o.cacheDirectory = freshDir("atmosphere-cache");
+  // Its own directory: every other test shares atmosphere-cache (OCEANGLOBE_CACHE_DIR) and
+  // may write or read it while this one corrupts and removes files there.
+  o.cacheDirectory = freshDir("atmosphere-cache-precompute-test");
   render::Atmosphere first(p, o);
   EXPECT_FALSE(first.timing().fromCache);
   const fs::path file = first.timing().cacheFile;
