@@ -31,7 +31,7 @@ const std::vector<std::string>& elevationNames() {
   return names;
 }
 
-constexpr std::string_view kDefaultFile = "etopo20_relief.nc";
+constexpr std::string_view kDefaultFile = "etopo5_relief.nc";
 
 
 /// Metres per unit of an elevation field's units; nullopt for units that are not a length.
@@ -193,7 +193,7 @@ const LatLonGrid& defaultElevation() {
     const auto relief = og::embedded::data::find(kDefaultFile);
     const auto mask = og::embedded::data::find("gshhg_landmask_2m.png");
     const std::uint64_t key = embeddedCacheKey({relief.value_or(""), mask.value_or("")});
-    return cachedEmbedded<LatLonGrid>("elevation-etopo20", key, "elevation", deserializeGrid,
+    return cachedEmbedded<LatLonGrid>("elevation-etopo5", key, "elevation", deserializeGrid,
                                       [](const LatLonGrid& g) { return serialize(g); }, [] {
                                         LatLonGrid g = uncorrectedDefaultElevation();
                                         applyElevationCorrection(g, ElevationCorrection::Auto, true);
