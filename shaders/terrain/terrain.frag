@@ -1,7 +1,8 @@
 #version 450 core
 // Terrain shading: Lambertian stand-in materials (terrain/material.glsl) lit by the Sun
 // attenuated to the point's altitude and by the sky's irradiance (tilted by the slope), then
-// aerial perspective along the eye-to-point path ending at the point's altitude. Radiance in
+// aerial perspective along the eye-to-point path ending at the point's altitude (per vertex,
+// terrain/terrain.vert). Radiance in
 // Sun-irradiance units, like the globe pass. The normal is the mesh's, tilted by the detail
 // octaves finer than the mesh resolves (terrain/detail.glsl), down to the pixel's footprint.
 #include "common/constants.glsl"
@@ -17,6 +18,8 @@
 in vec3 vRelative;
 in vec3 vNormal;
 in vec4 vInfo;  // height m, latitude rad, longitude rad, detail amplitude m
+in vec3 vTransmittance;  // aerial perspective, per vertex (terrain/terrain.vert)
+in vec3 vInscatter;
 #include "render/outputs.glsl"
 
 uniform vec3 uSunDir;  // unit, ECEF axes
@@ -77,22 +80,6 @@ float imageryFinestTexelRad(vec2 latLon) {
   return texel;
 }
 
-// Aerial perspective to a point at altitude hP (the tables' sphere, as in globe.frag): the
-// path's zenith cosine is the one joining the eye's radius to R + hP over distance t.
-vec3 aerialToAltitude(vec3 surface, vec3 dir, float t, float hP) {
-  if (hP <= 0.0) return withAerialPerspective(surface, dir, t, uSunDir);
-  float R = uAtmosphere.bottomRadius;
-  float r = R + uCamAltitude;
-  float rP = R + hP;
-  float d = max(t, 1e-3);
-  float mu = clamp((rP * rP - r * r - d * d) / (2.0 * r * d), -1.0, 1.0);
-  vec3 transmittance;
-  vec3 inscatter = skyRadianceToPoint(uAtmosphere, uAtmTransmittance, uAtmScattering,
-                                      uAtmSingleMie, r, mu, dot(uSunDir, uCamUp),
-                                      dot(dir, uSunDir), d, transmittance);
-  return surface * transmittance + inscatter;
-}
-
 void main() {
   // Triangles of a tile's row at a pole collapse onto the pole; llvmpipe can still emit a
   // fragment for them with undefined (NaN) attributes. They cover nothing: drop them.
@@ -151,6 +138,6 @@ void main() {
   float sunSeen = dot(n, uSunDir) > 0.0 ? sunVisibility(vRelative, nGeometric) : 0.0;
   vec3 surface = albedo / PI * (sunIrr * (max(dot(n, uSunDir), 0.0) * sunSeen) + skyIrr * skyView);
   if (heightM >= 0.0) surface += nightLightsRadiance(vec2(lat, lon), footprint, dot(up, uSunDir));
-  fragRadiance = vec4(aerialToAltitude(surface, dir, t, hP), 1.0);
+  fragRadiance = vec4(surface * vTransmittance + vInscatter, 1.0);
   fragAux = vec4(0.0);
 }

@@ -5,6 +5,14 @@
 // screen-space limit at the parent's nearest point, so at that moment its vertices morph
 // fully onto the parent's mesh (no pop), and they reach their own positions as the parent's
 // spacing there grows to twice the limit, when the tile itself would split.
+// The aerial perspective is evaluated here, per vertex: it is smooth over a triangle of a few
+// pixels and was over half the terrain pass's cost per pixel (docs/performance.md). Not in the
+// shadow maps' depth-only program (TERRAIN_DEPTH_ONLY).
+#include "common/constants.glsl"
+#include "common/types.glsl"
+#include "atmosphere/model.glsl"
+#include "render/aerial.glsl"
+
 layout(location = 0) in vec3 aPosition;  // m, relative to the tile centre, ECEF axes
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec4 aInfo;      // height m, latitude rad, longitude rad, detail amplitude m
@@ -19,6 +27,28 @@ uniform float uMorphScale;
 out vec3 vRelative;
 out vec3 vNormal;
 out vec4 vInfo;
+#ifndef TERRAIN_DEPTH_ONLY
+uniform vec3 uSunDir;  // unit, ECEF axes
+out vec3 vTransmittance;  // of the eye-to-vertex path
+out vec3 vInscatter;      // light scattered towards the eye along it (Sun-irradiance units)
+
+// Aerial perspective to a point at altitude hP (the tables' sphere, as in globe.frag): the
+// path's zenith cosine is the one joining the eye's radius to R + hP over distance t; at or
+// below sea level the globe's convention (render/aerial.glsl).
+void aerialToAltitude(vec3 dir, float t, float hP, out vec3 transmittance, out vec3 inscatter) {
+  if (hP <= 0.0) {
+    aerialPerspective(dir, t, uSunDir, transmittance, inscatter);
+    return;
+  }
+  float R = uAtmosphere.bottomRadius;
+  float r = R + uCamAltitude;
+  float rP = R + hP;
+  float d = max(t, 1e-3);
+  float mu = clamp((rP * rP - r * r - d * d) / (2.0 * r * d), -1.0, 1.0);
+  inscatter = skyRadianceToPoint(uAtmosphere, uAtmTransmittance, uAtmScattering, uAtmSingleMie, r, mu,
+                                 dot(uSunDir, uCamUp), dot(dir, uSunDir), d, transmittance);
+}
+#endif
 
 void main() {
   vec3 relative = uTileOffset + aPosition;
@@ -28,4 +58,8 @@ void main() {
   vNormal = aNormal;
   vInfo = vec4(aInfo.x + m * dot(aMorph, up), aInfo.yzw);
   gl_Position = uViewProjection * vec4(vRelative, 1.0);
+#ifndef TERRAIN_DEPTH_ONLY
+  float t = max(length(vRelative), 1e-3);
+  aerialToAltitude(vRelative / t, t, max(vInfo.x, 0.0), vTransmittance, vInscatter);
+#endif
 }

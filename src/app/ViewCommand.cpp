@@ -353,13 +353,10 @@ class Viewer {
   }
 
   // Imagery tiles the camera will want kPrefetchAheadS from now, read while this frame shows:
-  // where the path will be, else where the last frame's motion leads (viewer::poseAhead).
+  // where the path will be, else where the recent motion leads (viewer::VelocityEstimate, viewer::poseAhead).
   void prefetchAhead(int width, int height) {
     const geo::CameraPose& pose = controller_.pose();
-    const glm::dvec3 eye = geo::geodeticToEcef(pose.position);
-    const glm::dvec3 velocity = frameDtS_ > 0.0 && hasLastEye_ ? (eye - lastEyeEcef_) / frameDtS_ : glm::dvec3(0.0);
-    lastEyeEcef_ = eye;
-    hasLastEye_ = true;
+    const glm::dvec3 velocity = velocity_.update(geo::geodeticToEcef(pose.position), frameDtS_);
     const geo::CameraPose ahead =
         playing_ && flight_ ? flight_->at(flight_->startS() + std::min(playS_ + kPrefetchAheadS, flight_->durationS()))
                             : viewer::poseAhead(pose, velocity, kPrefetchAheadS, controller_.surfaceHeightM());
@@ -491,8 +488,7 @@ class Viewer {
   double playS_ = 0.0;
   bool playing_ = true;  // a path given with --path starts playing at once
   double frameDtS_ = 0.0;          // the last step's time step, s
-  glm::dvec3 lastEyeEcef_{0.0};    // the eye at the last frame (prefetchAhead)
-  bool hasLastEye_ = false;
+  viewer::VelocityEstimate velocity_;  // the eye's smoothed motion (prefetchAhead)
   render::OceanModel oceanModel_ = render::OceanModel::Bruneton;
   bool layersOn_ = false;
   bool showOverlay_ = true;

@@ -18,7 +18,8 @@ TerrainRenderer::TerrainRenderer(const data::LatLonGrid& elevation, const Atmosp
       program_({{GL_VERTEX_SHADER, "terrain/terrain.vert"},
                 {GL_FRAGMENT_SHADER, "terrain/terrain.frag"}}),
       shadowProgram_({{GL_VERTEX_SHADER, "terrain/terrain.vert"},
-                      {GL_FRAGMENT_SHADER, "terrain/shadow_depth.frag"}}),
+                      {GL_FRAGMENT_SHADER, "terrain/shadow_depth.frag"}},
+                     {"TERRAIN_DEPTH_ONLY"}),
       vao_(gl::createVertexArray()),
       indices_(gl::createBuffer()) {
   const auto& idx = terrain::tileIndices();

@@ -191,6 +191,32 @@ TEST(ViewerPrefetch, PoseAheadFollowsTheMotionButStopsAboveTheGround) {
   EXPECT_NEAR(poseAhead(now, glm::dvec3(0.0), 1.0, 0.0).position.heightM, 1000.0, 1e-6);
 }
 
+TEST(ViewerPrefetch, VelocityEstimateFollowsSteadyMotionAndDampsATap) {
+  const glm::dvec3 start(6.4e6, 0.0, 0.0), east(0.0, 1.0, 0.0);
+  // Steady 100 m/s with uneven frames (16 and 50 ms): within 1 % after 1.5 s (6 time constants).
+  VelocityEstimate steady;
+  glm::dvec3 eye = start;
+  EXPECT_EQ(steady.update(eye, 0.016), glm::dvec3(0.0));  // first call: at rest
+  double t = 0.0;
+  for (int i = 0; t < 1.5; ++i) {
+    const double dt = i % 2 == 0 ? 0.016 : 0.050;
+    eye += 100.0 * dt * east;
+    t += dt;
+    steady.update(eye, dt);
+  }
+  EXPECT_NEAR(steady.velocityEcef().y, 100.0, 1.0);
+  // One 16 ms frame that moved 10 m (a key tap, 625 m/s raw) then rest: the estimate takes
+  // 1 - exp(-0.016 / 0.25) of it, about 39 m/s, not 625, and decays afterwards.
+  VelocityEstimate tap;
+  tap.update(start, 0.016);
+  const double afterTap = tap.update(start + 10.0 * east, 0.016).y;
+  EXPECT_NEAR(afterTap, 625.0 * (1.0 - std::exp(-0.016 / VelocityEstimate::kTimeConstantS)), 1e-6);
+  EXPECT_LT(tap.update(start + 10.0 * east, 0.25).y, 0.5 * afterTap);
+  // A jump across the globe is not motion; a zero time step changes nothing.
+  EXPECT_EQ(tap.update(-start, 0.016), glm::dvec3(0.0));
+  EXPECT_EQ(tap.update(start, 0.0), glm::dvec3(0.0));
+}
+
 TEST(ViewerFont, EveryOverlayCharacterHasAGlyph) {
   for (unsigned char ch : std::string("abcdefghijklmnopqrstuvwxyz0123456789 .,:;/-+()[]%=_<>?!'\""))
     EXPECT_TRUE(hasGlyph(ch)) << ch;

@@ -65,6 +65,20 @@ geo::CameraPose poseAhead(const geo::CameraPose& pose, const glm::dvec3& velocit
   return ahead;
 }
 
+glm::dvec3 VelocityEstimate::update(const glm::dvec3& eyeEcef, double dtS) {
+  if (!(dtS > 0.0)) return velocity_;
+  const glm::dvec3 step = eyeEcef - lastEye_;
+  if (!hasLast_ || glm::length(step) > kJumpM) {
+    velocity_ = glm::dvec3(0.0);
+  } else {
+    const double blend = 1.0 - std::exp(-dtS / kTimeConstantS);
+    velocity_ += blend * (step / dtS - velocity_);
+  }
+  lastEye_ = eyeEcef;
+  hasLast_ = true;
+  return velocity_;
+}
+
 FlightController::FlightController(const geo::CameraPose& pose, SurfaceHeight surface)
     : pose_(pose), surface_(std::move(surface)) {
   clamp();

@@ -51,6 +51,29 @@ geo::CameraPose poseFromOrientation(const geo::Geodetic& position, const glm::dv
 /// descent slows as it nears the ground.
 geo::CameraPose poseAhead(const geo::CameraPose& pose, const glm::dvec3& velocityEcef, double aheadS, double surfaceM);
 
+/// The camera's velocity for prediction (poseAhead), smoothed over frames: each update moves the
+/// estimate towards the last frame's displacement / time step by 1 − exp(−dt / kTimeConstantS),
+/// so a single key tap or an uneven frame does not fling the prediction, while steady motion is
+/// followed within ~3 time constants. A jump farther than kJumpM in one step (a path restarted, a
+/// bookmark) starts the estimate afresh at rest.
+class VelocityEstimate {
+ public:
+  /// Smoothing time constant, seconds.
+  static constexpr double kTimeConstantS = 0.25;
+  /// Farther than this in one update (metres) is a jump, not motion.
+  static constexpr double kJumpM = 1.0e7;
+
+  /// Takes the eye's position now (ECEF metres) after `dtS` seconds (> 0; else ignored) and
+  /// returns the smoothed velocity, m/s (zero at the first call).
+  glm::dvec3 update(const glm::dvec3& eyeEcef, double dtS);
+  [[nodiscard]] const glm::dvec3& velocityEcef() const { return velocity_; }
+
+ private:
+  glm::dvec3 lastEye_{0.0};
+  glm::dvec3 velocity_{0.0};
+  bool hasLast_ = false;
+};
+
 class FlightController {
  public:
   /// `surface` may be empty: then the surface is the sea everywhere.
