@@ -58,4 +58,17 @@ HorizontalAngles horizontalAngles(const Geodetic& where, const glm::dvec3& direc
   return h;
 }
 
+bool sunMayBeDownInView(const glm::dvec3& eyeUpEcef, double eyeHeightM, const glm::dvec3& sunDirEcef,
+                        double maxSurfaceHeightM) {
+  // The ellipsoid's local radius differs from the mean by < 0.4 %: a degree of margin covers
+  // it and the ellipsoid's normal against the sphere's (< 0.2°).
+  constexpr double kRadiusM = 6371000.0;
+  constexpr double kMarginRad = 1.0 * std::numbers::pi / 180.0;
+  const double horizonRad = std::acos(kRadiusM / (kRadiusM + std::max(eyeHeightM, 0.0))) +
+                            std::acos(kRadiusM / (kRadiusM + std::max(maxSurfaceHeightM, 0.0)));
+  const double sunFromZenithRad = std::acos(std::clamp(glm::dot(eyeUpEcef, sunDirEcef), -1.0, 1.0));
+  // A point at angle θ from the nadir has the Sun at most sunFromZenith + θ from its zenith.
+  return sunFromZenithRad + horizonRad + kMarginRad >= 0.5 * std::numbers::pi;
+}
+
 }  // namespace og::geo

@@ -33,4 +33,14 @@ struct HorizontalAngles {
 /// Elevation and azimuth of an ECEF direction seen from a geodetic point.
 HorizontalAngles horizontalAngles(const Geodetic& where, const glm::dvec3& directionEcef);
 
+/// Whether the Sun may be below the horizon (its zenith cosine < 0) at some surface point a
+/// camera sees: conservative (true whenever it is, possibly when it is not). The visible
+/// surface is taken as the cap within the eye's horizon plus the farther ground that rises to
+/// `maxSurfaceHeightM` (metres; peaks seen beyond the sea's horizon), on a sphere of the
+/// Earth's mean radius; `eyeUpEcef` and `sunDirEcef` are unit vectors, `eyeHeightM` metres
+/// above the ellipsoid (≥ 0). Renderers use it to compile night-only terms (city lights) out
+/// of frames where no pixel can need them.
+bool sunMayBeDownInView(const glm::dvec3& eyeUpEcef, double eyeHeightM, const glm::dvec3& sunDirEcef,
+                        double maxSurfaceHeightM);
+
 }  // namespace og::geo

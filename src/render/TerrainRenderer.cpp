@@ -7,6 +7,7 @@
 #include <cstddef>
 
 #include "core/Error.hpp"
+#include "geo/Sun.hpp"
 #include "geo/Wgs84.hpp"
 #include "gl/ShaderContract.hpp"
 
@@ -15,8 +16,6 @@ namespace og::render {
 TerrainRenderer::TerrainRenderer(const data::LatLonGrid& elevation, const Atmosphere* atmosphere)
     : atmosphere_(atmosphere),
       cache_(std::make_shared<const terrain::Heightfield>(elevation)),
-      program_({{GL_VERTEX_SHADER, "terrain/terrain.vert"},
-                {GL_FRAGMENT_SHADER, "terrain/terrain.frag"}}),
       shadowProgram_({{GL_VERTEX_SHADER, "terrain/terrain.vert"},
                       {GL_FRAGMENT_SHADER, "terrain/shadow_depth.frag"}},
                      {"TERRAIN_DEPTH_ONLY"}),
@@ -38,6 +37,19 @@ TerrainRenderer::TerrainRenderer(const data::LatLonGrid& elevation, const Atmosp
   glVertexArrayAttribFormat(vao, 3, 3, GL_FLOAT, GL_FALSE, offsetof(terrain::TileVertex, morph));
   for (GLuint a = 0; a < 4; ++a) glVertexArrayAttribBinding(vao, a, 0);
   gl::checkErrors("TerrainRenderer setup");
+}
+
+const gl::Program& TerrainRenderer::variant(unsigned bits) {
+  gl::Program& p = variants_.at(bits);
+  if (p.id() == 0) {
+    std::vector<std::string> defines;
+    if ((bits & kLandOnly) != 0) defines.emplace_back("TERRAIN_LAND_ONLY");
+    if ((bits & kNoNight) != 0) defines.emplace_back("TERRAIN_NO_NIGHT");
+    if ((bits & kShadowsOff) != 0) defines.emplace_back("SHADOWS_OFF");
+    p = gl::Program({{GL_VERTEX_SHADER, "terrain/terrain.vert"}, {GL_FRAGMENT_SHADER, "terrain/terrain.frag"}},
+                    defines);
+  }
+  return p;
 }
 
 void TerrainRenderer::ensureShadowMap() {
@@ -178,7 +190,7 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
 void TerrainRenderer::drawWaterTiles() {
   if (waterTiles_.empty()) return;
   if (timer_ != nullptr) timer_->mark("terrain");
-  drawTiles(waterView_, waterTiles_, program_);
+  drawTiles(waterView_, waterTiles_, *waterProgram_);
   waterTiles_.clear();
   gl::checkErrors("TerrainRenderer::drawWaterTiles");
 }
@@ -286,14 +298,18 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
     if (!t->coveredBySea()) casters.push_back(t);
   renderShadowMap(view, casters, sunDirectionEcef);
   if (timer_ != nullptr) timer_->mark("terrain");
-  if (seaFromGlobe && landProgram_.id() == 0)
-    landProgram_ = gl::Program({{GL_VERTEX_SHADER, "terrain/terrain.vert"},
-                                {GL_FRAGMENT_SHADER, "terrain/terrain.frag"}},
-                               {"TERRAIN_LAND_ONLY"});
-  for (const gl::Program* p : {&program_, &landProgram_})
-    if (p->id() != 0) setFrameUniforms(*p, view, sunDirectionEcef, seaFromGlobe);
+  double highestM = 0.0;  // the highest ground drawn: seen farthest beyond the horizon
+  for (const terrain::Tile* t : tiles) highestM = std::max(highestM, t->maxHeightM);
+  const bool nightInView =
+      geo::sunMayBeDownInView(view.enu.up, view.position.heightM, glm::normalize(sunDirectionEcef), highestM);
+  const unsigned frameBits = (shadows_.on ? 0u : kShadowsOff) | (nightInView ? 0u : kNoNight);
+  const gl::Program& full = variant(frameBits);
+  const gl::Program& land = seaFromGlobe ? variant(frameBits | kLandOnly) : full;
+  setFrameUniforms(full, view, sunDirectionEcef, seaFromGlobe);
+  if (&land != &full) setFrameUniforms(land, view, sunDirectionEcef, seaFromGlobe);
+  waterProgram_ = &full;
   // Above 20 km tiles all above the sea and away from the poles need none of terrain.frag's
-  // discards: drawn without them (landProgram_) they pass the depth test before the shader
+  // discards: drawn without them (kLandOnly) they pass the depth test before the shader
   // even with the stencil on (llvmpipe tests late in a shader that may discard), and zero the
   // stencil, so the globe's parts skip what they cover (GlobeRenderer::shadeGlobe). The other
   // tiles wait for drawWaterTiles(), after the globe, over which they draw as before.
@@ -310,7 +326,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
     glStencilFunc(GL_ALWAYS, 0, 0xff);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   }
-  drawTiles(view, now, seaFromGlobe ? landProgram_ : program_);
+  drawTiles(view, now, land);
   glDisable(GL_STENCIL_TEST);
   waterView_ = view;
   stats_.tiles = static_cast<int>(tiles.size());

@@ -101,10 +101,14 @@ class TerrainRenderer {
   ImageryTextures* imagery_ = nullptr;
   terrain::TileCache cache_;
   terrain::SelectionParams params_;
-  gl::Program program_;
-  /// terrain.frag without its discards (TERRAIN_LAND_ONLY), for tiles all above the sea and
-  /// away from the poles above 20 km; built on first use there.
-  gl::Program landProgram_;
+  /// terrain.vert/frag variants by bits, built on first use: llvmpipe runs every branch, so
+  /// a frame draws with only the code it needs. kLandOnly: without the discards, for tiles all
+  /// above the sea and away from the poles above 20 km; kNoNight: no city lights (the Sun is up
+  /// everywhere in view, geo::sunMayBeDownInView); kShadowsOff: no shadow maps this frame.
+  enum VariantBits : unsigned { kLandOnly = 1u, kNoNight = 2u, kShadowsOff = 4u };
+  const gl::Program& variant(unsigned bits);
+  std::array<gl::Program, 8> variants_;
+  const gl::Program* waterProgram_ = nullptr;  ///< drawWaterTiles()' program this frame
   std::vector<const terrain::Tile*> waterTiles_;  ///< left by draw() for drawWaterTiles()
   geo::CameraView waterView_;
   gl::Program shadowProgram_;

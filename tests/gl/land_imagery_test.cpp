@@ -124,6 +124,33 @@ TEST(LandImagery, GeoTiffLayerAppearsWhereItBelongs) {
   EXPECT_LT(std::abs(between[1] - between[0]), 40.0) << between[0] << "," << between[1] << "," << between[2];
 }
 
+// The terrain draws the land below the globe's switch with a program variant chosen per frame
+// (TerrainRenderer: city lights compiled out where the Sun is up everywhere in view): the Ruhr
+// from 60 km, at night and with the Sun just set (lights, twilight), and by day (none).
+TEST(LandImagery, TerrainCityLightsFollowTheSunInEveryVariant) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  for (double sunDeg : {-20.0, -2.0}) {
+    r.imagery().setNightLights(1.0f);
+    r.render(downFrom(51.45, 7.0, 6.0e4, sunDeg));
+    const double on = meanLuminance(r.radiance());
+    r.imagery().setNightLights(0.0f);
+    r.render(downFrom(51.45, 7.0, 6.0e4, sunDeg));
+    const double off = meanLuminance(r.radiance());
+    EXPECT_GT(on, off * 1.2 + 1e-6) << "Sun " << sunDeg << " deg: " << on << " vs " << off;
+  }
+  r.imagery().setNightLights(1.0f);
+  r.render(downFrom(51.45, 7.0, 6.0e4, 30.0));
+  const io::ImageRgbaF dayOn = r.radiance();
+  r.imagery().setNightLights(0.0f);
+  r.render(downFrom(51.45, 7.0, 6.0e4, 30.0));
+  const io::ImageRgbaF dayOff = r.radiance();
+  double maxDiff = 0.0;
+  for (std::size_t i = 0; i < dayOn.pixels.size(); ++i)
+    maxDiff = std::max(maxDiff, static_cast<double>(std::abs(dayOn.pixels[i] - dayOff.pixels[i])));
+  EXPECT_LT(maxDiff, 1e-6) << "no lights by day";
+}
+
 TEST(LandImagery, CityLightsOnlyOnTheNightSide) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(data::defaultElevation());
