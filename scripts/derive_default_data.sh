@@ -1,17 +1,26 @@
 #!/bin/sh
-# Derives the default data embedded in oceanglobe: data/etopo20_relief.nc (relief) from the ETOPO20
+# Derives the default data embedded in oceanglobe: data/etopo5_relief.nc (relief) from the ETOPO5
 # grid, and data/navy_winds_199201.nc (wind) from the monthly navy winds, both in Debian's
-# ferret-datasets package. Needs the nco and netcdf-bin packages.
+# ferret-datasets package; the imagery and the land mask below. Needs the nco and netcdf-bin
+# packages (gdal-bin and gmt for the land mask).
 #
-# ETOPO20 stores relief as float metres; rounding to whole metres changes nothing visible at
-# 20' resolution (the grid is an average of 5' cells) and lets the field fit in int16, which
-# together with shuffle + deflate makes the embedded copy about five times smaller.
+# ETOPO5 stores relief as float metres on a 5' (about 9 km) grid. Two changes make the embedded
+# copy small (about 4.6 MB instead of 37 MB), both documented in data/README.md:
+#  - heights rounded to whole metres (the source's values are whole metres already, up to float
+#    noise) and stored as int16 with shuffle + deflate;
+#  - sea floor deeper than 200 m rounded to 100 m steps. Water that deep is optically deep
+#    everywhere (the ocean's colour no longer sees the floor) and no coast, bank or land
+#    height depends on it, while its metre-level noise is most of the file's entropy (lossless
+#    the file is 8.4 MB). Land and the shelf (-200 m and above, the -10 m bank placeholder
+#    that data/ShallowBanks looks for included) keep every metre.
+# The axes are rewritten as exact multiples of 5' (the source's longitudes carry float noise:
+# 0.0833341 degrees spacing, 359.92 last).
 #
 # Usage: scripts/derive_default_data.sh [SOURCE.cdf] [OUTPUT.nc]
 set -eu
 
-src=${1:-/usr/share/ferret-vis/data/etopo20.cdf}
-out=${2:-$(dirname "$0")/../data/etopo20_relief.nc}
+src=${1:-/usr/share/ferret-vis/data/etopo5.cdf}
+out=${2:-$(dirname "$0")/../data/etopo5_relief.nc}
 
 for tool in ncap2 ncatted ncks nccopy; do
   command -v "$tool" >/dev/null 2>&1 || {
@@ -30,7 +39,7 @@ trap 'rm -rf "$tmp"' EXIT INT TERM
 # 1. Drop the float fill attributes first: ncap2 would otherwise convert -1e34 to a short
 #    _FillValue of 0 and turn every sea-level cell into "missing". The source has no missing
 #    cells (checked below). Then round to whole metres (floor(x+0.5): this ncap2's round()
-#    hangs) and store as short.
+#    hangs), the deep floor to 100 m, and store as short.
 ncks -O -h -v ROSE "$src" "$tmp/float.nc"
 ncatted -O -h -a missing_value,ROSE,d,, -a _FillValue,ROSE,d,, "$tmp/float.nc"
 ncap2 -O -h -s 'lo=ROSE.min(); hi=ROSE.max();' "$tmp/float.nc" "$tmp/range.nc"
@@ -40,20 +49,23 @@ awk -v lo="$lo" -v hi="$hi" 'BEGIN { exit !(lo != "" && hi != "" && lo >= -12000
   echo "derive_default_data.sh: $src: ROSE range [$lo, $hi] is not plausible relief in metres" >&2
   exit 1
 }
-ncap2 -O -h -s 'ROSE=short(floor(ROSE+0.5f));' "$tmp/float.nc" "$tmp/short.nc"
+ncap2 -O -h -s 'ROSE=short(floor(ROSE+0.5f)); where(ROSE < -200) ROSE=short(floor(ROSE/100.0f+0.5f)*100);
+  ETOPO05_X=array(0.0,1.0/12.0,$ETOPO05_X); ETOPO05_Y=array(-90.0,1.0/12.0,$ETOPO05_Y);' \
+  "$tmp/float.nc" "$tmp/short.nc"
 
 # 2. Attributes: keep the axes' units (they are how readers find the axes), describe the field.
-history="scripts/derive_default_data.sh: ROSE from $(basename "$src") rounded to int16 metres; NetCDF-4, shuffle, deflate 9"
+history="scripts/derive_default_data.sh: ROSE from $(basename "$src") rounded to int16 metres, below -200 m to 100 m; axes exact 5'; NetCDF-4, shuffle, deflate 9"
 ncatted -O -h \
   -a history,ROSE,d,, \
   -a units,ROSE,o,c,"m" \
   -a long_name,ROSE,o,c,"relief of the surface of the Earth (topography and bathymetry)" \
   -a standard_name,ROSE,o,c,"height_above_mean_sea_level" \
   -a positive,ROSE,o,c,"up" \
-  -a standard_name,ETOPO20X1_1081,o,c,"longitude" \
-  -a standard_name,ETOPO20Y,o,c,"latitude" \
-  -a title,global,o,c,"ETOPO20 global relief, 20 arc-minute, whole metres" \
-  -a source,global,o,c,"ETOPO5 5-minute gridded elevation data (NOAA National Geophysical Data Center, 1988), averaged to 20' as ETOPO20 and distributed with the Ferret data sets (Debian package ferret-datasets, file etopo20.cdf)" \
+  -a comment,ROSE,o,c,"whole metres; sea floor below -200 m rounded to 100 m" \
+  -a standard_name,ETOPO05_X,o,c,"longitude" \
+  -a standard_name,ETOPO05_Y,o,c,"latitude" \
+  -a title,global,o,c,"ETOPO5 global relief, 5 arc-minute, whole metres" \
+  -a source,global,o,c,"ETOPO5 5-minute gridded elevation data (NOAA National Geophysical Data Center, 1988) as distributed with the Ferret data sets (Debian package ferret-datasets, file etopo5.cdf, from IRI/LDEO worldbath.nc)" \
   -a license,global,o,c,"Public domain: ETOPO5 is a work of the U.S. Government (NOAA NGDC) and not subject to copyright" \
   -a references,global,o,c,"Data Announcement 88-MGG-02, Digital relief of the Surface of the Earth. NOAA, National Geophysical Data Center, Boulder, Colorado, 1988" \
   -a history,global,o,c,"$history" \

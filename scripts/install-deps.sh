@@ -28,6 +28,9 @@ packages=(
   ferret-datasets
   # ncgen: builds the small wind file of the docs' time-lapse pictures from its CDL text
   netcdf-bin
+  # NCO (ncks/ncap2/ncatted): scripts/derive_default_data.sh derives data/etopo5_relief.nc
+  # and the default wind from the Ferret data sets (not needed to build)
+  nco
   # the Slurm test: a private single-node Slurm (slurmctld + slurmd) and its MUNGE daemon
   slurm-wlm munge
 )

@@ -51,7 +51,7 @@ void SceneOptions::add(CLI::App& cmd) {
                  "a global one");
   cmd.add_option("--elevation-layer", flags_.elevationLayer,
                  "relief/bathymetry FILE[:VAR] in metres: NetCDF, GRIB or GeoTIFF (default: "
-                 "embedded ETOPO20)");
+                 "embedded ETOPO5, 5' cells)");
   cmd.add_option("--elevation-correction", flags_.elevationCorrection,
                  "auto (default: the embedded layer's ETOPO5 -10 m shallow-bank placeholder "
                  "replaced near land, docs/coast.md), etopo5-banks (the same on any layer, e.g. "

@@ -39,7 +39,7 @@ LatLonGrid loadElevationLayer(const std::string& spec, ElevationCorrection corre
 /// holds several fields and none is named.
 const std::vector<std::string>& elevationVariableNames();
 
-/// The default relief embedded in the binary (ETOPO20, see data/README.md) with ETOPO5's
+/// The default relief embedded in the binary (ETOPO5 at 5', see data/README.md) with its
 /// shallow-bank placeholder corrected (correctShallowBanks; logged once).
 const LatLonGrid& defaultElevation();
 /// The same as the file has it, uncorrected.

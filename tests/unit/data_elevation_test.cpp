@@ -243,7 +243,7 @@ TEST(DataElevation, ConcurrentReadsAreSerialisedSafely) {
                                : og::data::readElevationMemory(bytes, "mem").width;
     });
   for (auto& t : threads) t.join();
-  for (std::size_t i = 0; i < widths.size(); ++i) EXPECT_EQ(widths[i], i % 3 == 0 ? 1080 : 8);
+  for (std::size_t i = 0; i < widths.size(); ++i) EXPECT_EQ(widths[i], i % 3 == 0 ? 4320 : 8);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -504,27 +504,29 @@ TEST(DataLatLonGrid, GlobalGridClampsToPolarRows) {
 // ---------------------------------------------------------------------------------------------
 // Real data
 
-TEST(DataElevation, DefaultElevationIsEtopo20) {
+TEST(DataElevation, DefaultElevationIsEtopo5AtFiveArcMinutes) {
+  // data/etopo5_relief.nc: ETOPO5 on its own 5' grid, 4320 columns (wrapping) x 2161 rows from
+  // pole to pole (data/README.md).
   const LatLonGrid& grid = og::data::defaultElevation();
   EXPECT_EQ(&grid, &og::data::defaultElevation());  // parsed once
   EXPECT_EQ(grid.name, "ROSE");
-  EXPECT_EQ(grid.width, 1080);
-  EXPECT_EQ(grid.height, 540);
+  EXPECT_EQ(grid.width, 4320);
+  EXPECT_EQ(grid.height, 2161);
   EXPECT_TRUE(grid.wrapsLongitude);
-  EXPECT_NEAR(grid.dLonDeg, 1.0 / 3.0, 1e-9);
-  EXPECT_NEAR(grid.dLatDeg, 1.0 / 3.0, 1e-6);
+  EXPECT_NEAR(grid.dLonDeg, 1.0 / 12.0, 1e-9);
+  EXPECT_NEAR(grid.dLatDeg, 1.0 / 12.0, 1e-9);
   const auto [lo, hi] = std::minmax_element(grid.values.begin(), grid.values.end());
   EXPECT_GE(*lo, -11000.0f);
   EXPECT_LE(*hi, 9000.0f);
   EXPECT_TRUE(
       std::none_of(grid.values.begin(), grid.values.end(), [](float v) { return std::isnan(v); }));
-  EXPECT_GT(grid.sample(27.99, 86.93), 4000.0f);  // Everest massif (20' average)
+  EXPECT_GT(grid.sample(27.99, 86.93), 5000.0f);  // Everest massif (5' cells)
   EXPECT_LT(grid.sample(0.0, -150.0), -3000.0f);  // central Pacific
   EXPECT_GT(grid.sample(23.0, 10.0), 0.0f);       // Sahara
   EXPECT_LT(grid.sample(-89.9, 0.0), 4500.0f);    // Antarctic plateau, clamped row
   EXPECT_GT(grid.sample(-89.9, 0.0), 1500.0f);
   EXPECT_LT(grid.sample(89.9, 0.0), 0.0f);  // Arctic Ocean
-  // Longitude wraps across the file's own seam at 20.17°E and the antimeridian.
+  // Longitude wraps across the file's own seam at 0°E/360°E and the antimeridian.
   EXPECT_FLOAT_EQ(grid.sample(10.0, 20.0), grid.sample(10.0, 380.0));
   EXPECT_FLOAT_EQ(grid.sample(-10.0, 180.0), grid.sample(-10.0, -180.0));
 }

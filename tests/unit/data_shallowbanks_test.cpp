@@ -108,14 +108,14 @@ TEST(ShallowBanks, FindsTheBahamaPlateauInEtopo5) {
   EXPECT_LT(g.sample(24.0, -77.25), -500.0f);
 }
 
-// The embedded default (ETOPO20, averaged from ETOPO5) comes corrected: the bank west of Andros
+// The embedded default (ETOPO5 at its own 5', data/README.md) comes corrected: the bank west of Andros
 // is a few metres deep, also after the land mask constrains the terrain's heights (which would
 // otherwise push all open water down to 10 m).
 TEST(ShallowBanks, DefaultLayerHasTheBahamaBankAtChartedDepth) {
   const LatLonGrid raw = og::data::uncorrectedDefaultElevation();
   const LatLonGrid& g = og::data::defaultElevation();
-  // ETOPO20's cells west of Andros, centred at 24.17°N 78.5°W (its 20' cells: 78.83°W is the
-  // bank's edge averaged with the Florida Straits, 78.17°W mostly Andros).
+  // West of Andros at 24.17°N 78.5°W, a point of the 5' grid on the bank's placeholder
+  // (the former 20' default had a cell centred there too).
   const double lat = 24.0 + 1.0 / 6.0, lon = -78.5;
   EXPECT_TRUE(covers(og::data::findPlaceholderPlateaus(raw), raw, lat, lon));
   EXPECT_FLOAT_EQ(raw.sample(lat, lon), -10.0f);
