@@ -50,6 +50,22 @@ Query createQuery(GLenum target) {
   return Query(id);
 }
 
+Texture createSquareArray(GLenum format, int size, int layers, int levels, GLenum wrap) {
+  Texture t = createTexture(GL_TEXTURE_2D_ARRAY);
+  glTextureStorage3D(t.id(), levels, format, size, size, layers);
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, levels > 1 ? GL_LINEAR : GL_NEAREST);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, static_cast<GLint>(wrap));
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, static_cast<GLint>(wrap));
+  return t;
+}
+
+int fullMipLevels(int size) {
+  int levels = 1;
+  while ((size >> levels) > 0) ++levels;
+  return levels;
+}
+
 RenderTarget createRenderTarget(int width, int height, GLenum colorFormat, bool withDepth,
                                 int samples, GLenum auxiliaryFormat) {
   RenderTarget t;

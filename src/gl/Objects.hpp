@@ -59,6 +59,13 @@ Framebuffer createFramebuffer();
 Renderbuffer createRenderbuffer();
 Query createQuery(GLenum target);
 
+/// A square 2D array texture of `size`² texels × `layers` in `format` with `levels` mip levels
+/// (at most fullMipLevels(size)): trilinear filtering when it has more than one level, nearest
+/// otherwise; `wrap` (e.g. GL_REPEAT, GL_CLAMP_TO_EDGE) on both axes.
+Texture createSquareArray(GLenum format, int size, int layers, int levels, GLenum wrap);
+/// Levels of a full mip chain for a `size`-texel square, down to 1 × 1 (floor(log2 size) + 1).
+int fullMipLevels(int size);
+
 /// An off-screen render target: one colour texture and a 32-bit float depth + 8-bit stencil
 /// texture (reversed-Z: clear to 0, GL_GREATER). With samples > 1 both are multisample textures
 /// (GL_TEXTURE_2D_MULTISAMPLE); `samples` is then the count the driver allocated, which may

@@ -356,21 +356,14 @@ void Atmosphere::precompute() {
 }
 
 int Atmosphere::skyMapLevels() const {
-  int levels = 1;
-  while ((parameters_.tables.skyMapSize >> levels) > 0) ++levels;
-  return levels;
+  return gl::fullMipLevels(parameters_.tables.skyMapSize);
 }
 
 void Atmosphere::allocateSkyMaps() {
   const atmosphere::TableSizes& s = parameters_.tables;
   const int levels = skyMapLevels();
-  skyMaps_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
   // One layer per Sun zenith angle, plus the frame layer (prepareFrameSkyLayer).
-  glTextureStorage3D(skyMaps_.id(), levels, GL_RGBA16F, s.skyMapSize, s.skyMapSize, s.skyMapLayers + 1);
-  glTextureParameteri(skyMaps_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTextureParameteri(skyMaps_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(skyMaps_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(skyMaps_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  skyMaps_ = gl::createSquareArray(GL_RGBA16F, s.skyMapSize, s.skyMapLayers + 1, levels, GL_CLAMP_TO_EDGE);
   // Anisotropy per chooseSkyFilter(): hardware on a GPU, 1 on llvmpipe (where skymap.glsl
   // averages up to 4 lookups instead); textureGrad selects the mip level from the gradients.
   if (skyFilter_.maxAnisotropy > 1.0f)

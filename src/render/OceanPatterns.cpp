@@ -14,13 +14,7 @@ namespace {
 constexpr int kLayers = ocean::kPatternSets * ocean::kPatternCount;
 
 gl::Texture makeArray(GLenum format, int size, int layers, int levels) {
-  gl::Texture t = gl::createTexture(GL_TEXTURE_2D_ARRAY);
-  glTextureStorage3D(t.id(), levels, format, size, size, layers);
-  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST);
-  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, levels > 1 ? GL_LINEAR : GL_NEAREST);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-  return t;
+  return gl::createSquareArray(format, size, layers, levels, GL_REPEAT);  // the patterns tile
 }
 
 int log2Of(int n) {

@@ -6,15 +6,9 @@ namespace og::render {
 
 void SkyRipMap::update(int skyMapSize, double frameKey) {
   if (texture_.id() != 0 && size_ == skyMapSize && frameKey == frameKey_) return;
-  int levels = 1;
-  while ((skyMapSize >> levels) > 0) ++levels;
+  const int levels = gl::fullMipLevels(skyMapSize);  // as the sky maps' (Atmosphere::skyMapLevels)
   if (texture_.id() == 0 || size_ != skyMapSize) {
-    texture_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(texture_.id(), levels, GL_RGBA16F, skyMapSize, skyMapSize, kLayers);
-    glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    texture_ = gl::createSquareArray(GL_RGBA16F, skyMapSize, kLayers, levels, GL_CLAMP_TO_EDGE);
     size_ = skyMapSize;
   }
   if (fill_.id() == 0) fill_ = gl::Program({{GL_COMPUTE_SHADER, "atmosphere/skymap_rip.comp"}});

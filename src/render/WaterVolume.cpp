@@ -82,18 +82,11 @@ void CausticCurvature::update(const OceanPatterns& patterns, double timeS) {
   const int n = patterns.patterns().params.fftSize;
   const int layers = ocean::kPatternSets * kCausticPatterns;
   if (n != size_) {
-    int levels = 1;
-    while ((1 << (levels - 1)) < n) ++levels;
-    texture_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(texture_.id(), levels, GL_R16F, n, n, layers);
-    glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+    texture_ = gl::createSquareArray(GL_R16F, n, layers, gl::fullMipLevels(n), GL_REPEAT);  // tiles as the patterns
     size_ = n;
   }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-  glBindTextureUnit(13, source);  // where the sea samples the slopes too (OceanPatterns::bind)
+  glBindTextureUnit(gl::kUnitPatternSlopes, source);  // where the sea samples the slopes too (OceanPatterns::bind)
   glBindImageTexture(0, texture_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R16F);
   program_.use();
   glDispatchCompute(static_cast<GLuint>((n + 7) / 8), static_cast<GLuint>((n + 7) / 8), static_cast<GLuint>(layers));
