@@ -325,8 +325,9 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
     if (!t->coveredBySea()) casters.push_back(t);
   renderShadowMap(view, casters, sunDirectionEcef);
   if (timer_ != nullptr) timer_->mark("terrain");
-  double highestM = 0.0;  // the highest ground drawn: seen farthest beyond the horizon
-  for (const terrain::Tile* t : tiles) highestM = std::max(highestM, t->maxHeightM);
+  stats_.maxHeightM = tiles.empty() ? 0.0 : -1e30;
+  for (const terrain::Tile* t : tiles) stats_.maxHeightM = std::max(stats_.maxHeightM, t->maxHeightM);
+  const double highestM = std::max(stats_.maxHeightM, 0.0);  // seen farthest beyond the horizon
   const bool nightInView =
       geo::sunMayBeDownInView(view.enu.up, view.position.heightM, glm::normalize(sunDirectionEcef), highestM);
   const unsigned frameBits = (shadows_.on ? 0u : kShadowsOff) | (nightInView ? 0u : kNoNight);
@@ -358,8 +359,6 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   waterView_ = view;
   stats_.tiles = static_cast<int>(tiles.size());
   stats_.landTiles = static_cast<int>(casters.size());
-  stats_.maxHeightM = tiles.empty() ? 0.0 : -1e30;
-  for (const terrain::Tile* t : tiles) stats_.maxHeightM = std::max(stats_.maxHeightM, t->maxHeightM);
   stats_.finestLevel = sel.finestLevel;
   stats_.tilesPending = sel.pending;
   stats_.cpuBytes = cache_.bytes();
