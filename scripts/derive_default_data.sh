@@ -49,19 +49,45 @@ awk -v lo="$lo" -v hi="$hi" 'BEGIN { exit !(lo != "" && hi != "" && lo >= -12000
   echo "derive_default_data.sh: $src: ROSE range [$lo, $hi] is not plausible relief in metres" >&2
   exit 1
 }
-ncap2 -O -h -s 'ROSE=short(floor(ROSE+0.5f)); where(ROSE < -200) ROSE=short(floor(ROSE/100.0f+0.5f)*100);
+# 1b. ETOPO5's coastal checkerboard (data/README.md, "Changes from the source", 2): along some
+#    coasts (off Tetouan, Miami, Costa Rica, the Gulf of California, ...) the grid alternates
+#    cell by cell between a shallow placeholder and the shelf's depth (-8, -198, -8, -197 m),
+#    diagonally, so lone shallow cells stand in deeper water and render as turquoise crosses.
+#    A cell is cleaned when it is shallower than 50 m and both its row neighbours (west and
+#    east, across the seam), or both its column neighbours (south and north), are at least
+#    100 m deeper and within 10 m of each other (the checkerboard's signature: its deep
+#    partners repeat one value; real reefs and steep coasts have unequal sides); it takes the
+#    mean of that pair (of all four when both pairs qualify). One pass on the unmodified
+#    neighbours (order-free, deterministic); the count is printed (344 cells in etopo5.cdf).
+#    The -10 m bank plateaus (data/ShallowBanks) and cells beside land keep their depth.
+ncap2 -O -h -s 'ROSE=floor(ROSE+0.5f);
+  *e=ROSE; e(:,0:4318)=ROSE(:,1:4319); e(:,4319)=ROSE(:,0);
+  *w=ROSE; w(:,1:4319)=ROSE(:,0:4318); w(:,0)=ROSE(:,4319);
+  *n=ROSE; n(0:2159,:)=ROSE(1:2160,:);
+  *s=ROSE; s(1:2160,:)=ROSE(0:2159,:);
+  *shallow=(ROSE < 0.0f && ROSE > -50.0f);
+  *ew=(shallow && e <= ROSE-100.0f && w <= ROSE-100.0f && abs(e-w) <= 10.0f);
+  *ns=(shallow && n <= ROSE-100.0f && s <= ROSE-100.0f && abs(n-s) <= 10.0f);
+  nclean=(ew || ns).total();
+  where(ew && ns) ROSE=floor((e+w+n+s)/4.0f+0.5f);
+  where(ew && ns == 0) ROSE=floor((e+w)/2.0f+0.5f);
+  where(ns && ew == 0) ROSE=floor((n+s)/2.0f+0.5f);' "$tmp/float.nc" "$tmp/clean.nc"
+nclean=$(ncks -H -C -v nclean "$tmp/clean.nc" | sed -n 's/.*nclean = *\([0-9.]*\).*/\1/p')
+echo "derive_default_data.sh: $nclean checkerboard cells cleaned"
+ncks -O -h -x -v nclean "$tmp/clean.nc" "$tmp/clean2.nc"
+ncap2 -O -h -s 'ROSE=short(ROSE); where(ROSE < -200) ROSE=short(floor(ROSE/100.0f+0.5f)*100);
   ETOPO05_X=array(0.0,1.0/12.0,$ETOPO05_X); ETOPO05_Y=array(-90.0,1.0/12.0,$ETOPO05_Y);' \
-  "$tmp/float.nc" "$tmp/short.nc"
+  "$tmp/clean2.nc" "$tmp/short.nc"
 
 # 2. Attributes: keep the axes' units (they are how readers find the axes), describe the field.
-history="scripts/derive_default_data.sh: ROSE from $(basename "$src") rounded to int16 metres, below -200 m to 100 m; axes exact 5'; NetCDF-4, shuffle, deflate 9"
+history="scripts/derive_default_data.sh: ROSE from $(basename "$src") rounded to int16 metres, coastal checkerboard cleaned ($nclean cells), below -200 m to 100 m; axes exact 5'; NetCDF-4, shuffle, deflate 9"
 ncatted -O -h \
   -a history,ROSE,d,, \
   -a units,ROSE,o,c,"m" \
   -a long_name,ROSE,o,c,"relief of the surface of the Earth (topography and bathymetry)" \
   -a standard_name,ROSE,o,c,"height_above_mean_sea_level" \
   -a positive,ROSE,o,c,"up" \
-  -a comment,ROSE,o,c,"whole metres; sea floor below -200 m rounded to 100 m" \
+  -a comment,ROSE,o,c,"whole metres; coastal checkerboard placeholders cleaned; sea floor below -200 m rounded to 100 m" \
   -a standard_name,ETOPO05_X,o,c,"longitude" \
   -a standard_name,ETOPO05_Y,o,c,"latitude" \
   -a title,global,o,c,"ETOPO5 global relief, 5 arc-minute, whole metres" \

@@ -131,3 +131,56 @@ TEST(ShallowBanks, DefaultLayerHasTheBahamaBankAtChartedDepth) {
   EXPECT_EQ(og::data::loadElevationLayer("", og::data::ElevationCorrection::None).values, raw.values);
   EXPECT_THROW(og::data::parseElevationCorrection("banks"), og::InputError);
 }
+
+namespace {
+// Cells of `g` with the coastal checkerboard's signature that scripts/derive_default_data.sh
+// cleans (data/README.md): under the sea and shallower than 50 m, both row neighbours (across
+// the seam) or both column neighbours at least 100 m deeper and within 10 m of each other.
+std::vector<std::size_t> checkerboardCells(const LatLonGrid& g) {
+  std::vector<std::size_t> cells;
+  const auto w = static_cast<std::size_t>(g.width), h = static_cast<std::size_t>(g.height);
+  const auto at = [&](std::size_t r, std::size_t c) { return std::floor(g.values[r * w + c % w] + 0.5f); };
+  const auto pair = [](float v, float a, float b) { return a <= v - 100.0f && b <= v - 100.0f && std::abs(a - b) <= 10.0f; };
+  for (std::size_t r = 1; r + 1 < h; ++r)
+    for (std::size_t c = 0; c < w; ++c) {
+      const float v = at(r, c);
+      if (v < 0.0f && v > -50.0f &&
+          (pair(v, at(r, c + 1), at(r, c + w - 1)) || pair(v, at(r + 1, c), at(r - 1, c))))
+        cells.push_back(r * w + c);
+    }
+  return cells;
+}
+}  // namespace
+
+// ETOPO5's coastal checkerboard (rows alternating a shallow placeholder and the shelf's depth,
+// -8, -198, -8, -197 m off Tetouan) is cleaned in the embedded layer: the former lone shallow
+// cells off Tetouan (a turquoise cross from 300 km) are as deep as their neighbours, the grid
+// keeps a fifth of the source's signature cells (those the 100 m rounding made), and the real
+// shallows stay: the Bahama Bank's placeholder plateau and the beach cells at Tetouan.
+TEST(ShallowBanks, DefaultLayerHasNoCoastalCheckerboard) {
+  const LatLonGrid raw = og::data::uncorrectedDefaultElevation();
+  // The source has 344 (below); the layer 66, whose sides were unequal in the source (real
+  // relief, kept) and became equal when the floor below -200 m was rounded to 100 m.
+  const std::size_t left = checkerboardCells(raw).size();
+  std::printf("checkerboard signature cells left in the default layer: %zu\n", left);
+  EXPECT_LE(left, 70u);
+  // Former checkerboard cells off Tetouan (ETOPO5: -23, -14, -8 m between ~-200 m cells in
+  // their row, -11 m between -202 and -199 m in its column).
+  EXPECT_LT(raw.sample(35.0 + 10.0 / 12.0, -5.0 - 4.0 / 12.0), -100.0f);
+  EXPECT_LT(raw.sample(35.0 + 7.0 / 12.0, -5.0 - 2.0 / 12.0), -100.0f);
+  EXPECT_LT(raw.sample(35.0 + 8.0 / 12.0, -5.25), -100.0f);
+  EXPECT_LT(raw.sample(35.0 + 5.0 / 12.0, -5.0), -100.0f);
+  // Real shallows kept: the beach cell at Martil (-3 m) and the bank west of Andros (-10 m).
+  EXPECT_NEAR(raw.sample(35.0 + 7.0 / 12.0, -5.25), -3.0f, 0.5f);
+  EXPECT_FLOAT_EQ(raw.sample(24.0 + 1.0 / 6.0, -78.5), -10.0f);
+}
+
+// The source has the checkerboard (so the test above fails without the cleaning): 344
+// cells worldwide, among them the ones off Tetouan.
+TEST(ShallowBanks, Etopo5SourceHasTheCoastalCheckerboard) {
+  if (!std::filesystem::exists(kEtopo5)) GTEST_SKIP() << kEtopo5 << " not installed (package ferret-datasets)";
+  const LatLonGrid g = og::data::readElevationFile(kEtopo5);
+  const std::vector<std::size_t> cells = checkerboardCells(g);
+  EXPECT_EQ(cells.size(), 344u);
+  EXPECT_GT(g.sample(35.0 + 10.0 / 12.0, -5.0 - 4.0 / 12.0), -30.0f);  // -23 m
+}
