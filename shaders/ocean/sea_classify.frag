@@ -3,14 +3,23 @@
 // render/GlobeRenderer::classifyGlobe): one cheap draw of the projected grid (ocean/grid.vert,
 // its per-vertex floor depth and land flag; the linker drops the rest) writes per pixel
 //   1: the open sea: no floor within the water's reach, no land near: no water volume, no coast test
-//   2: a floor within reach (the water volume), no land near
-//   3: the terrain's shadows may reach (the surface's and the floor's shadow lookups, with the
-//      water volume when the frame has it), no land near; when the frame routes its shadows
-//      (uShadowReachM >= 0) classes 1 and 2 are drawn without them
-//   4: land may be near (the coast test, with the water volume and the shadows when the frame
+//   2: the terrain's shadows may reach, no floor within reach, no land near: the surface's
+//      shadow lookups only
+//   3: a floor within reach (the water volume), no shadow can reach, no land near
+//   4: a floor within reach and the shadows may reach: the water volume with the surface's and
+//      the floor's shadow lookups, no land near
+//   5: land may be near (the coast test, with the water volume and the shadows when the frame
 //      has them)
-// Each class's program has every feature of the classes below it, so the largest wins:
-// as the stencil's value, the largest of the grid's overlapping fragments (GL_GEQUAL, REPLACE).
+// The floor and the shadows combine independently (classes 2-4): the shadows' reach from
+// mountains under a low Sun covers most of the sea in view, and open sea there must not pay
+// for the water volume. When the frame does not route its shadows (uShadowReachM < 0: no
+// shadow maps, or the Sun within 1 degree of the horizon) classes 1 and 3 keep them.
+// As the stencil's value the largest of the grid's overlapping fragments in a pixel wins
+// (GL_GEQUAL, REPLACE): each class's program has every feature of the classes below it but
+// one: where a fold puts a class-2 fragment (shadows) and a class-3 one (floor) in the same
+// pixel, the pixel is drawn without the shadows. Folds join neighbouring rows of the grid,
+// whose flags come from conservative bounds over kilometres; the pixel has to lie on the
+// shadows' reach and on the floor's at once.
 // Each class is then drawn by a program compiled with only its code, stencil-tested before
 // its shader runs: llvmpipe runs every line of a shader, both sides of each `if`, for every
 // fragment that reaches it (docs/performance.md).
@@ -19,15 +28,25 @@
 in float vFloorDepthM;  // m below sea level under the pixel (ocean/water_volume_vertex.glsl)
 in float vNearLand;     // > 0 where land may be within the triangle
 in float vNearShadow;   // > 0 where the terrain's shadows may reach into the triangle
+flat in int vGridRow;   // the triangle's grid row (its provoking vertex's, within one)
+
+// Per class, the first and last grid row of its fragments (render/OceanRenderer reads them
+// back and draws each class over those rows only, none where a class has no fragment). Read
+// before the atomics: a fragment changes a bound only at a class's first and last rows.
+layout(std430, binding = 3) buffer SeaClassRows { int seaClassRows[10]; };
 
 uniform float uWaterReachM;  // the water volume's d_max (ocean::waterMaxPathM), m; -1: no volume
-uniform int uCoastClass;     // 1: the frame's coast test is routed to class 4
+uniform int uCoastClass;     // 1: the frame's coast test is routed to class 5
 
 void main() {
   // The water volume returns the deep sea's colour where the floor under the pixel (the same
   // interpolated vFloorDepthM) is deeper than d_max (ocean/water_volume.glsl): the same test.
-  int seaClass = vFloorDepthM <= uWaterReachM ? 2 : 1;
-  if (vNearShadow > 0.0) seaClass = 3;
-  if (uCoastClass == 1 && vNearLand > 0.0) seaClass = 4;
+  bool floor = vFloorDepthM <= uWaterReachM;
+  int seaClass = floor ? 3 : 1;
+  if (vNearShadow > 0.0) seaClass += 1;
+  if (uCoastClass == 1 && vNearLand > 0.0) seaClass = 5;
   gl_FragStencilRefARB = seaClass;
+  int k = 2 * (seaClass - 1);
+  if (vGridRow < seaClassRows[k]) atomicMin(seaClassRows[k], vGridRow);
+  if (vGridRow > seaClassRows[k + 1]) atomicMax(seaClassRows[k + 1], vGridRow);
 }

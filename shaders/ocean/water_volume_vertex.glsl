@@ -73,19 +73,9 @@ float seaClassReachM(vec3 rel) {
   return most + 2.0 * uWaveReachM;
 }
 
-// The first and last grid row (vertex rows) whose vertices may make each class's pixels, per
-// class 1-3 (render/OceanRenderer reads them back and draws each class over those rows only):
-// a pixel is class 1 or 2 as its interpolated floor depth is beyond or within the reach, so
-// only in triangles with a vertex on that side; class 3 only in triangles with a flagged vertex.
-layout(std430, binding = 3) buffer SeaClassRows { int seaClassRows[8]; };
-uniform float uWaterReachM;  // as ocean/sea_classify.frag
-uniform int uCoastClass;
-
-void countSeaClassRow(int seaClass) {
-  int row = gl_VertexID / uGridSize.x;
-  atomicMin(seaClassRows[2 * seaClass - 2], row);
-  atomicMax(seaClassRows[2 * seaClass - 1], row);
-}
+// The vertex's grid row, for ocean/sea_classify.frag to record the rows of each class's pixels
+// (the provoking vertex's: a triangle row r spans vertex rows r and r + 1).
+flat out int vGridRow;
 
 // Whether a regional layer's border is within `reachM` of (latitude, longitude): the -1 m
 // outside it is sea, but the slope bound does not hold across the border.
@@ -108,15 +98,14 @@ float seaClassLandWithin(vec2 latLon, float reachM) {
   return nearLand || seaClassNearLayerBorder(latLon, reachM) ? 1.0 : 0.0;
 }
 
-// Class 3 (the terrain's shadows without the coast test) where shadows are routed and may
-// reach; class 4 (land near: every feature) where the coast test is routed and land may be near.
+// The flags of classes 2 and 4 (the terrain's shadows may reach) where shadows are routed, and
+// of class 5 (land near: every feature) where the coast test is routed
+// (ocean/sea_classify.frag).
 void prepareSeaClassVertex(vec2 latLon, vec3 rel) {
   float reachM = seaClassReachM(rel);
   vNearLand = seaClassLandWithin(latLon, reachM);
   vNearShadow = uShadowReachM < 0.0 ? 0.0 : seaClassLandWithin(latLon, reachM + uShadowReachM);
-  countSeaClassRow(vFloorDepthM <= uWaterReachM ? 2 : 1);
-  if (vNearShadow > 0.0) countSeaClassRow(3);
-  if (uCoastClass == 1 && vNearLand > 0.0) countSeaClassRow(4);
+  vGridRow = gl_VertexID / uGridSize.x;
 }
 #else
 // Whether a regional layer's border is within `reachM` of (latitude, longitude): the -1 m

@@ -1,6 +1,7 @@
 // oceanglobe bench: frame times of fixed views at fixed resolutions. Speed is measured here,
 // never by timed tests. Output is one line per case (or JSON with --json).
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -91,6 +92,26 @@ std::string imageryTilesLine(const render::ImageryTileStats& s) {
   char line[120];
   std::snprintf(line, sizeof line, "; imagery %zu tiles, %.1f MiB CPU + %.1f MiB GPU", s.gpuTiles,
                 static_cast<double>(s.cpuBytes) / 1048576.0, static_cast<double>(s.gpuBytes) / 1048576.0);
+  return line;
+}
+
+/// `--breakdown`: the share of the frame's pixels each of the sea's classes shaded in the last
+/// frame (OceanRenderer::classSamples), as "    sea classes (% of pixels): open sea 12.3 ..."
+/// and into `breakdown` as "sea_class_pixels_percent"; empty where the sea was not classified.
+std::string seaClassesLine(const render::OceanRenderer& ocean, int width, int height, nlohmann::json& breakdown) {
+  if (ocean.classesDrawn() == 0) return {};
+  static constexpr std::array<const char*, render::OceanRenderer::kSeaClasses> kNames{
+      "open sea", "shadows", "floor", "floor shadows", "coast"};
+  std::string line = "    sea classes (% of pixels):";
+  nlohmann::json shares = nlohmann::json::object();
+  for (std::size_t k = 0; k < kNames.size(); ++k) {
+    const double percent = 100.0 * static_cast<double>(ocean.classSamples().at(k)) / (double(width) * height);
+    shares[kNames.at(k)] = percent;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, " %s %.1f", kNames.at(k), percent);
+    line += buf;
+  }
+  breakdown["sea_class_pixels_percent"] = shares;
   return line;
 }
 
@@ -315,8 +336,10 @@ Run addBenchCommand(CLI::App& parent) {
     for (auto& r : renderers) setImageryLayers(r->imagery(), o->imagery, imagery);
     std::vector<gl::PassTimer> timers;
     for (std::size_t k = 0; k < renderers.size(); ++k) timers.emplace_back(timerMode(o->timer));
-    for (std::size_t k = 0; k < renderers.size(); ++k)
+    for (std::size_t k = 0; k < renderers.size(); ++k) {
       renderers[k]->setPassTimer(o->breakdown ? &timers[k] : nullptr);
+      renderers[k]->ocean().setCountClassSamples(o->breakdown);
+    }
     for (const auto& view : benchViews()) {
       if (!wanted(*o, view.name)) continue;
       for (const auto& [w, h] : sizes) {
@@ -378,6 +401,8 @@ Run addBenchCommand(CLI::App& parent) {
           }
           report["cases"].back()["passes_ms"] = breakdown;
           if (!o->json) std::printf("%s ms\n", line.c_str());
+          const std::string classes = seaClassesLine(renderers[k]->ocean(), w, h, report["cases"].back());
+          if (!o->json && !classes.empty()) std::printf("%s\n", classes.c_str());
         }
       }
     }

@@ -142,6 +142,10 @@ class GlobeRenderer {
   /// The wave patterns of the last frame (nullptr before the first).
   [[nodiscard]] const OceanPatterns* oceanPatterns() const { return patterns_.get(); }
 
+  /// The sea's pass (which of its classes the last frame drew).
+  [[nodiscard]] const OceanRenderer& ocean() const { return *ocean_; }
+  OceanRenderer& ocean() { return *ocean_; }
+
   /// The terrain pass (tile counts and memory of the last frame).
   [[nodiscard]] const TerrainRenderer& terrain() const { return *terrain_; }
   TerrainRenderer& terrain() { return *terrain_; }

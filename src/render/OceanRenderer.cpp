@@ -227,6 +227,8 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
       if (timer_ != nullptr) timer_->mark("ocean");
     }
   }
+  classesDrawn_ = 0;
+  classSamples_ = {};
   if (model == OceanModel::Classic) {
     if (classic_.id() == 0) {  // made on first use (start-up: bench --startup)
       classic_ = gl::Program({{GL_VERTEX_SHADER, "ocean/classic.vert"}, {GL_FRAGMENT_SHADER, "ocean/classic.frag"}},
@@ -329,7 +331,8 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
   classify_.set("uCoastClass", coast ? 1 : 0);
   classify_.set("uLayerMaxSlope", layerMaxSlope_);
   classify_.set("uWaveReachM", static_cast<float>(amplitudeScale * patterns.amplitudeBoundM()));
-  // The terrain's shadows routed to class 3 (and 4) where they can reach, if the frame has them.
+  // The terrain's shadows routed to classes 2 and 4 (and 5) where they can reach, if the frame
+  // has them.
   const double shadowReach = (features & kFeatureShadows) != 0 ? shadowReachM(lighting, view, volume, reachM) : -1.0;
   classify_.set("uShadowReachM", static_cast<float>(shadowReach));
   const unsigned routedShadows = shadowReach >= 0.0 ? kFeatureShadows : 0u;
@@ -342,14 +345,22 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthMask(GL_FALSE);
-  const std::array<GLint, 2 * kSeaClasses> none{kNoRow, -1, kNoRow, -1, kNoRow, -1, kNoRow, -1};
+  std::array<GLint, 2 * kSeaClasses> none{};
+  for (std::size_t k = 0; k < kSeaClasses; ++k) none.at(2 * k) = kNoRow, none.at(2 * k + 1) = -1;
   glNamedBufferSubData(classRows_.id(), 0, sizeof none, none.data());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kClassRowsBinding, classRows_.id());
   if (timer_ != nullptr) timer_->mark("ocean classify");
+  // Fragments behind the terrain record their rows too (the shader's side effects come before
+  // the depth test); where none passes it (the sea hidden by mountains) nothing is drawn.
+  const gl::Query anySea = gl::createQuery(GL_ANY_SAMPLES_PASSED);
+  glBeginQuery(GL_ANY_SAMPLES_PASSED, anySea.id());
   drawGrid(classify_);
+  glEndQuery(GL_ANY_SAMPLES_PASSED);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::array<GLint, 2 * kSeaClasses> rows{};
-  glGetNamedBufferSubData(classRows_.id(), 0, sizeof rows, rows.data());
+  std::array<GLint, 2 * kSeaClasses> rows = none;
+  GLuint seaVisible = 0;
+  glGetQueryObjectuiv(anySea.id(), GL_QUERY_RESULT, &seaVisible);
+  if (seaVisible != 0) glGetNamedBufferSubData(classRows_.id(), 0, sizeof rows, rows.data());
   if (timer_ != nullptr) timer_->mark("ocean");
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);
@@ -359,20 +370,31 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glStencilMask(0);
   const unsigned routed = kFeatureWaterVolume | kFeatureCoastTest | routedShadows;
+  // Per class (sea_classify.frag): its features.
   const std::array<unsigned, kSeaClasses> classFeatures{
-      features & ~routed, features & ~(kFeatureCoastTest | routedShadows), features & ~kFeatureCoastTest, features};
+      features & ~routed, features & ~(kFeatureCoastTest | kFeatureWaterVolume),
+      features & ~(kFeatureCoastTest | routedShadows), features & ~kFeatureCoastTest, features};
   for (std::size_t k = 0; k < kSeaClasses; ++k) {
     const GLint first = rows.at(2 * k), last = rows.at(2 * k + 1);
-    if (last < first) continue;  // no vertex of the grid makes this class
-    static constexpr std::array<const char*, kSeaClasses> kClassPass{"ocean open sea", "ocean floor",
-                                                                     "ocean shadows", "ocean coast"};
+    if (last < first) continue;  // no fragment of the grid is of this class
+    static constexpr std::array<const char*, kSeaClasses> kClassPass{
+        "ocean open sea", "ocean shadows", "ocean floor", "ocean floor shadows", "ocean coast"};
     if (timer_ != nullptr) timer_->mark(kClassPass.at(k));
+    classesDrawn_ |= 1u << k;
     const gl::Program& p = program(classFeatures.at(k));
     prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, classFeatures.at(k), margin);
     glStencilFunc(GL_EQUAL, static_cast<GLint>(k + 1), 0xff);
     // Triangle rows r span vertex rows r and r + 1; kFoldRows more each side for the grid's
     // folds (a nearer fragment of another row in a pixel whose class a farther one set).
+    const gl::Query samples = countClassSamples_ ? gl::createQuery(GL_SAMPLES_PASSED) : gl::Query();
+    if (countClassSamples_) glBeginQuery(GL_SAMPLES_PASSED, samples.id());
     drawGridRows(p, std::max(first - 1 - kFoldRows, 0), std::min(last + kFoldRows, gridRows_ - 2));
+    if (countClassSamples_) {
+      glEndQuery(GL_SAMPLES_PASSED);
+      GLuint64 count = 0;
+      glGetQueryObjectui64v(samples.id(), GL_QUERY_RESULT, &count);
+      classSamples_.at(k) = count;
+    }
   }
   if (timer_ != nullptr) timer_->mark("ocean");
   glStencilMask(0xff);

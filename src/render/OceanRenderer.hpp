@@ -86,6 +86,18 @@ class OceanRenderer {
   /// Times the sea's own steps within the caller's "ocean" pass (`bench --breakdown`): the
   /// caustics' update ("ocean caustics") and the classifying draw ("ocean classify"); nullptr: none.
   void setPassTimer(gl::PassTimer* timer) { timer_ = timer; }
+  /// The sea's classes (shaders/ocean/sea_classify.frag): open sea, shadows, floor, floor with
+  /// shadows, coast.
+  static constexpr std::size_t kSeaClasses = 5;
+  /// Which of the sea's classes (sea_classify.frag) the last draw drew: bit k for class k + 1
+  /// (open sea, shadows, floor, floor with shadows, coast), where the classifying draw found
+  /// fragments of them; 0 when it drew the sea in one program.
+  [[nodiscard]] unsigned classesDrawn() const { return classesDrawn_; }
+  /// With `on`, each class's draw counts the samples it shades (an occlusion query read back at
+  /// once: for tests and measurements, not for frames that must not wait).
+  void setCountClassSamples(bool on) { countClassSamples_ = on; }
+  /// The samples each class shaded in the last classified draw (setCountClassSamples).
+  [[nodiscard]] const std::array<std::uint64_t, kSeaClasses>& classSamples() const { return classSamples_; }
   /// Grid cell size in pixels (the paper's ~8 px); smaller = finer geometry, slower.
   void setCellPixels(int pixels) { cellPixels_ = pixels; }
 
@@ -113,15 +125,14 @@ class OceanRenderer {
   /// The grid's triangle rows firstRow ... lastRow (row r between vertex rows r and r + 1).
   void drawGridRows(const gl::Program& p, int firstRow, int lastRow) const;
   static constexpr GLint kNoRow = 1 << 30;
-  static constexpr GLuint kClassRowsBinding = 3;  ///< ocean/water_volume_vertex.glsl's SeaClassRows
+  static constexpr GLuint kClassRowsBinding = 3;  ///< ocean/sea_classify.frag's SeaClassRows
   static constexpr int kFoldRows = 2;
-  /// The sea's classes (shaders/ocean/sea_classify.frag): open sea, floor, shadows, coast.
-  static constexpr std::size_t kSeaClasses = 4;
   /// The sea in classes (shaders/ocean/sea_classify.frag): one cheap draw of the grid writes
   /// each pixel's class into the stencil, then each class is drawn by the program with only the
-  /// `features` it needs (the open sea without the water volume, the coast test and the shadows,
-  /// the floor within reach without the coast test and the shadows, the shadows' reach without
-  /// the coast test, land near with all), stencil-tested before its
+  /// `features` it needs (the open sea without the water volume, the coast test and the shadows;
+  /// the shadows' reach without the water volume and the coast test; the floor within reach
+  /// without the coast test and the shadows; the floor within the shadows' reach without the
+  /// coast test; land near with all), stencil-tested before its
   /// shader runs. The stencil is left 0. Needs a stencil buffer in the bound framebuffer.
   void drawClassified(const geo::CameraView& view, int height, const OceanPatterns& patterns,
                       const ocean::OceanFrame& frame, const OceanLighting& lighting,
@@ -151,7 +162,10 @@ class OceanRenderer {
   std::vector<std::string> defines_;        ///< the filtered model's, whatever the features
   std::array<gl::Program, 16> variants_;    ///< by feature bits; id() 0 until compiled
   gl::Program classify_;                    ///< ocean/sea_classify.frag; id() 0 until compiled
-  gl::Buffer classRows_;  ///< per class, the first and last grid row of its vertices (8 ints)
+  unsigned classesDrawn_ = 0;  ///< classesDrawn()
+  bool countClassSamples_ = false;
+  std::array<std::uint64_t, kSeaClasses> classSamples_{};
+  gl::Buffer classRows_;  ///< per class, the first and last grid row of its fragments (10 ints)
   CausticCurvature caustics_;  ///< the water volume's caustics (render/WaterVolume)
   gl::Program classic_;      ///< id() 0 until first used, as the next two
   gl::Texture bumpMap_;      ///< classic: tileable ripple normals, mip-mapped

@@ -367,6 +367,20 @@ data::LatLonGrid cliffCoast() {
     return offshoreKm <= 0.0 ? 300.0 : -1.0 - 10.0 * offshoreKm;
   });
 }
+
+// A round island 600 m high at (kLat, kLon), its flanks falling 100 m per km (the layer's
+// steepest slope 0.1, so that the coast class stays near the island) to a bank 30 m deep
+// (`shelving`: the floor within reach everywhere) or to 400 m (beyond reach), over ±40 km.
+data::LatLonGrid shadowingIsland(bool shelving) {
+  return test::grid("island", kLat - 0.36, kLon - 0.4, 0.004, 181, 201, false, [shelving](double lat, double lon) {
+    const double northKm = (lat - kLat) * 110.8, eastKm = (lon - kLon) * 111.3 * std::cos(kLat * M_PI / 180.0);
+    const double height = 600.0 - 100.0 * std::hypot(northKm, eastKm);
+    return std::max(height, shelving ? -30.0 : -400.0);
+  });
+}
+
+// Bit k of OceanRenderer::classesDrawn: class k + 1 of ocean/sea_classify.frag.
+constexpr unsigned kClassOpenSea = 1, kClassShadows = 2, kClassFloor = 4, kClassFloorShadows = 8;
 }  // namespace
 
 // The terrain's shadows routed to their own class (render/OceanRenderer::shadowReachM): the
@@ -374,7 +388,8 @@ data::LatLonGrid cliffCoast() {
 // at the cliff 2.5 km offshore from 100 m, the Sun 8° up behind it: its shadow covers the sea
 // (and the Sun's glitter) from the cliff's foot to ~2.1 km out, the lower half of the picture
 // but its bottom rows, so a shadow reach too short leaves a lit band where the single program
-// has the shadow (the glitter: hundreds of levels). Measured: identical.
+// has the shadow (the glitter: hundreds of levels). Measured: identical. (The cliff's slope,
+// 3 m/m at the layer's cells, makes all this sea the coast class: see the next test.)
 TEST(CoastWater, ShadowClassCoversEveryShadowOnTheSea) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(cliffCoast());
@@ -405,6 +420,58 @@ TEST(CoastWater, ShadowClassCoversEveryShadowOnTheSea) {
   EXPECT_GT(r.terrain().shadows().casterMaxHeightM, 250.0);
 }
 
+// The floor and the shadows combine independently in the sea's classes: an island's shadow
+// under a low Sun (3° up in the west-south-west: 11 km long) falls over open sea far from its
+// coast. Over 400 m of water that sea is the shadows' own class, without the water volume (the
+// open sea in a mountain's shadow must not pay for it: sea-2m-horizon's regression,
+// docs/performance.md); over a 30 m bank, the floor with shadows. Seen from 200 m, 8 km east
+// of the island looking south-south-west across the shadow's southern edge (the lit sea
+// beyond it has the Sun's glitter on its right): the picture is the single program's.
+TEST(CoastWater, FloorAndShadowClassesCombineIndependently) {
+  auto ctx = gl::createHeadlessContext();
+  for (const bool shelving : {true, false}) {
+    SCOPED_TRACE(shelving ? "bank" : "deep water");
+    render::GlobeRenderer r(shadowingIsland(shelving));
+    render::FrameInput f;
+    f.camera.position = {kLat - 1.0 / 110.8, kLon + 8.0 / (111.3 * std::cos(kLat * M_PI / 180.0)), 200.0};
+    f.camera.headingDeg = 200.0;
+    f.camera.pitchDeg = -25.0;
+    f.camera.verticalFovDeg = 50.0;
+    f.width = 192;
+    f.height = 108;
+    f.wind.speedMs = 6.0;
+    f.simulationTimeS = 1.5;
+    f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 3.0, 250.0);
+    r.ocean().setCountClassSamples(true);
+    r.render(f);
+    const io::ImageRgba8 classes = r.display();
+    const unsigned drawn = r.ocean().classesDrawn();
+    const auto n = r.ocean().classSamples();
+    const std::string name = shelving ? "coast_classes_island_bank" : "coast_classes_island_deep";
+    save(r, name);
+    f.oceanClasses = false;
+    r.render(f);
+    const io::ImageRgba8 single = r.display();
+    save(r, name + "_single");
+    const test::Comparison c = test::compareRgb(classes, single, 1);
+    if (!c.within({2, 0.01, 1, 0.001}))
+      io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".diff.png"), c.diff);
+    EXPECT_TRUE(c.within({2, 0.01, 1, 0.001})) << c.describe();
+    EXPECT_TRUE(r.terrain().shadows().on);
+    // Samples per class (open sea, shadows, floor, floor with shadows, coast).
+    const std::string counts = std::to_string(n[0]) + " " + std::to_string(n[1]) + " " + std::to_string(n[2]) +
+                               " " + std::to_string(n[3]) + " " + std::to_string(n[4]);
+    const std::uint64_t shadowed = shelving ? n[3] : n[1], volume = n[2] + n[3];
+    EXPECT_GT(shadowed, 192u * 108u / 2u) << counts;
+    // Over deep water the volume stays on the island's flanks and past the layer's edge
+    // (measured: 82 of 20 736 samples, against 16 994 for the shadows' class).
+    if (!shelving) {
+      EXPECT_LT(volume, 192u * 108u / 100u) << "the deep sea drawn with the water volume: " << counts;
+    }
+    EXPECT_NE(drawn & (shelving ? kClassFloorShadows : kClassShadows), 0u) << "classes drawn " << drawn;
+  }
+}
+
 // The sea in classes (open sea, floor within reach, land near; each drawn by a program with
 // only its code) against the one program of all the frame's features, looking at the shore
 // with the Sun's glitter: over the shelf and deep layer 4.2 km offshore (180 m of water), 100 m
@@ -428,6 +495,7 @@ TEST(CoastWater, SeaClassesMatchTheSingleProgram) {
     f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 40.0, 20.0);
     r.render(f);
     const io::ImageRgba8 classes = r.display();
+    EXPECT_NE(r.ocean().classesDrawn() & (deep ? kClassOpenSea : kClassFloor), 0u) << r.ocean().classesDrawn();
     save(r, "coast_classes_" + std::to_string(int(-pitch)));
     f.oceanClasses = false;
     r.render(f);
