@@ -122,11 +122,14 @@ class OceanRenderer {
                const ocean::OceanFrame& frame, const OceanLighting& lighting, double amplitudeScale,
                const WindTextures& wind, unsigned features, const glm::vec4& margin) const;
   void drawGrid(const gl::Program& p) const;
-  /// The grid's triangle rows firstRow ... lastRow (row r between vertex rows r and r + 1).
+  /// The grid's triangle rows firstRow ... lastRow (row r between vertex rows r and r + 1),
+  /// widened to whole bands of kGridBlockRows.
   void drawGridRows(const gl::Program& p, int firstRow, int lastRow) const;
   static constexpr GLint kNoRow = 1 << 30;
   static constexpr GLuint kClassRowsBinding = 3;  ///< ocean/sea_classify.frag's SeaClassRows
   static constexpr int kFoldRows = 2;
+  /// The index buffer's blocks of cells (ensureGrid): rows, columns.
+  static constexpr int kGridBlockRows = 16, kGridBlockColumns = 16;
   /// The sea in classes (shaders/ocean/sea_classify.frag): one cheap draw of the grid writes
   /// each pixel's class into the stencil, then each class is drawn by the program with only the
   /// `features` it needs (the open sea without the water volume, the coast test and the shadows;
