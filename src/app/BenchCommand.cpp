@@ -202,8 +202,8 @@ void benchWindData(nlohmann::json& report, bool json) {
 
 /// CPU time of the terrain selection of a view's first frame with an empty tile cache (every
 /// tile it visits is built), with one build thread and with the default pool.
-void benchTerrainFirstFrame(const data::LatLonGrid& elevation, const BenchView& view, int w, int h,
-                            nlohmann::json& report, bool json) {
+void benchTerrainFirstFrame(const std::shared_ptr<const data::LatLonGrid>& elevation, const BenchView& view,
+                            int w, int h, nlohmann::json& report, bool json) {
   using Clock = std::chrono::steady_clock;
   const auto heights = std::make_shared<const terrain::Heightfield>(elevation);
   const geo::CameraView camera = geo::makeCameraView(view.pose, w, h);
@@ -288,7 +288,7 @@ Run addBenchCommand(CLI::App& parent) {
     const auto t0 = Clock::now();
     const std::vector<data::GeoImage> imagery = loadImageryLayers(o->imagery);
     auto context = gl::createHeadlessContext(*gl::parseBackend(o->gl));
-    const auto& elevation = data::defaultElevation();
+    const std::shared_ptr<const data::LatLonGrid> elevation = data::loadSharedElevationLayer("");
     // Atmosphere start-up: cold (empty cache directory: precomputation on this GL device),
     // then a second, cached start (tables loaded from the file). Both include the sky maps.
     const std::filesystem::path atmoCache =

@@ -206,7 +206,7 @@ struct RecordingGl {
 /// once), then the context and the renderer.
 RecordingGl setUpRenderer(const io::SceneSettings& scene, std::size_t frames, RecordResult& result) {
   const std::future<void> defaultImagery = prefetchDefaultImagery();
-  const data::LatLonGrid elevation = loadElevation(scene);
+  const std::shared_ptr<const data::LatLonGrid> elevation = loadElevation(scene);
   const std::shared_ptr<const data::WindLayers> wind = loadWindLayers(scene);
   const std::vector<data::GeoImage> imagery = loadImageryLayers(scene);
 

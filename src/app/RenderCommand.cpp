@@ -61,7 +61,7 @@ Run addRenderCommand(CLI::App& parent) {
     checkOutputWritable(out);  // fail before the (long) render, not after
     const std::future<void> defaultImagery = prefetchDefaultImagery();
     // Data layers before the GL context: a bad file exits 2 without rendering anything.
-    const data::LatLonGrid elevation = loadElevation(scene);
+    const std::shared_ptr<const data::LatLonGrid> elevation = loadElevation(scene);
     const std::shared_ptr<const data::WindLayers> wind = loadWindLayers(scene);
     const std::vector<data::GeoImage> imagery = loadImageryLayers(scene);
 

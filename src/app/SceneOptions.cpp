@@ -154,9 +154,9 @@ std::future<void> prefetchDefaultImagery() {
   });
 }
 
-data::LatLonGrid loadElevation(const io::SceneSettings& scene) {
+std::shared_ptr<const data::LatLonGrid> loadElevation(const io::SceneSettings& scene) {
   const core::startup::Scope timed("data: elevation layer (all of it)");
-  return data::loadElevationLayer(scene.elevationLayer, data::parseElevationCorrection(scene.elevationCorrection));
+  return data::loadSharedElevationLayer(scene.elevationLayer, data::parseElevationCorrection(scene.elevationCorrection));
 }
 
 void setImageryLayers(render::ImageryTextures& imagery, const io::SceneSettings& s,

@@ -53,8 +53,9 @@ render::FrameInput frameInputOf(const io::SceneSettings& scene);
 glm::dvec3 sunDirectionOf(const io::SceneSettings& scene);
 
 /// The scene's elevation layer (the embedded default when it names none), corrected as its
-/// elevationCorrection says (data::ElevationCorrection). Throws og::InputError.
-data::LatLonGrid loadElevation(const io::SceneSettings& scene);
+/// elevationCorrection says (data::ElevationCorrection), shared (the default is not copied).
+/// Throws og::InputError.
+std::shared_ptr<const data::LatLonGrid> loadElevation(const io::SceneSettings& scene);
 /// Decodes the embedded default imagery (day and night, data::defaultDayImagery and
 /// defaultNightLights, which keep it) on another thread, so that it overlaps reading the data
 /// layers, making the GL context and loading the atmosphere: ~0.3 s of CPU off the start-up's

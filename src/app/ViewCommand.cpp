@@ -110,7 +110,7 @@ class Viewer {
                        [this](double notches) { onScroll(notches); }});
     window_->setSwapInterval(1);
 
-    renderer_ = std::make_unique<render::GlobeRenderer>(ground_.layer(), scene_.atmosphere);
+    renderer_ = std::make_unique<render::GlobeRenderer>(ground_.sharedLayer(), scene_.atmosphere);
     // Progressive terrain: missing tiles are built in the background, never stalling a frame.
     renderer_->terrain().selection().wait = false;
     setImageryLayers(renderer_->imagery(), scene_, imagery_);

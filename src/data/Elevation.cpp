@@ -130,6 +130,13 @@ LatLonGrid loadElevationLayer(const std::string& spec, ElevationCorrection corre
   return grid;
 }
 
+std::shared_ptr<const LatLonGrid> loadSharedElevationLayer(const std::string& spec, ElevationCorrection correction) {
+  // The default lives as long as the process: a pointer that owns nothing.
+  if (spec.empty() && correction != ElevationCorrection::None)
+    return std::shared_ptr<const LatLonGrid>(std::shared_ptr<const LatLonGrid>(), &defaultElevation());
+  return std::make_shared<const LatLonGrid>(loadElevationLayer(spec, correction));
+}
+
 LatLonGrid uncorrectedDefaultElevation() {
   const std::optional<std::string_view> bytes = og::embedded::data::find(kDefaultFile);
   if (!bytes) throw InternalError("embedded data: " + std::string(kDefaultFile) + " is missing");

@@ -1,6 +1,7 @@
 #pragma once
 // Elevation layers: relief with bathymetry in metres above mean sea level (negative = depth).
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -34,6 +35,10 @@ LatLonGrid readElevationMemory(std::string_view bytes, const std::string& label,
 /// `correction` as --elevation-correction says (data/ShallowBanks.hpp: Auto corrects the
 /// default's shallow-bank placeholder only, None not even that).
 LatLonGrid loadElevationLayer(const std::string& spec, ElevationCorrection correction = ElevationCorrection::Auto);
+/// The same, shared: the embedded default (defaultElevation) without a copy of its 9.3 million
+/// cells (start-up: one copy was ~40 ms, docs/performance.md).
+std::shared_ptr<const LatLonGrid> loadSharedElevationLayer(const std::string& spec,
+                                                           ElevationCorrection correction = ElevationCorrection::Auto);
 
 /// Names elevation fields go by (ROSE, z, elevation, topo, ...), tried in order when a file
 /// holds several fields and none is named.

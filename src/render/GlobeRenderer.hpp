@@ -91,10 +91,17 @@ class GlobeRenderer {
  public:
   /// Needs a current GL 4.5 context. Uploads the elevation layer once and prepares the
   /// atmosphere (precomputed tables, from the on-disk cache when available).
-  explicit GlobeRenderer(const data::LatLonGrid& elevation,
+  /// The layer is shared (the terrain keeps it), not copied.
+  explicit GlobeRenderer(std::shared_ptr<const data::LatLonGrid> elevation,
                          const atmosphere::Parameters& atmosphere = atmosphere::earth());
   /// Shares an atmosphere already prepared on the current context.
-  GlobeRenderer(const data::LatLonGrid& elevation, std::shared_ptr<const Atmosphere> atmosphere);
+  GlobeRenderer(std::shared_ptr<const data::LatLonGrid> elevation, std::shared_ptr<const Atmosphere> atmosphere);
+  /// The same with a copy of `elevation`.
+  explicit GlobeRenderer(const data::LatLonGrid& elevation,
+                         const atmosphere::Parameters& atmosphere = atmosphere::earth())
+      : GlobeRenderer(std::make_shared<const data::LatLonGrid>(elevation), atmosphere) {}
+  GlobeRenderer(const data::LatLonGrid& elevation, std::shared_ptr<const Atmosphere> atmosphere)
+      : GlobeRenderer(std::make_shared<const data::LatLonGrid>(elevation), std::move(atmosphere)) {}
 
   [[nodiscard]] const Atmosphere& atmosphere() const { return *atmosphere_; }
   [[nodiscard]] std::shared_ptr<const Atmosphere> sharedAtmosphere() const { return atmosphere_; }

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <string>
 
 #include "core/Error.hpp"
 #include "data/Imagery.hpp"
 #include "data/ImageryTiles.hpp"
+#include "data/SrgbMips.hpp"
 #include "gl/ShaderContract.hpp"
 
 namespace og::render {
@@ -30,14 +32,18 @@ void setSampling(GLuint tex, bool wrapS) {
   glTextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
-/// A global image as a mip-mapped sRGB texture, row 0 at the south (t = 0).
-gl::Texture globalTexture(const data::GeoImage& img) {
+/// A global image as a mip-mapped sRGB texture, row 0 at the south (t = 0), with its mip
+/// chain `levels` (data::srgbMipChain: made on the CPU, glGenerateMipmap costs ~50 ms an image
+/// on llvmpipe).
+gl::Texture globalTexture(const data::GeoImage& img, const std::vector<data::SrgbLevel>& levels) {
   if (!img.coversGlobe()) throw InternalError(img.label + ": a base image must cover the globe");
   gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
   glTextureStorage2D(t.id(), mipLevels(img.width, img.height), GL_SRGB8_ALPHA8, img.width, img.height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTextureSubImage2D(t.id(), 0, 0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
-  glGenerateTextureMipmap(t.id());
+  for (std::size_t k = 0; k < levels.size(); ++k)
+    glTextureSubImage2D(t.id(), static_cast<GLint>(k + 1), 0, 0, levels[k].width, levels[k].height, GL_RGBA,
+                        GL_UNSIGNED_BYTE, levels[k].rgba.data());
   setSampling(t.id(), true);
   return t;
 }
@@ -47,8 +53,10 @@ gl::Texture globalTexture(const data::GeoImage& img) {
 ImageryTextures::ImageryTextures() {
   const data::GeoImage& day = data::defaultDayImagery();
   const data::GeoImage& night = data::defaultNightLights();
-  day_ = globalTexture(day);
-  night_ = globalTexture(night);
+  // The night image's levels on a second core while the day's are made here.
+  auto nightLevels = std::async(std::launch::async, [&night] { return data::srgbMipChain(night.width, night.height, night.rgba); });
+  day_ = globalTexture(day, data::srgbMipChain(day.width, day.height, day.rgba));
+  night_ = globalTexture(night, nightLevels.get());
   dayTexelRad_ = static_cast<float>((day.northDeg - day.southDeg) / day.height * kDegToRad);
   bytes_ = mippedBytes(day.width, day.height, 1) + mippedBytes(night.width, night.height, 1);
   setLayers({});

@@ -52,19 +52,31 @@ std::vector<unsigned char> blockedByLayer(const data::LatLonGrid& layer, double 
     std::fill(blocked.begin(), blocked.end(), 1);
     return blocked;
   }
+  const auto normalized = [&](int c) {
+    const double lon = std::fmod(layer.lon0Deg + c * layer.dLonDeg + 180.0, 360.0);
+    return (lon < 0.0 ? lon + 360.0 : lon) - 180.0;
+  };
   for (int r = 0; r < layer.height; ++r) {
     // A texel reaches one spacing each way through the bilinear filter; the outer rows reach
     // the poles (the texture clamps there).
     const double lat = layer.lat0Deg + r * layer.dLatDeg;
     const double latLo = r == 0 ? -90.0 : lat - layer.dLatDeg;
     const double latHi = r == layer.height - 1 ? 90.0 : lat + layer.dLatDeg;
+    // Runs of texels that are not deep (NaN reads as -1 m on the GPU: blocked), one box a run:
+    // the union of its texels' boxes, each from its own wrapped longitude as a box per texel
+    // would be (the same cells, a few thousand boxes a row fewer).
+    const float* row = &layer.values[static_cast<std::size_t>(r) * static_cast<std::size_t>(layer.width)];
     for (int c = 0; c < layer.width; ++c) {
-      const float v = layer.at(c, r);
-      if (static_cast<double>(v) <= -minDepthM) continue;  // deep (NaN reads as -1 m on the GPU: blocked)
-      double lon = layer.lon0Deg + c * layer.dLonDeg;
-      lon = std::fmod(lon + 180.0, 360.0);
-      lon = (lon < 0.0 ? lon + 360.0 : lon) - 180.0;
-      markBox(blocked, lon - layer.dLonDeg, lon + layer.dLonDeg, latLo, latHi);
+      if (static_cast<double>(row[c]) <= -minDepthM) continue;
+      const int first = c;
+      while (c + 1 < layer.width && !(static_cast<double>(row[c + 1]) <= -minDepthM)) ++c;
+      const double lo = normalized(first) - layer.dLonDeg;
+      double hi = normalized(c) + layer.dLonDeg;
+      if ((c - first + 2) * layer.dLonDeg >= 360.0)
+        hi = lo + 360.0;  // the whole circle (markBox stops after one turn)
+      else if (normalized(c) < normalized(first))
+        hi += 360.0;  // the run crosses the antimeridian
+      markBox(blocked, lo, hi, latLo, latHi);
     }
   }
   return blocked;

@@ -14,9 +14,9 @@
 
 namespace og::render {
 
-TerrainRenderer::TerrainRenderer(const data::LatLonGrid& elevation, const Atmosphere* atmosphere)
+TerrainRenderer::TerrainRenderer(std::shared_ptr<const data::LatLonGrid> elevation, const Atmosphere* atmosphere)
     : atmosphere_(atmosphere),
-      cache_(std::make_shared<const terrain::Heightfield>(elevation)),
+      cache_(std::make_shared<const terrain::Heightfield>(std::move(elevation))),
       vao_(gl::createVertexArray()),
       indices_(gl::createBuffer()) {
   // Sea floor beyond the water volume's reach is never seen (GlobeRenderer::drawOcean's test).

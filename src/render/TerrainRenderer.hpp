@@ -51,8 +51,8 @@ struct TerrainStats {
 
 class TerrainRenderer {
  public:
-  /// Needs a current GL 4.5 context. Keeps a copy of the elevation layer.
-  TerrainRenderer(const data::LatLonGrid& elevation, const Atmosphere* atmosphere);
+  /// Needs a current GL 4.5 context. Shares the elevation layer.
+  TerrainRenderer(std::shared_ptr<const data::LatLonGrid> elevation, const Atmosphere* atmosphere);
 
   /// Draws into the bound framebuffer (width x height) with GL_GREATER depth test and writes.
   /// `seaFromGlobe`: the globe pass drew the sea (above the projected grid's ceiling), so

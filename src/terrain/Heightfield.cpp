@@ -6,6 +6,7 @@
 #include <numbers>
 #include <utility>
 
+#include "core/Error.hpp"
 #include "core/GlslShim.hpp"
 #include "geo/Wgs84.hpp"
 #include "terrain/Tile.hpp"
@@ -56,9 +57,10 @@ double detailSum(const DetailOctaves& o, const glm::dvec3& unitUp, int count, in
   return std::clamp(sum, -1.0, 1.0);
 }
 
-Heightfield::Heightfield(data::LatLonGrid layer) : layer_(std::move(layer)) {
-  if (layer_.wrapsLongitude && data::defaultLandMask().refines(layer_)) mask_ = &data::defaultLandMask();
-  cellM_ = layer_.dLatDeg * kDeg * geo::kWgs84SemiMajorM;
+Heightfield::Heightfield(std::shared_ptr<const data::LatLonGrid> layer) : layer_(std::move(layer)) {
+  if (!layer_) throw InternalError("Heightfield: no elevation layer");
+  if (layer_->wrapsLongitude && data::defaultLandMask().refines(*layer_)) mask_ = &data::defaultLandMask();
+  cellM_ = layer_->dLatDeg * kDeg * geo::kWgs84SemiMajorM;
   // Octaves from two layer cells (what the bilinear layer cannot show) down to the shortest.
   octaves_.longestM = 2.0 * cellM_;
   octaves_.normalCount = 0;
@@ -80,10 +82,10 @@ Heightfield::Heightfield(data::LatLonGrid layer) : layer_(std::move(layer)) {
 }
 
 double Heightfield::layerHeightM(double latitudeDeg, double longitudeDeg) const {
-  const float v = layer_.sample(std::clamp(latitudeDeg, -90.0, 90.0), longitudeDeg);
+  const float v = layer_->sample(std::clamp(latitudeDeg, -90.0, 90.0), longitudeDeg);
   const double h = std::isfinite(v) ? static_cast<double>(v) : -1.0;
   if (mask_ == nullptr) return h;
-  return mask_->constrainHeightM(h, latitudeDeg, longitudeDeg, layer_.sampleKeepDepth(latitudeDeg, longitudeDeg));
+  return mask_->constrainHeightM(h, latitudeDeg, longitudeDeg, layer_->sampleKeepDepth(latitudeDeg, longitudeDeg));
 }
 
 double Heightfield::detailAmplitudeM(double latitudeDeg, double longitudeDeg) const {
@@ -103,12 +105,12 @@ double Heightfield::layerRmsDifferenceM(double latitudeDeg, double longitudeDeg,
   // every lake shore), each at least sea level: land's relief is measured from the sea's
   // surface, not from the sea floor a cell offshore.
   auto height = [&](double lat, double lon) {
-    const float v = layer_.sample(std::clamp(lat, -90.0, 90.0), lon);
+    const float v = layer_->sample(std::clamp(lat, -90.0, 90.0), lon);
     return std::isfinite(v) ? std::max(static_cast<double>(v), 0.0) : 0.0;
   };
   h = std::max(h, 0.0);
   // One cell north, south, east and west, the east-west step widened to the same metres.
-  const double d = layer_.dLatDeg;
+  const double d = layer_->dLatDeg;
   const double dLon = d / std::max(std::cos(latitudeDeg * kDeg), 0.05);
   const double n = height(latitudeDeg + d, longitudeDeg) - h;
   const double s = height(latitudeDeg - d, longitudeDeg) - h;
@@ -147,7 +149,7 @@ double Heightfield::detailShadingAmplitudeM(double latitudeDeg, double longitude
 }
 
 double Heightfield::seaDetailAmplitudeM(double latitudeDeg, double longitudeDeg, double h) const {
-  const double d = layer_.dLatDeg;
+  const double d = layer_->dLatDeg;
   const double relief =
       0.5 * (std::abs(layerHeightM(latitudeDeg + d, longitudeDeg) -
                       layerHeightM(latitudeDeg - d, longitudeDeg)) +

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include <memory>
+#include <utility>
 
 #include "data/LandMask.hpp"
 #include "data/LatLonGrid.hpp"
@@ -38,9 +39,12 @@ struct HeightSample {
 
 class Heightfield {
  public:
-  /// Keeps a copy of the layer. NaN (no data) reads as 1 m below sea level (sea), as the globe
-  /// pass does.
-  explicit Heightfield(data::LatLonGrid layer);
+  /// Shares the layer (no copy: the default's 9.3 million cells are 37 MB). NaN (no data) reads
+  /// as 1 m below sea level (sea), as the globe pass does.
+  explicit Heightfield(std::shared_ptr<const data::LatLonGrid> layer);
+  /// Keeps the layer (moved or copied in).
+  explicit Heightfield(data::LatLonGrid layer)
+      : Heightfield(std::make_shared<const data::LatLonGrid>(std::move(layer))) {}
 
   /// Height above mean sea level in metres (negative = depth) at a geodetic position (degrees),
   /// detail included.
@@ -86,7 +90,8 @@ class Heightfield {
   static constexpr double kNormalShortestM = 2.5;
 
   [[nodiscard]] const DetailOctaves& octaves() const { return octaves_; }
-  [[nodiscard]] const data::LatLonGrid& layer() const { return layer_; }
+  [[nodiscard]] const data::LatLonGrid& layer() const { return *layer_; }
+  [[nodiscard]] const std::shared_ptr<const data::LatLonGrid>& sharedLayer() const { return layer_; }
   /// The layer's cell size, m (north-south).
   [[nodiscard]] double cellM() const { return cellM_; }
 
@@ -97,7 +102,7 @@ class Heightfield {
   [[nodiscard]] double seaDetailAmplitudeM(double latitudeDeg, double longitudeDeg, double h) const;
   [[nodiscard]] double layerRmsDifferenceM(double latitudeDeg, double longitudeDeg, double h) const;
 
-  data::LatLonGrid layer_;
+  std::shared_ptr<const data::LatLonGrid> layer_;
   const data::LandMask* mask_ = nullptr;  ///< decides the coast when the layer is coarser
   double cellM_ = 0.0;
   DetailOctaves octaves_;
