@@ -79,7 +79,8 @@ OceanPatterns::OceanPatterns(std::shared_ptr<const ocean::WavePatterns> patterns
       tables_(ocean::makePatternTables(*patterns_)),
       spectrum_({{GL_COMPUTE_SHADER, "ocean/fft_spectrum.comp"}}, fftDefines(patterns_->params)),
       line_({{GL_COMPUTE_SHADER, "ocean/fft_line.comp"}}, fftDefines(patterns_->params)),
-      finish_({{GL_COMPUTE_SHADER, "ocean/fft_finish.comp"}}, fftDefines(patterns_->params)) {
+      finish_({{GL_COMPUTE_SHADER, "ocean/fft_finish.comp"}}, fftDefines(patterns_->params)),
+      mips_({{GL_COMPUTE_SHADER, "ocean/pattern_mips.comp"}}) {
   requestedWindMs_ = requestedWindMs;
   const int n = patterns_->params.fftSize;
   fftLayers_ = ocean::kPatternSets * fftLayersPerSet(patterns_->params);
@@ -223,34 +224,30 @@ void OceanPatterns::runFft(double timeS, int patternCount) {
   glBindImageTexture(2, slopes_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   finish_.use();
   glDispatchCompute(static_cast<GLuint>(n / 8), static_cast<GLuint>(n / 8), ocean::kPatternSets);
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   generateMipmaps(patternCount);
   for (GLuint unit = 0; unit < 4; ++unit) glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
   gl::checkErrors("OceanPatterns::update");
 }
 
-// Mip-maps of the patterns transformed this time: whole textures, or views of each set's first
-// patternCount layers (glGenerateTextureMipmap has no layer range).
+// Mip-maps of the patterns transformed this time (each set's first patternCount layers), one
+// compute dispatch a level for both textures (ocean/pattern_mips.comp): glGenerateMipmap blits
+// every layer and level on llvmpipe (14-30 ms a frame) and has no layer range.
 void OceanPatterns::generateMipmaps(int patternCount) {
-  const gl::Texture* textures[2] = {&displacement_, &slopes_};
-  if (patternCount >= ocean::kPatternCount) {
-    for (const gl::Texture* t : textures) glGenerateTextureMipmap(t->id());
-    return;
+  const int levels = log2Of(patterns_->params.fftSize) + 1;
+  mips_.set("uPatternCount", patternCount);
+  mips_.set("uLayersPerSet", ocean::kPatternCount);
+  mips_.use();
+  for (int level = 1; level < levels; ++level) {
+    glBindImageTexture(0, displacement_.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA16F);
+    glBindImageTexture(1, displacement_.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(2, slopes_.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(3, slopes_.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    const auto groups = static_cast<GLuint>(std::max(1, ((patterns_->params.fftSize >> level) + 7) / 8));
+    glDispatchCompute(groups, groups, static_cast<GLuint>(patternCount * ocean::kPatternSets));
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
-  const GLenum formats[2] = {GL_RGBA16F, GL_RGBA32F};
-  const auto levels = static_cast<GLuint>(log2Of(patterns_->params.fftSize) + 1);
-  for (int t = 0; t < 2; ++t)
-    for (int set = 0; set < ocean::kPatternSets; ++set) {
-      gl::Texture& view = prefixViews_[t][set][patternCount - 1];
-      if (!view) {
-        GLuint id = 0;
-        glGenTextures(1, &id);  // a view needs a name never bound (glCreateTextures binds)
-        glTextureView(id, GL_TEXTURE_2D_ARRAY, textures[t]->id(), formats[t], 0, levels,
-                      static_cast<GLuint>(set * ocean::kPatternCount), static_cast<GLuint>(patternCount));
-        view = gl::Texture(id);
-      }
-      glGenerateTextureMipmap(view.id());
-    }
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
 std::vector<std::string> OceanPatterns::shaderDefines() {

@@ -79,6 +79,7 @@ class OceanPatterns {
   gl::Program spectrum_;
   gl::Program line_;  ///< whole-line FFT in shared memory
   gl::Program finish_;
+  gl::Program mips_;  ///< ocean/pattern_mips.comp: one mip level of both textures
   gl::Texture h0_;
   gl::Texture steps_;
   gl::Texture fields_[2];  ///< ping-pong buffers of the FFT
@@ -89,9 +90,6 @@ class OceanPatterns {
   int fftLayers_ = 0;         ///< layers of the FFT buffers (1 or 2 per pattern layer)
   double timeS_ = 0.0;
   int computed_ = 0;          ///< patterns the textures hold at timeS_ (0: none)
-  /// Views of the first k patterns' layers of each set, [texture][set][k - 1], made on first use
-  /// (mip-maps of a prefix of the layers).
-  gl::Texture prefixViews_[2][ocean::kPatternSets][ocean::kPatternCount];
   std::size_t gpuBytes_ = 0;
 };
 

@@ -232,3 +232,50 @@ TEST(OceanPatterns, FftCostAtProductionSize) {
     }
   }
 }
+
+// The patterns' mip chains (ocean/pattern_mips.comp, one dispatch a level for both textures):
+// every level of every layer transformed, in the displacement and the slopes' moments, is the
+// mean of the 2 x 2 texels under it in the level above, down to 1 x 1; after an update of the
+// three largest patterns only, their levels follow the new time and the others keep theirs.
+TEST(OceanPatterns, MipLevelsAreTheMeansOfTheLevelAbove) {
+  auto ctx = gl::createHeadlessContext();
+  const ocean::WavePatternParams p = smallPatternParams();
+  auto w = std::make_shared<const ocean::WavePatterns>(ocean::makeWavePatterns(p));
+  render::OceanPatterns gpu(w);
+  const auto level = [&](GLuint texture, int lod, int layer) {
+    const int size = std::max(1, p.fftSize >> lod);
+    std::vector<float> texels(static_cast<std::size_t>(size) * size * 4);
+    glGetTextureSubImage(texture, lod, 0, 0, layer, size, size, 1, GL_RGBA, GL_FLOAT,
+                         static_cast<GLsizei>(texels.size() * sizeof(float)), texels.data());
+    return texels;
+  };
+  // Largest |level - mean of the 2 x 2 above| over a layer's chain, relative to the layer's
+  // largest value (half floats: the displacement rounds at 2^-11 of it).
+  const auto chainError = [&](GLuint texture, int layer) {
+    double worst = 0.0, scale = 1e-30;
+    std::vector<float> above = level(texture, 0, layer);
+    for (float v : above) scale = std::max(scale, std::abs(static_cast<double>(v)));
+    for (int lod = 1; (p.fftSize >> (lod - 1)) > 1; ++lod) {
+      const int n = p.fftSize >> lod;
+      const std::vector<float> here = level(texture, lod, layer);
+      for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x)
+          for (int c = 0; c < 4; ++c) {
+            double sum = 0.0;
+            for (int k = 0; k < 4; ++k)
+              sum += static_cast<double>(above[static_cast<std::size_t>(((2 * y + k / 2) * 2 * n + 2 * x + k % 2) * 4 + c)]);
+            worst = std::max(worst, std::abs(static_cast<double>(here[static_cast<std::size_t>((y * n + x) * 4 + c)]) - 0.25 * sum));
+          }
+      above = here;
+    }
+    return worst / scale;
+  };
+  gpu.update(0.0);
+  gpu.update(12.5, 3);
+  glFinish();
+  for (int layer = 0; layer < ocean::kPatternSets * ocean::kPatternCount; ++layer) {
+    SCOPED_TRACE("layer " + std::to_string(layer));
+    EXPECT_LT(chainError(gpu.displacementTexture(), layer), 2e-3);
+    EXPECT_LT(chainError(gpu.slopesTexture(), layer), 1e-5);
+  }
+}
