@@ -122,6 +122,26 @@ double OceanRenderer::farthestSeaAngleRad(const geo::CameraView& view) {
   return std::min(most, horizon);
 }
 
+bool OceanRenderer::geometryIsSubPixel(const geo::CameraView& view, int height, double displacementBoundM) {
+  // The waves move no point by more than displacementBoundM, and no sea point is nearer than
+  // the eye's height: the largest displacement on the screen, pixels (an upper bound).
+  const double r = geo::kWgs84SemiMajorM, h = std::max(view.position.heightM, 0.1);
+  if (displacementBoundM / h * height / view.verticalFovRad > kSubPixelDisplacementPx) return false;
+  // Every corner's ray and the top edge's meet the sea at least kGrownCellMinGrazingRad above
+  // grazing (seen from the sphere of the semi-major axis).
+  const double tanY = std::tan(0.5 * view.verticalFovRad), tanX = tanY * view.aspect;
+  const glm::dvec3 eye = (r + h) * view.enu.up;
+  for (const auto& [sx, sy] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {-1.0, 1.0}, {1.0, 1.0}, {0.0, 1.0}}) {
+    const glm::dvec3 dir = glm::normalize(view.forward + sx * tanX * view.right + sy * tanY * view.up);
+    const double b = (r + h) * -glm::dot(dir, view.enu.up);
+    const double disc = b * b - h * (2.0 * r + h);
+    if (b <= 0.0 || disc < 0.0) return false;  // the ray misses: the horizon is in view
+    const glm::dvec3 hit = eye + (b - std::sqrt(disc)) * dir;
+    if (-glm::dot(dir, hit / r) < std::sin(kGrownCellMinGrazingRad)) return false;
+  }
+  return true;
+}
+
 void OceanRenderer::ensureGrid(int columns, int rows) {
   if (columns == gridColumns_ && rows == gridRows_) return;
   // Cells in blocks of kGridBlockRows x kGridBlockColumns, the blocks row band by row band:
@@ -167,10 +187,10 @@ void OceanRenderer::setCommon(const gl::Program& p, const geo::CameraView& view,
   p.set("uViewProjection", glm::mat4(view.viewProjection()));
   p.set("uEcefToOcean", ecefToOcean);
   p.set("uEyeHeight", static_cast<float>(eyeHeight));
-  p.set("uCellAngle", static_cast<float>(2.0 * tanY / height * cellPixels_));
-  p.set("uCellPixels", static_cast<float>(cellPixels_));
+  p.set("uCellAngle", static_cast<float>(2.0 * tanY / height * frameCellPixels_));
+  p.set("uCellPixels", static_cast<float>(frameCellPixels_));
   // Patterns whose texels span 2 cells or more are looked up per vertex (ocean/patterns.glsl).
-  p.set("uPatternVertexLod", static_cast<float>(-std::log2(static_cast<double>(cellPixels_))));
+  p.set("uPatternVertexLod", static_cast<float>(-std::log2(static_cast<double>(frameCellPixels_))));
   p.set("uEyeScaled", toFloat(o));
   p.set("uEyeC", static_cast<float>(glm::dot(o, o) - 1.0));
   p.set("uSunDirOcean", ecefToOcean * toFloat(glm::normalize(lighting.sunDirectionEcef)));
@@ -213,8 +233,15 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
   const double bottom = std::clamp(3.0 * amplitudeScale * amplitude / eyeAbove, 0.1, 3.0);
   const glm::vec4 margin(static_cast<float>(side), static_cast<float>(side),
                          static_cast<float>(bottom), 0.1f);  // left, right, bottom, top
-  ensureGrid(std::max(2, static_cast<int>(std::ceil(width * (1 + side) / cellPixels_)) + 1),
-             std::max(2, static_cast<int>(std::ceil(height * (1 + 0.5 * (bottom + 0.1)) / cellPixels_)) + 1));
+  frameCellPixels_ = cellPixels_;
+  if (model == OceanModel::Bruneton && cellGrowth_ && geometryIsSubPixel(view, height, amplitudeScale * amplitude)) {
+    // Up to kGrownCellFactor-fold, the cell no wider than kGrownCellMaxRad.
+    const double pixelRad = 2.0 * std::tan(0.5 * view.verticalFovRad) / height;
+    for (int k = kGrownCellFactor; k > 1 && frameCellPixels_ == cellPixels_; k /= 2)
+      if (k * cellPixels_ * pixelRad <= kGrownCellMaxRad) frameCellPixels_ = k * cellPixels_;
+  }
+  ensureGrid(std::max(2, static_cast<int>(std::ceil(width * (1 + side) / frameCellPixels_)) + 1),
+             std::max(2, static_cast<int>(std::ceil(height * (1 + 0.5 * (bottom + 0.1)) / frameCellPixels_)) + 1));
 
   unsigned features = 0;
   if (model == OceanModel::Classic) {

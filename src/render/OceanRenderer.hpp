@@ -100,6 +100,27 @@ class OceanRenderer {
   [[nodiscard]] const std::array<std::uint64_t, kSeaClasses>& classSamples() const { return classSamples_; }
   /// Grid cell size in pixels (the paper's ~8 px); smaller = finer geometry, slower.
   void setCellPixels(int pixels) { cellPixels_ = pixels; }
+  /// Whether the grid's cells may grow (2 or kGrownCellFactor-fold, to at most kGrownCellMaxRad
+  /// across) where the waves' geometry is sub-pixel and no sea is seen near grazing
+  /// (geometryIsSubPixel); on by default.
+  void setCellGrowth(bool on) { cellGrowth_ = on; }
+  /// The cell size (pixels) the last draw used.
+  [[nodiscard]] int lastCellPixels() const { return frameCellPixels_; }
+  /// Whether a grid of larger cells draws the same sea: the waves displace no point by more
+  /// than kSubPixelDisplacementPx on the screen (displacementBoundM over the eye's height, the
+  /// nearest the sea can be), and every corner of the view meets the sea at least
+  /// kGrownCellMinGrazingRad above grazing (no horizon: the terms the vertices carry, the
+  /// aerial perspective above all, vary fast there). Then a cell only interpolates smooth
+  /// terms: sea-8km at 1280x720 with 32-px cells differs from 8-px ones by at most 2 levels
+  /// (mean 0.03) for a third of the ocean pass (llvmpipe shades every 4 x 2 block a
+  /// triangle touches: small triangles shade many pixels twice).
+  [[nodiscard]] static bool geometryIsSubPixel(const geo::CameraView& view, int height, double displacementBoundM);
+  static constexpr double kSubPixelDisplacementPx = 0.25;
+  static constexpr double kGrownCellMinGrazingRad = 0.087;  // 5°
+  static constexpr int kGrownCellFactor = 4;
+  /// The largest grown cell, rad: 4.2° (32 px at 640x360, 45° tall) draws the same sea (OceanCell
+  /// tests); 8.4° cells (32 px at 320x180) move the far sea by up to 5 levels.
+  static constexpr double kGrownCellMaxRad = 0.075;
 
   /// Draws the sea into the bound framebuffer (width x height), depth-tested. `patterns` must
   /// hold the sea at `timeS` (OceanPatterns::update). `amplitudeScale` in [0, 1] fades the
@@ -178,6 +199,8 @@ class OceanRenderer {
   int gridColumns_ = 0, gridRows_ = 0;
   int indexCount_ = 0;
   int cellPixels_ = 8;
+  int frameCellPixels_ = 8;  ///< this frame's: cellPixels_, or grown (geometryIsSubPixel)
+  bool cellGrowth_ = true;
   glm::vec4 lightingTerms_{1.0f};
   glm::vec4 elevationMap_{0.0f};
   glm::vec2 elevationSize_{0.0f};

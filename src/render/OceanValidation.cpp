@@ -86,11 +86,13 @@ OceanValidator::OceanValidator(const ValidationSettings& settings) : settings_(s
   patterns_->update(settings.timeS);
   reference_ = std::make_unique<OceanRenderer>(nullptr, ValidationMode::Reference);
   reference_->setCellPixels(settings.referenceCellPixels);
+  reference_->setCellGrowth(false);  // validation measures the models at the cells it names
   const ValidationMode modes[kValidationModels] = {ValidationMode::Filtered, ValidationMode::ConstantBrdf,
                                                    ValidationMode::BrdfOnly};
   for (int m = 0; m < kValidationModels; ++m) {
     models_[static_cast<std::size_t>(m)] = std::make_unique<OceanRenderer>(nullptr, modes[m]);
     models_[static_cast<std::size_t>(m)]->setCellPixels(settings.cellPixels);
+    models_[static_cast<std::size_t>(m)]->setCellGrowth(false);
   }
   wind_ = std::make_unique<WindTextures>();
   wind_->setConstantWind(geo::Wind::blowingTowards(settings.windSpeedMs, settings.windDirectionDeg));

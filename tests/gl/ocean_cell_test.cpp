@@ -1,0 +1,61 @@
+// GL tier: the projected grid's cells grow four-fold where the waves' geometry is sub-pixel and
+// no sea is seen near grazing (render::OceanRenderer::geometryIsSubPixel): they then only
+// interpolate smooth terms, so the picture is the 8-px grid's, for a third of the ocean pass.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "data/Elevation.hpp"
+#include "geo/Camera.hpp"
+#include "gl/Context.hpp"
+#include "io/Image.hpp"
+#include "render/GlobeRenderer.hpp"
+#include "support/GlFixtures.hpp"
+#include "support/ImageCompare.hpp"
+
+using namespace og;
+
+namespace {
+bool subPixel(double heightM, double pitchDeg, int width, int height, double fovDeg = 45.0) {
+  geo::CameraPose pose;
+  pose.position = {20.0, -40.0, heightM};
+  pose.headingDeg = 270.0;
+  pose.pitchDeg = pitchDeg;
+  pose.verticalFovDeg = fovDeg;
+  return render::OceanRenderer::geometryIsSubPixel(geo::makeCameraView(pose, width, height), height, 1.98);
+}
+}  // namespace
+
+// The bench's views with their 1.98 m displacement bound (7 m/s): sea-8km grows at 720p (0.20 px
+// at most) but not at 2160p (0.61 px); sea-4m and sea-1km do not (metres of displacement; the
+// horizon); 20 km with the horizon in view (OceanSwitch's view) does not.
+TEST(OceanCell, GrowsOnlyWhereTheGeometryIsSubPixelAndNoHorizonIsInView) {
+  EXPECT_TRUE(subPixel(8000.0, -30.0, 1280, 720));
+  EXPECT_FALSE(subPixel(8000.0, -30.0, 3840, 2160));
+  EXPECT_FALSE(subPixel(4.0, -10.0, 1280, 720));
+  EXPECT_FALSE(subPixel(1000.0, -20.0, 1280, 720));
+  EXPECT_FALSE(subPixel(19999.0, -30.0, 192, 108, 60.0));
+  EXPECT_TRUE(subPixel(19999.0, -60.0, 192, 108, 60.0));
+}
+
+// Looking down from 8 km: the grown grid's picture against the 8-px grid's (16-px cells at
+// 320x180, 4.2° across; 32-px cells at 640x360 and 1280x720 pass the same bound, measured).
+TEST(OceanCell, GrownCellsDrawTheSameSea) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  render::FrameInput f = test::frameOf({20.0, -40.0, 8000.0, 270.0, -30.0, 45.0, 320, 180}, 20.0, 250.0);
+  f.simulationTimeS = 3.0;
+  r.render(f);
+  const io::ImageRgba8 grown = r.display();
+  EXPECT_EQ(r.ocean().lastCellPixels(), 16);  // 32 px would be 8.4° across (kGrownCellMaxRad)
+  r.ocean().setCellGrowth(false);
+  r.render(f);
+  const io::ImageRgba8 fine = r.display();
+  EXPECT_EQ(r.ocean().lastCellPixels(), 8);
+  const test::Comparison c = test::compareRgb(grown, fine, 2);
+  if (!c.within({3, 0.1, 2, 0.01})) {
+    io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / "ocean_cell_grown.png", grown);
+    io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / "ocean_cell_grown.diff.png", c.diff);
+  }
+  EXPECT_TRUE(c.within({3, 0.1, 2, 0.01})) << c.describe();
+}
