@@ -381,6 +381,40 @@ data::LatLonGrid shadowingIsland(bool shelving) {
 
 // Bit k of OceanRenderer::classesDrawn: class k + 1 of ocean/sea_classify.frag.
 constexpr unsigned kClassOpenSea = 1, kClassShadows = 2, kClassFloor = 4, kClassFloorShadows = 8;
+
+// A 192 x 108 view from `position` (50° tall), wind 6 m/s at t = 1.5 s, the Sun
+// `sunElevationDeg` up at `sunAzimuthDeg`.
+render::FrameInput classView(const geo::Geodetic& position, double headingDeg, double pitchDeg,
+                             double sunElevationDeg, double sunAzimuthDeg) {
+  render::FrameInput f;
+  f.camera.position = position;
+  f.camera.headingDeg = headingDeg;
+  f.camera.pitchDeg = pitchDeg;
+  f.camera.verticalFovDeg = 50.0;
+  f.width = 192;
+  f.height = 108;
+  f.wind.speedMs = 6.0;
+  f.simulationTimeS = 1.5;
+  f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, sunElevationDeg, sunAzimuthDeg);
+  return f;
+}
+
+// `f` drawn with the sea in classes, then by one program (saved as `name` and `name`_single),
+// compared: at most 2 levels, 1 % of the pixels over 1 level (a diff image on failure).
+void expectClassesMatchTheSingleProgram(render::GlobeRenderer& r, render::FrameInput f, const std::string& name) {
+  f.oceanClasses = true;
+  r.render(f);
+  const io::ImageRgba8 classes = r.display();
+  save(r, name);
+  f.oceanClasses = false;
+  r.render(f);
+  const io::ImageRgba8 single = r.display();
+  save(r, name + "_single");
+  const test::Comparison c = test::compareRgb(classes, single, 1);
+  if (!c.within({2, 0.01, 1, 0.001}))
+    io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".diff.png"), c.diff);
+  EXPECT_TRUE(c.within({2, 0.01, 1, 0.001})) << name << ": " << c.describe();
+}
 }  // namespace
 
 // The terrain's shadows routed to their own class (render/OceanRenderer::shadowReachM): the
@@ -393,27 +427,8 @@ constexpr unsigned kClassOpenSea = 1, kClassShadows = 2, kClassFloor = 4, kClass
 TEST(CoastWater, ShadowClassCoversEveryShadowOnTheSea) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(cliffCoast());
-  render::FrameInput f;
-  f.camera.position = {kLat - 2.5 / 111.2, kLon, 100.0};
-  f.camera.headingDeg = 0.0;
-  f.camera.pitchDeg = -12.0;
-  f.camera.verticalFovDeg = 50.0;
-  f.width = 192;
-  f.height = 108;
-  f.wind.speedMs = 6.0;
-  f.simulationTimeS = 1.5;
-  f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 8.0, 0.0);
-  r.render(f);
-  const io::ImageRgba8 classes = r.display();
-  save(r, "coast_classes_cliff");
-  f.oceanClasses = false;
-  r.render(f);
-  const io::ImageRgba8 single = r.display();
-  save(r, "coast_classes_cliff_single");
-  const test::Comparison c = test::compareRgb(classes, single, 1);
-  if (!c.within({2, 0.01, 1, 0.001}))
-    io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / "coast_classes_cliff.diff.png", c.diff);
-  EXPECT_TRUE(c.within({2, 0.01, 1, 0.001})) << c.describe();
+  expectClassesMatchTheSingleProgram(r, classView({kLat - 2.5 / 111.2, kLon, 100.0}, 0.0, -12.0, 8.0, 0.0),
+                                     "coast_classes_cliff");
   // The comparison means something only with the cliff in the shadow maps (the routing's
   // reach comes from the casters' height: 300 m / tan 8° = 2.1 km).
   EXPECT_TRUE(r.terrain().shadows().on);
@@ -432,31 +447,13 @@ TEST(CoastWater, FloorAndShadowClassesCombineIndependently) {
   for (const bool shelving : {true, false}) {
     SCOPED_TRACE(shelving ? "bank" : "deep water");
     render::GlobeRenderer r(shadowingIsland(shelving));
-    render::FrameInput f;
-    f.camera.position = {kLat - 1.0 / 110.8, kLon + 8.0 / (111.3 * std::cos(kLat * M_PI / 180.0)), 200.0};
-    f.camera.headingDeg = 200.0;
-    f.camera.pitchDeg = -25.0;
-    f.camera.verticalFovDeg = 50.0;
-    f.width = 192;
-    f.height = 108;
-    f.wind.speedMs = 6.0;
-    f.simulationTimeS = 1.5;
-    f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 3.0, 250.0);
+    const render::FrameInput f =
+        classView({kLat - 1.0 / 110.8, kLon + 8.0 / (111.3 * std::cos(kLat * M_PI / 180.0)), 200.0}, 200.0, -25.0, 3.0, 250.0);
     r.ocean().setCountClassSamples(true);
     r.render(f);
-    const io::ImageRgba8 classes = r.display();
     const unsigned drawn = r.ocean().classesDrawn();
     const auto n = r.ocean().classSamples();
-    const std::string name = shelving ? "coast_classes_island_bank" : "coast_classes_island_deep";
-    save(r, name);
-    f.oceanClasses = false;
-    r.render(f);
-    const io::ImageRgba8 single = r.display();
-    save(r, name + "_single");
-    const test::Comparison c = test::compareRgb(classes, single, 1);
-    if (!c.within({2, 0.01, 1, 0.001}))
-      io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".diff.png"), c.diff);
-    EXPECT_TRUE(c.within({2, 0.01, 1, 0.001})) << c.describe();
+    expectClassesMatchTheSingleProgram(r, f, shelving ? "coast_classes_island_bank" : "coast_classes_island_deep");
     EXPECT_TRUE(r.terrain().shadows().on);
     // Samples per class (open sea, shadows, floor, floor with shadows, coast).
     const std::string counts = std::to_string(n[0]) + " " + std::to_string(n[1]) + " " + std::to_string(n[2]) +
@@ -483,27 +480,9 @@ TEST(CoastWater, SeaClassesMatchTheSingleProgram) {
   for (const auto& [deep, offshoreKm, heightM, pitch] :
        {std::tuple{true, 4.2, 100.0, -20.0}, std::tuple{false, 2.2, 20.0, -15.0}}) {
     render::GlobeRenderer r(deep ? shoreShelfAndDeep() : shelf());
-    render::FrameInput f;
-    f.camera.position = {kLat - offshoreKm / 111.2, kLon, heightM};
-    f.camera.headingDeg = 10.0;
-    f.camera.pitchDeg = pitch;
-    f.camera.verticalFovDeg = 50.0;
-    f.width = 192;
-    f.height = 108;
-    f.wind.speedMs = 6.0;
-    f.simulationTimeS = 1.5;
-    f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 40.0, 20.0);
+    const render::FrameInput f = classView({kLat - offshoreKm / 111.2, kLon, heightM}, 10.0, pitch, 40.0, 20.0);
     r.render(f);
-    const io::ImageRgba8 classes = r.display();
     EXPECT_NE(r.ocean().classesDrawn() & (deep ? kClassOpenSea : kClassFloor), 0u) << r.ocean().classesDrawn();
-    save(r, "coast_classes_" + std::to_string(int(-pitch)));
-    f.oceanClasses = false;
-    r.render(f);
-    const io::ImageRgba8 single = r.display();
-    save(r, "coast_classes_single_" + std::to_string(int(-pitch)));
-    const test::Comparison c = test::compareRgb(classes, single, 1);
-    if (!c.within({2, 0.01, 1, 0.001}))
-      io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / ("coast_classes_" + std::to_string(int(-pitch)) + ".diff.png"), c.diff);
-    EXPECT_TRUE(c.within({2, 0.01, 1, 0.001})) << "pitch " << pitch << ": " << c.describe();
+    expectClassesMatchTheSingleProgram(r, f, "coast_classes_" + std::to_string(int(-pitch)));
   }
 }
