@@ -50,15 +50,17 @@
 // parts, and zeroes the count where it draws. Where the driver lets a fragment shader write the
 // stencil value (GL_ARB_shader_stencil_export; llvmpipe does), one classifying draw
 // (GLOBE_CLASSIFY_EXPORT) writes the count the steps would have reached: the rays are traced
-// once instead of three times. Above 20 km a fourth class, the open deep sea (render/OpenSeaMap:
-// the four samples within a coarse map's clearance of land and shallow floors), goes to a part
-// without the land's code, the per-sample coast test and the water column (a fourth
-// classifying step, count 4).
+// once instead of three times. Above 20 km two more classes, nested: the sea (all four samples
+// on the sea by the same test the surface part makes) goes to a part without the land's code
+// and the per-sample coast test (count 4: land pixels the terrain leaves, sea pixels, paid for
+// both); within it the open deep sea (render/OpenSeaMap: the four samples within a coarse map's
+// clearance of land and shallow floors), to a part without the water column either (count 5).
 #define GLOBE_PART_SKY 1
 #define GLOBE_PART_EDGE 2
 #define GLOBE_PART_SURFACE 3
 #define GLOBE_PART_CLASSIFY 4
 #define GLOBE_PART_OPEN_SEA 5
+#define GLOBE_PART_SEA 6
 #ifndef GLOBE_PART
 #define GLOBE_PART GLOBE_PART_EDGE  // all the shading code
 #endif
@@ -229,6 +231,16 @@ SkyView skyOf(PixelRays rays) {
 #if GLOBE_PART == GLOBE_PART_CLASSIFY
 layout(binding = OG_UNIT_OPEN_SEA) uniform sampler2D uOpenSea;  // render/OpenSeaMap: clearance, rad
 uniform int uOpenSeaOn;  // 0: no pixel is classed open sea (GlobeRenderer::setOpenSeaPart)
+uniform int uSeaOn;      // 0: no pixel is classed sea (GlobeRenderer::setSeaPart)
+
+// Whether all four of a pixel's samples hit the globe on the sea: the surface part's own test
+// of each sample (below), so the sea part shades exactly the pixels it would shade as sea.
+bool allSamplesOnSea(PixelRays rays) {
+  bool sea = rays.nHit == 4;
+  for (int i = 0; i < 4; ++i)
+    sea = sea && elevationAt(latLonOfNormal(ellipsoidNormal(rays.dirs[i], max(rays.ts[i], 0.0)))) <= 0.0;
+  return sea;
+}
 
 // Whether all four of a pixel's samples lie in the open deep sea: within the clearance radius
 // (render/OpenSeaMap) of the 1° cell under the pixel-centre ray's hit (geodetic normal
@@ -245,9 +257,10 @@ bool inOpenSea(PixelRays rays, vec3 nCentre, vec2 latLon) {
 
 // The classifying draws (GlobeRenderer::classifyGlobe): each keeps the pixels that pass its step,
 // the stencil counting them: step 0 anything to shade (not pure space), 1 a ray on the globe,
-// 2 all four on it, 3 (above 20 km) all four in the open deep sea. Step 0 also writes the
-// depth above 20 km. GLOBE_CLASSIFY_EXPORT: all the steps in one draw, writing the count.
-#if !defined(GLOBE_BEHIND) && (GLOBE_CLASSIFY_STEP == 0 || GLOBE_CLASSIFY_STEP == 3 || defined(GLOBE_CLASSIFY_EXPORT))
+// 2 all four on it, 3 (above 20 km) all four on the sea, 4 (above 20 km) all four in the open
+// deep sea. Step 0 also writes the depth above 20 km. GLOBE_CLASSIFY_EXPORT: all the steps in
+// one draw, writing the count. Steps 3 and 4 are each left out where their part is off.
+#if !defined(GLOBE_BEHIND) && (GLOBE_CLASSIFY_STEP == 0 || GLOBE_CLASSIFY_STEP == 4 || defined(GLOBE_CLASSIFY_EXPORT))
 #define GLOBE_CLASSIFY_CENTRE
 #endif
 void main() {
@@ -269,7 +282,9 @@ void main() {
 #else
   SkyView sky = skyOf(rays);
   int count = rays.nHit == 0 && sky.space && sky.sunDisc == 0.0 ? 0 : 1;
-  count += openSea ? 1 : 0;
+  bool sea = uSeaOn != 0 && allSamplesOnSea(rays);
+  count += sea ? 1 : 0;
+  count += openSea && (sea || uSeaOn == 0) ? 1 : 0;  // the open sea is within the sea
 #endif
   count += (rays.nHit > 0 ? 1 : 0) + (rays.nHit == 4 ? 1 : 0);
   if (count == 0) discard;
@@ -281,6 +296,8 @@ void main() {
   if (rays.nHit == 0) discard;
 #elif GLOBE_CLASSIFY_STEP == 2
   if (rays.nHit < 4) discard;
+#elif GLOBE_CLASSIFY_STEP == 3
+  if (!allSamplesOnSea(rays)) discard;
 #else
   if (!openSea) discard;
 #endif
@@ -305,10 +322,10 @@ void main() {
   gl_FragDepth = rays.nHit > 0 ? clamp(uNear / depthZ, 0.0, 1.0) : 0.0;
 #endif
 }
-#elif GLOBE_PART == GLOBE_PART_OPEN_SEA
-// The open deep sea (classified above): four samples on the sea away from coasts, shaded once
-// at their mean ray as the surface part shades such a pixel, without its land code, its
-// per-sample coast test and the water column (deeper than the water's reach everywhere here).
+#elif GLOBE_PART == GLOBE_PART_OPEN_SEA || GLOBE_PART == GLOBE_PART_SEA
+// The sea (classified above): four samples on the sea, shaded once at their mean ray as the
+// surface part shades such a pixel, without its land code and its per-sample coast test; the
+// open deep sea's part also without the water column (deeper than the water's reach there).
 void main() {
   PixelRays rays = traceRays();
   vec3 hitDir = vec3(0.0);

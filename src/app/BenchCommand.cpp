@@ -115,6 +115,24 @@ std::string seaClassesLine(const render::OceanRenderer& ocean, int width, int he
   return line;
 }
 
+/// `--breakdown`: the share of the frame's pixels each of the globe's parts shaded in the last
+/// frame (GlobeRenderer::partSamples) as "    globe parts (% of pixels): sky 40.1 ...", and into
+/// `breakdown` as "globe_part_pixels_percent".
+std::string globePartsLine(const render::GlobeRenderer& r, int width, int height, nlohmann::json& breakdown) {
+  if (r.partSamples().empty()) return {};
+  std::string line = "    globe parts (% of pixels):";
+  nlohmann::json shares = nlohmann::json::object();
+  for (const auto& [name, samples] : r.partSamples()) {
+    const double percent = 100.0 * static_cast<double>(samples) / (double(width) * height);
+    shares[name] = percent;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, " %s %.1f", name.c_str(), percent);
+    line += buf;
+  }
+  breakdown["globe_part_pixels_percent"] = shares;
+  return line;
+}
+
 bool wanted(const BenchOptions& o, const char* view) {
   return o.views.empty() || std::find(o.views.begin(), o.views.end(), view) != o.views.end();
 }
@@ -339,6 +357,7 @@ Run addBenchCommand(CLI::App& parent) {
     for (std::size_t k = 0; k < renderers.size(); ++k) {
       renderers[k]->setPassTimer(o->breakdown ? &timers[k] : nullptr);
       renderers[k]->ocean().setCountClassSamples(o->breakdown);
+      renderers[k]->setCountPartSamples(o->breakdown);
     }
     for (const auto& view : benchViews()) {
       if (!wanted(*o, view.name)) continue;
@@ -403,6 +422,8 @@ Run addBenchCommand(CLI::App& parent) {
           if (!o->json) std::printf("%s ms\n", line.c_str());
           const std::string classes = seaClassesLine(renderers[k]->ocean(), w, h, report["cases"].back());
           if (!o->json && !classes.empty()) std::printf("%s\n", classes.c_str());
+          const std::string parts = globePartsLine(*renderers[k], w, h, report["cases"].back());
+          if (!o->json && !parts.empty()) std::printf("%s\n", parts.c_str());
         }
       }
     }

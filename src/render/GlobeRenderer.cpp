@@ -286,16 +286,17 @@ void GlobeRenderer::render(const FrameInput& f) {
 const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
   gl::Program& p = globePrograms_[static_cast<std::size_t>((behind ? kGlobeVariants : 0) + variant)];
   if (p.id() == 0) {
-    // Variants 0-3: GLOBE_PART_CLASSIFY (4) with its step; 4: all steps in one draw; 5-7: the
-    // parts 1-3, 8: the open sea (GLOBE_PART_OPEN_SEA, 5) (render/globe.frag).
+    // Variants 0-4: GLOBE_PART_CLASSIFY (4) with its step; 5: all steps in one draw; 6-8: the
+    // parts 1-3, 9: the sea (GLOBE_PART_SEA, 6), 10: the open sea (GLOBE_PART_OPEN_SEA, 5)
+    // (render/globe.frag).
     std::vector<std::string> defines = OceanPatterns::shaderDefines();
     if (variant <= kClassifyExport) {
       defines.emplace_back("GLOBE_PART 4");
       defines.push_back(variant == kClassifyExport ? std::string("GLOBE_CLASSIFY_EXPORT")
                                                    : "GLOBE_CLASSIFY_STEP " + std::to_string(variant));
     } else {
-      const int part = variant - kClassifyExport;
-      defines.push_back("GLOBE_PART " + std::to_string(part == 4 ? 5 : part));
+      static constexpr std::array<int, 5> kPart{1, 2, 3, 6, 5};
+      defines.push_back("GLOBE_PART " + std::to_string(kPart.at(static_cast<std::size_t>(variant - kClassifyExport - 1))));
     }
     if (behind) defines.emplace_back("GLOBE_BEHIND");
     p = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
@@ -336,14 +337,15 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
   // One draw writing the count where the driver allows it, else one draw per step counting.
   const bool oneDraw = gl::driverProfile().stencilExport;
   glStencilOp(GL_KEEP, GL_KEEP, oneDraw ? GL_REPLACE : GL_INCR);
-  const int first = oneDraw ? kClassifyExport : firstClassifyingStep(grid);
   if (!grid) bindOpenSeaMap();
-  for (int step = first; step <= (oneDraw ? kClassifyExport : lastClassifyingStep(grid)); ++step) {
+  const std::vector<int> steps = oneDraw ? std::vector<int>{kClassifyExport} : classifyingSteps(grid);
+  for (const int step : steps) {
     // Above 20 km the first draw writes the depth.
-    glDepthMask(!grid && step == first ? GL_TRUE : GL_FALSE);
+    glDepthMask(!grid && step == steps.front() ? GL_TRUE : GL_FALSE);
     const gl::Program& classify = globeProgram(grid, step);
     setGlobeUniforms(classify, view, f);
     if (!grid) classify.set("uOpenSeaOn", openSeaPart_ ? 1 : 0);
+    if (!grid) classify.set("uSeaOn", seaPart_ ? 1 : 0);
     classify.use();
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
@@ -357,6 +359,21 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
 // Above 20 km the globe pass runs only within the screen rectangle that can hold the globe, its
 // atmosphere or the Sun's disc: llvmpipe rasterises no fragment outside the scissor box, so
 // the classifying draw (a full-screen triangle) skips the space around a distant globe.
+std::vector<int> GlobeRenderer::classifyingSteps(bool grid) const {
+  std::vector<int> steps;
+  for (int step = firstClassifyingStep(grid); step <= 2; ++step) steps.push_back(step);
+  if (!grid && seaPart_) steps.push_back(3);
+  if (!grid && openSeaPart_) steps.push_back(4);
+  return steps;
+}
+
+std::vector<int> GlobeRenderer::globeParts(bool grid) const {
+  std::vector<int> parts{kClassifyExport + 1, kClassifyExport + 2, kClassifyExport + 3};
+  if (!grid && seaPart_) parts.push_back(kClassifyExport + 4);
+  if (!grid && openSeaPart_) parts.push_back(kClassifyExport + 5);
+  return parts;
+}
+
 void GlobeRenderer::scissorToGlobe(const geo::CameraView& view, const FrameInput& f) {
   if (!scissorGlobe_) return;
   const std::array<int, 4> box = globeScissor(view, f.width, f.height, atmosphere_->parameters(),
@@ -385,13 +402,23 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   glDepthMask(GL_FALSE);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   if (!grid) scissorToGlobe(view, f);
-  // Sky, edge, surface, open sea: the stencil counts 1, 2, 3, 4.
-  for (int part = 1; part <= lastClassifyingStep(grid) + 1; ++part) {
-    glStencilFunc(GL_EQUAL, part - firstClassifyingStep(grid), 0xff);
-    const gl::Program& globe = globeProgram(grid, kClassifyExport + part);
+  // Sky, edge, surface, sea, open sea: the stencil counts 1, 2, 3, 4, 5 (one lower below 20 km).
+  const std::vector<int> parts = globeParts(grid);
+  partSamples_.clear();
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    glStencilFunc(GL_EQUAL, static_cast<GLint>(k) + 1 - firstClassifyingStep(grid), 0xff);
+    const gl::Program& globe = globeProgram(grid, parts[k]);
     setGlobeUniforms(globe, view, f);
     globe.use();
+    const gl::Query samples = countPartSamples_ ? gl::createQuery(GL_SAMPLES_PASSED) : gl::Query();
+    if (countPartSamples_) glBeginQuery(GL_SAMPLES_PASSED, samples.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (!countPartSamples_) continue;
+    glEndQuery(GL_SAMPLES_PASSED);
+    GLuint64 count = 0;
+    glGetQueryObjectui64v(samples.id(), GL_QUERY_RESULT, &count);
+    static constexpr std::array<const char*, 5> kNames{"sky", "edge", "surface", "sea", "open sea"};
+    partSamples_.emplace_back(kNames.at(static_cast<std::size_t>(parts[k] - kClassifyExport - 1)), count);
   }
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_SCISSOR_TEST);

@@ -5,8 +5,11 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "atmosphere/Parameters.hpp"
@@ -166,6 +169,16 @@ class GlobeRenderer {
   /// Above 20 km, pixels in the open deep sea (render/OpenSeaMap) go to a part of their own
   /// (render/globe.frag); false shades them with the rest of the surface (the tests' reference).
   void setOpenSeaPart(bool on) { openSeaPart_ = on; }
+  /// Above 20 km, pixels whose four samples are all on the sea go to a part without the land's
+  /// code and the per-sample coast test (render/globe.frag); false shades them with the rest
+  /// of the surface (the tests' reference).
+  void setSeaPart(bool on) { seaPart_ = on; }
+  /// With `on`, each of the globe's parts counts the samples it shades (an occlusion query read
+  /// back at once: for tests and `bench --breakdown`, not for frames that must not wait).
+  void setCountPartSamples(bool on) { countPartSamples_ = on; }
+  /// The last frame's globe parts and the samples each shaded (setCountPartSamples), in the
+  /// order they were drawn: "sky", "edge", "surface", "sea", "open sea".
+  [[nodiscard]] const std::vector<std::pair<std::string, std::uint64_t>>& partSamples() const { return partSamples_; }
   /// Above 20 km the globe pass is scissored to the rectangle around the globe, its atmosphere
   /// and the Sun (globeScissor); false draws it over the whole screen (the tests' reference).
   void setGlobeScissor(bool on) { scissorGlobe_ = on; }
@@ -189,15 +202,17 @@ class GlobeRenderer {
   const OceanPatterns& patternsFor(double referenceWindMs, std::uint64_t seed);
 
   std::shared_ptr<const Atmosphere> atmosphere_;
-  /// globe.frag's variants: four classifying steps (0-3; the last, the open sea, above 20 km
-  /// only), the one-draw classification (4, GLOBE_CLASSIFY_EXPORT), then four parts (5-8: sky,
-  /// edge, surface, open sea; see its GLOBE_PART), drawn first above the grid's ceiling and last
-  /// (GLOBE_BEHIND, after the terrain and the grid) below; each compiled on first use.
-  /// `variant` in [0, kGlobeVariants).
-  static constexpr int kGlobeVariants = 9;
-  static constexpr int kClassifyExport = 4;
-  /// The classifying steps and parts of a frame: the open sea's only above 20 km.
-  [[nodiscard]] int lastClassifyingStep(bool grid) const { return grid || !openSeaPart_ ? 2 : 3; }
+  /// globe.frag's variants: five classifying steps (0-4; the last two, the sea and the open
+  /// sea, above 20 km only), the one-draw classification (5, GLOBE_CLASSIFY_EXPORT), then five
+  /// parts (6-10: sky, edge, surface, sea, open sea; see its GLOBE_PART), drawn first above the
+  /// grid's ceiling and last (GLOBE_BEHIND, after the terrain and the grid) below; each
+  /// compiled on first use. `variant` in [0, kGlobeVariants).
+  static constexpr int kGlobeVariants = 11;
+  static constexpr int kClassifyExport = 5;
+  /// A frame's classifying steps (0-4) and its parts (variants, in stencil count order): the
+  /// sea's and the open sea's only above 20 km, where they are on.
+  [[nodiscard]] std::vector<int> classifyingSteps(bool grid) const;
+  [[nodiscard]] std::vector<int> globeParts(bool grid) const;
   /// The open-sea map on its texture unit (made on first use).
   void bindOpenSeaMap();
   /// Enables the scissor test on globeScissor's box (when setGlobeScissor is on).
@@ -224,6 +239,9 @@ class GlobeRenderer {
   std::unique_ptr<OpenSeaMap> openSeaMap_;
   std::unique_ptr<OpenSeaTexture> openSeaTexture_;
   bool openSeaPart_ = true;
+  bool seaPart_ = true;
+  bool countPartSamples_ = false;
+  std::vector<std::pair<std::string, std::uint64_t>> partSamples_;
   bool scissorGlobe_ = true;
   std::unique_ptr<WindTextures> wind_;
   std::unique_ptr<OceanPatterns> patterns_;
