@@ -50,17 +50,20 @@
 // parts, and zeroes the count where it draws. Where the driver lets a fragment shader write the
 // stencil value (GL_ARB_shader_stencil_export; llvmpipe does), one classifying draw
 // (GLOBE_CLASSIFY_EXPORT) writes the count the steps would have reached: the rays are traced
-// once instead of three times. Above 20 km two more classes, nested: the sea (all four samples
-// on the sea by the same test the surface part makes) goes to a part without the land's code
-// and the per-sample coast test (count 4: land pixels the terrain leaves, sea pixels, paid for
-// both); within it the open deep sea (render/OpenSeaMap: the four samples within a coarse map's
-// clearance of land and shallow floors), to a part without the water column either (count 5).
+// once instead of three times. Above 20 km three more classes, nested: the four samples all on
+// land or all on the sea by the same test the surface part makes (count 4: the land, shaded
+// once without the sea's code), all on the sea (count 5: the sea, without the land's code; the
+// surface part ran both, masked, for every pixel), and within it the open deep sea
+// (render/OpenSeaMap: the four samples within a coarse map's clearance of land and shallow
+// floors), to a part without the water column either (count 6). Count 3 is left to the
+// coasts, shaded per sample.
 #define GLOBE_PART_SKY 1
 #define GLOBE_PART_EDGE 2
 #define GLOBE_PART_SURFACE 3
 #define GLOBE_PART_CLASSIFY 4
 #define GLOBE_PART_OPEN_SEA 5
 #define GLOBE_PART_SEA 6
+#define GLOBE_PART_LAND 7
 #ifndef GLOBE_PART
 #define GLOBE_PART GLOBE_PART_EDGE  // all the shading code
 #endif
@@ -231,15 +234,15 @@ SkyView skyOf(PixelRays rays) {
 #if GLOBE_PART == GLOBE_PART_CLASSIFY
 layout(binding = OG_UNIT_OPEN_SEA) uniform sampler2D uOpenSea;  // render/OpenSeaMap: clearance, rad
 uniform int uOpenSeaOn;  // 0: no pixel is classed open sea (GlobeRenderer::setOpenSeaPart)
-uniform int uSeaOn;      // 0: no pixel is classed sea (GlobeRenderer::setSeaPart)
 
-// Whether all four of a pixel's samples hit the globe on the sea: the surface part's own test
-// of each sample (below), so the sea part shades exactly the pixels it would shade as sea.
-bool allSamplesOnSea(PixelRays rays) {
-  bool sea = rays.nHit == 4;
+// How many of a pixel's four samples hit the globe on the sea (-1 unless all four hit): the
+// surface part's own test of each sample (below), so the land and sea parts shade exactly the
+// pixels it would shade as all land or all sea.
+int samplesOnSea(PixelRays rays) {
+  int n = 0;
   for (int i = 0; i < 4; ++i)
-    sea = sea && elevationAt(latLonOfNormal(ellipsoidNormal(rays.dirs[i], max(rays.ts[i], 0.0)))) <= 0.0;
-  return sea;
+    n += elevationAt(latLonOfNormal(ellipsoidNormal(rays.dirs[i], max(rays.ts[i], 0.0)))) <= 0.0 ? 1 : 0;
+  return rays.nHit == 4 ? n : -1;
 }
 
 // Whether all four of a pixel's samples lie in the open deep sea: within the clearance radius
@@ -257,10 +260,11 @@ bool inOpenSea(PixelRays rays, vec3 nCentre, vec2 latLon) {
 
 // The classifying draws (GlobeRenderer::classifyGlobe): each keeps the pixels that pass its step,
 // the stencil counting them: step 0 anything to shade (not pure space), 1 a ray on the globe,
-// 2 all four on it, 3 (above 20 km) all four on the sea, 4 (above 20 km) all four in the open
-// deep sea. Step 0 also writes the depth above 20 km. GLOBE_CLASSIFY_EXPORT: all the steps in
-// one draw, writing the count. Steps 3 and 4 are each left out where their part is off.
-#if !defined(GLOBE_BEHIND) && (GLOBE_CLASSIFY_STEP == 0 || GLOBE_CLASSIFY_STEP == 4 || defined(GLOBE_CLASSIFY_EXPORT))
+// 2 all four on it, and above 20 km 3 all four on land or all on the sea, 4 all four on the
+// sea, 5 all four in the open deep sea. Step 0 also writes the depth above 20 km.
+// GLOBE_CLASSIFY_EXPORT: all the steps in one draw, writing the count. Steps 3-4 and 5 are
+// left out where their parts are off.
+#if !defined(GLOBE_BEHIND) && (GLOBE_CLASSIFY_STEP == 0 || GLOBE_CLASSIFY_STEP == 5 || defined(GLOBE_CLASSIFY_EXPORT))
 #define GLOBE_CLASSIFY_CENTRE
 #endif
 void main() {
@@ -282,9 +286,14 @@ void main() {
 #else
   SkyView sky = skyOf(rays);
   int count = rays.nHit == 0 && sky.space && sky.sunDisc == 0.0 ? 0 : 1;
-  bool sea = uSeaOn != 0 && allSamplesOnSea(rays);
-  count += sea ? 1 : 0;
-  count += openSea && (sea || uSeaOn == 0) ? 1 : 0;  // the open sea is within the sea
+#ifdef GLOBE_LAND_SEA  // the land's and the sea's steps (GlobeRenderer::landSeaSplitPays)
+  int onSea = samplesOnSea(rays);
+  count += onSea == 0 || onSea == 4 ? 1 : 0;
+  count += onSea == 4 ? 1 : 0;
+  count += openSea && onSea == 4 ? 1 : 0;  // the open sea is within the sea
+#else
+  count += openSea ? 1 : 0;
+#endif
 #endif
   count += (rays.nHit > 0 ? 1 : 0) + (rays.nHit == 4 ? 1 : 0);
   if (count == 0) discard;
@@ -297,7 +306,10 @@ void main() {
 #elif GLOBE_CLASSIFY_STEP == 2
   if (rays.nHit < 4) discard;
 #elif GLOBE_CLASSIFY_STEP == 3
-  if (!allSamplesOnSea(rays)) discard;
+  int onSea = samplesOnSea(rays);
+  if (onSea != 0 && onSea != 4) discard;
+#elif GLOBE_CLASSIFY_STEP == 4
+  if (samplesOnSea(rays) != 4) discard;
 #else
   if (!openSea) discard;
 #endif
@@ -321,6 +333,24 @@ void main() {
   }
   gl_FragDepth = rays.nHit > 0 ? clamp(uNear / depthZ, 0.0, 1.0) : 0.0;
 #endif
+}
+#elif GLOBE_PART == GLOBE_PART_LAND
+// The land (classified above): four samples on land, shaded once at their mean ray as the
+// surface part shades such a pixel, without the sea's code.
+void main() {
+  PixelRays rays = traceRays();
+  vec3 hitDir = vec3(0.0);
+  float hitT = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    hitDir += rays.dirs[i];
+    hitT += rays.ts[i];
+  }
+  vec3 dir = normalize(hitDir);
+  float t = intersectEllipsoid(dir);
+  vec3 surface = vec3(0.0);
+  surface += 4.0 * surfaceRadiance(dir, t, false);
+  fragRadiance = vec4(throughAerialPerspective(surface, hitDir, hitT, 4.0) * 0.25, 1.0);
+  fragAux = vec4(0.0);
 }
 #elif GLOBE_PART == GLOBE_PART_OPEN_SEA || GLOBE_PART == GLOBE_PART_SEA
 // The sea (classified above): four samples on the sea, shaded once at their mean ray as the

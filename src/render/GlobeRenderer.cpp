@@ -286,17 +286,18 @@ void GlobeRenderer::render(const FrameInput& f) {
 const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
   gl::Program& p = globePrograms_[static_cast<std::size_t>((behind ? kGlobeVariants : 0) + variant)];
   if (p.id() == 0) {
-    // Variants 0-4: GLOBE_PART_CLASSIFY (4) with its step; 5: all steps in one draw; 6-8: the
-    // parts 1-3, 9: the sea (GLOBE_PART_SEA, 6), 10: the open sea (GLOBE_PART_OPEN_SEA, 5)
-    // (render/globe.frag).
+    // Variants 0-5: GLOBE_PART_CLASSIFY (4) with its step; 6: all steps in one draw; 7-9: the
+    // parts 1-3, 10: the land (GLOBE_PART_LAND, 7), 11: the sea (GLOBE_PART_SEA, 6), 12: the
+    // open sea (GLOBE_PART_OPEN_SEA, 5) (render/globe.frag).
     std::vector<std::string> defines = OceanPatterns::shaderDefines();
-    if (variant <= kClassifyExport) {
+    if (variant <= kClassifyExportLandSea) {
       defines.emplace_back("GLOBE_PART 4");
-      defines.push_back(variant == kClassifyExport ? std::string("GLOBE_CLASSIFY_EXPORT")
+      defines.push_back(variant >= kClassifyExport ? std::string("GLOBE_CLASSIFY_EXPORT")
                                                    : "GLOBE_CLASSIFY_STEP " + std::to_string(variant));
+      if (variant == kClassifyExportLandSea) defines.emplace_back("GLOBE_LAND_SEA");
     } else {
-      static constexpr std::array<int, 5> kPart{1, 2, 3, 6, 5};
-      defines.push_back("GLOBE_PART " + std::to_string(kPart.at(static_cast<std::size_t>(variant - kClassifyExport - 1))));
+      static constexpr std::array<int, 6> kPart{1, 2, 3, 7, 6, 5};
+      defines.push_back("GLOBE_PART " + std::to_string(kPart.at(static_cast<std::size_t>(variant - kGlobePart0 - 1))));
     }
     if (behind) defines.emplace_back("GLOBE_BEHIND");
     p = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
@@ -338,14 +339,15 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
   const bool oneDraw = gl::driverProfile().stencilExport;
   glStencilOp(GL_KEEP, GL_KEEP, oneDraw ? GL_REPLACE : GL_INCR);
   if (!grid) bindOpenSeaMap();
-  const std::vector<int> steps = oneDraw ? std::vector<int>{kClassifyExport} : classifyingSteps(grid);
+  frameLandSea_ = !grid && landSeaParts_ && landSeaSplitPays(view);
+  const std::vector<int> steps =
+      oneDraw ? std::vector<int>{frameLandSea_ ? kClassifyExportLandSea : kClassifyExport} : classifyingSteps(grid);
   for (const int step : steps) {
     // Above 20 km the first draw writes the depth.
     glDepthMask(!grid && step == steps.front() ? GL_TRUE : GL_FALSE);
     const gl::Program& classify = globeProgram(grid, step);
     setGlobeUniforms(classify, view, f);
     if (!grid) classify.set("uOpenSeaOn", openSeaPart_ ? 1 : 0);
-    if (!grid) classify.set("uSeaOn", seaPart_ ? 1 : 0);
     classify.use();
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
@@ -359,18 +361,36 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
 // Above 20 km the globe pass runs only within the screen rectangle that can hold the globe, its
 // atmosphere or the Sun's disc: llvmpipe rasterises no fragment outside the scissor box, so
 // the classifying draw (a full-screen triangle) skips the space around a distant globe.
+bool GlobeRenderer::landSeaSplitPays(const geo::CameraView& view) const {
+  if (openSeaMap_ == nullptr || !openSeaPart_) return true;
+  constexpr int kRays = 8;
+  int hits = 0, open = 0;
+  for (int j = 0; j < kRays; ++j)
+    for (int i = 0; i < kRays; ++i) {
+      const glm::dvec3 dir = view.rayDirection(-1.0 + (2.0 * i + 1.0) / kRays, -1.0 + (2.0 * j + 1.0) / kRays);
+      const std::optional<double> t = geo::intersectEllipsoid(view.positionEcef, dir);
+      if (!t) continue;
+      ++hits;
+      const geo::Geodetic g = geo::ecefToGeodetic(view.positionEcef + *t * dir);
+      const int row = std::clamp(static_cast<int>(std::floor(g.latitudeDeg + 90.0)), 0, OpenSeaMap::kHeight - 1);
+      const int col = std::clamp(static_cast<int>(std::floor(g.longitudeDeg + 180.0)), 0, OpenSeaMap::kWidth - 1);
+      open += openSeaMap_->clearanceRad[static_cast<std::size_t>(row) * OpenSeaMap::kWidth + static_cast<std::size_t>(col)] > 0.0f ? 1 : 0;
+    }
+  return 2 * open < hits;
+}
+
 std::vector<int> GlobeRenderer::classifyingSteps(bool grid) const {
   std::vector<int> steps;
   for (int step = firstClassifyingStep(grid); step <= 2; ++step) steps.push_back(step);
-  if (!grid && seaPart_) steps.push_back(3);
-  if (!grid && openSeaPart_) steps.push_back(4);
+  if (!grid && frameLandSea_) steps.insert(steps.end(), {3, 4});
+  if (!grid && openSeaPart_) steps.push_back(5);
   return steps;
 }
 
 std::vector<int> GlobeRenderer::globeParts(bool grid) const {
-  std::vector<int> parts{kClassifyExport + 1, kClassifyExport + 2, kClassifyExport + 3};
-  if (!grid && seaPart_) parts.push_back(kClassifyExport + 4);
-  if (!grid && openSeaPart_) parts.push_back(kClassifyExport + 5);
+  std::vector<int> parts{kGlobePart0 + 1, kGlobePart0 + 2, kGlobePart0 + 3};
+  if (!grid && frameLandSea_) parts.insert(parts.end(), {kGlobePart0 + 4, kGlobePart0 + 5});
+  if (!grid && openSeaPart_) parts.push_back(kGlobePart0 + 6);
   return parts;
 }
 
@@ -402,7 +422,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   glDepthMask(GL_FALSE);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   if (!grid) scissorToGlobe(view, f);
-  // Sky, edge, surface, sea, open sea: the stencil counts 1, 2, 3, 4, 5 (one lower below 20 km).
+  // Sky, edge, surface, land, sea, open sea: the stencil counts 1-6 (one lower below 20 km).
   const std::vector<int> parts = globeParts(grid);
   partSamples_.clear();
   for (std::size_t k = 0; k < parts.size(); ++k) {
@@ -417,8 +437,8 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
     glEndQuery(GL_SAMPLES_PASSED);
     GLuint64 count = 0;
     glGetQueryObjectui64v(samples.id(), GL_QUERY_RESULT, &count);
-    static constexpr std::array<const char*, 5> kNames{"sky", "edge", "surface", "sea", "open sea"};
-    partSamples_.emplace_back(kNames.at(static_cast<std::size_t>(parts[k] - kClassifyExport - 1)), count);
+    static constexpr std::array<const char*, 6> kNames{"sky", "edge", "surface", "land", "sea", "open sea"};
+    partSamples_.emplace_back(kNames.at(static_cast<std::size_t>(parts[k] - kGlobePart0 - 1)), count);
   }
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_SCISSOR_TEST);

@@ -169,15 +169,15 @@ class GlobeRenderer {
   /// Above 20 km, pixels in the open deep sea (render/OpenSeaMap) go to a part of their own
   /// (render/globe.frag); false shades them with the rest of the surface (the tests' reference).
   void setOpenSeaPart(bool on) { openSeaPart_ = on; }
-  /// Above 20 km, pixels whose four samples are all on the sea go to a part without the land's
-  /// code and the per-sample coast test (render/globe.frag); false shades them with the rest
-  /// of the surface (the tests' reference).
-  void setSeaPart(bool on) { seaPart_ = on; }
+  /// Above 20 km, pixels whose four samples are all on land go to a part without the sea's
+  /// code, those all on the sea to one without the land's (render/globe.frag); false shades
+  /// them with the rest of the surface (the tests' reference).
+  void setLandSeaParts(bool on) { landSeaParts_ = on; }
   /// With `on`, each of the globe's parts counts the samples it shades (an occlusion query read
   /// back at once: for tests and `bench --breakdown`, not for frames that must not wait).
   void setCountPartSamples(bool on) { countPartSamples_ = on; }
   /// The last frame's globe parts and the samples each shaded (setCountPartSamples), in the
-  /// order they were drawn: "sky", "edge", "surface", "sea", "open sea".
+  /// order they were drawn: "sky", "edge", "surface", "land", "sea", "open sea".
   [[nodiscard]] const std::vector<std::pair<std::string, std::uint64_t>>& partSamples() const { return partSamples_; }
   /// Above 20 km the globe pass is scissored to the rectangle around the globe, its atmosphere
   /// and the Sun (globeScissor); false draws it over the whole screen (the tests' reference).
@@ -202,17 +202,28 @@ class GlobeRenderer {
   const OceanPatterns& patternsFor(double referenceWindMs, std::uint64_t seed);
 
   std::shared_ptr<const Atmosphere> atmosphere_;
-  /// globe.frag's variants: five classifying steps (0-4; the last two, the sea and the open
-  /// sea, above 20 km only), the one-draw classification (5, GLOBE_CLASSIFY_EXPORT), then five
-  /// parts (6-10: sky, edge, surface, sea, open sea; see its GLOBE_PART), drawn first above the
-  /// grid's ceiling and last (GLOBE_BEHIND, after the terrain and the grid) below; each
-  /// compiled on first use. `variant` in [0, kGlobeVariants).
-  static constexpr int kGlobeVariants = 11;
-  static constexpr int kClassifyExport = 5;
-  /// A frame's classifying steps (0-4) and its parts (variants, in stencil count order): the
-  /// sea's and the open sea's only above 20 km, where they are on.
+  /// globe.frag's variants: six classifying steps (0-5; the last three, land or sea, the sea
+  /// and the open sea, above 20 km only), the one-draw classification (6,
+  /// GLOBE_CLASSIFY_EXPORT; 7 with the land's and the sea's steps, GLOBE_LAND_SEA: a uniform
+  /// would not spare their lookups, llvmpipe runs both sides of an `if`), then six parts (8-13:
+  /// sky, edge, surface, land, sea, open sea; see its GLOBE_PART), drawn first above the grid's
+  /// ceiling and last (GLOBE_BEHIND, after the terrain and the grid) below; each compiled on
+  /// first use. `variant` in [0, kGlobeVariants).
+  static constexpr int kGlobeVariants = 14;
+  static constexpr int kClassifyExport = 6, kClassifyExportLandSea = 7;
+  /// Part k (1 sky ... 6 open sea) is variant kGlobePart0 + k.
+  static constexpr int kGlobePart0 = 7;
+  /// A frame's classifying steps (0-5) and its parts (variants, in stencil count order): the
+  /// land's, the sea's and the open sea's only above 20 km, where they are on.
   [[nodiscard]] std::vector<int> classifyingSteps(bool grid) const;
   [[nodiscard]] std::vector<int> globeParts(bool grid) const;
+  /// Whether this frame splits the land and the sea off the surface part (landSeaParts_ and
+  /// the split pays): their classifying step costs four elevation lookups a pixel, which a
+  /// view mostly of the open deep sea (the limb over the Atlantic) does not win back. From an
+  /// 8 x 8 lattice of rays on the CPU: fewer than half of those that hit the globe land in open
+  /// sea cells (render/OpenSeaMap). Set by classifyGlobe, read by shadeGlobe.
+  [[nodiscard]] bool landSeaSplitPays(const geo::CameraView& view) const;
+  bool frameLandSea_ = false;
   /// The open-sea map on its texture unit (made on first use).
   void bindOpenSeaMap();
   /// Enables the scissor test on globeScissor's box (when setGlobeScissor is on).
@@ -239,7 +250,7 @@ class GlobeRenderer {
   std::unique_ptr<OpenSeaMap> openSeaMap_;
   std::unique_ptr<OpenSeaTexture> openSeaTexture_;
   bool openSeaPart_ = true;
-  bool seaPart_ = true;
+  bool landSeaParts_ = true;
   bool countPartSamples_ = false;
   std::vector<std::pair<std::string, std::uint64_t>> partSamples_;
   bool scissorGlobe_ = true;

@@ -140,17 +140,17 @@ TEST(GlobeRender, OpenSeaPartMatchesTheSurfacePart) {
   EXPECT_GT(open, 10000);  // the part is in use
 }
 
-TEST(GlobeRender, SeaPartMatchesTheSurfacePart) {
-  // Above 20 km the pixels whose four samples are all on the sea go to a part without the
-  // land's code (render/globe.frag's GLOBE_PART_SEA): straight down on the island world's coast
-  // (its shelf 50 m deep: the water column shows) from 300 km and 30 km (measured: 4 992 and
-  // 8 448 of the 9 216 pixels in the sea part, the rest the surface part's), and from orbit,
-  // against the unsplit surface part. A land pixel misrouted to it would be shaded as sea: far
-  // outside this bound.
+TEST(GlobeRender, LandAndSeaPartsMatchTheSurfacePart) {
+  // Above 20 km the pixels whose four samples are all on land go to a part without the sea's
+  // code, those all on the sea to one without the land's (render/globe.frag's GLOBE_PART_LAND
+  // and GLOBE_PART_SEA): straight down on the island world's coast (its shelf 50 m deep: the
+  // water column shows) from 300 km and 30 km, and from orbit, against the unsplit surface
+  // part. A pixel misrouted to the other part would be shaded as land or as sea: far outside
+  // this bound.
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(islandWorld());
   r.setCountPartSamples(true);
-  std::uint64_t seaSamples = 0;
+  std::uint64_t seaSamples = 0, landSamples = 0;
   for (const auto& [lat, lon, h] : {std::tuple{10.0, -27.0, 3.0e5}, std::tuple{10.0, -27.0, 3.0e4},
                                     std::tuple{10.0, -30.0, 3.0e6}}) {
     render::FrameInput f;
@@ -158,14 +158,16 @@ TEST(GlobeRender, SeaPartMatchesTheSurfacePart) {
     f.camera.pitchDeg = -90;
     f.width = f.height = 96;
     f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 60, 150);
-    r.setSeaPart(false);
+    r.setLandSeaParts(false);
     r.render(f);
     const io::ImageRgbaF reference = r.radiance();
-    r.setSeaPart(true);
+    r.setLandSeaParts(true);
     r.render(f);
     const io::ImageRgbaF split = r.radiance();
-    for (const auto& [name, samples] : r.partSamples())
+    for (const auto& [name, samples] : r.partSamples()) {
       if (name == "sea") seaSamples += samples;
+      if (name == "land") landSamples += samples;
+    }
     ASSERT_EQ(reference.pixels.size(), split.pixels.size());
     double maxDiff = 0.0, maxValue = 0.0;
     for (std::size_t k = 0; k < split.pixels.size(); ++k) {
@@ -174,7 +176,8 @@ TEST(GlobeRender, SeaPartMatchesTheSurfacePart) {
     }
     EXPECT_LE(maxDiff, 1e-5 * maxValue + 1e-7) << "camera at " << h << " m";
   }
-  EXPECT_GT(seaSamples, 96u * 96u);  // the part is in use
+  EXPECT_GT(seaSamples, 96u * 96u);  // the parts are in use
+  EXPECT_GT(landSamples, 96u * 96u / 4u) << "land";
 }
 
 TEST(GlobeRender, ScissorToTheGlobeLeavesThePictureUnchanged) {
