@@ -95,17 +95,18 @@ std::string imageryTilesLine(const render::ImageryTileStats& s) {
   return line;
 }
 
-/// `--breakdown`: the share of the frame's pixels each of the sea's classes shaded in the last
-/// frame (OceanRenderer::classSamples), as "    sea classes (% of pixels): open sea 12.3 ..."
+/// `--breakdown`: the share of the frame's pixels each of the sea's classes shaded in the frame
+/// that counted them (OceanRenderer::classSamples; `frameSamples` = pixels x samples per
+/// pixel), as "    sea classes (% of pixels): open sea 12.3 ..."
 /// and into `breakdown` as "sea_class_pixels_percent"; empty where the sea was not classified.
-std::string seaClassesLine(const render::OceanRenderer& ocean, int width, int height, nlohmann::json& breakdown) {
+std::string seaClassesLine(const render::OceanRenderer& ocean, int frameSamples, nlohmann::json& breakdown) {
   if (ocean.classesDrawn() == 0) return {};
   static constexpr std::array<const char*, render::OceanRenderer::kSeaClasses> kNames{
       "open sea", "shadows", "floor", "floor shadows", "coast"};
   std::string line = "    sea classes (% of pixels):";
   nlohmann::json shares = nlohmann::json::object();
   for (std::size_t k = 0; k < kNames.size(); ++k) {
-    const double percent = 100.0 * static_cast<double>(ocean.classSamples().at(k)) / (double(width) * height);
+    const double percent = 100.0 * static_cast<double>(ocean.classSamples().at(k)) / frameSamples;
     shares[kNames.at(k)] = percent;
     char buf[64];
     std::snprintf(buf, sizeof buf, " %s %.1f", kNames.at(k), percent);
@@ -115,15 +116,15 @@ std::string seaClassesLine(const render::OceanRenderer& ocean, int width, int he
   return line;
 }
 
-/// `--breakdown`: the share of the frame's pixels each of the globe's parts shaded in the last
-/// frame (GlobeRenderer::partSamples) as "    globe parts (% of pixels): sky 40.1 ...", and into
+/// `--breakdown`: the share of the frame's pixels each of the globe's parts shaded in the frame
+/// that counted them (GlobeRenderer::partSamples) as "    globe parts (% of pixels): sky 40.1 ...", and into
 /// `breakdown` as "globe_part_pixels_percent".
-std::string globePartsLine(const render::GlobeRenderer& r, int width, int height, nlohmann::json& breakdown) {
+std::string globePartsLine(const render::GlobeRenderer& r, int frameSamples, nlohmann::json& breakdown) {
   if (r.partSamples().empty()) return {};
   std::string line = "    globe parts (% of pixels):";
   nlohmann::json shares = nlohmann::json::object();
   for (const auto& [name, samples] : r.partSamples()) {
-    const double percent = 100.0 * static_cast<double>(samples) / (double(width) * height);
+    const double percent = 100.0 * static_cast<double>(samples) / frameSamples;
     shares[name] = percent;
     char buf[64];
     std::snprintf(buf, sizeof buf, " %s %.1f", name.c_str(), percent);
@@ -354,11 +355,7 @@ Run addBenchCommand(CLI::App& parent) {
     for (auto& r : renderers) setImageryLayers(r->imagery(), o->imagery, imagery);
     std::vector<gl::PassTimer> timers;
     for (std::size_t k = 0; k < renderers.size(); ++k) timers.emplace_back(timerMode(o->timer));
-    for (std::size_t k = 0; k < renderers.size(); ++k) {
-      renderers[k]->setPassTimer(o->breakdown ? &timers[k] : nullptr);
-      renderers[k]->ocean().setCountClassSamples(o->breakdown);
-      renderers[k]->setCountPartSamples(o->breakdown);
-    }
+    for (std::size_t k = 0; k < renderers.size(); ++k) renderers[k]->setPassTimer(o->breakdown ? &timers[k] : nullptr);
     for (const auto& view : benchViews()) {
       if (!wanted(*o, view.name)) continue;
       for (const auto& [w, h] : sizes) {
@@ -373,6 +370,10 @@ Run addBenchCommand(CLI::App& parent) {
           for (std::size_t k = 0; k < renderers.size(); ++k) {
             f.samples = samples[k];
             f.simulationTimeS = i / 30.0;  // the waves move as in a 30 fps recording
+            // The classes' and parts' shares in the second warm-up frame only: their queries
+            // wait for the GPU, which the timed frames must not.
+            renderers[k]->ocean().setCountClassSamples(o->breakdown && i == 1);
+            renderers[k]->setCountPartSamples(o->breakdown && i == 1);
             const auto s = Clock::now();
             renderers[k]->render(f);
             render::GlobeRenderer::finish();
@@ -420,9 +421,10 @@ Run addBenchCommand(CLI::App& parent) {
           }
           report["cases"].back()["passes_ms"] = breakdown;
           if (!o->json) std::printf("%s ms\n", line.c_str());
-          const std::string classes = seaClassesLine(renderers[k]->ocean(), w, h, report["cases"].back());
+          const int pixelSamples = w * h * renderers[k]->samples();
+          const std::string classes = seaClassesLine(renderers[k]->ocean(), pixelSamples, report["cases"].back());
           if (!o->json && !classes.empty()) std::printf("%s\n", classes.c_str());
-          const std::string parts = globePartsLine(*renderers[k], w, h, report["cases"].back());
+          const std::string parts = globePartsLine(*renderers[k], pixelSamples, report["cases"].back());
           if (!o->json && !parts.empty()) std::printf("%s\n", parts.c_str());
         }
       }

@@ -16,5 +16,7 @@ inline constexpr std::uint16_t kHalfMinusOne = 0xBC00;
 
 /// Whether the binary16 bits `h` are a NaN.
 constexpr bool isHalfNan(std::uint16_t h) { return (h & 0x7C00u) == 0x7C00u && (h & 0x03FFu) != 0; }
+/// Whether the binary16 bits `h` are finite (not NaN, not ±infinity).
+constexpr bool isHalfFinite(std::uint16_t h) { return (h & 0x7C00u) != 0x7C00u; }
 
 }  // namespace og::core

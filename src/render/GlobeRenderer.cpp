@@ -1,6 +1,7 @@
 #include "render/GlobeRenderer.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numbers>
 #include <memory>
@@ -82,9 +83,11 @@ std::array<int, 4> globeScissor(const geo::CameraView& view, int width, int heig
 namespace {
 /// The layer as an RG16F texture: height (m) and keepDepth (the land mask leaves corrected
 /// banks' depth alone: data/ShallowBanks) per texel; missing values (NaN) read as sea (-1 m).
-/// Half floats: 1/1024 of the value (0.06 m at 100 m, 4 m at 8000 m), 18 bytes fewer a texel
-/// than RG32F to clear, fill and copy at start-up (the default's 9.3 million: 71 -> 36 MiB).
+/// Missing or unrepresentable values (NaN, beyond ±65504 m) read as sea (-1 m), as NaN did in
+/// RG32F. Half floats: 1/1024 of the value (0.06 m at 100 m, 4 m at 8000 m), 4 bytes a texel
+/// fewer than RG32F to clear, fill and copy at start-up (the default's 9.3 million: 71 -> 36 MiB).
 gl::Texture elevationTexture(const data::LatLonGrid& elevation) {
+  static_assert(std::endian::native == std::endian::little, "RG16F texels packed as R | G << 16");
   gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
   glTextureStorage2D(t.id(), 1, GL_RG16F, elevation.width, elevation.height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -100,7 +103,7 @@ gl::Texture elevationTexture(const data::LatLonGrid& elevation) {
     core::floatsToHalves(elevation.values.data() + first, heights.data(), n);
     if (!elevation.keepDepth.empty()) core::floatsToHalves(elevation.keepDepth.data() + first, keep.data(), n);
     for (std::size_t i = 0; i < n; ++i) {
-      const std::uint16_t h = core::isHalfNan(heights[i]) ? core::kHalfMinusOne : heights[i];
+      const std::uint16_t h = core::isHalfFinite(heights[i]) ? heights[i] : core::kHalfMinusOne;
       // R in the low half, G in the high (little-endian, as GL reads two GL_HALF_FLOATs).
       texels[i] = h | (elevation.keepDepth.empty() ? 0u : static_cast<std::uint32_t>(keep[i]) << 16);
     }
@@ -229,6 +232,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   const geo::CameraView view = geo::makeCameraView(f.camera, f.width, f.height);
   lastView_ = view;
   if (timer_ != nullptr) timer_->beginFrame();
+  ocean_->beginFrame();
   // The waves hold the strongest wind of the scene; every point scales and turns them to its
   // own wind (ocean/patterns.glsl).
   wind_->setConstantWind(f.wind);
@@ -334,15 +338,18 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
     glBeginConditionalRender(uncoveredQuery_.id(), GL_QUERY_WAIT);
   }
   glEnable(GL_STENCIL_TEST);
-  glStencilFunc(GL_ALWAYS, 0, 0xff);
-  // One draw writing the count where the driver allows it, else one draw per step counting.
+  // One draw writing the count where the driver allows it, else one draw per step counting,
+  // each only over the pixels that passed every step before it (the classes nest: a pixel in
+  // the open sea's class is in the sea's, and so on), as the one draw counts.
   const bool oneDraw = gl::driverProfile().stencilExport;
   glStencilOp(GL_KEEP, GL_KEEP, oneDraw ? GL_REPLACE : GL_INCR);
   if (!grid) bindOpenSeaMap();
   frameLandSea_ = !grid && landSeaParts_ && landSeaSplitPays(view);
   const std::vector<int> steps =
       oneDraw ? std::vector<int>{frameLandSea_ ? kClassifyExportLandSea : kClassifyExport} : classifyingSteps(grid);
-  for (const int step : steps) {
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const int step = steps[i];
+    glStencilFunc(oneDraw ? GL_ALWAYS : GL_EQUAL, static_cast<GLint>(i), 0xff);
     // Above 20 km the first draw writes the depth.
     glDepthMask(!grid && step == steps.front() ? GL_TRUE : GL_FALSE);
     const gl::Program& classify = globeProgram(grid, step);
@@ -424,7 +431,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   if (!grid) scissorToGlobe(view, f);
   // Sky, edge, surface, land, sea, open sea: the stencil counts 1-6 (one lower below 20 km).
   const std::vector<int> parts = globeParts(grid);
-  partSamples_.clear();
+  if (countPartSamples_) partSamples_.clear();
   for (std::size_t k = 0; k < parts.size(); ++k) {
     glStencilFunc(GL_EQUAL, static_cast<GLint>(k) + 1 - firstClassifyingStep(grid), 0xff);
     const gl::Program& globe = globeProgram(grid, parts[k]);

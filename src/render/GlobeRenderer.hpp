@@ -176,8 +176,9 @@ class GlobeRenderer {
   /// With `on`, each of the globe's parts counts the samples it shades (an occlusion query read
   /// back at once: for tests and `bench --breakdown`, not for frames that must not wait).
   void setCountPartSamples(bool on) { countPartSamples_ = on; }
-  /// The last frame's globe parts and the samples each shaded (setCountPartSamples), in the
-  /// order they were drawn: "sky", "edge", "surface", "land", "sea", "open sea".
+  /// The globe parts of the last frame that counted them and the samples each shaded
+  /// (setCountPartSamples), in the order they were drawn: "sky", "edge", "surface", "land",
+  /// "sea", "open sea".
   [[nodiscard]] const std::vector<std::pair<std::string, std::uint64_t>>& partSamples() const { return partSamples_; }
   /// Above 20 km the globe pass is scissored to the rectangle around the globe, its atmosphere
   /// and the Sun (globeScissor); false draws it over the whole screen (the tests' reference).

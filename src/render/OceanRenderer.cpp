@@ -1,6 +1,7 @@
 #include "render/OceanRenderer.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -123,23 +124,34 @@ double OceanRenderer::farthestSeaAngleRad(const geo::CameraView& view) {
 }
 
 bool OceanRenderer::geometryIsSubPixel(const geo::CameraView& view, int height, double displacementBoundM) {
-  // The waves move no point by more than displacementBoundM, and no sea point is nearer than
-  // the eye's height: the largest displacement on the screen, pixels (an upper bound).
   const double r = geo::kWgs84SemiMajorM, h = std::max(view.position.heightM, 0.1);
-  if (displacementBoundM / h * height / view.verticalFovRad > kSubPixelDisplacementPx) return false;
-  // Every corner's ray and the top edge's meet the sea at least kGrownCellMinGrazingRad above
-  // grazing (seen from the sphere of the semi-major axis).
   const double tanY = std::tan(0.5 * view.verticalFovRad), tanX = tanY * view.aspect;
   const glm::dvec3 eye = (r + h) * view.enu.up;
-  for (const auto& [sx, sy] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {-1.0, 1.0}, {1.0, 1.0}, {0.0, 1.0}}) {
-    const glm::dvec3 dir = glm::normalize(view.forward + sx * tanX * view.right + sy * tanY * view.up);
-    const double b = (r + h) * -glm::dot(dir, view.enu.up);
-    const double disc = b * b - h * (2.0 * r + h);
-    if (b <= 0.0 || disc < 0.0) return false;  // the ray misses: the horizon is in view
-    const glm::dvec3 hit = eye + (b - std::sqrt(disc)) * dir;
-    if (-glm::dot(dir, hit / r) < std::sin(kGrownCellMinGrazingRad)) return false;
-  }
-  return true;
+  // The sea in view, from the rays of the corners and the edges' middles (seen from the sphere
+  // of the semi-major axis): every one must meet it kGrownCellMinGrazingRad above grazing,
+  // and the nearest gives the nearest sea point, unless the nadir is in view (the eye's height).
+  double nearestM = std::numeric_limits<double>::infinity();
+  for (const double sy : {-1.0, 0.0, 1.0})
+    for (const double sx : {-1.0, 0.0, 1.0}) {
+      if (sx == 0.0 && sy == 0.0) continue;
+      const glm::dvec3 dir = glm::normalize(view.forward + sx * tanX * view.right + sy * tanY * view.up);
+      const double b = (r + h) * -glm::dot(dir, view.enu.up);
+      const double disc = b * b - h * (2.0 * r + h);
+      if (b <= 0.0 || disc < 0.0) return false;  // the ray misses: the horizon is in view
+      const double t = b - std::sqrt(disc);
+      if (-glm::dot(dir, (eye + t * dir) / r) < std::sin(kGrownCellMinGrazingRad)) return false;
+      nearestM = std::min(nearestM, t);
+    }
+  const glm::dvec3 down = -view.enu.up;
+  const double ahead = glm::dot(down, view.forward);
+  if (ahead > 0.0 && std::abs(glm::dot(down, view.right)) <= tanX * ahead &&
+      std::abs(glm::dot(down, view.up)) <= tanY * ahead)
+    nearestM = h;
+  // The waves move no point by more than displacementBoundM: its largest angle, at the nearest
+  // sea point, in pixels where the screen magnifies most (a corner: a rectilinear projection's
+  // pixels per radian grow as 1 + tan² of the angle off its axis).
+  const double pixelsPerRad = height / (2.0 * tanY) * (1.0 + tanX * tanX + tanY * tanY);
+  return displacementBoundM / nearestM * pixelsPerRad <= kSubPixelDisplacementPx;
 }
 
 void OceanRenderer::ensureGrid(int columns, int rows) {
@@ -261,8 +273,6 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
       if (timer_ != nullptr) timer_->mark("ocean");
     }
   }
-  classesDrawn_ = 0;
-  classSamples_ = {};
   if (model == OceanModel::Classic) {
     if (classic_.id() == 0) {  // made on first use (start-up: bench --startup)
       classic_ = gl::Program({{GL_VERTEX_SHADER, "ocean/classic.vert"}, {GL_FRAGMENT_SHADER, "ocean/classic.frag"}},

@@ -96,7 +96,14 @@ class OceanRenderer {
   /// With `on`, each class's draw counts the samples it shades (an occlusion query read back at
   /// once: for tests and measurements, not for frames that must not wait).
   void setCountClassSamples(bool on) { countClassSamples_ = on; }
-  /// The samples each class shaded in the last classified draw (setCountClassSamples).
+  /// Starts a frame (GlobeRenderer::render): forgets the last frame's classes, and their sample
+  /// counts when counting (a frame above the grid's ceiling draws no sea here).
+  void beginFrame() {
+    classesDrawn_ = 0;
+    if (countClassSamples_) classSamples_ = {};
+  }
+  /// The samples each class shaded in the last classified draw of the last frame that counted
+  /// them (setCountClassSamples).
   [[nodiscard]] const std::array<std::uint64_t, kSeaClasses>& classSamples() const { return classSamples_; }
   /// Grid cell size in pixels (the paper's ~8 px); smaller = finer geometry, slower.
   void setCellPixels(int pixels) { cellPixels_ = pixels; }
@@ -107,15 +114,17 @@ class OceanRenderer {
   /// The cell size (pixels) the last draw used.
   [[nodiscard]] int lastCellPixels() const { return frameCellPixels_; }
   /// Whether a grid of larger cells draws the same sea: the waves displace no point by more
-  /// than kSubPixelDisplacementPx on the screen (displacementBoundM over the eye's height, the
-  /// nearest the sea can be), and every corner of the view meets the sea at least
-  /// kGrownCellMinGrazingRad above grazing (no horizon: the terms the vertices carry, the
-  /// aerial perspective above all, vary fast there). Then a cell only interpolates smooth
+  /// than kSubPixelDisplacementPx on the screen (displacementBoundM at the nearest sea point in
+  /// view, where the screen magnifies most), and the corners and edges of the view meet the
+  /// sea at least kGrownCellMinGrazingRad above grazing (no horizon: the terms the vertices
+  /// carry, the aerial perspective above all, vary fast there). Then a cell only interpolates smooth
   /// terms: sea-8km at 1280x720 with 32-px cells differs from 8-px ones by at most 2 levels
   /// (mean 0.03) for a third of the ocean pass (llvmpipe shades every 4 x 2 block a
   /// triangle touches: small triangles shade many pixels twice).
   [[nodiscard]] static bool geometryIsSubPixel(const geo::CameraView& view, int height, double displacementBoundM);
-  static constexpr double kSubPixelDisplacementPx = 0.25;
+  /// Of the displacement bound (6 sigma of the waves' heights, OceanPatterns::amplitudeBoundM):
+  /// the displacement itself is within a tenth of a pixel nearly everywhere.
+  static constexpr double kSubPixelDisplacementPx = 0.5;
   static constexpr double kGrownCellMinGrazingRad = 0.087;  // 5°
   static constexpr int kGrownCellFactor = 4;
   /// The largest grown cell, rad: 4.2° (32 px at 640x360, 45° tall) draws the same sea (OceanCell

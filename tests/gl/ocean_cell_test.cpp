@@ -1,5 +1,5 @@
-// GL tier: the projected grid's cells grow four-fold where the waves' geometry is sub-pixel and
-// no sea is seen near grazing (render::OceanRenderer::geometryIsSubPixel): they then only
+// GL tier: the projected grid's cells grow two- or four-fold (to at most 4.2° across) where the
+// waves' geometry is sub-pixel and no sea is seen near grazing (render::OceanRenderer::geometryIsSubPixel): they then only
 // interpolate smooth terms, so the picture is the 8-px grid's, for a third of the ocean pass.
 #include <gtest/gtest.h>
 
@@ -26,9 +26,10 @@ bool subPixel(double heightM, double pitchDeg, int width, int height, double fov
 }
 }  // namespace
 
-// The bench's views with their 1.98 m displacement bound (7 m/s): sea-8km grows at 720p (0.20 px
-// at most) but not at 2160p (0.61 px); sea-4m and sea-1km do not (metres of displacement; the
-// horizon); 20 km with the horizon in view (OceanSwitch's view) does not.
+// The bench's views with their 1.98 m displacement bound (7 m/s): sea-8km grows at 720p (0.29 px
+// at most: 10.1 km to the nearest sea, 1490 px/rad in the corners) but not at 2160p (0.88 px);
+// sea-4m and sea-1km do not (metres of displacement; the horizon); 20 km with the horizon in
+// view (OceanSwitch's view) does not, 20 km looking down with the nadir in view does.
 TEST(OceanCell, GrowsOnlyWhereTheGeometryIsSubPixelAndNoHorizonIsInView) {
   EXPECT_TRUE(subPixel(8000.0, -30.0, 1280, 720));
   EXPECT_FALSE(subPixel(8000.0, -30.0, 3840, 2160));

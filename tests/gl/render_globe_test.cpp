@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -124,7 +125,8 @@ TEST(GlobeRender, OneClassifyingDrawMatchesOneDrawPerStep) {
   // Where the driver lets a shader write the stencil (GL_ARB_shader_stencil_export) the globe
   // classifies its pixels in one draw; OCEANGLOBE_STENCIL_EXPORT=0 takes the draw-per-step path.
   // Both must give the same picture: from orbit (open sea, land, coasts, limb, space), from
-  // 300 km over the coast corner, and from 2 km (below the grid's ceiling, globe drawn last).
+  // 300 km over the coast corner (the land's and the sea's parts, nested steps), and from 2 km
+  // (below the grid's ceiling, globe drawn last).
   const render::FrameInput frames[] = {frame(10, -30, 2.0e7, -90, 96), frame(2, 2, 3.0e5, -60, 96),
                                        frame(-1, -1, 2000.0, -2, 96)};
   std::vector<io::ImageRgbaF> images[2];
@@ -138,9 +140,15 @@ TEST(GlobeRender, OneClassifyingDrawMatchesOneDrawPerStep) {
     }
     if (path == 0 && !gl::driverProfile().stencilExport) GTEST_SKIP() << "no stencil export here";
     render::GlobeRenderer r(halfLand());
+    r.setCountPartSamples(true);
     for (const render::FrameInput& f : frames) {
       r.render(f);
       images[path].push_back(r.radiance());
+      if (&f == &frames[1]) {  // 300 km over the coast: the land's and the sea's parts (and steps) in use
+        std::uint64_t landSea = 0;
+        for (const auto& [name, samples] : r.partSamples()) landSea += name == "land" || name == "sea" ? samples : 0;
+        EXPECT_GT(landSea, 96u * 96u / 4u) << "path " << path;
+      }
     }
   }
   for (std::size_t i = 0; i < images[0].size(); ++i) {

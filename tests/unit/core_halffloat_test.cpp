@@ -25,7 +25,7 @@ TEST(HalfFloat, KnownBitPatterns) {
   EXPECT_EQ(out[5], 0x7C00);  // +infinity
   EXPECT_EQ(out[6], 0xFC00);
   EXPECT_EQ(out[7], 0x2E66);  // 0.0999755859375
-  EXPECT_EQ(out[8], 0x7052);  // 8848 exactly (4 m steps there)
+  EXPECT_EQ(out[8], 0x7052);  // 8848 exactly (8 m steps there)
   EXPECT_EQ(out[9], 0xC940);
 #if defined(__x86_64__) || defined(__i386__)
   if (__builtin_cpu_supports("f16c")) {
