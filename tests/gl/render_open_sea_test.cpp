@@ -104,6 +104,16 @@ TEST(OpenSeaMap, ARegionalLayerHasNoOpenSea) {
 }
 
 namespace {
+// 96 x 96 straight down from (lat, lon, h), the Sun 60° up in the south-south-east.
+render::FrameInput straightDown(double latDeg, double lonDeg, double heightM) {
+  render::FrameInput f;
+  f.camera.position = {latDeg, lonDeg, heightM};
+  f.camera.pitchDeg = -90;
+  f.width = f.height = 96;
+  f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 60, 150);
+  return f;
+}
+
 // A globe split into parts against the unsplit render: every channel within 1e-5 of the
 // reference's largest value (the parts run the same code; rounding only).
 void expectSamePicture(const io::ImageRgbaF& reference, const io::ImageRgbaF& split, double heightM) {
@@ -123,17 +133,9 @@ TEST(GlobeRender, OpenSeaPartMatchesTheSurfacePart) {
   // shaded as deep sea: far outside this bound.
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(islandWorld());
-  std::vector<render::FrameInput> frames;
   for (const auto& [lat, lon, h] : {std::tuple{10.0, -30.0, 2.0e7}, std::tuple{10.0, -30.0, 3.0e6},
                                     std::tuple{20.0, 40.0, 8.0e6}}) {
-    render::FrameInput f;
-    f.camera.position = {lat, lon, h};
-    f.camera.pitchDeg = -90;
-    f.width = f.height = 96;
-    f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 60, 150);
-    frames.push_back(f);
-  }
-  for (const render::FrameInput& f : frames) {
+    const render::FrameInput f = straightDown(lat, lon, h);
     r.setOpenSeaPart(false);
     r.render(f);
     const io::ImageRgbaF reference = r.radiance();
@@ -161,11 +163,7 @@ TEST(GlobeRender, LandAndSeaPartsMatchTheSurfacePart) {
   std::uint64_t seaSamples = 0, landSamples = 0;
   for (const auto& [lat, lon, h] : {std::tuple{10.0, -27.0, 3.0e5}, std::tuple{10.0, -27.0, 3.0e4},
                                     std::tuple{10.0, -30.0, 3.0e6}}) {
-    render::FrameInput f;
-    f.camera.position = {lat, lon, h};
-    f.camera.pitchDeg = -90;
-    f.width = f.height = 96;
-    f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 60, 150);
+    const render::FrameInput f = straightDown(lat, lon, h);
     r.setLandSeaParts(false);
     r.render(f);
     const io::ImageRgbaF reference = r.radiance();
