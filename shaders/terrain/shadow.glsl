@@ -15,6 +15,10 @@ float sunVisibilityFromMaps(vec3 rel, vec3 n) {
   // Offset along the normal by a texel and a half: a surface never shadows itself.
   vec4 s = uShadowMatrix[c] * vec4(rel + n * (1.5 * uShadowTexelM[c]), 1.0);
   if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0))) || s.z <= 0.0) return 1.0;
+  // A point farther from the Sun than every caster (depth beyond 1: the open sea between the
+  // eye and a far coast towards a low Sun) is lit unless a caster stands over it: the cleared
+  // map's 1 must pass the comparison (a float depth map does not clamp the reference).
+  s.z = min(s.z, 1.0);
   vec2 texel = 1.0 / vec2(textureSize(uShadowMap, 0).xy);
   float layer = float(c);
   float lit = 0.0;

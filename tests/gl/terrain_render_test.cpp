@@ -139,3 +139,36 @@ TEST(TerrainRender, RidgeShadesTheSeaAtItsFoot) {
   // 1.000 without it.
   EXPECT_LT(south, 0.98 * north);
 }
+
+// The open sea between the eye and a far coast towards a low Sun lies farther from the Sun than
+// every caster in the shadow maps (their depth range is the casters'): it must stay lit. The
+// default flythrough's frame 330 (6.5 km over the Atlantic west of Portugal, looking at the
+// glitter of a Sun 7° up behind the coast, 640x360: the terrain's coarse Iberian tiles are the
+// casters) lost the upper half of its glitter: the float shadow map does not clamp the
+// comparison's reference, so depths beyond 1 read as shadowed where no caster was drawn.
+// Measured: the glitter below the horizon 44x the sea beside it; 1.5x with the bug.
+TEST(TerrainRender, SeaBeyondTheCastersDepthRangeStaysLit) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  render::FrameInput f;
+  f.camera.position = {38.04937, -11.74772, 6474.2};
+  f.camera.headingDeg = 78.08;
+  f.camera.pitchDeg = -20.44;
+  f.camera.verticalFovDeg = 52.8;
+  f.width = 640;
+  f.height = 360;
+  f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 7.0, 80.0);
+  r.render(f);
+  test::savePng(r, "sea_beyond_casters");
+  EXPECT_TRUE(r.terrain().shadows().on) << "the coast's tiles must be casters for this to test anything";
+  const std::vector<double> y = test::luminance(r.radiance());
+  // Rows 70-150 from the top (the horizon at ~60): the glitter's column against the sea 250 px
+  // to its left.
+  const auto box = [&](int x0) {
+    double sum = 0.0;
+    for (int row = 70; row < 150; ++row)
+      for (int x = x0; x < x0 + 30; ++x) sum += y[static_cast<std::size_t>(row * f.width + x)];
+    return sum;
+  };
+  EXPECT_GT(box(312) / box(62), 3.0) << box(312) / box(62);
+}
