@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -95,43 +96,34 @@ std::string imageryTilesLine(const render::ImageryTileStats& s) {
   return line;
 }
 
-/// `--breakdown`: the share of the frame's pixels each of the sea's classes shaded in the frame
-/// that counted them (OceanRenderer::classSamples; `frameSamples` = pixels x samples per
-/// pixel), as "    sea classes (% of pixels): open sea 12.3 ..."
-/// and into `breakdown` as "sea_class_pixels_percent"; empty where the sea was not classified.
-std::string seaClassesLine(const render::OceanRenderer& ocean, int frameSamples, nlohmann::json& breakdown) {
-  if (ocean.classesDrawn() == 0) return {};
-  static constexpr std::array<const char*, render::OceanRenderer::kSeaClasses> kNames{
-      "open sea", "shadows", "floor", "floor shadows", "coast"};
-  std::string line = "    sea classes (% of pixels):";
+/// `--breakdown`: the share of the frame's pixels each named part shaded in the frame that
+/// counted them (`frameSamples` = pixels x samples per pixel), as "    TITLE (% of pixels):
+/// NAME 12.3 ..." and into `breakdown` under `key`; empty where nothing was counted.
+std::string pixelSharesLine(const char* title, const char* key,
+                            const std::vector<std::pair<std::string, std::uint64_t>>& samples, int frameSamples,
+                            nlohmann::json& breakdown) {
+  if (samples.empty()) return {};
+  std::string line = std::string("    ") + title + " (% of pixels):";
   nlohmann::json shares = nlohmann::json::object();
-  for (std::size_t k = 0; k < kNames.size(); ++k) {
-    const double percent = 100.0 * static_cast<double>(ocean.classSamples().at(k)) / frameSamples;
-    shares[kNames.at(k)] = percent;
-    char buf[64];
-    std::snprintf(buf, sizeof buf, " %s %.1f", kNames.at(k), percent);
-    line += buf;
-  }
-  breakdown["sea_class_pixels_percent"] = shares;
-  return line;
-}
-
-/// `--breakdown`: the share of the frame's pixels each of the globe's parts shaded in the frame
-/// that counted them (GlobeRenderer::partSamples) as "    globe parts (% of pixels): sky 40.1 ...", and into
-/// `breakdown` as "globe_part_pixels_percent".
-std::string globePartsLine(const render::GlobeRenderer& r, int frameSamples, nlohmann::json& breakdown) {
-  if (r.partSamples().empty()) return {};
-  std::string line = "    globe parts (% of pixels):";
-  nlohmann::json shares = nlohmann::json::object();
-  for (const auto& [name, samples] : r.partSamples()) {
-    const double percent = 100.0 * static_cast<double>(samples) / frameSamples;
+  for (const auto& [name, count] : samples) {
+    const double percent = 100.0 * static_cast<double>(count) / frameSamples;
     shares[name] = percent;
     char buf[64];
     std::snprintf(buf, sizeof buf, " %s %.1f", name.c_str(), percent);
     line += buf;
   }
-  breakdown["globe_part_pixels_percent"] = shares;
+  breakdown[key] = shares;
   return line;
+}
+
+/// The sea's classes (OceanRenderer::classSamples) named; none where the sea was not classified.
+std::vector<std::pair<std::string, std::uint64_t>> seaClassSamples(const render::OceanRenderer& ocean) {
+  if (ocean.classesDrawn() == 0) return {};
+  static constexpr std::array<const char*, render::OceanRenderer::kSeaClasses> kNames{
+      "open sea", "shadows", "floor", "floor shadows", "coast"};
+  std::vector<std::pair<std::string, std::uint64_t>> named;
+  for (std::size_t k = 0; k < kNames.size(); ++k) named.emplace_back(kNames.at(k), ocean.classSamples().at(k));
+  return named;
 }
 
 bool wanted(const BenchOptions& o, const char* view) {
@@ -422,10 +414,12 @@ Run addBenchCommand(CLI::App& parent) {
           report["cases"].back()["passes_ms"] = breakdown;
           if (!o->json) std::printf("%s ms\n", line.c_str());
           const int pixelSamples = w * h * renderers[k]->samples();
-          const std::string classes = seaClassesLine(renderers[k]->ocean(), pixelSamples, report["cases"].back());
-          if (!o->json && !classes.empty()) std::printf("%s\n", classes.c_str());
-          const std::string parts = globePartsLine(*renderers[k], pixelSamples, report["cases"].back());
-          if (!o->json && !parts.empty()) std::printf("%s\n", parts.c_str());
+          for (const std::string& shares :
+               {pixelSharesLine("sea classes", "sea_class_pixels_percent", seaClassSamples(renderers[k]->ocean()),
+                                pixelSamples, report["cases"].back()),
+                pixelSharesLine("globe parts", "globe_part_pixels_percent", renderers[k]->partSamples(), pixelSamples,
+                                report["cases"].back())})
+            if (!o->json && !shares.empty()) std::printf("%s\n", shares.c_str());
         }
       }
     }

@@ -59,6 +59,20 @@ Framebuffer createFramebuffer();
 Renderbuffer createRenderbuffer();
 Query createQuery(GLenum target);
 
+/// Runs `draw` inside a query of `target` (GL_SAMPLES_PASSED, GL_ANY_SAMPLES_PASSED, ...) and
+/// returns its result: waits for the GL work (for tests, measurements and decisions the next
+/// draw needs, not for frames that must not wait).
+template <class Draw>
+GLuint64 queryResult(GLenum target, Draw&& draw) {
+  const Query query = createQuery(target);
+  glBeginQuery(target, query.id());
+  draw();
+  glEndQuery(target);
+  GLuint64 result = 0;
+  glGetQueryObjectui64v(query.id(), GL_QUERY_RESULT, &result);
+  return result;
+}
+
 /// A square 2D array texture of `size`² texels × `layers` in `format` with `levels` mip levels
 /// (at most fullMipLevels(size)): trilinear filtering when it has more than one level, nearest
 /// otherwise; `wrap` (e.g. GL_REPEAT, GL_CLAMP_TO_EDGE) on both axes.

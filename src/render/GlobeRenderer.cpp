@@ -437,15 +437,14 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
     const gl::Program& globe = globeProgram(grid, parts[k]);
     setGlobeUniforms(globe, view, f);
     globe.use();
-    const gl::Query samples = countPartSamples_ ? gl::createQuery(GL_SAMPLES_PASSED) : gl::Query();
-    if (countPartSamples_) glBeginQuery(GL_SAMPLES_PASSED, samples.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    if (!countPartSamples_) continue;
-    glEndQuery(GL_SAMPLES_PASSED);
-    GLuint64 count = 0;
-    glGetQueryObjectui64v(samples.id(), GL_QUERY_RESULT, &count);
+    const auto draw = [] { glDrawArrays(GL_TRIANGLES, 0, 3); };
+    if (!countPartSamples_) {
+      draw();
+      continue;
+    }
     static constexpr std::array<const char*, 6> kNames{"sky", "edge", "surface", "land", "sea", "open sea"};
-    partSamples_.emplace_back(kNames.at(static_cast<std::size_t>(parts[k] - kGlobePart0 - 1)), count);
+    partSamples_.emplace_back(kNames.at(static_cast<std::size_t>(parts[k] - kGlobePart0 - 1)),
+                              gl::queryResult(GL_SAMPLES_PASSED, draw));
   }
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_SCISSOR_TEST);

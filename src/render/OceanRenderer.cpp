@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -13,6 +14,18 @@
 namespace og::render {
 namespace {
 glm::vec3 toFloat(const glm::dvec3& v) { return glm::vec3(v); }
+
+/// Where the ray `dir` from an eye `heightM` above the sphere of the semi-major axis (`up` its
+/// vertical) meets that sphere, m along the ray; nothing where it misses (above the horizon).
+/// The smaller root t of t² - 2 b t + (r + h)² - r² = 0, b = (r + h) cos(angle below the
+/// horizontal).
+std::optional<double> seaSphereHitM(double heightM, const glm::dvec3& up, const glm::dvec3& dir) {
+  const double r = geo::kWgs84SemiMajorM, h = heightM;
+  const double b = (r + h) * -glm::dot(dir, up);
+  const double disc = b * b - h * (2.0 * r + h);
+  if (b <= 0.0 || disc < 0.0) return std::nullopt;
+  return b - std::sqrt(disc);
+}
 
 // The classic model's textures (seed 002): a tileable ripple normal map (sum of sines with
 // integer frequencies over the tile, so it repeats seamlessly) and the 1D Fresnel ramp.
@@ -106,19 +119,14 @@ const gl::Program& OceanRenderer::program(unsigned features) {
 
 double OceanRenderer::farthestSeaAngleRad(const geo::CameraView& view) {
   const double r = geo::kWgs84SemiMajorM, h = std::max(view.position.heightM, 0.0);
-  const double tanY = std::tan(0.5 * view.verticalFovRad), tanX = tanY * view.aspect;
   const double horizon = std::acos(r / (r + h));
   double most = 0.0;
   for (const double sx : {-1.0, 0.0, 1.0}) {
-    const glm::dvec3 dir = glm::normalize(view.forward + sx * tanX * view.right + tanY * view.up);
-    // The ray from (r + h) up meets the sphere of radius r at the smaller root t of
-    // t² - 2 b t + (r + h)² - r² = 0, b = (r + h) cos(angle below the horizontal).
-    const double b = (r + h) * -glm::dot(dir, view.enu.up);
-    const double disc = b * b - h * (2.0 * r + h);
-    if (b <= 0.0 || disc < 0.0) return horizon;
-    const double t = b - std::sqrt(disc);
+    const glm::dvec3 dir = view.rayDirection(sx, 1.0);
+    const std::optional<double> t = seaSphereHitM(h, view.enu.up, dir);
+    if (!t) return horizon;
     // Angle at the centre: cos = ((r + h) - t cos(down)) / r, the hit's height along up over r.
-    most = std::max(most, std::acos(std::clamp((r + h - t * b / (r + h)) / r, -1.0, 1.0)));
+    most = std::max(most, std::acos(std::clamp((r + h + *t * glm::dot(dir, view.enu.up)) / r, -1.0, 1.0)));
   }
   return std::min(most, horizon);
 }
@@ -134,13 +142,11 @@ bool OceanRenderer::geometryIsSubPixel(const geo::CameraView& view, int height, 
   for (const double sy : {-1.0, 0.0, 1.0})
     for (const double sx : {-1.0, 0.0, 1.0}) {
       if (sx == 0.0 && sy == 0.0) continue;
-      const glm::dvec3 dir = glm::normalize(view.forward + sx * tanX * view.right + sy * tanY * view.up);
-      const double b = (r + h) * -glm::dot(dir, view.enu.up);
-      const double disc = b * b - h * (2.0 * r + h);
-      if (b <= 0.0 || disc < 0.0) return false;  // the ray misses: the horizon is in view
-      const double t = b - std::sqrt(disc);
-      if (-glm::dot(dir, (eye + t * dir) / r) < std::sin(kGrownCellMinGrazingRad)) return false;
-      nearestM = std::min(nearestM, t);
+      const glm::dvec3 dir = view.rayDirection(sx, sy);
+      const std::optional<double> t = seaSphereHitM(h, view.enu.up, dir);
+      if (!t) return false;  // the ray misses: the horizon is in view
+      if (-glm::dot(dir, (eye + *t * dir) / r) < std::sin(kGrownCellMinGrazingRad)) return false;
+      nearestM = std::min(nearestM, *t);
     }
   const glm::dvec3 down = -view.enu.up;
   const double ahead = glm::dot(down, view.forward);
@@ -399,15 +405,10 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
   if (timer_ != nullptr) timer_->mark("ocean classify");
   // Fragments behind the terrain record their rows too (the shader's side effects come before
   // the depth test); where none passes it (the sea hidden by mountains) nothing is drawn.
-  const gl::Query anySea = gl::createQuery(GL_ANY_SAMPLES_PASSED);
-  glBeginQuery(GL_ANY_SAMPLES_PASSED, anySea.id());
-  drawGrid(classify_);
-  glEndQuery(GL_ANY_SAMPLES_PASSED);
+  const bool seaVisible = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] { drawGrid(classify_); }) != 0;
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::array<GLint, 2 * kSeaClasses> rows = none;
-  GLuint seaVisible = 0;
-  glGetQueryObjectuiv(anySea.id(), GL_QUERY_RESULT, &seaVisible);
-  if (seaVisible != 0) glGetNamedBufferSubData(classRows_.id(), 0, sizeof rows, rows.data());
+  if (seaVisible) glGetNamedBufferSubData(classRows_.id(), 0, sizeof rows, rows.data());
   if (timer_ != nullptr) timer_->mark("ocean");
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);
@@ -433,15 +434,13 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
     glStencilFunc(GL_EQUAL, static_cast<GLint>(k + 1), 0xff);
     // Triangle rows r span vertex rows r and r + 1; kFoldRows more each side for the grid's
     // folds (a nearer fragment of another row in a pixel whose class a farther one set).
-    const gl::Query samples = countClassSamples_ ? gl::createQuery(GL_SAMPLES_PASSED) : gl::Query();
-    if (countClassSamples_) glBeginQuery(GL_SAMPLES_PASSED, samples.id());
-    drawGridRows(p, std::max(first - 1 - kFoldRows, 0), std::min(last + kFoldRows, gridRows_ - 2));
-    if (countClassSamples_) {
-      glEndQuery(GL_SAMPLES_PASSED);
-      GLuint64 count = 0;
-      glGetQueryObjectui64v(samples.id(), GL_QUERY_RESULT, &count);
-      classSamples_.at(k) = count;
-    }
+    const auto draw = [&] {
+      drawGridRows(p, std::max(first - 1 - kFoldRows, 0), std::min(last + kFoldRows, gridRows_ - 2));
+    };
+    if (countClassSamples_)
+      classSamples_.at(k) = gl::queryResult(GL_SAMPLES_PASSED, draw);
+    else
+      draw();
   }
   if (timer_ != nullptr) timer_->mark("ocean");
   glStencilMask(0xff);
