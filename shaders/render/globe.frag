@@ -334,9 +334,12 @@ void main() {
   gl_FragDepth = rays.nHit > 0 ? clamp(uNear / depthZ, 0.0, 1.0) : 0.0;
 #endif
 }
-#elif GLOBE_PART == GLOBE_PART_LAND
-// The land (classified above): four samples on land, shaded once at their mean ray as the
-// surface part shades such a pixel, without the sea's code.
+#elif GLOBE_PART == GLOBE_PART_LAND || GLOBE_PART == GLOBE_PART_SEA || GLOBE_PART == GLOBE_PART_OPEN_SEA
+// The land, the sea and the open deep sea (classified above): four samples all on land or all
+// on the sea, shaded once at their mean ray as the surface part shades such a pixel, by
+// surfaceRadiance with a constant for which they are, so that only the land's or the sea's
+// code is compiled in (and no per-sample coast test); the open deep sea's part also without
+// the water column (deeper than the water's reach there: shadeSea).
 void main() {
   PixelRays rays = traceRays();
   vec3 hitDir = vec3(0.0);
@@ -347,29 +350,8 @@ void main() {
   }
   vec3 dir = normalize(hitDir);
   float t = intersectEllipsoid(dir);
-  vec3 surface = vec3(0.0);
-  surface += 4.0 * surfaceRadiance(dir, t, false);
-  fragRadiance = vec4(throughAerialPerspective(surface, hitDir, hitT, 4.0) * 0.25, 1.0);
-  fragAux = vec4(0.0);
-}
-#elif GLOBE_PART == GLOBE_PART_OPEN_SEA || GLOBE_PART == GLOBE_PART_SEA
-// The sea (classified above): four samples on the sea, shaded once at their mean ray as the
-// surface part shades such a pixel, without its land code and its per-sample coast test; the
-// open deep sea's part also without the water column (deeper than the water's reach there).
-void main() {
-  PixelRays rays = traceRays();
-  vec3 hitDir = vec3(0.0);
-  float hitT = 0.0;
-  for (int i = 0; i < 4; ++i) {
-    hitDir += rays.dirs[i];
-    hitT += rays.ts[i];
-  }
-  vec3 dir = normalize(hitDir);
-  float t = intersectEllipsoid(dir);
-  vec3 surface = vec3(0.0);
-  surface += 4.0 * shadeSea(-dir, ellipsoidNormal(dir, t));
-  float foam = 0.0;
-  foam += 4.0 * gSeaFoam;
+  vec3 surface = 4.0 * surfaceRadiance(dir, t, GLOBE_PART != GLOBE_PART_LAND);
+  float foam = 4.0 * gSeaFoam;  // 0 on land
   fragRadiance = vec4(throughAerialPerspective(surface, hitDir, hitT, 4.0) * 0.25, 1.0);
   fragAux = vec4(foam * 0.25, 0.0, 0.0, 0.0);
 }
