@@ -2,7 +2,7 @@
 # Derives the default data embedded in oceanglobe: data/etopo5_relief.nc (relief) from the ETOPO5
 # grid, and data/navy_winds_199201.nc (wind) from the monthly navy winds, both in Debian's
 # ferret-datasets package; the imagery and the land mask below. Needs the nco and netcdf-bin
-# packages (gdal-bin and gmt for the land mask).
+# packages (gdal-bin, gmt, python3-numpy and python3-gdal for the land mask).
 #
 # ETOPO5 stores relief as float metres on a 5' (about 9 km) grid. Two changes make the embedded
 # copy small (about 4.6 MB instead of 37 MB), both documented in data/README.md:
@@ -160,20 +160,14 @@ for pair in "earth.jpg:blue_marble_2048x1024" "night.jpg:night_lights_2048x1024"
   echo "wrote $dst.jpg ($(wc -c <"$dst.jpg") bytes) and $dst.jgw"
 done
 
-# --- Land/water mask from the GSHHG shorelines (Debian gmt-gshhg-*, LGPL-3+ / public domain
-# data, see data/README.md): 2' (about 3.7 km) cells, pixel registration, 1 = land (lakes,
-# islands in lakes and ponds in those honoured: GMT levels 1 and 3 are land, 2 and 4 water),
-# from the intermediate-resolution shorelines, written as a 1-bit PNG with a world file.
-# Needs gmt (only here, not to build).
+# --- Land/water mask from the GSHHG shorelines (Debian gmt-gshhg-high, LGPL-3+ / public domain
+# data, see data/README.md): the high-resolution shorelines rasterised at 15" in 10 degree
+# tiles (lakes as water, islands in lakes as land), packed into the 2' mask (each cell the
+# majority of its 8 x 8 fine cells) and the fine cells' blocks where a 2' cell holds both
+# (scripts/derive_landmask_15s.py, about 33 CPU minutes). Needs gmt, python3-numpy and
+# python3-gdal (only here, not to build).
 if command -v gmt >/dev/null 2>&1; then
-  mdir=$(mktemp -d)
-  gmt grdlandmask -Rd -I2m -Di -N0/1/0/1/0 -r -G"$mdir/mask.nc"
-  gdal_translate -q -ot Byte -of PNG -co NBITS=1 -a_nodata none "$mdir/mask.nc" "$mdir/mask.png"
-  mout="$(dirname "$0")/../data/gshhg_landmask_2m"
-  cp "$mdir/mask.png" "$mout.png"
-  printf '0.033333333333333333\n0\n0\n-0.033333333333333333\n-179.98333333333333\n89.983333333333333\n' >"$mout.pgw"
-  rm -rf "$mdir"
-  echo "wrote $mout.png ($(wc -c <"$mout.png") bytes)"
+  /usr/bin/python3 "$(dirname "$0")/derive_landmask_15s.py" "$(dirname "$0")/../data"
 else
-  echo "derive_default_data.sh: gmt not found; data/gshhg_landmask_2m.png not rebuilt (apt-get install gmt gmt-gshhg-low)" >&2
+  echo "derive_default_data.sh: gmt not found; data/gshhg_landmask_* not rebuilt (apt-get install gmt gmt-gshhg-high python3-numpy python3-gdal)" >&2
 fi

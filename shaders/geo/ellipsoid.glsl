@@ -27,5 +27,8 @@ vec3 ellipsoidNormal(vec3 dir, float t) {
   return normalize(vec3(p.xy, p.z * (WGS84_A / WGS84_B)));
 }
 
-// Geodetic latitude and longitude (radians) of a geodetic normal.
-vec2 latLonOfNormal(vec3 n) { return vec2(asin(clamp(n.z, -1.0, 1.0)), atan2Safe(n.y, n.x)); }
+// Geodetic latitude and longitude (radians) of a geodetic normal. The latitude by atan, not
+// asin: Mesa's asin (llvmpipe) is a polynomial off by up to ~2e-4 rad, a latitude 1.3 km south at
+// 36° N, which put the land mask's 15″ coast (460 m) a few cells away from the terrain's
+// (whose latitudes come from the CPU); atan is good to ~1e-6 rad there.
+vec2 latLonOfNormal(vec3 n) { return vec2(atan(n.z, length(n.xy)), atan2Safe(n.y, n.x)); }

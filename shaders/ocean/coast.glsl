@@ -4,11 +4,13 @@
 #include "geo/ellipsoid.glsl"
 #include "render/elevation.glsl"
 
-// Whether the point at camera-relative `relative` (on or near the ellipsoid) is over the sea.
-bool seaAt(vec3 relative) {
+// Whether the point at camera-relative `relative` (on or near the ellipsoid) is over the sea,
+// its coast as a footprint of `footprintRad` (radians of arc) resolves it: the same coast as
+// the terrain's per-pixel test and the globe's.
+bool seaAt(vec3 relative, float footprintRad) {
   if (uElevationSize.x <= 0.0) return true;
   float d = length(relative);
-  return elevationAt(latLonOfNormal(ellipsoidNormal(relative / d, d))) <= 0.0;
+  return elevationAt(latLonOfNormal(ellipsoidNormal(relative / d, d)), footprintRad) <= 0.0;
 }
 
 // No sea over land, sample by sample: keeps the pixel's sea samples in gl_SampleMask and drops
@@ -25,8 +27,11 @@ uniform int uCoastTest;
 #define KEEP_SEA_SAMPLES(RELATIVE)                                     \
   {                                                                    \
     int seaSamples = uCoastTest == 1 ? 0 : (1 << gl_NumSamples) - 1;   \
+    vec3 viewDir = normalize(RELATIVE);                                \
+    float footprintRad = coastFootprintRad(length(RELATIVE), max(length(dFdx(viewDir)), length(dFdy(viewDir))), \
+        -dot(ellipsoidNormal(viewDir, length(RELATIVE)), viewDir));    \
     for (int i = 0; i < gl_NumSamples * uCoastTest; ++i)               \
-      if (seaAt(interpolateAtSample(RELATIVE, i))) seaSamples |= 1 << i; \
+      if (seaAt(interpolateAtSample(RELATIVE, i), footprintRad)) seaSamples |= 1 << i; \
     if (seaSamples == 0) discard;                                      \
     gl_SampleMask[0] = seaSamples;                                     \
   }
@@ -35,11 +40,12 @@ uniform int uCoastTest;
 // The shore: a wave breaks once its height reaches ~0.78 of the water's depth (McCowan 1894's
 // breaker index), so over shoaling water the waves' displacement is scaled down to what that
 // depth holds, reaching 0 at the shoreline: the sea surface meets the land at sea level and
-// waves never cross onto it. `waveHeightM`: the sea's significant wave height there.
+// waves never cross onto it. `waveHeightM`: the sea's significant wave height there;
+// `footprintRad`: the grid cell's size (radians of arc), which coast it resolves.
 const float BREAKER_INDEX = 0.78;
-float shoreWaveFactor(vec2 latLon, float waveHeightM) {
+float shoreWaveFactor(vec2 latLon, float waveHeightM, float footprintRad) {
   if (uElevationSize.x <= 0.0) return 1.0;
-  float depthM = max(-elevationAt(latLon), 0.0);
+  float depthM = max(-elevationAt(latLon, footprintRad), 0.0);
   return clamp(BREAKER_INDEX * depthM / max(waveHeightM, 1e-3), 0.0, 1.0);
 }
 

@@ -70,7 +70,7 @@ void main() {
   float cell = t * uCellAngle / cosIncidence;
   vec2 latLon = latLonOfNormal(ellipsoidNormal(dir, t));
   vec2 wind = localWind(latLon);
-  vec3 d = oceanDisplacement(local.xy, cell, wind) * shoreWaveFactor(latLon, seaStateWaveHeightM(wind.x));
+  vec3 d = oceanDisplacement(local.xy, cell, wind) * shoreWaveFactor(latLon, seaStateWaveHeightM(wind.x), cell / WGS84_A);
   prepareWaterVolumeVertex(latLon, ellipsoidNormal(dir, t));
   prepareSeaClassVertex(latLon, rel);  // the classes' draw only (OCEAN_SEA_CLASSIFY)
   // Displacement along the frame's axes; near the camera (where waves are resolved at all)

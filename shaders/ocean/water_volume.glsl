@@ -118,10 +118,12 @@ float floorSunVisibility(vec3 rel, vec3 n) {
 }
 
 // Height of the layer's floor (m, negative below sea level) along a ray leaving the surface at
-// (latitude, longitude) `latLon` with horizontal direction `east`/`north` components per metre.
-float floorHeightAlong(vec2 latLon, vec2 horizontal, float s) {
+// (latitude, longitude) `latLon` with horizontal direction `east`/`north` components per metre,
+// its coast as the pixel's footprint `footprintRad` (radians of arc) resolves it (a bay only
+// the fine level holds keeps its depth: the 2′ level puts land there, a floor at the surface).
+float floorHeightAlong(vec2 latLon, vec2 horizontal, float s, float footprintRad) {
   vec2 d = s * horizontal / WGS84_A;
-  return elevationAt(latLon + vec2(d.y, d.x / max(cos(latLon.x), 1e-3)));
+  return elevationAt(latLon + vec2(d.y, d.x / max(cos(latLon.x), 1e-3)), footprintRad);
 }
 
 // The secant step's root between (sA, gapA) and (sB, gapB) along the ray, in [0, sMax];
@@ -135,12 +137,17 @@ float secantRoot(float sA, float gapA, float sB, float gapB, float sMax) {
 // across a cell of a few pixels: the search's first guess.
 #ifndef OCEAN_NO_WATER_VOLUME
 in float vFloorDepthM;
+// Above 0 where a vertex of the triangle has the land mask's fine level moving the floor (its
+// coast differs from the 2′ one's there): only those pixels pay for the fine level's lookups
+// in the search below (llvmpipe: ~20 % of the floor class over the Bahamas' cays otherwise).
+in float vFloorFine;
 #ifndef OCEAN_SIMPLE_SKY
 in vec3 vWaterSunE;  // the Sun's and the sky's irradiance at sea level
 in vec3 vWaterSkyE;
 #endif
 #else
 const float vFloorDepthM = 1e4;
+const float vFloorFine = 0.0;
 #endif
 
 // Prepares gWater for the sea pixel at camera-relative `rel` (to the eye `v`, mean normal `n`,
@@ -167,9 +174,10 @@ void prepareWaterVolume(vec3 rel, vec3 v, vec3 n, vec3 up, vec2 latLon, vec2 oce
   // layer's heights (exact on a flat floor, ~1 % of the depth on the steepest shelves of a
   // 5' layer; the layer is near-planar over d_max).
   float s1 = min(gap0 / -down, dMax);
-  float gap1 = s1 * down - floorHeightAlong(latLon, horizontal, s1);
+  float footprintRad = vFloorFine > 0.0 ? footprintM / WGS84_A : 1e9;
+  float gap1 = s1 * down - floorHeightAlong(latLon, horizontal, s1, footprintRad);
   float s2 = s1 > 1e-3 ? secantRoot(0.0, gap0, s1, gap1, dMax) : 0.0;  // 0: floor at the surface
-  float gap2 = s2 * down - floorHeightAlong(latLon, horizontal, s2);
+  float gap2 = s2 * down - floorHeightAlong(latLon, horizontal, s2, footprintRad);
   if (gap2 > 0.0 && s2 >= dMax) {
     gWater = WaterVolume(true, uSeaColor);  // no floor within d_max
     return;

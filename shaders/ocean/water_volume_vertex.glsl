@@ -7,7 +7,8 @@
 // Needs (included first): render/elevation.glsl, geo/ellipsoid.glsl; without OCEAN_SIMPLE_SKY
 // uSunDirEcef.
 #ifndef OCEAN_NO_WATER_VOLUME
-out float vFloorDepthM;  // m below mean sea level, negative over land
+out float vFloorDepthM;  // m below mean sea level, negative over land (the fine coast)
+out float vFloorFine;    // 1 where the land mask's fine level moves the floor (water_volume.glsl)
 #ifndef OCEAN_SIMPLE_SKY
 #include "atmosphere/skymap.glsl"
 out vec3 vWaterSunE;     // the Sun's irradiance at the vertex's Sun zenith (skymap.glsl's units)
@@ -15,7 +16,11 @@ out vec3 vWaterSkyE;     // the sky's, on a horizontal surface
 #endif
 
 void prepareWaterVolumeVertex(vec2 latLon, vec3 up) {
-  vFloorDepthM = uElevationSize.x > 0.0 ? -elevationAt(latLon) : 1e4;
+  // The floor at the mask's finest level, whatever the cell's size (grown cells span
+  // kilometres): the search per pixel refines from here at the pixel's own footprint.
+  float heightM = elevationAt(latLon, 0.0);
+  vFloorDepthM = uElevationSize.x > 0.0 ? -heightM : 1e4;
+  vFloorFine = abs(heightM - elevationAt(latLon)) > 0.01 ? 1.0 : 0.0;
 #ifndef OCEAN_SIMPLE_SKY
   float sunZenith = acos(clamp(dot(uSunDirEcef, up), -1.0, 1.0));
   vWaterSunE = sunIrradiance(sunZenith);

@@ -95,6 +95,18 @@ const bool SEA_BY_GRID = true;
 const bool SEA_BY_GRID = false;
 #endif
 
+// A pixel's footprint on the ground at distance t along dir (geodetic normal n there), radians
+// of arc, widened at grazing incidence: what the imagery and the land mask's coast resolve.
+float groundFootprintRad(vec3 dir, float t, vec3 n) {
+  return coastFootprintRad(t, uPixelNdc.y * uTanHalfFov.y, dot(n, -dir));
+}
+
+// The elevation under the sample at distance t along dir, its coast as the pixel resolves it.
+float elevationOfSample(vec3 dir, float t) {
+  vec3 n = ellipsoidNormal(dir, t);
+  return elevationAt(latLonOfNormal(n), groundFootprintRad(dir, t, n));
+}
+
 const bool PART_HAS_SKY = GLOBE_PART != GLOBE_PART_SURFACE;
 const bool PART_HAS_SURFACE = GLOBE_PART != GLOBE_PART_SKY;
 
@@ -129,7 +141,7 @@ vec3 shadeLand(vec3 albedo, float muS, vec3 sunIrr, vec3 skyIrr) {
 // whitecap coverage of the local wind's Jacobian statistics (Dupuy 2012), the same lighting
 // code as the projected grid (ocean/lighting.glsl), so the switch between the two is invisible.
 float gSeaFoam = 0.0;  // whitecap coverage of the last shadeSea (the auxiliary output)
-vec3 shadeSea(vec3 v, vec3 n) {
+vec3 shadeSea(vec3 v, vec3 n, float footprintRad) {
   vec3 east = cross(vec3(0.0, 0.0, 1.0), n);
   east = dot(east, east) > 1e-12 ? normalize(east) : vec3(0.0, 1.0, 0.0);
   vec3 north = cross(n, east);
@@ -140,7 +152,7 @@ vec3 shadeSea(vec3 v, vec3 n) {
 #if GLOBE_PART == GLOBE_PART_OPEN_SEA
   gWater = WaterVolume(true, uSeaColor);  // deeper than the water's reach: prepareWaterColumn's
 #else
-  prepareWaterColumn(v, n, uSunDir, 1.0);  // the floor through the water (terrain/shallow.glsl)
+  prepareWaterColumn(v, n, uSunDir, 1.0, footprintRad);  // the floor through the water (terrain/shallow.glsl)
 #endif
   return seaRadianceWithFoam(v, n, wind, seaSlopeVarianceTotal(w.x), n, uSunDir, foam);
 }
@@ -151,14 +163,13 @@ vec3 surfaceRadiance(vec3 dir, float t, bool sea) {
   gSeaFoam = 0.0;
   vec3 n = ellipsoidNormal(dir, t);
   vec2 latLon = latLonOfNormal(n);
-  float elevation = elevationAt(latLon);
+  float footprint = groundFootprintRad(dir, t, n);
+  float elevation = elevationAt(latLon, footprint);
   float muSP = dot(n, uSunDir);
   vec3 skyIrr;
   vec3 sunIrr = sunAndSkyIrradiance(uAtmosphere, uAtmTransmittance, uAtmIrradiance,
                                     uAtmosphere.bottomRadius, muSP, skyIrr);
-  if (sea && !SEA_BY_GRID) return shadeSea(-dir, n);
-  // A pixel's footprint on the ground (radians of arc), widened at grazing incidence.
-  float footprint = t * uPixelNdc.y * uTanHalfFov.y / (WGS84_A * max(dot(n, -dir), 0.2));
+  if (sea && !SEA_BY_GRID) return shadeSea(-dir, n, footprint);
   return shadeLand(landColour(latLon, elevation, footprint), muSP, sunIrr, skyIrr) +
          nightLightsRadiance(latLon, footprint, muSP);
 }
@@ -188,6 +199,30 @@ struct PixelRays {
   float ts[4];
   int nHit;  // rays that hit the ellipsoid
 };
+// Which of a pixel's four samples lie on the sea (samples that miss the globe: false), the
+// coast as the pixel's footprint resolves it: the same test as elevationOfSample's, the land
+// mask's fine blocks fetched once for the four (terrain/landmask.glsl's landFraction4).
+bvec4 samplesSea(PixelRays rays) {
+  vec2 latLon[4];
+  vec4 height, keep;
+  float footprint = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    float t = max(rays.ts[i], 0.0);
+    vec3 n = ellipsoidNormal(rays.dirs[i], t);
+    latLon[i] = latLonOfNormal(n);
+    vec2 heightKeep = elevationLayerAt(latLon[i]);
+    height[i] = heightKeep.x;
+    keep[i] = heightKeep.y;
+    footprint += 0.25 * groundFootprintRad(rays.dirs[i], t, n);
+  }
+  vec4 f = landFraction4(latLon[0], latLon[1], latLon[2], latLon[3], footprint);
+  bvec4 sea;
+  for (int i = 0; i < 4; ++i)
+    sea[i] = rays.ts[i] >= 0.0 &&
+             (landMaskOn() ? constrainByLandFraction(height[i], keep[i], f[i]) : height[i]) <= 0.0;
+  return sea;
+}
+
 PixelRays traceRays() {
   const vec2 offsets[4] = vec2[4](vec2(-0.125, -0.375), vec2(0.375, -0.125),
                                   vec2(0.125, 0.375), vec2(-0.375, 0.125));
@@ -240,8 +275,8 @@ uniform int uOpenSeaOn;  // 0: no pixel is classed open sea (GlobeRenderer::setO
 // pixels it would shade as all land or all sea.
 int samplesOnSea(PixelRays rays) {
   int n = 0;
-  for (int i = 0; i < 4; ++i)
-    n += elevationAt(latLonOfNormal(ellipsoidNormal(rays.dirs[i], max(rays.ts[i], 0.0)))) <= 0.0 ? 1 : 0;
+  bvec4 sea = samplesSea(rays);
+  for (int i = 0; i < 4; ++i) n += sea[i] ? 1 : 0;
   return rays.nHit == 4 ? n : -1;
 }
 
@@ -329,7 +364,7 @@ void main() {
     // Over land the terrain draws the ground and this flat fallback must never stand in front
     // of a tile: the coarsest tiles' chords sag up to ~0.5 km below the ellipsoid. Over the sea
     // (from orbit) the depth stays exact, so the sea surface hides the bathymetry.
-    if (elevationAt(centreLatLon) > 0.0) depthZ += 20000.0;
+    if (elevationOfSample(centreDir, centreT) > 0.0) depthZ += 20000.0;
   }
   gl_FragDepth = rays.nHit > 0 ? clamp(uNear / depthZ, 0.0, 1.0) : 0.0;
 #endif
@@ -362,6 +397,7 @@ void main() {
   // once for those in the sky. Loops run only as many times as needed: llvmpipe skips a
   // loop's remaining trips for a whole vector of pixels but evaluates both sides of an if.
   PixelRays rays = traceRays();
+  bvec4 seaSamples = PART_HAS_SURFACE ? samplesSea(rays) : bvec4(false);
   int hits[4];
   bool seas[4];
   vec3 hitDir = vec3(0.0);
@@ -371,8 +407,7 @@ void main() {
   vec3 seaHoleDir = vec3(0.0);
   float seaHoleT = 0.0;
   for (int i = 0; i < 4; ++i) {
-    bool sea = PART_HAS_SURFACE && rays.ts[i] >= 0.0 &&
-               elevationAt(latLonOfNormal(ellipsoidNormal(rays.dirs[i], rays.ts[i]))) <= 0.0;
+    bool sea = PART_HAS_SURFACE && seaSamples[i];
     // Below 20 km the grid pass draws the sea: leave sea samples to it (no colour).
     if (sea && SEA_BY_GRID) {
       seaHoles += 1.0;
@@ -429,7 +464,8 @@ void main() {
   // vertices, where the chord falls short of the curved horizon) this far-field sea shows,
   // which is what the grid converges to there anyway. Shaded once per pixel, no depth.
   if (SEA_BY_GRID && PART_HAS_SURFACE && seaHoles > 0.0) {
-    radiance += seaHoles * withAerialPerspective(shadeSea(-seaHoleDir, ellipsoidNormal(seaHoleDir, seaHoleT)),
+    vec3 holeN = ellipsoidNormal(seaHoleDir, seaHoleT);
+    radiance += seaHoles * withAerialPerspective(shadeSea(-seaHoleDir, holeN, groundFootprintRad(seaHoleDir, seaHoleT, holeN)),
                                                  seaHoleDir, seaHoleT, uSunDir);
     foam += seaHoles * gSeaFoam;
   }

@@ -26,18 +26,22 @@ struct WaterVolume {
 };
 WaterVolume gWater = WaterVolume(false, vec3(0.0));
 
-// Depth of the sea floor below mean sea level at a point with geodetic normal upE, m; without
+// Depth of the sea floor below mean sea level at a point with geodetic normal upE, m, its
+// coast as a footprint of `footprintRad` (radians of arc) sees it (the same coast as the
+// land's: else a bay that only the fine mask holds reads as a floor at the surface); without
 // an elevation layer the sea is deep everywhere.
-float seaFloorDepthM(vec3 upE) {
+float seaFloorDepthM(vec3 upE, float footprintRad) {
   if (uElevationSize.x <= 0.0) return 1e4;
-  return max(-elevationAt(latLonOfNormal(upE)), 0.0);
+  return max(-elevationAt(latLonOfNormal(upE), footprintRad), 0.0);
 }
+float seaFloorDepthM(vec3 upE) { return seaFloorDepthM(upE, 1e9); }
 
 // The water column under a point seen from afar (the globe's sea): a flat floor at the layer's
 // depth, the view (vE, to the eye) and the Sun (sunE) refracted by the mean surface, lit by
-// the Sun (irradiances from the sky model, `sunSeen` of its disc) and the sky.
-void prepareWaterColumn(vec3 vE, vec3 upE, vec3 sunE, float sunSeen) {
-  float depthM = seaFloorDepthM(upE);
+// the Sun (irradiances from the sky model, `sunSeen` of its disc) and the sky; the pixel's
+// footprint there `footprintRad` (radians of arc).
+void prepareWaterColumn(vec3 vE, vec3 upE, vec3 sunE, float sunSeen, float footprintRad) {
+  float depthM = seaFloorDepthM(upE, footprintRad);
   vec3 k = uWaterAttenuation;
   if (depthM > waterMaxPathM(k, WATER_EPSILON)) {
     gWater = WaterVolume(true, uSeaColor);

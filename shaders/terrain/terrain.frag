@@ -99,11 +99,29 @@ void main() {
   // land at every vertex skip it (a lake narrower than their vertex spacing does not show).
   float lat = vInfo.y, lon = vInfo.z;
 #ifndef TERRAIN_LAND_ONLY
-  if (uSeaFromGlobe == 1 && uTileHasWater == 1 && landMaskOn()) {
-    if (landFraction(vec2(lat, lon)) < 0.5) discard;
+  // The mask's coast as the pixel's footprint on the ground resolves it (the globe's and the
+  // grid's too). Below the ceiling the mesh's zero crossing lies up to a vertex spacing off
+  // it (heights jump at the mask's coast where the layer disagrees with it: a 15″ bay the 5′
+  // layer calls land, a spit it calls sea), so land the mask holds stays drawn where the
+  // mesh dips under the sea, else the grid's sea (which stops at the mask's coast) leaves a gap.
+  vec3 viewDir = normalize(vRelative);
+  vec3 vertical = vec3(cos(lat) * cos(lon), cos(lat) * sin(lon), sin(lat));
+  float maskFootprintRad = coastFootprintRad(length(vRelative), max(length(dFdx(viewDir)), length(dFdy(viewDir))),
+                                             -dot(vertical, viewDir));
+  bool maskCoast = uTileHasWater == 1 && landMaskOn();
+  if (uSeaFromGlobe == 1 && maskCoast) {
+    if (landFraction(vec2(lat, lon), maskFootprintRad) < 0.5) discard;
     heightM = max(heightM, 0.0);
   } else if (heightM < (uSeaFromGlobe == 1 ? 0.0 : -1.0)) {
-    discard;
+    if (uSeaFromGlobe == 1 || !maskCoast) discard;
+    // Tested where the view ray crosses sea level, as the grid tests its surface: the mesh
+    // point lies |h| below it, up to a fine cell farther along the ray at oblique views.
+    vec3 toSea = vRelative * (heightM / (uCamAltitude - heightM));
+    vec3 east = vec3(-sin(lon), cos(lon), 0.0);
+    vec3 north = vec3(-sin(lat) * cos(lon), -sin(lat) * sin(lon), cos(lat));
+    vec2 seaLatLon = vec2(lat, lon) + vec2(dot(toSea, north), dot(toSea, east) / max(cos(lat), 1e-3)) / WGS84_A;
+    if (landFraction(seaLatLon, maskFootprintRad) < 0.5) discard;
+    heightM = 0.0;
   }
 #endif
   vec3 up = vec3(cos(lat) * cos(lon), cos(lat) * sin(lon), sin(lat));

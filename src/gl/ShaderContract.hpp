@@ -33,6 +33,7 @@ enum TextureUnit : unsigned {
   kUnitOpenSea = 19,             ///< render/globe.frag uOpenSea (render/OpenSeaMap)
   kUnitSkyRipMap = 20,           ///< atmosphere/skymap.glsl SKY_RIP_MAP (render/SkyRipMap)
   kUnitCausticCurvature = 21,    ///< ocean/water_volume.glsl uCausticCurvature (render/WaterVolume)
+  kUnitLandMaskFine = 22,        ///< terrain/landmask.glsl uLandMaskFine (render/LandMaskTexture)
   // Passes of their own, which bind nothing else, reuse unit 0:
   kUnitToneRadiance = 0,         ///< render/tonemap.frag uRadiance (the HDR target)
   kUnitOverlayText = 0,          ///< viewer/text.frag uText (the viewer's text overlay)

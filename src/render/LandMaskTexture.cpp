@@ -1,5 +1,6 @@
 #include "render/LandMaskTexture.hpp"
 
+#include <bit>
 #include <cstdint>
 #include <vector>
 
@@ -16,44 +17,92 @@ LandMaskTexture::LandMaskTexture(const data::LandMask* mask) {
   texture_ = gl::createTexture(GL_TEXTURE_2D);
   if (mask != nullptr && !(mask->width() == 2 * mask->height() && mask->width() % 8 == 0))
     throw InternalError("land mask: the GPU takes a global mask of square cells, width a multiple of 8");
-  // One 16-bit texel per 8 columns holding columns 8x - 4 ... 8x + 11 (wrapping in longitude):
-  // any three neighbouring cells of a row lie in one texel, so the shader's 3 x 3 B-spline
-  // (terrain/landmask.glsl) takes one fetch a row.
+  // One 32-bit texel per 8 columns holding columns 8x - 4 ... 8x + 11 (wrapping in longitude):
+  // the land bits in the low half, the refined bits (the fine level's) in the high half. Any
+  // three neighbouring cells of a row lie in one texel, so the shader's 3 x 3 B-spline
+  // (terrain/landmask.glsl) takes one fetch a row, and the fine level learns from the same
+  // fetch whether it needs its blocks.
   const int w = mask != nullptr ? mask->bytesPerRow() : 1;
   const int h = mask != nullptr ? mask->height() : 1;
-  std::vector<std::uint16_t> texels(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0);
+  std::vector<std::uint32_t> texels(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0);
   if (mask != nullptr) {
-    const std::vector<std::uint8_t>& bits = mask->packedBits();
     const auto n = static_cast<std::size_t>(w);
-    for (int r = 0; r < h; ++r) {
+    const auto pack = [n](const std::uint8_t* in, std::uint32_t* out, unsigned shift) {
       // Start-up: no modulo per texel (14.6 M of them); the row's ends wrap.
-      const std::uint8_t* in = bits.data() + static_cast<std::size_t>(r) * n;
-      std::uint16_t* out = texels.data() + static_cast<std::size_t>(r) * n;
       unsigned before = in[n - 1], here = in[0];
       for (std::size_t x = 0; x < n; ++x) {
         const unsigned after = in[x + 1 < n ? x + 1 : 0];
-        out[x] = static_cast<std::uint16_t>((before >> 4) | (here << 4) | ((after & 0xFu) << 12));
+        out[x] |= ((before >> 4) | (here << 4) | ((after & 0xFu) << 12)) << shift;
         before = here;
         here = after;
       }
+    };
+    for (int r = 0; r < h; ++r) {
+      const std::size_t at = static_cast<std::size_t>(r) * n;
+      pack(mask->packedBits().data() + at, texels.data() + at, 0);
+      if (mask->hasFineLevel()) pack(mask->refinedBits().data() + at, texels.data() + at, 16);
     }
   }
-  glTextureStorage2D(texture_.id(), 1, GL_R16UI, w, h);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
-  glTextureSubImage2D(texture_.id(), 0, 0, 0, w, h, GL_RED_INTEGER, GL_UNSIGNED_SHORT, texels.data());
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureStorage2D(texture_.id(), 1, GL_R32UI, w, h);
+  glTextureSubImage2D(texture_.id(), 0, 0, 0, w, h, GL_RED_INTEGER, GL_UNSIGNED_INT, texels.data());
   glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   active_ = mask != nullptr;
-  bytes_ = texels.size() * sizeof(std::uint16_t);
+  bytes_ = texels.size() * sizeof(std::uint32_t);
+  if (mask != nullptr && mask->hasFineLevel()) {
+    uploadFineLevel(*mask);
+  } else {
+    fine_ = gl::createTexture(GL_TEXTURE_2D);
+    const std::uint32_t none[4] = {0, 0, 0, 0};
+    glTextureStorage2D(fine_.id(), 1, GL_RGBA32UI, 1, 1);
+    glTextureSubImage2D(fine_.id(), 0, 0, 0, 1, 1, GL_RGBA_INTEGER, GL_UNSIGNED_INT, none);
+  }
 }
 
-void LandMaskTexture::bind() const { glBindTextureUnit(gl::kUnitLandMask, texture_.id()); }
+void LandMaskTexture::uploadFineLevel(const data::LandMask& mask) {
+  // The rank index: per row, one texel per 96 cells (three 32-bit words of refined bits and
+  // the refined cells before them), then the blocks two a texel.
+  constexpr int kWidth = 4096;
+  const int perRow = (mask.width() + 95) / 96, stride = mask.bytesPerRow();
+  const std::vector<std::uint64_t>& blocks = mask.blocks();
+  const std::size_t rankTexels = static_cast<std::size_t>(perRow) * static_cast<std::size_t>(mask.height());
+  const std::size_t total = rankTexels + (blocks.size() + 1) / 2;
+  const int height = static_cast<int>((total + kWidth - 1) / kWidth);
+  std::vector<std::uint32_t> texels(static_cast<std::size_t>(kWidth) * static_cast<std::size_t>(height) * 4, 0);
+  std::uint32_t before = 0;
+  for (int r = 0; r < mask.height(); ++r) {
+    const std::uint8_t* row = mask.refinedBits().data() + static_cast<std::size_t>(r) * static_cast<std::size_t>(stride);
+    for (int k = 0; k < perRow; ++k) {
+      std::uint32_t* t = texels.data() + 4 * (static_cast<std::size_t>(r) * static_cast<std::size_t>(perRow) + static_cast<std::size_t>(k));
+      t[3] = before;
+      for (int b = 12 * k; b < std::min(12 * k + 12, stride); ++b) {
+        t[(b - 12 * k) / 4] |= static_cast<std::uint32_t>(row[b]) << (8 * ((b - 12 * k) % 4));
+        before += static_cast<std::uint32_t>(std::popcount(row[b]));
+      }
+    }
+  }
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    std::uint32_t* t = texels.data() + 4 * rankTexels + 2 * i;
+    t[0] = static_cast<std::uint32_t>(blocks[i]);
+    t[1] = static_cast<std::uint32_t>(blocks[i] >> 32);
+  }
+  fine_ = gl::createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(fine_.id(), 1, GL_RGBA32UI, kWidth, height);
+  glTextureSubImage2D(fine_.id(), 0, 0, 0, kWidth, height, GL_RGBA_INTEGER, GL_UNSIGNED_INT, texels.data());
+  glTextureParameteri(fine_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(fine_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  bytes_ += texels.size() * sizeof(std::uint32_t);
+}
 
-std::vector<float> LandMaskTexture::probeLandFraction(const std::vector<glm::vec2>& latLonRad) const {
-  if (latLonRad.empty()) return {};
+void LandMaskTexture::bind() const {
+  glBindTextureUnit(gl::kUnitLandMask, texture_.id());
+  glBindTextureUnit(gl::kUnitLandMaskFine, fine_.id());
+}
+
+std::vector<float> LandMaskTexture::probeLandFraction(const std::vector<glm::vec3>& latLonFootprintRad) const {
+  if (latLonFootprintRad.empty()) return {};
   std::vector<glm::vec4> values;
-  for (const glm::vec2& p : latLonRad) values.emplace_back(p.x, p.y, 0.0f, 0.0f);
+  for (const glm::vec3& p : latLonFootprintRad) values.emplace_back(p.x, p.y, p.z, 0.0f);
   gl::Program probe({{GL_COMPUTE_SHADER, "terrain/landmask_probe.comp"}});
   bind();
   gl::runProbe(probe, values, static_cast<int>(values.size()), "LandMaskTexture::probeLandFraction");

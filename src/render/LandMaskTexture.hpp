@@ -1,12 +1,17 @@
 #pragma once
 // The GSHHG land mask on the GPU (shaders/terrain/landmask.glsl): data::LandMask's packed bits
-// as an R16UI texture on gl::kUnitLandMask, texel x of a row holding columns 8x − 4 … 8x + 11
-// (1350 × 5400 texels, 14 MiB for the 2′ default), bound only
+// as an R32UI texture on gl::kUnitLandMask, texel x of a row holding columns 8x − 4 … 8x + 11,
+// their land bits in the low half and their refined bits (the fine level's) in the high half
+// (1350 × 5400 texels, 28 MiB for the 2′ default), bound only
 // where the mask decides the coast (a global elevation layer coarser than it); a 1×1 texture
-// there otherwise, which landmask.glsl reads as "no mask".
+// there otherwise, which landmask.glsl reads as "no mask". The fine level (15″ blocks at the
+// coasts, data::LandMask::setFineLevel) in one RGBA32UI texture on gl::kUnitLandMaskFine,
+// 4096 texels wide, read as a list: first the rank index, one texel per 96 cells of a row
+// (x, y, z: those cells' refined bits; w: the refined cells before them, row-major), then the
+// blocks, two a texel (xy, zw: low and high 32 bits); ~14 MiB for the default.
 #include <vector>
 
-#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include "data/LandMask.hpp"
 #include "gl/Objects.hpp"
@@ -17,16 +22,20 @@ class LandMaskTexture {
  public:
   /// Needs a current GL context. `mask` nullptr: no mask (the elevation layer's zero contour).
   explicit LandMaskTexture(const data::LandMask* mask);
-  /// Binds the mask (or the 1×1 stand-in) to gl::kUnitLandMask.
+  /// Binds the mask (or the 1×1 stand-in) to gl::kUnitLandMask, its fine level (or a 1×1
+  /// stand-in) to gl::kUnitLandMaskFine.
   void bind() const;
   [[nodiscard]] bool active() const { return active_; }
   [[nodiscard]] std::size_t gpuBytes() const { return bytes_; }
-  /// landmask.glsl's landFraction at (latitude, longitude) radians, evaluated on the GPU (for
-  /// tests against data::LandMask::landFraction). Binds unit 18.
-  [[nodiscard]] std::vector<float> probeLandFraction(const std::vector<glm::vec2>& latLonRad) const;
+  /// landmask.glsl's landFraction at (latitude, longitude, footprint) radians, evaluated on the
+  /// GPU (for tests against data::LandMask::landFraction with a footprint).
+  [[nodiscard]] std::vector<float> probeLandFraction(const std::vector<glm::vec3>& latLonFootprintRad) const;
 
  private:
+  void uploadFineLevel(const data::LandMask& mask);
+
   gl::Texture texture_;
+  gl::Texture fine_;
   bool active_ = false;
   std::size_t bytes_ = 0;
 };

@@ -460,10 +460,11 @@ TEST(CoastWater, FloorAndShadowClassesCombineIndependently) {
                                " " + std::to_string(n[3]) + " " + std::to_string(n[4]);
     const std::uint64_t shadowed = shelving ? n[3] : n[1], volume = n[2] + n[3];
     EXPECT_GT(shadowed, 192u * 108u / 2u) << counts;
-    // Over deep water the volume stays on the island's flanks and past the layer's edge
-    // (measured: 82 of 20 736 samples, against 16 994 for the shadows' class).
+    // Over deep water the volume stays on the island's flanks (measured: 699 of 20 736 samples,
+    // against 16 185 for the shadows' class; 82 before the GPU's latitudes were corrected, when
+    // the flanks' lookups fell 1.3 km off the island drawn, geo/ellipsoid.glsl).
     if (!shelving) {
-      EXPECT_LT(volume, 192u * 108u / 100u) << "the deep sea drawn with the water volume: " << counts;
+      EXPECT_LT(volume, 192u * 108u / 20u) << "the deep sea drawn with the water volume: " << counts;
     }
     EXPECT_NE(drawn & (shelving ? kClassFloorShadows : kClassShadows), 0u) << "classes drawn " << drawn;
   }

@@ -35,6 +35,27 @@ TEST(LandMask, DefaultMaskIsGlobalAtTwoArcMinutes) {
   EXPECT_TRUE(m.isLand(36.25, -5.75));   // Spain north of Tarifa
 }
 
+TEST(LandMask, FineLevelDrawsWhatTheTwoMinuteCellsCannotHold) {
+  // GSHHG-h at 15″ where a 2′ cell holds both land and water: the Rock of Gibraltar (1.2 km
+  // wide: water in the 2′ B-spline) and the Bosphorus off Istanbul's Bebek (0.7–1.5 km wide:
+  // land in it). The footprint picks the level: a pixel of 3 km sees the 2′ coast.
+  const LandMask& m = og::data::defaultLandMask();
+  ASSERT_TRUE(m.hasFineLevel());
+  const struct {
+    double lat, lon;
+    bool land;
+  } places[] = {{36.125, -5.345, true}, {41.10, 29.06, false}};
+  for (const auto& p : places) {
+    EXPECT_EQ(m.landFraction(p.lat, p.lon, 0.0) >= 0.5f, p.land) << p.lat << ", " << p.lon;
+    EXPECT_EQ(m.landFraction(p.lat, p.lon) >= 0.5f, !p.land) << p.lat << ", " << p.lon;
+    EXPECT_EQ(m.landFraction(p.lat, p.lon, 0.03), m.landFraction(p.lat, p.lon));
+  }
+  // Heights follow the fine coast: the Bosphorus is water for the terrain too.
+  const og::terrain::Heightfield ground(og::data::defaultElevation());
+  EXPECT_LT(ground.layerHeightM(41.10, 29.06), 0.0);
+  EXPECT_GT(ground.layerHeightM(36.125, -5.345), 0.0);
+}
+
 TEST(LandMask, DecidesTheCoastWhereTheDemIsWrong) {
   const LandMask& m = og::data::defaultLandMask();
   const auto& dem = og::data::defaultElevation();
@@ -91,6 +112,44 @@ TEST(LandMask, FractionIsAQuadraticBSplineOfTheCells) {
   EXPECT_FLOAT_EQ(h.landFraction(10.0, 0.0), 0.5f);
   EXPECT_GT(h.landFraction(10.0, -1.0), 0.5f);
   EXPECT_LT(h.landFraction(10.0, 1.0), 0.5f);
+}
+
+TEST(LandMask, FineLevelIsTheBSplineOfItsBlocksBlendedByFootprint) {
+  // A global 16 x 8 mask (22.5° cells, fine cells 2.8125°): cell (9, 5) water but refined, its
+  // block holding one land fine cell (i 3, j 4); cell (10, 5) land, not refined.
+  std::vector<std::uint8_t> cells(16 * 8, 0);
+  cells[5 * 16 + 10] = 1;
+  LandMask m(16, 8, -180.0, -90.0, 22.5, cells);
+  EXPECT_FALSE(m.hasFineLevel());
+  EXPECT_DOUBLE_EQ(m.fineWeight(0.0), 0.0);
+  std::vector<std::uint8_t> refined(m.packedBits().size(), 0);
+  refined[5 * m.bytesPerRow() + 1] = 1u << 1;  // column 9
+  EXPECT_THROW(m.setFineLevel(refined, {}), og::InternalError);  // one refined cell, no block
+  m.setFineLevel(refined, {std::uint64_t{1} << (4 * 8 + 3)});
+  ASSERT_TRUE(m.hasFineLevel());
+  EXPECT_EQ(m.block(9, 5), std::uint64_t{1} << 35);
+  EXPECT_EQ(m.block(10, 5), ~std::uint64_t{0});
+  EXPECT_EQ(m.block(8, 5), std::uint64_t{0});
+  const double f = 22.5 / 8.0;
+  const auto lonOf = [&](int fineColumn) { return -180.0 + (fineColumn + 0.5) * f; };
+  const auto latOf = [&](int fineRow) { return -90.0 + (fineRow + 0.5) * f; };
+  // The one-fine-cell island survives at the fine level; the coarse level does not see it.
+  EXPECT_FLOAT_EQ(m.fineFraction(latOf(44), lonOf(75)), 0.5625f);
+  EXPECT_LT(m.landFraction(latOf(44), lonOf(75)), 0.5f);
+  // Inside the land cell, and at its west edge next to the refined cell's water.
+  EXPECT_FLOAT_EQ(m.fineFraction(latOf(44), lonOf(82)), 1.0f);
+  EXPECT_FLOAT_EQ(m.fineFraction(latOf(44), lonOf(80)), 0.875f);
+  // The footprint: the fine level up to one fine cell, the coarse from three, half at two.
+  EXPECT_DOUBLE_EQ(m.fineWeight(0.5 * f), 1.0);
+  EXPECT_DOUBLE_EQ(m.fineWeight(2.0 * f), 0.5);
+  EXPECT_DOUBLE_EQ(m.fineWeight(3.0 * f), 0.0);
+  const double lat = latOf(44), lon = lonOf(75);
+  EXPECT_FLOAT_EQ(m.landFraction(lat, lon, 0.0), m.fineFraction(lat, lon));
+  EXPECT_FLOAT_EQ(m.landFraction(lat, lon, 5.0 * f), m.landFraction(lat, lon));
+  EXPECT_NEAR(m.landFraction(lat, lon, 2.0 * f), 0.5f * (m.landFraction(lat, lon) + m.fineFraction(lat, lon)), 1e-6);
+  // Heights follow the finest level by default.
+  EXPECT_GT(m.constrainHeightM(-100.0, lat, lon), 0.0);
+  EXPECT_LT(m.constrainHeightM(-100.0, lat, lon, 0.0, 5.0 * f), 0.0);
 }
 
 TEST(LandMask, RasterStaircaseCoastIsSmoothed) {
