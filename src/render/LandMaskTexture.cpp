@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <future>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -22,6 +23,11 @@ LandMaskTexture::LandMaskTexture(const data::LandMask* mask) {
   // three neighbouring cells of a row lie in one texel, so the shader's 3 x 3 B-spline
   // (terrain/landmask.glsl) takes one fetch a row, and the fine level learns from the same
   // fetch whether it needs its blocks.
+  // Start-up: the fine level's texels (the rank index and the blocks, 14 MiB) are built on a
+  // helper thread while this one packs the 2′ texels.
+  std::future<FineTexels> fine;
+  if (mask != nullptr && mask->hasFineLevel())
+    fine = std::async(std::launch::async, [mask] { return fineTexels(*mask); });
   const int w = mask != nullptr ? mask->bytesPerRow() : 1;
   const int h = mask != nullptr ? mask->height() : 1;
   std::vector<std::uint32_t> texels(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0);
@@ -49,8 +55,8 @@ LandMaskTexture::LandMaskTexture(const data::LandMask* mask) {
   glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   active_ = mask != nullptr;
   bytes_ = texels.size() * sizeof(std::uint32_t);
-  if (mask != nullptr && mask->hasFineLevel()) {
-    uploadFineLevel(*mask);
+  if (fine.valid()) {
+    uploadFineLevel(fine.get());
   } else {
     fine_ = gl::createTexture(GL_TEXTURE_2D);
     const std::uint32_t none[4] = {0, 0, 0, 0};
@@ -59,21 +65,21 @@ LandMaskTexture::LandMaskTexture(const data::LandMask* mask) {
   }
 }
 
-void LandMaskTexture::uploadFineLevel(const data::LandMask& mask) {
+LandMaskTexture::FineTexels LandMaskTexture::fineTexels(const data::LandMask& mask) {
   // The rank index: per row, one texel per 96 cells (three 32-bit words of refined bits and
   // the refined cells before them), then the blocks two a texel.
-  constexpr int kWidth = 4096;
   const int perRow = (mask.width() + 95) / 96, stride = mask.bytesPerRow();
   const std::vector<std::uint64_t>& blocks = mask.blocks();
   const std::size_t rankTexels = static_cast<std::size_t>(perRow) * static_cast<std::size_t>(mask.height());
   const std::size_t total = rankTexels + (blocks.size() + 1) / 2;
-  const int height = static_cast<int>((total + kWidth - 1) / kWidth);
-  std::vector<std::uint32_t> texels(static_cast<std::size_t>(kWidth) * static_cast<std::size_t>(height) * 4, 0);
+  FineTexels f;
+  f.height = static_cast<int>((total + kFineWidth - 1) / kFineWidth);
+  f.texels.assign(static_cast<std::size_t>(kFineWidth) * static_cast<std::size_t>(f.height) * 4, 0);
   std::uint32_t before = 0;
   for (int r = 0; r < mask.height(); ++r) {
     const std::uint8_t* row = mask.refinedBits().data() + static_cast<std::size_t>(r) * static_cast<std::size_t>(stride);
     for (int k = 0; k < perRow; ++k) {
-      std::uint32_t* t = texels.data() + 4 * (static_cast<std::size_t>(r) * static_cast<std::size_t>(perRow) + static_cast<std::size_t>(k));
+      std::uint32_t* t = f.texels.data() + 4 * (static_cast<std::size_t>(r) * static_cast<std::size_t>(perRow) + static_cast<std::size_t>(k));
       t[3] = before;
       for (int b = 12 * k; b < std::min(12 * k + 12, stride); ++b) {
         t[(b - 12 * k) / 4] |= static_cast<std::uint32_t>(row[b]) << (8 * ((b - 12 * k) % 4));
@@ -82,16 +88,20 @@ void LandMaskTexture::uploadFineLevel(const data::LandMask& mask) {
     }
   }
   for (std::size_t i = 0; i < blocks.size(); ++i) {
-    std::uint32_t* t = texels.data() + 4 * rankTexels + 2 * i;
+    std::uint32_t* t = f.texels.data() + 4 * rankTexels + 2 * i;
     t[0] = static_cast<std::uint32_t>(blocks[i]);
     t[1] = static_cast<std::uint32_t>(blocks[i] >> 32);
   }
+  return f;
+}
+
+void LandMaskTexture::uploadFineLevel(const FineTexels& f) {
   fine_ = gl::createTexture(GL_TEXTURE_2D);
-  glTextureStorage2D(fine_.id(), 1, GL_RGBA32UI, kWidth, height);
-  glTextureSubImage2D(fine_.id(), 0, 0, 0, kWidth, height, GL_RGBA_INTEGER, GL_UNSIGNED_INT, texels.data());
+  glTextureStorage2D(fine_.id(), 1, GL_RGBA32UI, kFineWidth, f.height);
+  glTextureSubImage2D(fine_.id(), 0, 0, 0, kFineWidth, f.height, GL_RGBA_INTEGER, GL_UNSIGNED_INT, f.texels.data());
   glTextureParameteri(fine_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(fine_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  bytes_ += texels.size() * sizeof(std::uint32_t);
+  bytes_ += f.texels.size() * sizeof(std::uint32_t);
 }
 
 void LandMaskTexture::bind() const {

@@ -9,6 +9,7 @@
 // 4096 texels wide, read as a list: first the rank index, one texel per 96 cells of a row
 // (x, y, z: those cells' refined bits; w: the refined cells before them, row-major), then the
 // blocks, two a texel (xy, zw: low and high 32 bits); ~14 MiB for the default.
+#include <cstdint>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -32,7 +33,15 @@ class LandMaskTexture {
   [[nodiscard]] std::vector<float> probeLandFraction(const std::vector<glm::vec3>& latLonFootprintRad) const;
 
  private:
-  void uploadFineLevel(const data::LandMask& mask);
+  // The fine level's texture: kFineWidth RGBA32UI texels a row (landmask.glsl's
+  // landMaskFineTexel assumes 4096), `height` rows.
+  static constexpr int kFineWidth = 4096;
+  struct FineTexels {
+    std::vector<std::uint32_t> texels;
+    int height = 0;
+  };
+  static FineTexels fineTexels(const data::LandMask& mask);
+  void uploadFineLevel(const FineTexels& f);
 
   gl::Texture texture_;
   gl::Texture fine_;
