@@ -25,6 +25,23 @@ std::optional<std::string_view> find(std::string_view path);
 namespace og::data {
 namespace {
 
+// The uniform quadratic B-spline (the basis β², Unser 1999, "Splines: a perfect fit for signal
+// and image processing") of the 3 × 3 cells around the centre nearest (x, y), in cell units
+// with centres at integers: `isLand(column, row)` for the columns and rows around it (the
+// caller wraps or clamps them).
+template <class IsLand>
+double quadraticBSpline3x3(double x, double y, IsLand isLand) {
+  const int cx = static_cast<int>(std::floor(x + 0.5)), cy = static_cast<int>(std::floor(y + 0.5));
+  const double tx = x - cx, ty = y - cy;
+  const double wx[3] = {0.5 * (0.5 - tx) * (0.5 - tx), 0.75 - tx * tx, 0.5 * (0.5 + tx) * (0.5 + tx)};
+  const double wy[3] = {0.5 * (0.5 - ty) * (0.5 - ty), 0.75 - ty * ty, 0.5 * (0.5 + ty) * (0.5 + ty)};
+  double v = 0.0;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      if (isLand(cx + i - 1, cy + j - 1)) v += wy[j] * wx[i];
+  return v;
+}
+
 LandMask fromRaster(const ByteRaster& r, const std::string& label) {
   if (std::abs(r.cellLonDeg - r.cellLatDeg) > 1e-9 * r.cellLatDeg)
     throw InputError(label + ": a land mask needs square cells (got " + std::to_string(r.cellLonDeg) +
@@ -77,26 +94,14 @@ float LandMask::landFraction(double latitudeDeg, double longitudeDeg) const {
   const double y = std::clamp((latitudeDeg - southDeg_) / cellDeg_ - 0.5, 0.0, height_ - 1.0);
   if (global) x = x - width_ * std::floor(x / width_);
   else if (x < -0.5 || x > width_ - 0.5) return 0.0f;
-  // Quadratic B-spline over the 3 × 3 cells around the nearest centre (the uniform quadratic
-  // basis β², Unser 1999, "Splines: a perfect fit for signal and image processing"): the 0.5 contour of a rasterised coast is a smooth curve, where
-  // a bilinear blend keeps the raster's staircase (straight 3.7 km steps seen from 30 km). A
-  // coast along a cell edge stays on it; one-cell islands and channels survive.
-  const int cx = static_cast<int>(std::floor(x + 0.5)), cy = static_cast<int>(std::floor(y + 0.5));
-  const double tx = x - cx, ty = y - cy;
-  const double wx[3] = {0.5 * (0.5 - tx) * (0.5 - tx), 0.75 - tx * tx, 0.5 * (0.5 + tx) * (0.5 + tx)};
-  const double wy[3] = {0.5 * (0.5 - ty) * (0.5 - ty), 0.75 - ty * ty, 0.5 * (0.5 + ty) * (0.5 + ty)};
-  double v = 0.0;
-  for (int j = 0; j < 3; ++j) {
-    const int r = std::clamp(cy + j - 1, 0, height_ - 1);
-    double row = 0.0;
-    for (int i = 0; i < 3; ++i) {
-      int c = cx + i - 1;
-      c = global ? (c + width_) % width_ : std::clamp(c, 0, width_ - 1);
-      row += wx[i] * (cell(c, r) ? 1.0 : 0.0);
-    }
-    v += wy[j] * row;
-  }
-  return static_cast<float>(v);
+  // Quadratic B-spline over the 3 × 3 cells around the nearest centre: the 0.5 contour of a
+  // rasterised coast is a smooth curve, where a bilinear blend keeps the raster's staircase
+  // (straight 3.7 km steps seen from 30 km). A coast along a cell edge stays on it; one-cell
+  // islands and channels survive.
+  return static_cast<float>(quadraticBSpline3x3(x, y, [&](int c, int r) {
+    c = global ? (c + width_) % width_ : std::clamp(c, 0, width_ - 1);
+    return cell(c, std::clamp(r, 0, height_ - 1));
+  }));
 }
 
 double LandMask::constrainHeightM(double heightM, double latitudeDeg, double longitudeDeg,
@@ -147,19 +152,11 @@ float LandMask::fineFraction(double latitudeDeg, double longitudeDeg) const {
   double x = (longitudeDeg - westDeg_) / cellDeg - 0.5;
   const double y = std::clamp((latitudeDeg - southDeg_) / cellDeg - 0.5, 0.0, rows - 1.0);
   x = x - cols * std::floor(x / cols);
-  const int cx = static_cast<int>(std::floor(x + 0.5)), cy = static_cast<int>(std::floor(y + 0.5));
-  const double tx = x - cx, ty = y - cy;
-  const double wx[3] = {0.5 * (0.5 - tx) * (0.5 - tx), 0.75 - tx * tx, 0.5 * (0.5 + tx) * (0.5 + tx)};
-  const double wy[3] = {0.5 * (0.5 - ty) * (0.5 - ty), 0.75 - ty * ty, 0.5 * (0.5 + ty) * (0.5 + ty)};
-  double v = 0.0;
-  for (int j = 0; j < 3; ++j) {
-    const int r = std::clamp(cy + j - 1, 0, rows - 1);
-    for (int i = 0; i < 3; ++i) {
-      const int c = (cx + i - 1 + cols) % cols;
-      if ((block(c / n, r / n) >> ((r % n) * n + c % n)) & 1u) v += wy[j] * wx[i];
-    }
-  }
-  return static_cast<float>(v);
+  return static_cast<float>(quadraticBSpline3x3(x, y, [&](int c, int r) {
+    c = (c + cols) % cols;
+    r = std::clamp(r, 0, rows - 1);
+    return ((block(c / n, r / n) >> ((r % n) * n + c % n)) & 1u) != 0;
+  }));
 }
 
 double LandMask::fineWeight(double footprintDeg) const {
