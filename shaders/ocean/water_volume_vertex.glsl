@@ -18,9 +18,10 @@ out vec3 vWaterSkyE;     // the sky's, on a horizontal surface
 void prepareWaterVolumeVertex(vec2 latLon, vec3 up) {
   // The floor at the mask's finest level, whatever the cell's size (grown cells span
   // kilometres): the search per pixel refines from here at the pixel's own footprint.
-  float heightM = elevationAt(latLon, 0.0);
+  vec2 heightKeep = elevationLayerAt(latLon);  // one lookup for both levels
+  float heightM = constrainByLandMask(heightKeep.x, heightKeep.y, latLon, 0.0);
   vFloorDepthM = uElevationSize.x > 0.0 ? -heightM : 1e4;
-  vFloorFine = abs(heightM - elevationAt(latLon)) > 0.01 ? 1.0 : 0.0;
+  vFloorFine = abs(heightM - constrainByCoarseLandMask(heightKeep.x, heightKeep.y, latLon)) > 0.01 ? 1.0 : 0.0;
 #ifndef OCEAN_SIMPLE_SKY
   float sunZenith = acos(clamp(dot(uSunDirEcef, up), -1.0, 1.0));
   vWaterSunE = sunIrradiance(sunZenith);

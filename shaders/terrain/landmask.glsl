@@ -29,26 +29,38 @@ uvec2 landMaskBitsFrom(int first, int row) {
   return uvec2((word & 0xFFFFu) >> shift, (word >> 16u) >> shift);
 }
 
+// The cell nearest a point (latitude, longitude radians) of a global grid of `rows` rows and
+// 2 × rows columns from 180° W (the 2′ level's or the fine level's), and the point's offset
+// from its centre in cells; columns wrap, rows clamp.
+ivec2 landMaskCellAt(vec2 latLon, int rows, out vec2 offset) {
+  float cell = PI / float(rows);
+  vec2 xy = vec2((latLon.y + PI) / cell - 0.5, (latLon.x + 0.5 * PI) / cell - 0.5);
+  xy.y = clamp(xy.y, 0.0, float(rows - 1));
+  xy.x = mod(xy.x, float(2 * rows));
+  ivec2 c = ivec2(floor(xy + 0.5));
+  offset = xy - vec2(c);
+  return c;
+}
+
+// The uniform quadratic B-spline's weights of the cells at offsets -1, 0, +1 from the nearest
+// centre, for an offset t from it: columns' (first column) and rows' (second).
+mat2x3 landMaskWeights(vec2 t) {
+  vec2 wm = 0.5 * (0.5 - t) * (0.5 - t), w0 = 0.75 - t * t, wp = 0.5 * (0.5 + t) * (0.5 + t);
+  return mat2x3(vec3(wm.x, w0.x, wp.x), vec3(wm.y, w0.y, wp.y));
+}
+
 // The fraction of land around (latitude, longitude) radians, [0, 1]: the quadratic B-spline
 // of the 3 × 3 cells around the nearest centre, so the coast (the 0.5 contour) is a smooth
 // curve without the raster's staircase (data::LandMask::landFraction, its CPU twin).
 float landFraction(vec2 latLon) {
   int rows = textureSize(uLandMask, 0).y;
-  int cols = 2 * rows;
-  float cell = PI / float(rows);
-  vec2 xy = vec2((latLon.y + PI) / cell - 0.5, (latLon.x + 0.5 * PI) / cell - 0.5);
-  xy.y = clamp(xy.y, 0.0, float(rows - 1));
-  xy.x = mod(xy.x, float(cols));
-  ivec2 c = ivec2(floor(xy + 0.5));
-  vec2 t = xy - vec2(c);
-  // Uniform quadratic B-spline weights of the cells at offsets -1, 0, +1.
-  vec2 wm = 0.5 * (0.5 - t) * (0.5 - t), w0 = 0.75 - t * t, wp = 0.5 * (0.5 + t) * (0.5 + t);
-  vec3 wx = vec3(wm.x, w0.x, wp.x);
-  vec3 wy = vec3(wm.y, w0.y, wp.y);
+  vec2 t;
+  ivec2 c = landMaskCellAt(latLon, rows, t);
+  mat2x3 w = landMaskWeights(t);
   float v = 0.0;
   for (int j = 0; j < 3; ++j) {
-    uint bits = landMaskBitsFrom(c.x >= 1 ? c.x - 1 : c.x - 1 + cols, clamp(c.y + j - 1, 0, rows - 1)).x;
-    v += wy[j] * dot(wx, vec3(uvec3(bits, bits >> 1u, bits >> 2u) & 1u));
+    uint bits = landMaskBitsFrom(c.x >= 1 ? c.x - 1 : c.x - 1 + 2 * rows, clamp(c.y + j - 1, 0, rows - 1)).x;
+    v += w[1][j] * dot(w[0], vec3(uvec3(bits, bits >> 1u, bits >> 2u) & 1u));
   }
   return v;
 }
@@ -80,18 +92,6 @@ uvec2 landMaskBlock(int column, int row, uvec2 bits) {
     block = (slot & 1) == 0 ? t.xy : t.zw;
   }
   return block;
-}
-
-// The fine cell nearest a point (latitude, longitude radians) and the point's offset from its
-// centre, in fine cells (`rows`: the fine level's rows; columns from 180° W, wrapped).
-ivec2 landMaskFineCell(vec2 latLon, int rows, out vec2 offset) {
-  float cell = PI / float(rows);
-  vec2 xy = vec2((latLon.y + PI) / cell - 0.5, (latLon.x + 0.5 * PI) / cell - 0.5);
-  xy.y = clamp(xy.y, 0.0, float(rows - 1));
-  xy.x = mod(xy.x, float(2 * rows));
-  ivec2 c = ivec2(floor(xy + 0.5));
-  offset = xy - vec2(c);
-  return c;
 }
 
 // The blocks holding fine columns x0 ... x1 (x0 may be -1, x1 up to the columns: they wrap) and
@@ -135,9 +135,7 @@ FineBlocks landMaskFineBlocks(int x0, int x1, int y0, int y1, int rows) {
 // The quadratic B-spline of the 3 × 3 fine cells around fine cell c (offset t) from blocks
 // that hold them (c's columns unwrapped as the blocks' were).
 float landFractionFineAt(FineBlocks f, ivec2 c, vec2 t, int rows) {
-  vec2 wm = 0.5 * (0.5 - t) * (0.5 - t), w0 = 0.75 - t * t, wp = 0.5 * (0.5 + t) * (0.5 + t);
-  vec3 wx = vec3(wm.x, w0.x, wp.x);
-  vec3 wy = vec3(wm.y, w0.y, wp.y);
+  mat2x3 w = landMaskWeights(t);
   // A fine row's three cells: its byte of the west block and of the east one side by side
   // (16 cells), shifted to the first cell's column.
   uint firstColumn = uint(c.x - 1 - 8 * f.bx0);
@@ -150,7 +148,7 @@ float landFractionFineAt(FineBlocks f, ivec2 c, vec2 t, int rows) {
     bool high = (y & 7) >= 4;
     uint row = (((high ? west.y : west.x) >> shift) & 0xFFu) | ((((high ? east.y : east.x) >> shift) & 0xFFu) << 8u);
     uint three = row >> firstColumn;
-    v += wy[j] * dot(wx, vec3(uvec3(three, three >> 1u, three >> 2u) & 1u));
+    v += w[1][j] * dot(w[0], vec3(uvec3(three, three >> 1u, three >> 2u) & 1u));
   }
   return f.spline ? v : f.value;
 }
@@ -160,7 +158,7 @@ float landFractionFineAt(FineBlocks f, ivec2 c, vec2 t, int rows) {
 float landFractionFine(vec2 latLon) {
   int rows = 8 * textureSize(uLandMask, 0).y;
   vec2 t;
-  ivec2 c = landMaskFineCell(latLon, rows, t);
+  ivec2 c = landMaskCellAt(latLon, rows, t);
   FineBlocks f = landMaskFineBlocks(c.x - 1, c.x + 1, max(c.y - 1, 0), min(c.y + 1, rows - 1), rows);
   return landFractionFineAt(f, c, t, rows);
 }
@@ -171,8 +169,8 @@ float landFractionFine(vec2 latLon) {
 vec4 landFractionFine4(vec2 latLon0, vec2 latLon1, vec2 latLon2, vec2 latLon3) {
   int rows = 8 * textureSize(uLandMask, 0).y, cols = 2 * rows;
   vec2 t0, t1, t2, t3;
-  ivec2 c0 = landMaskFineCell(latLon0, rows, t0), c1 = landMaskFineCell(latLon1, rows, t1);
-  ivec2 c2 = landMaskFineCell(latLon2, rows, t2), c3 = landMaskFineCell(latLon3, rows, t3);
+  ivec2 c0 = landMaskCellAt(latLon0, rows, t0), c1 = landMaskCellAt(latLon1, rows, t1);
+  ivec2 c2 = landMaskCellAt(latLon2, rows, t2), c3 = landMaskCellAt(latLon3, rows, t3);
   // Columns unwrapped next to sample 0's (across the antimeridian).
   c1.x += c1.x - c0.x > rows ? -cols : (c0.x - c1.x > rows ? cols : 0);
   c2.x += c2.x - c0.x > rows ? -cols : (c0.x - c2.x > rows ? cols : 0);

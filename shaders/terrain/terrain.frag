@@ -98,6 +98,7 @@ void main() {
   // kilometres apart (a staircase of straight lines along the coast from 30 km). Tiles that are
   // land at every vertex skip it (a lake narrower than their vertex spacing does not show).
   float lat = vInfo.y, lon = vInfo.z;
+  vec3 up = vec3(cos(lat) * cos(lon), cos(lat) * sin(lon), sin(lat));
 #ifndef TERRAIN_LAND_ONLY
   // The mask's coast as the pixel's footprint on the ground resolves it (the globe's and the
   // grid's too). Below the ceiling the mesh's zero crossing lies up to a vertex spacing off
@@ -105,9 +106,8 @@ void main() {
   // layer calls land, a spit it calls sea), so land the mask holds stays drawn where the
   // mesh dips under the sea, else the grid's sea (which stops at the mask's coast) leaves a gap.
   vec3 viewDir = normalize(vRelative);
-  vec3 vertical = vec3(cos(lat) * cos(lon), cos(lat) * sin(lon), sin(lat));
   float maskFootprintRad = coastFootprintRad(length(vRelative), max(length(dFdx(viewDir)), length(dFdy(viewDir))),
-                                             -dot(vertical, viewDir));
+                                             -dot(up, viewDir));
   bool maskCoast = uTileHasWater == 1 && landMaskOn();
   if (uSeaFromGlobe == 1 && maskCoast) {
     if (landFraction(vec2(lat, lon), maskFootprintRad) < 0.5) discard;
@@ -124,7 +124,6 @@ void main() {
     heightM = 0.0;
   }
 #endif
-  vec3 up = vec3(cos(lat) * cos(lon), cos(lat) * sin(lon), sin(lat));
   // Triangles that collapse at a pole give no normal (zero or NaN): the vertical stands in.
   vec3 n = dot(vNormal, vNormal) > 1e-20 ? normalize(vNormal) : up;
   float t = length(vRelative);
