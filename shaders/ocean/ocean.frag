@@ -4,6 +4,14 @@
 // mip-mapped moments), the back-facing fix, whitecaps from the Jacobian's statistics in the
 // footprint (Dupuy & Bruneton 2012), then Algorithm 5.1 (ocean/lighting.glsl), with the
 // globe's aerial perspective on top.
+// OCEAN_DEFERRED: a full-screen pass per sea class reading the grid's values from the surface
+// buffer (ocean/sea_surface.glsl, render/OceanRenderer::drawDeferred), once per pixel; the
+// coast test was the surface pass's. Otherwise the grid's own fragments, with their varyings.
+#ifdef OCEAN_DEFERRED
+#define SEA_IN
+#else
+#define SEA_IN in
+#endif
 #include "common/types.glsl"
 #include "geo/ellipsoid.glsl"
 #include "ocean/wind.glsl"
@@ -15,14 +23,21 @@
 #include "terrain/shadow.glsl"
 #include "ocean/water_volume.glsl"  // the sea floor seen through the water (seed 001)
 
-in vec2 vOceanXY;
-in vec3 vRelative;
-in vec2 vPatternMean;  // the patterns the grid's vertices looked up (ocean/grid.vert)
-in vec3 vPatternCov;
-in vec2 vPatternJacobian;
-in float vPatternShare[PATTERN_COUNT];
-in vec2 vPatternBand[PATTERN_COUNT];
+SEA_IN vec2 vOceanXY;
+SEA_IN vec3 vRelative;
+SEA_IN vec2 vPatternMean;  // the patterns the grid's vertices looked up (ocean/grid.vert)
+SEA_IN vec3 vPatternCov;
+SEA_IN vec2 vPatternJacobian;
+SEA_IN float vPatternShare[PATTERN_COUNT];
+#ifndef OCEAN_DEFERRED
+in vec2 vPatternBand[PATTERN_COUNT];  // patternBands at the vertex's wind
 in vec3 vPatternAveragedFrom[PATTERN_COUNT + 1];
+#endif
+#ifndef OCEAN_SIMPLE_SKY
+SEA_IN vec3 vTransmittance;  // aerial perspective, per vertex (ocean/grid.vert)
+SEA_IN vec3 vInscatter;
+#endif
+#include "ocean/sea_surface.glsl"
 #include "render/outputs.glsl"
 
 uniform mat3 uEcefToOcean;
@@ -31,13 +46,23 @@ uniform vec3 uSunDirEcef;
 vec3 oceanSurfaceRadiance(vec3 relative, vec3 radiance);  // aerial perspective (the pass)
 
 void main() {
+#ifdef OCEAN_DEFERRED
+  float footprint;
+  vec2 floorSlope;
+  readSeaSurface(footprint, floorSlope);
+#endif
   mat3 oceanToEcef = transpose(uEcefToOcean);
   float dist = length(vRelative);
   vec3 dir = vRelative / dist;
   vec3 v = -dir;
   // Pixel footprint from the screen-space derivatives of the undisplaced position (taken
   // before any discard, while the whole quad is alive).
+#ifndef OCEAN_DEFERRED
   float footprint = max(length(dFdx(vOceanXY)), length(dFdy(vOceanXY)));
+#ifndef OCEAN_NO_WATER_VOLUME
+  vec2 floorSlope = floorDepthSlope(vOceanXY, vFloorDepthM);  // the floor's plane in the triangle
+#endif
+#endif
 #ifdef OCEAN_VALIDATION_REFERENCE
   // Validation reference: the rasterised triangle's plane, the geometry the sample already has.
   vec3 nGeometry = normalize(cross(dFdx(vRelative), dFdy(vRelative)));
@@ -51,7 +76,11 @@ void main() {
   vec2 wind = localWind(latLon);  // speed, azimuth
   SeaSurface sea = oceanSurface(vOceanXY, max(footprint, 1e-4), wind,
                                 PatternSums(vPatternMean, vPatternCov, vPatternJacobian, vPatternShare),
+#ifdef OCEAN_DEFERRED
+                                patternBands(wind.x));
+#else
                                 PatternBands(vPatternBand, vPatternAveragedFrom));
+#endif
 #ifdef OCEAN_VALIDATION_CONSTANT_BRDF
   sea.covariance = vec3(patternTable(PATTERN_COUNT, wind.x).xy, 0.0);  // the paper's constant BRDF
 #endif
@@ -83,7 +112,8 @@ void main() {
 #else
   float foam = whitecapCoverage(sea.jacobian);
 #ifndef OCEAN_NO_WATER_VOLUME  // compiled out when no sea floor in view is within reach
-  prepareWaterVolume(vRelative, v, n, up, latLon, vOceanXY, uEcefToOcean, max(footprint, 1e-4), wind, uSunDirEcef);
+  prepareWaterVolume(vRelative, v, n, up, latLon, vOceanXY, uEcefToOcean, max(footprint, 1e-4), wind, uSunDirEcef,
+                     floorSlope);
 #endif
   vec3 radiance = seaRadianceWithFoam(v, n, windDir, sea.covariance, up, uSunDirEcef, foam);
   fragRadiance = vec4(oceanSurfaceRadiance(vRelative, radiance), 1.0);
@@ -94,7 +124,5 @@ void main() {
 #ifdef OCEAN_SIMPLE_SKY
 vec3 oceanSurfaceRadiance(vec3 relative, vec3 radiance) { return radiance; }
 #else
-in vec3 vTransmittance;  // aerial perspective, per vertex (ocean/grid.vert)
-in vec3 vInscatter;
 vec3 oceanSurfaceRadiance(vec3 relative, vec3 radiance) { return radiance * vTransmittance + vInscatter; }
 #endif

@@ -8,7 +8,7 @@
 // The water's K_d per RGB channel is Jerlov's (1976, Table XXVII) at 600, 550 and 450 nm
 // (uWaterAttenuation, terrain/shallow.glsl; the C++ twin's ocean::jerlovWater).
 //
-// Needs (included first): ocean/patterns.glsl, ocean/brdf.glsl, ocean/lighting.glsl (which
+// Needs (included first): SEA_IN (ocean/ocean.frag), ocean/patterns.glsl, ocean/brdf.glsl, ocean/lighting.glsl (which
 // brings terrain/shallow.glsl and ocean/water_optics.glsl), render/elevation.glsl,
 // terrain/shadow.glsl, common/types.glsl.
 #include "terrain/detail.glsl"
@@ -133,17 +133,25 @@ float secantRoot(float sA, float gapA, float sB, float gapB, float sMax) {
   return slope < -1e-6 ? clamp(sB - gapB / slope, 0.0, sMax) : sMax;
 }
 
+// Where a ray leaving the surface `gap0` m above the floor, going down by `down` (< 0) and
+// horizontally across a floor whose depth grows by `depthGain` per metre of path, meets that
+// plane, in [0, sMax]; sMax when it does not (the floor falls away as fast as the ray goes down).
+float floorPlaneRoot(float gap0, float down, float depthGain, float sMax) {
+  float closing = -down - depthGain;  // m of gap closed per metre along the ray
+  return closing > 1e-6 ? min(gap0 / closing, sMax) : sMax;
+}
+
 // Depth of the floor under the grid's vertices, m (ocean/water_volume_vertex.glsl), linear
 // across a cell of a few pixels: the search's first guess.
 #ifndef OCEAN_NO_WATER_VOLUME
-in float vFloorDepthM;
+SEA_IN float vFloorDepthM;
 // Above 0 where a vertex of the triangle has the land mask's fine level moving the floor (its
 // coast differs from the 2′ one's there): only those pixels pay for the fine level's lookups
 // in the search below (llvmpipe: ~20 % of the floor class over the Bahamas' cays otherwise).
-in float vFloorFine;
+SEA_IN float vFloorFine;
 #ifndef OCEAN_SIMPLE_SKY
-in vec3 vWaterSunE;  // the Sun's and the sky's irradiance at sea level
-in vec3 vWaterSkyE;
+SEA_IN vec3 vWaterSunE;  // the Sun's and the sky's irradiance at sea level
+SEA_IN vec3 vWaterSkyE;
 #endif
 #else
 const float vFloorDepthM = 1e4;
@@ -154,7 +162,7 @@ const float vFloorFine = 0.0;
 // geodetic vertical `up`, at `latLon`, `oceanXY` in the ocean frame whose rows are
 // `ecefToOcean`), pixel footprint `footprintM` (m), local wind (speed, azimuth).
 void prepareWaterVolume(vec3 rel, vec3 v, vec3 n, vec3 up, vec2 latLon, vec2 oceanXY,
-                        mat3 ecefToOcean, float footprintM, vec2 wind, vec3 sunE) {
+                        mat3 ecefToOcean, float footprintM, vec2 wind, vec3 sunE, vec2 floorSlope) {
   vec3 k = uWaterAttenuation;
   float dMax = waterMaxPathM(k, WATER_EPSILON);
   float gap0 = max(vFloorDepthM, 0.0);  // ray height minus floor height at the surface (>= 0)
@@ -169,20 +177,26 @@ void prepareWaterVolume(vec3 rel, vec3 v, vec3 n, vec3 up, vec2 latLon, vec2 oce
   down = dot(t, up);
   mat3 frame = localFrame(up);
   vec2 horizontal = vec2(dot(t, frame[0]), dot(t, frame[1]));
-  // The floor along the ray (seed 001 §3.2's search, two lookups instead of a fixed march): the
-  // first guess is a flat floor at the vertices' depth, then two secant steps through the
-  // layer's heights (exact on a flat floor, ~1 % of the depth on the steepest shelves of a
-  // 5' layer; the layer is near-planar over d_max).
-  float s1 = min(gap0 / -down, dMax);
-  float footprintRad = vFloorFine > 0.0 ? footprintM / WGS84_A : 1e9;
-  float gap1 = s1 * down - floorHeightAlong(latLon, horizontal, s1, footprintRad);
-  float s2 = s1 > 1e-3 ? secantRoot(0.0, gap0, s1, gap1, dMax) : 0.0;  // 0: floor at the surface
-  float gap2 = s2 * down - floorHeightAlong(latLon, horizontal, s2, footprintRad);
-  if (gap2 > 0.0 && s2 >= dMax) {
+  // The floor along the ray (seed 001 §3.2's search). Where the land mask's fine level does not
+  // move the floor, the layer is bilinear over kilometres and the grid's triangle, a few pixels
+  // wide, holds it as a plane: the ray meets that plane (no lookup). Where the fine coast moves
+  // it, two secant steps through the layer's heights from a flat floor at the vertices' depth
+  // (exact on a flat floor, ~1 % of the depth on the steepest shelves of a 5' layer).
+  float sHit = floorPlaneRoot(gap0, down, dot(floorSlope, (ecefToOcean * t).xy), dMax);
+  float gapHit = 0.0;
+  for (int fine = 0; fine < (vFloorFine > 0.0 ? 1 : 0); ++fine) {  // 0/1 trips: llvmpipe skips it
+    float s1 = min(gap0 / -down, dMax);
+    float footprintRad = footprintM / WGS84_A;
+    float gap1 = s1 * down - floorHeightAlong(latLon, horizontal, s1, footprintRad);
+    float s2 = s1 > 1e-3 ? secantRoot(0.0, gap0, s1, gap1, dMax) : 0.0;  // 0: floor at the surface
+    float gap2 = s2 * down - floorHeightAlong(latLon, horizontal, s2, footprintRad);
+    sHit = abs(s2 - s1) > 1e-3 ? secantRoot(s1, gap1, s2, gap2, dMax) : s2;
+    gapHit = s2 >= dMax ? gap2 : 0.0;
+  }
+  if (sHit >= dMax && gapHit >= 0.0) {
     gWater = WaterVolume(true, uSeaColor);  // no floor within d_max
     return;
   }
-  float sHit = abs(s2 - s1) > 1e-3 ? secantRoot(s1, gap1, s2, gap2, dMax) : s2;
   float depthM = max(-(sHit * down), 0.0);
   vec3 floorRel = rel + sHit * t;
   // The Sun refracted through the mean surface, its path down to the floor, and the point

@@ -4,9 +4,11 @@
 #include <limits>
 #include <optional>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
+#include "core/Error.hpp"
 #include "gl/DriverProfile.hpp"
 #include "gl/ShaderContract.hpp"
 #include "render/WaterVolume.hpp"
@@ -96,11 +98,25 @@ std::vector<std::string> oceanDefines(const Atmosphere* atmosphere, ValidationMo
   if (mode == ValidationMode::BrdfOnly) d.emplace_back("OCEAN_VALIDATION_BRDF_ONLY");
   return d;
 }
+// Whether the sea may be drawn deferred: OCEANGLOBE_SEA=forward draws it forward (for
+// comparisons), deferred or unset lets it (OceanRenderer::setDeferred).
+bool deferredAllowed() {
+  const char* e = std::getenv("OCEANGLOBE_SEA");
+  if (e == nullptr || *e == '\0' || std::string(e) == "deferred") return true;
+  if (std::string(e) == "forward") return false;
+  throw InputError("OCEANGLOBE_SEA: '" + std::string(e) + "' is not forward or deferred");
+}
+
+// The sea's classes' passes in `bench --breakdown`.
+constexpr std::array<const char*, OceanRenderer::kSeaClasses> kClassPass{
+    "ocean open sea", "ocean shadows", "ocean floor", "ocean floor shadows", "ocean coast"};
 }  // namespace
 
 OceanRenderer::OceanRenderer(const Atmosphere* atmosphere, ValidationMode mode)
     : atmosphere_(atmosphere),
+      mode_(mode),
       defines_(oceanDefines(atmosphere, mode)),
+      deferred_(deferredAllowed()),
       vao_(gl::createVertexArray()),
       indices_(gl::createBuffer()) {}
 
@@ -114,6 +130,20 @@ const gl::Program& OceanRenderer::program(unsigned features) {
   if ((features & kFeatureFrameSky) != 0) d.emplace_back("SKY_FRAME_LAYER");
   if ((features & kFeatureFrameSky) != 0 && atmosphere_->skyFilter().ripMap) d.emplace_back("SKY_RIP_MAP");
   p = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}}, d);
+  return p;
+}
+
+const gl::Program& OceanRenderer::deferredProgram(unsigned features) {
+  gl::Program& p = deferredVariants_.at(features);
+  if (p.id() != 0) return p;
+  std::vector<std::string> d = defines_;
+  d.emplace_back("OCEAN_DEFERRED");
+  d.emplace_back("SEA_NO_COAST_TEST");  // the surface pass's
+  if ((features & kFeatureWaterVolume) == 0) d.emplace_back("OCEAN_NO_WATER_VOLUME");
+  if ((features & kFeatureShadows) == 0) d.emplace_back("SHADOWS_OFF");
+  if ((features & kFeatureFrameSky) != 0) d.emplace_back("SKY_FRAME_LAYER");
+  if ((features & kFeatureFrameSky) != 0 && atmosphere_->skyFilter().ripMap) d.emplace_back("SKY_RIP_MAP");
+  p = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}}, d);
   return p;
 }
 
@@ -262,6 +292,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
              std::max(2, static_cast<int>(std::ceil(height * (1 + 0.5 * (bottom + 0.1)) / frameCellPixels_)) + 1));
 
   unsigned features = 0;
+  lastDeferred_ = false;
   if (model == OceanModel::Classic) {
     features = kFeatureCoastTest | kFeatureShadows;  // classic.frag has no variants: its uniforms
   } else {
@@ -297,6 +328,11 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     glBindTextureUnit(gl::kUnitBumpMap, bumpMap_.id());
     glBindTextureUnit(gl::kUnitFresnelRamp, fresnelRamp_.id());
     drawGrid(p);
+  } else if (const GLuint depthStencil = SeaSurfaceBuffer::boundDepthStencilTexture();
+             deferred_ && mode_ == ValidationMode::Filtered && depthStencil != 0 &&
+             gl::driverProfile().stencilExport) {
+    lastDeferred_ = true;
+    drawDeferred(view, width, height, patterns, frame, lighting, amplitudeScale, wind, features, margin, depthStencil);
   } else if (lighting.classes && (features & (kFeatureWaterVolume | kFeatureCoastTest)) != 0 &&
              drawTargetHasStencil() && gl::driverProfile().stencilExport) {  // sea_classify.frag
     drawClassified(view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
@@ -365,6 +401,41 @@ double OceanRenderer::shadowReachM(const OceanLighting& lighting, const geo::Cam
   return heightM / std::tan(elevation) + (volume ? (1.0 + kTanCritical) * waterReachM : 0.0);
 }
 
+unsigned OceanRenderer::setClassUniforms(const gl::Program& p, const geo::CameraView& view,
+                                         const OceanPatterns& patterns, const OceanLighting& lighting,
+                                         double amplitudeScale, unsigned features) const {
+  const bool volume = (features & kFeatureWaterVolume) != 0, coast = (features & kFeatureCoastTest) != 0;
+  const double reachM = ocean::waterMaxPathM(ocean::jerlovWater(ocean::kDefaultWater).attenuationPerM,
+                                             ocean::kWaterEpsilon);
+  p.set("uWaterReachM", volume ? static_cast<float>(reachM) : -1e30f);
+  p.set("uCoastClass", coast ? 1 : 0);
+  p.set("uLayerMaxSlope", layerMaxSlope_);
+  p.set("uWaveReachM", static_cast<float>(amplitudeScale * patterns.amplitudeBoundM()));
+  // The terrain's shadows routed to classes 2 and 4 (and 5) where they can reach, if the frame
+  // has them.
+  const double shadowReach = (features & kFeatureShadows) != 0 ? shadowReachM(lighting, view, volume, reachM) : -1.0;
+  p.set("uShadowReachM", static_cast<float>(shadowReach));
+  return shadowReach >= 0.0 ? kFeatureShadows : 0u;
+}
+
+std::array<unsigned, OceanRenderer::kSeaClasses> OceanRenderer::classFeatures(unsigned features,
+                                                                              unsigned routedShadows) {
+  const unsigned routed = kFeatureWaterVolume | kFeatureCoastTest | routedShadows;
+  return {features & ~routed, features & ~(kFeatureCoastTest | kFeatureWaterVolume),
+          features & ~(kFeatureCoastTest | routedShadows), features & ~kFeatureCoastTest, features};
+}
+
+void OceanRenderer::resetClassRows() {
+  if (classRows_.id() == 0) {
+    classRows_ = gl::createBuffer();
+    glNamedBufferStorage(classRows_.id(), 2 * kSeaClasses * sizeof(GLint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  }
+  std::array<GLint, 2 * kSeaClasses> none{};
+  for (std::size_t k = 0; k < kSeaClasses; ++k) none.at(2 * k) = kNoRow, none.at(2 * k + 1) = -1;
+  glNamedBufferSubData(classRows_.id(), 0, sizeof none, none.data());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kClassRowsBinding, classRows_.id());
+}
+
 void OceanRenderer::drawClassified(const geo::CameraView& view, int height, const OceanPatterns& patterns,
                                    const ocean::OceanFrame& frame, const OceanLighting& lighting,
                                    double amplitudeScale, const WindTextures& wind, unsigned features,
@@ -373,22 +444,9 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
     std::vector<std::string> d = defines_;
     d.emplace_back("OCEAN_SEA_CLASSIFY");
     classify_ = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_classify.frag"}}, d);
-    classRows_ = gl::createBuffer();
-    glNamedBufferStorage(classRows_.id(), 2 * kSeaClasses * sizeof(GLint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   }
-  const bool volume = (features & kFeatureWaterVolume) != 0, coast = (features & kFeatureCoastTest) != 0;
   prepare(classify_, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
-  const double reachM = ocean::waterMaxPathM(ocean::jerlovWater(ocean::kDefaultWater).attenuationPerM,
-                                             ocean::kWaterEpsilon);
-  classify_.set("uWaterReachM", volume ? static_cast<float>(reachM) : -1e30f);
-  classify_.set("uCoastClass", coast ? 1 : 0);
-  classify_.set("uLayerMaxSlope", layerMaxSlope_);
-  classify_.set("uWaveReachM", static_cast<float>(amplitudeScale * patterns.amplitudeBoundM()));
-  // The terrain's shadows routed to classes 2 and 4 (and 5) where they can reach, if the frame
-  // has them.
-  const double shadowReach = (features & kFeatureShadows) != 0 ? shadowReachM(lighting, view, volume, reachM) : -1.0;
-  classify_.set("uShadowReachM", static_cast<float>(shadowReach));
-  const unsigned routedShadows = shadowReach >= 0.0 ? kFeatureShadows : 0u;
+  const unsigned routedShadows = setClassUniforms(classify_, view, patterns, lighting, amplitudeScale, features);
   // The classes: the largest of the grid's fragments in a pixel (folds at grazing angles),
   // only where the sea passes the depth test (in front of the terrain).
   glEnable(GL_STENCIL_TEST);
@@ -398,16 +456,14 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthMask(GL_FALSE);
-  std::array<GLint, 2 * kSeaClasses> none{};
-  for (std::size_t k = 0; k < kSeaClasses; ++k) none.at(2 * k) = kNoRow, none.at(2 * k + 1) = -1;
-  glNamedBufferSubData(classRows_.id(), 0, sizeof none, none.data());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kClassRowsBinding, classRows_.id());
+  resetClassRows();
   if (timer_ != nullptr) timer_->mark("ocean classify");
   // Fragments behind the terrain record their rows too (the shader's side effects come before
   // the depth test); where none passes it (the sea hidden by mountains) nothing is drawn.
   const bool seaVisible = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] { drawGrid(classify_); }) != 0;
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::array<GLint, 2 * kSeaClasses> rows = none;
+  std::array<GLint, 2 * kSeaClasses> rows{};
+  for (std::size_t k = 0; k < kSeaClasses; ++k) rows.at(2 * k) = kNoRow, rows.at(2 * k + 1) = -1;
   if (seaVisible) glGetNamedBufferSubData(classRows_.id(), 0, sizeof rows, rows.data());
   if (timer_ != nullptr) timer_->mark("ocean");
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -417,20 +473,14 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
   // coast test), so a class's shading costs only its pixels, and its vertices only its rows.
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glStencilMask(0);
-  const unsigned routed = kFeatureWaterVolume | kFeatureCoastTest | routedShadows;
-  // Per class (sea_classify.frag): its features.
-  const std::array<unsigned, kSeaClasses> classFeatures{
-      features & ~routed, features & ~(kFeatureCoastTest | kFeatureWaterVolume),
-      features & ~(kFeatureCoastTest | routedShadows), features & ~kFeatureCoastTest, features};
+  const std::array<unsigned, kSeaClasses> perClass = classFeatures(features, routedShadows);
   for (std::size_t k = 0; k < kSeaClasses; ++k) {
     const GLint first = rows.at(2 * k), last = rows.at(2 * k + 1);
     if (last < first) continue;  // no fragment of the grid is of this class
-    static constexpr std::array<const char*, kSeaClasses> kClassPass{
-        "ocean open sea", "ocean shadows", "ocean floor", "ocean floor shadows", "ocean coast"};
     if (timer_ != nullptr) timer_->mark(kClassPass.at(k));
     classesDrawn_ |= 1u << k;
-    const gl::Program& p = program(classFeatures.at(k));
-    prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, classFeatures.at(k), margin);
+    const gl::Program& p = program(perClass.at(k));
+    prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, perClass.at(k), margin);
     glStencilFunc(GL_EQUAL, static_cast<GLint>(k + 1), 0xff);
     // Triangle rows r span vertex rows r and r + 1; kFoldRows more each side for the grid's
     // folds (a nearer fragment of another row in a pixel whose class a farther one set).
@@ -443,6 +493,75 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
       draw();
   }
   if (timer_ != nullptr) timer_->mark("ocean");
+  glStencilMask(0xff);
+  glClear(GL_STENCIL_BUFFER_BIT);  // as the caller had it (the globe's parts count from 0)
+  glDisable(GL_STENCIL_TEST);
+}
+
+void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int height, const OceanPatterns& patterns,
+                                 const ocean::OceanFrame& frame, const OceanLighting& lighting,
+                                 double amplitudeScale, const WindTextures& wind, unsigned features,
+                                 const glm::vec4& margin, GLuint depthStencil) {
+  // The surface pass: with classes where the frame has a floor or a coast to route.
+  const bool classes = lighting.classes && (features & (kFeatureWaterVolume | kFeatureCoastTest)) != 0;
+  const unsigned surfaceKey = (features & (kFeatureWaterVolume | kFeatureCoastTest)) | (classes ? 4u : 0u);
+  gl::Program& surface = surfaceVariants_.at(surfaceKey);
+  if (surface.id() == 0) {
+    std::vector<std::string> d = defines_;
+    if ((features & kFeatureWaterVolume) == 0) d.emplace_back("OCEAN_NO_WATER_VOLUME");
+    if ((features & kFeatureCoastTest) == 0) d.emplace_back("SEA_NO_COAST_TEST");
+    if (classes) d.emplace_back("OCEAN_SEA_CLASSIFY");
+    surface = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_surface.frag"}}, d);
+  }
+  prepare(surface, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
+  const unsigned routedShadows =
+      classes ? setClassUniforms(surface, view, patterns, lighting, amplitudeScale, features) : kFeatureShadows;
+  if (classes) resetClassRows();
+  GLint target = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+  surface_.bindForWriting(width, height, depthStencil);
+  // Each pixel's class is its nearest fragment's (depth-tested, its values in the buffer).
+  glEnable(GL_STENCIL_TEST);
+  glStencilMask(0xff);
+  glClear(GL_STENCIL_BUFFER_BIT);
+  glStencilFunc(GL_ALWAYS, 0, 0xff);  // the reference is the shader's (gl_FragStencilRefARB)
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  if (timer_ != nullptr) timer_->mark("ocean surface");
+  const bool seaVisible = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] { drawGrid(surface); }) != 0;
+  std::array<GLint, 2 * kSeaClasses> rows{};
+  rows.at(0) = 0, rows.at(1) = 0;  // without classes, all is class 1
+  for (std::size_t k = 1; k < kSeaClasses; ++k) rows.at(2 * k) = kNoRow, rows.at(2 * k + 1) = -1;
+  if (classes && seaVisible) {
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(classRows_.id(), 0, sizeof rows, rows.data());
+  }
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
+  // The shading: a full-screen pass per class present, only its pixels.
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glStencilMask(0);
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  surface_.bindForReading();
+  glBindVertexArray(vao_.id());
+  std::array<unsigned, kSeaClasses> perClass = classFeatures(features, routedShadows);
+  if (!classes) perClass.at(0) = features & ~kFeatureCoastTest;  // one class: all but the coast test
+  for (std::size_t k = 0; k < kSeaClasses && seaVisible; ++k) {
+    if (rows.at(2 * k + 1) < rows.at(2 * k)) continue;  // no pixel of this class
+    if (timer_ != nullptr) timer_->mark(kClassPass.at(k));
+    if (classes) classesDrawn_ |= 1u << k;
+    const gl::Program& p = deferredProgram(perClass.at(k));
+    prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, perClass.at(k), margin);
+    p.use();
+    glStencilFunc(GL_EQUAL, static_cast<GLint>(k + 1), 0xff);
+    const auto draw = [] { glDrawArrays(GL_TRIANGLES, 0, 3); };
+    if (countClassSamples_ && classes)
+      classSamples_.at(k) = gl::queryResult(GL_SAMPLES_PASSED, draw);
+    else
+      draw();
+  }
+  if (timer_ != nullptr) timer_->mark("ocean");
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);
   glStencilMask(0xff);
   glClear(GL_STENCIL_BUFFER_BIT);  // as the caller had it (the globe's parts count from 0)
   glDisable(GL_STENCIL_TEST);

@@ -15,6 +15,7 @@
 #include "ocean/OceanFrame.hpp"
 #include "render/Atmosphere.hpp"
 #include "render/OceanPatterns.hpp"
+#include "render/SeaSurfaceBuffer.hpp"
 #include "render/TerrainRenderer.hpp"
 #include "render/WaterVolume.hpp"
 #include "render/WindTextures.hpp"
@@ -105,6 +106,12 @@ class OceanRenderer {
   /// The samples each class shaded in the last classified draw of the last frame that counted
   /// them (setCountClassSamples).
   [[nodiscard]] const std::array<std::uint64_t, kSeaClasses>& classSamples() const { return classSamples_; }
+  /// Whether the filtered sea may be drawn deferred (drawDeferred) where the target allows it
+  /// (single-sampled, a depth-stencil texture, stencil export); on by default. Off, the grid's
+  /// fragments shade the sea themselves (as under multisampling and in `validate`).
+  void setDeferred(bool on) { deferred_ = on; }
+  /// Whether the last draw was deferred.
+  [[nodiscard]] bool lastDrawDeferred() const { return lastDeferred_; }
   /// Grid cell size in pixels (the paper's ~8 px); smaller = finer geometry, slower.
   void setCellPixels(int pixels) { cellPixels_ = pixels; }
   /// Whether the grid's cells may grow (2 or kGrownCellFactor-fold, to at most kGrownCellMaxRad
@@ -171,6 +178,26 @@ class OceanRenderer {
                       const ocean::OceanFrame& frame, const OceanLighting& lighting,
                       double amplitudeScale, const WindTextures& wind, unsigned features,
                       const glm::vec4& margin);
+  /// The sea deferred: one draw of the grid writes, per pixel, its nearest fragment's values into
+  /// the surface buffer (shaders/ocean/sea_surface.frag; the coast test there) and its class
+  /// into the stencil; then each class present is shaded by a full-screen pass of its program
+  /// (ocean.frag with OCEAN_DEFERRED), stencil-tested: every pixel is shaded once, where the
+  /// grid's own fragments shade the blocks along every triangle's edges twice on llvmpipe.
+  /// `depthStencil`: the bound framebuffer's (SeaSurfaceBuffer::boundDepthStencilTexture). The
+  /// stencil is left 0.
+  void drawDeferred(const geo::CameraView& view, int width, int height, const OceanPatterns& patterns,
+                    const ocean::OceanFrame& frame, const OceanLighting& lighting, double amplitudeScale,
+                    const WindTextures& wind, unsigned features, const glm::vec4& margin, GLuint depthStencil);
+  /// Sets the classifying uniforms of sea_class.glsl on `p`; returns the shadows routed to
+  /// classes (kFeatureShadows or 0).
+  unsigned setClassUniforms(const gl::Program& p, const geo::CameraView& view, const OceanPatterns& patterns,
+                            const OceanLighting& lighting, double amplitudeScale, unsigned features) const;
+  /// Each class's features (sea_classify.frag's list) given the frame's and the routed shadows.
+  static std::array<unsigned, kSeaClasses> classFeatures(unsigned features, unsigned routedShadows);
+  /// Clears the classes' row bounds and binds their buffer.
+  void resetClassRows();
+  /// The deferred sea's shading program for `features` (coast test excluded), compiled on first use.
+  const gl::Program& deferredProgram(unsigned features);
   /// How far from land (m along the sea) the terrain's shadows can fall on the sea's surface or
   /// on the floor seen through it: the casters' height over the tangent of the Sun's elevation
   /// (the longest shadow on the sea), plus, with the water volume, how far from its pixel the
@@ -192,9 +219,15 @@ class OceanRenderer {
   /// horizon 7 km away at 4 m: 0.06°), or looking down from a few km (sea-8km: 0.70°).
   static constexpr unsigned kFeatureFrameSky = 8;
   const Atmosphere* atmosphere_;
+  ValidationMode mode_;
   std::vector<std::string> defines_;        ///< the filtered model's, whatever the features
+  bool deferred_;                           ///< setDeferred
   std::array<gl::Program, 16> variants_;    ///< by feature bits; id() 0 until compiled
   gl::Program classify_;                    ///< ocean/sea_classify.frag; id() 0 until compiled
+  std::array<gl::Program, 16> deferredVariants_;  ///< ocean.frag OCEAN_DEFERRED, by feature bits
+  std::array<gl::Program, 8> surfaceVariants_;    ///< sea_surface.frag: volume, coast, classes bits
+  SeaSurfaceBuffer surface_;
+  bool lastDeferred_ = false;
   unsigned classesDrawn_ = 0;  ///< classesDrawn()
   bool countClassSamples_ = false;
   std::array<std::uint64_t, kSeaClasses> classSamples_{};

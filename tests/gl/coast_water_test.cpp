@@ -399,6 +399,26 @@ render::FrameInput classView(const geo::Geodetic& position, double headingDeg, d
   return f;
 }
 
+// `f` drawn deferred (render/OceanRenderer::drawDeferred), then by the grid's own fragments,
+// compared as the classes are below.
+void expectDeferredMatchesForward(render::GlobeRenderer& r, const render::FrameInput& f, const std::string& name) {
+  r.ocean().setDeferred(true);
+  r.render(f);
+  EXPECT_TRUE(r.ocean().lastDrawDeferred()) << name;
+  const io::ImageRgba8 deferred = r.display();
+  save(r, name);
+  r.ocean().setDeferred(false);
+  r.render(f);
+  r.ocean().setDeferred(true);
+  EXPECT_FALSE(r.ocean().lastDrawDeferred()) << name;
+  const io::ImageRgba8 forward = r.display();
+  save(r, name + "_forward");
+  const test::Comparison c = test::compareRgb(deferred, forward, 1);
+  if (!c.within({2, 0.01, 1, 0.001}))
+    io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".diff.png"), c.diff);
+  EXPECT_TRUE(c.within({2, 0.01, 1, 0.001})) << name << ": " << c.describe();
+}
+
 // `f` drawn with the sea in classes, then by one program (saved as `name` and `name`_single),
 // compared: at most 2 levels, 1 % of the pixels over 1 level (a diff image on failure).
 void expectClassesMatchTheSingleProgram(render::GlobeRenderer& r, render::FrameInput f, const std::string& name) {
@@ -485,5 +505,34 @@ TEST(CoastWater, SeaClassesMatchTheSingleProgram) {
     r.render(f);
     EXPECT_NE(r.ocean().classesDrawn() & (deep ? kClassOpenSea : kClassFloor), 0u) << r.ocean().classesDrawn();
     expectClassesMatchTheSingleProgram(r, f, "coast_classes_" + std::to_string(int(-pitch)));
+  }
+}
+
+// The sea deferred (the grid's nearest fragment per pixel into the surface buffer, then one
+// full-screen shading per class) against the grid's own fragments shading it: the open sea
+// with the Sun's glitter, the floor and the coast from 20 m over the shelf, the island's shadow
+// on a bank (the floor with shadows). The buffer carries the grid's values as floats, the
+// smooth ones (aerial perspective, pattern shares, the water's irradiance) as half floats:
+// measured within 1 level. A pixel shaded with a wrong fragment's values, or of a wrong class,
+// differs by tens of levels.
+TEST(CoastWater, DeferredSeaMatchesTheGridsOwnFragments) {
+  auto ctx = gl::createHeadlessContext();
+  {
+    render::GlobeRenderer r(shoreShelfAndDeep());
+    expectDeferredMatchesForward(r, classView({kLat - 30.0 / 111.2, kLon, 4.0}, 10.0, -10.0, 30.0, 10.0),
+                                 "deferred_open_sea");
+  }
+  {
+    render::GlobeRenderer r(shelf());
+    expectDeferredMatchesForward(r, classView({kLat - 2.2 / 111.2, kLon, 20.0}, 10.0, -15.0, 40.0, 20.0),
+                                 "deferred_shelf");
+    EXPECT_NE(r.ocean().classesDrawn() & kClassFloor, 0u) << r.ocean().classesDrawn();
+  }
+  {
+    render::GlobeRenderer r(shadowingIsland(true));
+    expectDeferredMatchesForward(
+        r, classView({kLat - 1.0 / 110.8, kLon + 8.0 / (111.3 * std::cos(kLat * M_PI / 180.0)), 200.0}, 200.0, -25.0, 3.0, 250.0),
+        "deferred_island_bank");
+    EXPECT_NE(r.ocean().classesDrawn() & kClassFloorShadows, 0u) << r.ocean().classesDrawn();
   }
 }

@@ -1,0 +1,58 @@
+#version 450 core
+// The deferred sea's first pass (render/OceanRenderer::drawDeferred): the projected grid's
+// nearest fragment per pixel writes what its vertices hand the shading into the surface buffer
+// (ocean/sea_surface.glsl) and its class into the stencil (ocean/sea_class.glsl), after the
+// coast test where land may be near; the shading (ocean/ocean.frag with OCEAN_DEFERRED) then
+// runs once per pixel, class by class.
+#extension GL_ARB_shader_stencil_export : require
+#include "common/types.glsl"
+#include "geo/ellipsoid.glsl"
+#include "ocean/wind.glsl"
+#include "ocean/patterns.glsl"
+#include "render/elevation.glsl"
+#include "ocean/coast.glsl"
+
+in vec2 vOceanXY;
+in vec3 vRelative;
+in vec2 vPatternMean;
+in vec3 vPatternCov;
+in vec2 vPatternJacobian;
+in float vPatternShare[PATTERN_COUNT];
+#ifndef OCEAN_SIMPLE_SKY
+in vec3 vTransmittance;
+in vec3 vInscatter;
+#endif
+#ifdef OCEAN_SEA_CLASSIFY
+#include "ocean/sea_class.glsl"
+#elif !defined(OCEAN_NO_WATER_VOLUME)
+in float vFloorDepthM;
+#endif
+#ifndef OCEAN_NO_WATER_VOLUME
+in float vFloorFine;
+#ifndef OCEAN_SIMPLE_SKY
+in vec3 vWaterSunE;
+in vec3 vWaterSkyE;
+#endif
+#endif
+#define SEA_SURFACE_WRITE
+#include "ocean/sea_surface.glsl"
+
+void main() {
+  // Derivatives first, while the pixel's quad is whole.
+  float footprint = max(length(dFdx(vOceanXY)), length(dFdy(vOceanXY)));
+#ifndef OCEAN_NO_WATER_VOLUME
+  vec2 floorSlope = floorDepthSlope(vOceanXY, vFloorDepthM);
+#else
+  vec2 floorSlope = vec2(0.0);
+#endif
+#ifdef OCEAN_SEA_CLASSIFY
+  // The coast test only in triangles where land may be near (a loop of 0 or 1 trips: llvmpipe
+  // skips it where no pixel of a block enters).
+  for (int near = 0; near < (vNearLand > 0.0 ? 1 : 0); ++near) KEEP_SEA_SAMPLES(vRelative)
+  gl_FragStencilRefARB = seaClassOfFragment();
+#else
+  KEEP_SEA_SAMPLES(vRelative)
+  gl_FragStencilRefARB = 1;
+#endif
+  writeSeaSurface(footprint, floorSlope);
+}

@@ -1,0 +1,50 @@
+#include "render/SeaSurfaceBuffer.hpp"
+
+#include <array>
+
+#include "gl/ShaderContract.hpp"
+#include "core/Error.hpp"
+
+namespace og::render {
+
+GLuint SeaSurfaceBuffer::boundDepthStencilTexture() {
+  GLint fbo = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
+  if (fbo == 0) return 0;
+  const auto name = static_cast<GLuint>(fbo);
+  GLint type = GL_NONE, object = 0;
+  glGetNamedFramebufferAttachmentParameteriv(name, GL_DEPTH_STENCIL_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+  if (type != GL_TEXTURE) return 0;
+  glGetNamedFramebufferAttachmentParameteriv(name, GL_DEPTH_STENCIL_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &object);
+  GLint samples = 0;
+  glGetTextureLevelParameteriv(static_cast<GLuint>(object), 0, GL_TEXTURE_SAMPLES, &samples);
+  return samples <= 1 ? static_cast<GLuint>(object) : 0;
+}
+
+void SeaSurfaceBuffer::bindForWriting(int width, int height, GLuint depthStencil) {
+  if (width != width_ || height != height_ || layers_.id() == 0) {
+    layers_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
+    glTextureStorage3D(layers_.id(), 1, GL_RGBA32UI, width, height, kLayers);
+    glTextureParameteri(layers_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(layers_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    fbo_ = gl::createFramebuffer();
+    std::array<GLenum, kLayers> buffers{};
+    for (int i = 0; i < kLayers; ++i) {
+      glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), layers_.id(), 0, i);
+      buffers.at(static_cast<std::size_t>(i)) = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
+    }
+    glNamedFramebufferDrawBuffers(fbo_.id(), kLayers, buffers.data());
+    width_ = width, height_ = height, depthStencil_ = 0;
+  }
+  if (depthStencil != depthStencil_) {
+    glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depthStencil, 0);
+    depthStencil_ = depthStencil;
+    if (glCheckNamedFramebufferStatus(fbo_.id(), GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw InternalError("SeaSurfaceBuffer: the surface buffer's framebuffer is incomplete");
+  }
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_.id());
+}
+
+void SeaSurfaceBuffer::bindForReading() const { glBindTextureUnit(gl::kUnitSeaSurface, layers_.id()); }
+
+}  // namespace og::render

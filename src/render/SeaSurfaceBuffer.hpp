@@ -1,0 +1,30 @@
+#pragma once
+// The deferred sea's surface buffer (shaders/ocean/sea_surface.glsl): an RGBA32UI array
+// texture of kLayers layers, each a colour attachment of a framebuffer that shares the frame's
+// depth-stencil texture, so that the projected grid's surface pass is depth-tested against the
+// terrain and writes the sea's classes into the frame's stencil (render/OceanRenderer).
+#include "gl/Objects.hpp"
+
+namespace og::render {
+
+class SeaSurfaceBuffer {
+ public:
+  static constexpr int kLayers = 7;  ///< SEA_SURFACE_LAYERS
+
+  /// The single-sampled 2D depth-stencil texture attached to the bound draw framebuffer, 0
+  /// where it has none (the default framebuffer, a renderbuffer, a multisample texture).
+  [[nodiscard]] static GLuint boundDepthStencilTexture();
+  /// Makes the buffer `width` x `height` over `depthStencil` (boundDepthStencilTexture) and binds
+  /// its framebuffer with the kLayers draw buffers; remade only when either changes.
+  void bindForWriting(int width, int height, GLuint depthStencil);
+  /// Binds the texture to gl::kUnitSeaSurface for the shading passes.
+  void bindForReading() const;
+
+ private:
+  gl::Texture layers_;
+  gl::Framebuffer fbo_;
+  int width_ = 0, height_ = 0;
+  GLuint depthStencil_ = 0;
+};
+
+}  // namespace og::render
