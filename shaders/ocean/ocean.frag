@@ -9,6 +9,7 @@
 // coast test was the surface pass's. Otherwise the grid's own fragments, with their varyings.
 #ifdef OCEAN_DEFERRED
 #define SEA_IN
+#define PATTERN_BANDS_PER_PIXEL  // ocean/patterns.glsl
 #else
 #define SEA_IN in
 #endif
@@ -77,7 +78,9 @@ void main() {
   SeaSurface sea = oceanSurface(vOceanXY, max(footprint, 1e-4), wind,
                                 PatternSums(vPatternMean, vPatternCov, vPatternJacobian, vPatternShare),
 #ifdef OCEAN_DEFERRED
-                                patternBands(wind.x));
+                                PatternBands(vec2[PATTERN_COUNT](vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0)),
+                                             vec3[PATTERN_COUNT + 1](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0),
+                                                                     vec3(0.0), vec3(0.0))));  // unread
 #else
                                 PatternBands(vPatternBand, vPatternAveragedFrom));
 #endif

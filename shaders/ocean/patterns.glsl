@@ -211,6 +211,26 @@ PatternBands patternBands(float speedMs) {
   return b;
 }
 
+// PatternBands.averagedFrom[first] alone: the averaged-out statistics from pattern `first` on
+// at a wind (m/s), for a pixel that looks the tables up itself (PATTERN_BANDS_PER_PIXEL).
+vec3 patternAveragedFrom(int first, float speedMs) {
+  vec3 sum = vec3(patternTable(PATTERN_COUNT, speedMs).xy, 0.0);
+  for (int i = PATTERN_COUNT - 1; i >= first; --i)
+    sum += vec3(patternTable(i, speedMs).zw, patternTable(PATTERN_COUNT + 1 + i, speedMs).x);
+  return sum;
+}
+
+// Where oceanSurface finds the per-wind table values: the vertices' (`bands`), or with
+// PATTERN_BANDS_PER_PIXEL (the deferred sea, which has no vertices) the tables themselves,
+// only the entries the pixel's footprint needs.
+#ifdef PATTERN_BANDS_PER_PIXEL
+#define PATTERN_BAND(bands, i, speedMs) patternBand(i, speedMs)
+#define PATTERN_AVERAGED_FROM(bands, first, speedMs) patternAveragedFrom(first, speedMs)
+#else
+#define PATTERN_BAND(bands, i, speedMs) bands.band[i]
+#define PATTERN_AVERAGED_FROM(bands, first, speedMs) bands.averagedFrom[first]
+#endif
+
 // The vertices' part of the resolved patterns (patternVertexShare) at xy for pixels of
 // footprint `pixelFootprintM` (m) there, for the grid's vertex shader to interpolate.
 PatternSums oceanVertexPatterns(vec2 xy, float pixelFootprintM, vec2 wind) {
@@ -248,11 +268,11 @@ SeaSurface oceanSurface(vec2 xy, float footprintM, vec2 wind, PatternSums vertex
   while (first < resolved && vertexSums.share[first] >= 0.999) ++first;
   for (int i = first; i < resolved; ++i) {
     float lod = patternLod(footprintM, i);
-    addPatternStatistics(sums, p, wb, windField, i, lod, bands.band[i], 1.0 - vertexSums.share[i]);
+    addPatternStatistics(sums, p, wb, windField, i, lod, PATTERN_BAND(bands, i, wind.x), 1.0 - vertexSums.share[i]);
   }
   // The patterns averaged out entirely and the tail below the finest: their statistics at this
   // wind, analytic.
-  vec3 averaged = bands.averagedFrom[resolved];
+  vec3 averaged = PATTERN_AVERAGED_FROM(bands, resolved, wind.x);
   vec3 cov = sums.cov + vec3(averaged.xy, 0.0);
   // Faded-out waves (12-20 km): what the mean normal no longer shows goes into the BRDF.
   float a = uPatternAmplitude;

@@ -329,8 +329,8 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     glBindTextureUnit(gl::kUnitFresnelRamp, fresnelRamp_.id());
     drawGrid(p);
   } else if (const GLuint depthStencil = SeaSurfaceBuffer::boundDepthStencilTexture();
-             deferred_ && mode_ == ValidationMode::Filtered && depthStencil != 0 &&
-             gl::driverProfile().stencilExport) {
+             deferred_ && mode_ == ValidationMode::Filtered && frameCellPixels_ < kDeferredMaxCellPixels &&
+             depthStencil != 0 && gl::driverProfile().stencilExport) {
     lastDeferred_ = true;
     drawDeferred(view, width, height, patterns, frame, lighting, amplitudeScale, wind, features, margin, depthStencil);
   } else if (lighting.classes && (features & (kFeatureWaterVolume | kFeatureCoastTest)) != 0 &&

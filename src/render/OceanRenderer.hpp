@@ -110,6 +110,11 @@ class OceanRenderer {
   /// (single-sampled, a depth-stencil texture, stencil export); on by default. Off, the grid's
   /// fragments shade the sea themselves (as under multisampling and in `validate`).
   void setDeferred(bool on) { deferred_ = on; }
+  /// Cells of this many pixels or more (grown: geometryIsSubPixel) are drawn forward: their
+  /// triangles shade few blocks twice, and a pixel shaded from the surface buffer costs more
+  /// than one with its varyings (sea-8km at 640x360, process CPU: forward 110 ms, deferred
+  /// 140-155 ms; sea-4m with 8-px cells: 160-170 against 110-140).
+  static constexpr int kDeferredMaxCellPixels = 16;
   /// Whether the last draw was deferred.
   [[nodiscard]] bool lastDrawDeferred() const { return lastDeferred_; }
   /// Grid cell size in pixels (the paper's ~8 px); smaller = finer geometry, slower.
