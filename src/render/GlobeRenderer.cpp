@@ -495,6 +495,7 @@ void GlobeRenderer::drawOcean(const geo::CameraView& view, const FrameInput& f) 
   // Over the open ocean (every tile in view deep under the sea) no pixel needs the coast test.
   const TerrainStats& ts = terrain_->stats();
   lighting.landInView = ts.landTiles > 0 || ts.tiles == 0;
+  lighting.landEverywhere = ts.tiles > 0 && ts.landTiles == ts.tiles;
   // The water volume only where a floor within the water's reach is in view (tiles sample the
   // layer coarsely far away: twice the reach, so a shoal between samples is not missed).
   const double reachM = ocean::waterMaxPathM(ocean::jerlovWater(ocean::kDefaultWater).attenuationPerM,

@@ -330,6 +330,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     drawGrid(p);
   } else if (const GLuint depthStencil = SeaSurfaceBuffer::boundDepthStencilTexture();
              deferred_ && mode_ == ValidationMode::Filtered && frameCellPixels_ < kDeferredMaxCellPixels &&
+             !(lighting.landEverywhere && lighting.classes) &&
              depthStencil != 0 && gl::driverProfile().stencilExport) {
     lastDeferred_ = true;
     drawDeferred(view, width, height, patterns, frame, lighting, amplitudeScale, wind, features, margin, depthStencil);

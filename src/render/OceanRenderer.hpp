@@ -38,6 +38,11 @@ struct OceanLighting {
   /// Whether the sea may be drawn in classes (OceanRenderer's stencil split); false draws every
   /// pixel with the program of the whole frame's features (the reference of the split's test).
   bool classes = true;
+  /// Whether every terrain tile in view reaches above the sea (TerrainStats::landTiles ==
+  /// tiles, e.g. the Himalaya from 15 km): the sea may be hidden altogether, and the forward
+  /// path's lean classifying draw finds that (an occlusion query) for the price of its
+  /// vertices, where the deferred sea's surface pass pays the grid's whole vertex shader.
+  bool landEverywhere = false;
 };
 
 enum class OceanModel {
