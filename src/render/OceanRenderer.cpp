@@ -330,7 +330,6 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     drawGrid(p);
   } else if (const GLuint depthStencil = SeaSurfaceBuffer::boundDepthStencilTexture();
              deferred_ && mode_ == ValidationMode::Filtered && frameCellPixels_ < kDeferredMaxCellPixels &&
-             !(lighting.landEverywhere && lighting.classes) &&
              depthStencil != 0 && gl::driverProfile().stencilExport) {
     lastDeferred_ = true;
     drawDeferred(view, width, height, patterns, frame, lighting, amplitudeScale, wind, features, margin, depthStencil);
@@ -437,15 +436,35 @@ void OceanRenderer::resetClassRows() {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kClassRowsBinding, classRows_.id());
 }
 
-void OceanRenderer::drawClassified(const geo::CameraView& view, int height, const OceanPatterns& patterns,
-                                   const ocean::OceanFrame& frame, const OceanLighting& lighting,
-                                   double amplitudeScale, const WindTextures& wind, unsigned features,
-                                   const glm::vec4& margin) {
+const gl::Program& OceanRenderer::classifyProgram() {
   if (classify_.id() == 0) {
     std::vector<std::string> d = defines_;
     d.emplace_back("OCEAN_SEA_CLASSIFY");
     classify_ = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_classify.frag"}}, d);
   }
+  return classify_;
+}
+
+bool OceanRenderer::seaShows(const geo::CameraView& view, int height, const OceanPatterns& patterns,
+                             const ocean::OceanFrame& frame, const OceanLighting& lighting, double amplitudeScale,
+                             const WindTextures& wind, unsigned features, const glm::vec4& margin) {
+  const gl::Program& p = classifyProgram();
+  prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
+  setClassUniforms(p, view, patterns, lighting, amplitudeScale, features);
+  resetClassRows();
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glDepthMask(GL_FALSE);
+  const bool shows = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] { drawGrid(p); }) != 0;
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  return shows;
+}
+
+void OceanRenderer::drawClassified(const geo::CameraView& view, int height, const OceanPatterns& patterns,
+                                   const ocean::OceanFrame& frame, const OceanLighting& lighting,
+                                   double amplitudeScale, const WindTextures& wind, unsigned features,
+                                   const glm::vec4& margin) {
+  classifyProgram();
   prepare(classify_, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
   const unsigned routedShadows = setClassUniforms(classify_, view, patterns, lighting, amplitudeScale, features);
   // The classes: the largest of the grid's fragments in a pixel (folds at grazing angles),
@@ -503,6 +522,12 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
                                  const ocean::OceanFrame& frame, const OceanLighting& lighting,
                                  double amplitudeScale, const WindTextures& wind, unsigned features,
                                  const glm::vec4& margin, GLuint depthStencil) {
+  if (lighting.landEverywhere) {  // the sea may be hidden by the terrain: ask the lean draw first
+    if (timer_ != nullptr) timer_->mark("ocean classify");
+    const bool shows = seaShows(view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
+    if (timer_ != nullptr) timer_->mark("ocean");
+    if (!shows) return;
+  }
   // The surface pass: with classes where the frame has a floor or a coast to route.
   const bool classes = lighting.classes && (features & (kFeatureWaterVolume | kFeatureCoastTest)) != 0;
   const unsigned surfaceKey = (features & (kFeatureWaterVolume | kFeatureCoastTest)) | (classes ? 4u : 0u);

@@ -39,9 +39,10 @@ struct OceanLighting {
   /// pixel with the program of the whole frame's features (the reference of the split's test).
   bool classes = true;
   /// Whether every terrain tile in view reaches above the sea (TerrainStats::landTiles ==
-  /// tiles, e.g. the Himalaya from 15 km): the sea may be hidden altogether, and the forward
-  /// path's lean classifying draw finds that (an occlusion query) for the price of its
-  /// vertices, where the deferred sea's surface pass pays the grid's whole vertex shader.
+  /// tiles, e.g. the Himalaya from 15 km): the sea may be hidden altogether. The deferred sea
+  /// then first asks the forward path's lean classifying draw (an occlusion query, the price of
+  /// its vertices: 20-26 ms there) whether any of it shows, where its surface pass would pay
+  /// the grid's whole vertex shader (110-140 ms).
   bool landEverywhere = false;
 };
 
@@ -206,6 +207,13 @@ class OceanRenderer {
   static std::array<unsigned, kSeaClasses> classFeatures(unsigned features, unsigned routedShadows);
   /// Clears the classes' row bounds and binds their buffer.
   void resetClassRows();
+  /// The classifying program (ocean/sea_classify.frag), compiled on first use.
+  const gl::Program& classifyProgram();
+  /// Whether any of the grid's sea passes the depth test (the classifying draw in an occlusion
+  /// query, writing nothing).
+  bool seaShows(const geo::CameraView& view, int height, const OceanPatterns& patterns,
+                const ocean::OceanFrame& frame, const OceanLighting& lighting, double amplitudeScale,
+                const WindTextures& wind, unsigned features, const glm::vec4& margin);
   /// The deferred sea's shading program for `features` (coast test excluded), compiled on first use.
   const gl::Program& deferredProgram(unsigned features);
   /// How far from land (m along the sea) the terrain's shadows can fall on the sea's surface or
