@@ -22,6 +22,19 @@ uniform float uEyeHeight;     // eye height above the ellipsoid, m
 uniform float uCellAngle;     // angular size of a grid cell, radians
 
 uniform float uCellPixels;    // grid cell size, pixels
+// The rows: below the screen, where only waves tall enough to rise into view matter, cells
+// kGridCoarseFactor times taller (render/OceanRenderer::draw); from just below the screen's
+// bottom up, cells of uCellPixels.
+uniform vec4 uGridRowsNdc;    // (bottom row, coarse rows' step, first fine row, fine rows' step), NDC
+uniform int uGridCoarseRows;  // coarse rows (0: every row fine)
+
+// The NDC position of grid vertex i (the grid overshoots the screen by uGridMarginNdc).
+vec2 gridNdc(ivec2 i) {
+  float x = mix(-1.0 - uGridMarginNdc.x, 1.0 + uGridMarginNdc.y, float(i.x) / float(uGridSize.x - 1));
+  float y = i.y <= uGridCoarseRows ? uGridRowsNdc.x + float(i.y) * uGridRowsNdc.y
+                                   : uGridRowsNdc.z + float(i.y - uGridCoarseRows) * uGridRowsNdc.w;
+  return vec2(x, y);
+}
 
 out vec2 vOceanXY;            // undisplaced position in the ocean frame, m
 out vec3 vRelative;           // displaced position relative to the eye, ECEF axes, m
@@ -48,8 +61,7 @@ invariant gl_Position;
 void main() {
   int ix = gl_VertexID % uGridSize.x;
   int iy = gl_VertexID / uGridSize.x;
-  vec2 lo = -1.0 - uGridMarginNdc.xz, hi = 1.0 + uGridMarginNdc.yw;
-  vec2 ndc = mix(lo, hi, vec2(ix, iy) / vec2(uGridSize - 1));
+  vec2 ndc = gridNdc(ivec2(ix, iy));
   vec3 dir = normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp);
   float t = intersectEllipsoid(dir);
   if (t < 0.0) {
@@ -67,7 +79,8 @@ void main() {
   // Projected size of a cell: along the view it is stretched by 1/cos(incidence).
   vec3 n = uEcefToOcean * ellipsoidNormal(dir, t);
   float cosIncidence = max(abs(dot(uEcefToOcean * dir, n)), 0.02);
-  float cell = t * uCellAngle / cosIncidence;
+  float pixelCell = t * uCellAngle / cosIncidence;  // a cell of uCellPixels
+  float cell = iy < uGridCoarseRows ? pixelCell * (uGridRowsNdc.y / uGridRowsNdc.w) : pixelCell;
   vec2 latLon = latLonOfNormal(ellipsoidNormal(dir, t));
   vec2 wind = localWind(latLon);
   vec3 d = oceanDisplacement(local.xy, cell, wind) * shoreWaveFactor(latLon, seaStateWaveHeightM(wind.x), cell / WGS84_A);
@@ -77,7 +90,7 @@ void main() {
   // they coincide with the local tangent frame.
   vRelative = rel + transpose(uEcefToOcean) * d;
   vOceanXY = local.xy;
-  PatternSums coarse = oceanVertexPatterns(local.xy, cell / uCellPixels, wind);
+  PatternSums coarse = oceanVertexPatterns(local.xy, pixelCell / uCellPixels, wind);
   vPatternMean = coarse.mean;
   vPatternCov = coarse.cov;
   vPatternJacobian = coarse.jac;

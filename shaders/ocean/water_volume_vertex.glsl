@@ -53,8 +53,7 @@ out float vNearShadow;  // > 0 in triangles that the terrain's shadows may reach
 // The undisplaced point of grid vertex `i` (camera-relative, m): grid.vert's cast of its ray
 // onto the ellipsoid, rays above the horizon lowered onto it.
 vec3 seaClassGridPoint(ivec2 i) {
-  vec2 lo = -1.0 - uGridMarginNdc.xz, hi = 1.0 + uGridMarginNdc.yw;
-  vec2 ndc = mix(lo, hi, vec2(clamp(i, ivec2(0), uGridSize - 1)) / vec2(uGridSize - 1));
+  vec2 ndc = gridNdc(clamp(i, ivec2(0), uGridSize - 1));
   vec3 dir = normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp);
   float t = intersectEllipsoid(dir);
   if (t < 0.0) {

@@ -288,8 +288,21 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     for (int k = kGrownCellFactor; k > 1 && frameCellPixels_ == cellPixels_; k /= 2)
       if (k * cellPixels_ * pixelRad <= kGrownCellMaxRad) frameCellPixels_ = k * cellPixels_;
   }
+  // The rows (ocean/grid.vert's gridNdc): the uniform rows' layout from the grid's bottom to
+  // its top, fine from kGridFineBottomNdc below the screen up (the same rows as all fine), the
+  // filtered model's rows below that merged kGridCoarseFactor to one.
+  const double span = 2.0 + bottom + 0.1;
+  const int rows = std::max(1, static_cast<int>(std::ceil(span * height / (2.0 * frameCellPixels_))));
+  const double step = span / rows;
+  const int fineRows = std::min(rows, static_cast<int>(std::ceil((2.1 + kGridFineBottomNdc) / step)));
+  const int merged = model == OceanModel::Bruneton ? rows - fineRows : 0;
+  const int coarseRows = merged >= kGridCoarseFactor ? (merged + kGridCoarseFactor - 1) / kGridCoarseFactor : 0;
+  const int below = coarseRows > 0 ? merged : 0;  // uniform rows the coarse ones stand for
+  gridRowsNdc_ = glm::vec4(static_cast<float>(-1.0 - bottom), coarseRows > 0 ? static_cast<float>(below * step / coarseRows) : 0.0f,
+                           static_cast<float>(-1.0 - bottom + below * step), static_cast<float>(step));
+  gridCoarseRows_ = coarseRows;
   ensureGrid(std::max(2, static_cast<int>(std::ceil(width * (1 + side) / frameCellPixels_)) + 1),
-             std::max(2, static_cast<int>(std::ceil(height * (1 + 0.5 * (bottom + 0.1)) / frameCellPixels_)) + 1));
+             coarseRows + rows - below + 1);
 
   unsigned features = 0;
   lastDeferred_ = false;
@@ -350,6 +363,8 @@ void OceanRenderer::prepare(const gl::Program& p, const geo::CameraView& view, i
                             const WindTextures& wind, unsigned features, const glm::vec4& margin) const {
   setCommon(p, view, height, frame, lighting, features);
   p.set("uGridMarginNdc", margin);
+  p.set("uGridRowsNdc", gridRowsNdc_);
+  p.set("uGridCoarseRows", gridCoarseRows_);
   if ((features & kFeatureWaterVolume) != 0) caustics_.bind();
   patterns.bind();
   patterns.setUniforms(p, &frame, amplitudeScale);

@@ -259,6 +259,12 @@ class OceanRenderer {
   int gridColumns_ = 0, gridRows_ = 0;
   int indexCount_ = 0;
   int cellPixels_ = 8;
+  /// Rows below the screen deeper than this (NDC) are coarse: only waves lifting a point by
+  /// more than that (180 px at 720p, 45° tall) bring them into view.
+  static constexpr double kGridFineBottomNdc = 0.5;
+  static constexpr int kGridCoarseFactor = 4;  ///< coarse rows' height in fine rows
+  glm::vec4 gridRowsNdc_{0.0f};  ///< grid.vert's uGridRowsNdc
+  int gridCoarseRows_ = 0;       ///< grid.vert's uGridCoarseRows
   int frameCellPixels_ = 8;  ///< this frame's: cellPixels_, or grown (geometryIsSubPixel)
   bool cellGrowth_ = true;
   glm::vec4 lightingTerms_{1.0f};
