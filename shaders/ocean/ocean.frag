@@ -114,9 +114,16 @@ void main() {
   return;
 #else
   float foam = whitecapCoverage(sea.jacobian);
+#ifndef OCEAN_NO_WATER_VOLUME
+  // How the pixel's slopes spread: the mean slope's change to the next pixel (deferred:
+  // between neighbouring pixels' own values, which at the sea's edges may belong to no sea
+  // pixel: capped) and the unresolved slopes' standard deviation within it.
+  vec2 slopeSpread = vec2(min(max(length(dFdx(sea.meanSlope)), length(dFdy(sea.meanSlope))), 0.5),
+                          sqrt(sea.variance.x + sea.variance.y));
+#endif
 #ifndef OCEAN_NO_WATER_VOLUME  // compiled out when no sea floor in view is within reach
   prepareWaterVolume(vRelative, v, n, up, latLon, vOceanXY, uEcefToOcean, max(footprint, 1e-4), wind, uSunDirEcef,
-                     floorSlope);
+                     floorSlope, slopeSpread);
 #endif
   vec3 radiance = seaRadianceWithFoam(v, n, windDir, sea.covariance, up, uSunDirEcef, foam);
   fragRadiance = vec4(oceanSurfaceRadiance(vRelative, radiance), 1.0);

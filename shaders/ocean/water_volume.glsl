@@ -94,8 +94,8 @@ float causticCurvature(vec2 xy, float footprintM, vec2 wind) {
 // (0, 2). tr H is filtered over the blur of the Sun's disc at that depth (0.53° in air, /n in
 // water) or twice the pixel's footprint, whichever is larger: caustics sharpen with depth up to
 // the waves' focal depth, blur beyond it, and average out with distance (no aliasing).
-float causticGain(vec2 xy, float pathM, float footprintM, vec2 wind) {
-  float blur = max(2.0 * footprintM, pathM * (0.0093 / WATER_INDEX));
+float causticGain(vec2 xy, float pathM, float footprintM, float blurM, vec2 wind) {
+  float blur = max(max(2.0 * footprintM, blurM), pathM * (0.0093 / WATER_INDEX));
   float c = pathM * (1.0 - 1.0 / WATER_INDEX) * causticCurvature(xy, blur, wind);
   return 1.0 - c / (1.0 + abs(c));
 }
@@ -160,9 +160,12 @@ const float vFloorFine = 0.0;
 
 // Prepares gWater for the sea pixel at camera-relative `rel` (to the eye `v`, mean normal `n`,
 // geodetic vertical `up`, at `latLon`, `oceanXY` in the ocean frame whose rows are
-// `ecefToOcean`), pixel footprint `footprintM` (m), local wind (speed, azimuth).
+// `ecefToOcean`), pixel footprint `footprintM` (m), local wind (speed, azimuth), the floor's
+// depth gradient in the pixel's triangle (floorDepthSlope) and how the pixel's slopes spread
+// (the mean slope's change to the next pixel, the unresolved slopes' standard deviation).
 void prepareWaterVolume(vec3 rel, vec3 v, vec3 n, vec3 up, vec2 latLon, vec2 oceanXY,
-                        mat3 ecefToOcean, float footprintM, vec2 wind, vec3 sunE, vec2 floorSlope) {
+                        mat3 ecefToOcean, float footprintM, vec2 wind, vec3 sunE, vec2 floorSlope,
+                        vec2 slopeSpread) {
   vec3 k = uWaterAttenuation;
   float dMax = waterMaxPathM(k, WATER_EPSILON);
   float gap0 = max(vFloorDepthM, 0.0);  // ray height minus floor height at the surface (>= 0)
@@ -212,13 +215,21 @@ void prepareWaterVolume(vec3 rel, vec3 v, vec3 n, vec3 up, vec2 latLon, vec2 oce
   if (max(seen.x, max(seen.y, seen.z)) > FLOOR_DETAIL_MIN_SHARE) {
     // The floor's detail, filtered by the pixel's footprint there (refraction magnifies little).
     vec3 dUp = floorOffsetFromEye(floorRel + depthM * up + uFloorEyeHeightM * uFloorEyeUp);
-    vec4 detail = floorDetail(dUp, footprintM * (1.0 + sHit / max(length(rel), 1.0)));
+    // The pixel's footprint on the floor: the surface's, carried down the ray, plus how far the
+    // floor point moves to the next pixel as the resolved slopes turn the refracted ray ((1 -
+    // 1/n) of a slope change per unit of path): seen through 5 m of water the finest waves move
+    // it by centimetres a pixel, and caustics looked up finer than that sparkled pixel by
+    // pixel. The unresolved slopes within the pixel spread its rays over the floor too: a blur.
+    float perSlopeM = sHit * (1.0 - 1.0 / WATER_INDEX);
+    float floorFootprintM = footprintM * (1.0 + sHit / max(length(rel), 1.0)) + perSlopeM * slopeSpread.x;
+    float floorBlurM = perSlopeM * slopeSpread.y;
+    vec4 detail = floorDetail(dUp, floorFootprintM + 0.5 * floorBlurM);
     vec3 g = detail.yzw - dot(detail.yzw, up) * up;
     nFloor = normalize(up - g);
     albedo *= clamp(1.0 + detail.x, 0.3, 1.7);
     vec3 entryRel = floorRel - sunPathM * sunWater;
     vec2 entryXY = oceanXY + (ecefToOcean * (entryRel - rel)).xy;
-    sunFactor = floorSunVisibility(entryRel, up) * causticGain(entryXY, sunPathM, footprintM, wind) *
+    sunFactor = floorSunVisibility(entryRel, up) * causticGain(entryXY, sunPathM, floorFootprintM, floorBlurM, wind) *
                 max(dot(nFloor, -sunWater), 0.0) / max(cosSunWater, 0.05);
   }
 #if defined(OCEAN_SIMPLE_SKY) || defined(OCEAN_NO_WATER_VOLUME)
