@@ -123,26 +123,26 @@ OceanRenderer::OceanRenderer(const Atmosphere* atmosphere, ValidationMode mode)
 const gl::Program& OceanRenderer::program(unsigned features) {
   gl::Program& p = variants_.at(features);
   if (p.id() != 0) return p;
+  p = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}},
+                  featureDefines(features));
+  return p;
+}
+
+std::vector<std::string> OceanRenderer::featureDefines(unsigned features) const {
   std::vector<std::string> d = defines_;
   if ((features & kFeatureWaterVolume) == 0) d.emplace_back("OCEAN_NO_WATER_VOLUME");
   if ((features & kFeatureCoastTest) == 0) d.emplace_back("SEA_NO_COAST_TEST");
   if ((features & kFeatureShadows) == 0) d.emplace_back("SHADOWS_OFF");
   if ((features & kFeatureFrameSky) != 0) d.emplace_back("SKY_FRAME_LAYER");
   if ((features & kFeatureFrameSky) != 0 && atmosphere_->skyFilter().ripMap) d.emplace_back("SKY_RIP_MAP");
-  p = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}}, d);
-  return p;
+  return d;
 }
 
 const gl::Program& OceanRenderer::deferredProgram(unsigned features) {
   gl::Program& p = deferredVariants_.at(features);
   if (p.id() != 0) return p;
-  std::vector<std::string> d = defines_;
+  std::vector<std::string> d = featureDefines(features & ~kFeatureCoastTest);  // the surface pass's test
   d.emplace_back("OCEAN_DEFERRED");
-  d.emplace_back("SEA_NO_COAST_TEST");  // the surface pass's
-  if ((features & kFeatureWaterVolume) == 0) d.emplace_back("OCEAN_NO_WATER_VOLUME");
-  if ((features & kFeatureShadows) == 0) d.emplace_back("SHADOWS_OFF");
-  if ((features & kFeatureFrameSky) != 0) d.emplace_back("SKY_FRAME_LAYER");
-  if ((features & kFeatureFrameSky) != 0 && atmosphere_->skyFilter().ripMap) d.emplace_back("SKY_RIP_MAP");
   p = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}}, d);
   return p;
 }
@@ -548,9 +548,7 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   const unsigned surfaceKey = (features & (kFeatureWaterVolume | kFeatureCoastTest)) | (classes ? 4u : 0u);
   gl::Program& surface = surfaceVariants_.at(surfaceKey);
   if (surface.id() == 0) {
-    std::vector<std::string> d = defines_;
-    if ((features & kFeatureWaterVolume) == 0) d.emplace_back("OCEAN_NO_WATER_VOLUME");
-    if ((features & kFeatureCoastTest) == 0) d.emplace_back("SEA_NO_COAST_TEST");
+    std::vector<std::string> d = featureDefines(features & (kFeatureWaterVolume | kFeatureCoastTest));
     if (classes) d.emplace_back("OCEAN_SEA_CLASSIFY");
     surface = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_surface.frag"}}, d);
   }

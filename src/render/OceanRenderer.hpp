@@ -214,6 +214,8 @@ class OceanRenderer {
   bool seaShows(const geo::CameraView& view, int height, const OceanPatterns& patterns,
                 const ocean::OceanFrame& frame, const OceanLighting& lighting, double amplitudeScale,
                 const WindTextures& wind, unsigned features, const glm::vec4& margin);
+  /// The filtered model's defines with `features` (bits of kFeature*) compiled in.
+  [[nodiscard]] std::vector<std::string> featureDefines(unsigned features) const;
   /// The deferred sea's shading program for `features` (coast test excluded), compiled on first use.
   const gl::Program& deferredProgram(unsigned features);
   /// How far from land (m along the sea) the terrain's shadows can fall on the sea's surface or
