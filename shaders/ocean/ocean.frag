@@ -114,14 +114,12 @@ void main() {
   return;
 #else
   float foam = whitecapCoverage(sea.jacobian);
-#ifndef OCEAN_NO_WATER_VOLUME
+#ifndef OCEAN_NO_WATER_VOLUME  // compiled out when no sea floor in view is within reach
   // How the pixel's slopes spread: the mean slope's change to the next pixel (deferred:
   // between neighbouring pixels' own values, which at the sea's edges may belong to no sea
   // pixel: capped) and the unresolved slopes' standard deviation within it.
   vec2 slopeSpread = vec2(min(max(length(dFdx(sea.meanSlope)), length(dFdy(sea.meanSlope))), 0.5),
                           sqrt(sea.variance.x + sea.variance.y));
-#endif
-#ifndef OCEAN_NO_WATER_VOLUME  // compiled out when no sea floor in view is within reach
   prepareWaterVolume(vRelative, v, n, up, latLon, vOceanXY, uEcefToOcean, max(footprint, 1e-4), wind, uSunDirEcef,
                      floorSlope, slopeSpread);
 #endif

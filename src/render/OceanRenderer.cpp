@@ -341,7 +341,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     glBindTextureUnit(gl::kUnitBumpMap, bumpMap_.id());
     glBindTextureUnit(gl::kUnitFresnelRamp, fresnelRamp_.id());
     drawGrid(p);
-  } else if (const GLuint depthStencil = SeaSurfaceBuffer::boundDepthStencilTexture();
+  } else if (const GLuint depthStencil = deferred_ ? SeaSurfaceBuffer::boundDepthStencilTexture() : 0;
              deferred_ && mode_ == ValidationMode::Filtered && frameCellPixels_ < kDeferredMaxCellPixels &&
              depthStencil != 0 && gl::driverProfile().stencilExport) {
     lastDeferred_ = true;
@@ -440,36 +440,44 @@ std::array<unsigned, OceanRenderer::kSeaClasses> OceanRenderer::classFeatures(un
           features & ~(kFeatureCoastTest | routedShadows), features & ~kFeatureCoastTest, features};
 }
 
+std::array<GLint, 2 * OceanRenderer::kSeaClasses> OceanRenderer::noClassRows() {
+  std::array<GLint, 2 * kSeaClasses> none{};
+  for (std::size_t k = 0; k < kSeaClasses; ++k) none.at(2 * k) = kNoRow, none.at(2 * k + 1) = -1;
+  return none;
+}
+
 void OceanRenderer::resetClassRows() {
   if (classRows_.id() == 0) {
     classRows_ = gl::createBuffer();
     glNamedBufferStorage(classRows_.id(), 2 * kSeaClasses * sizeof(GLint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   }
-  std::array<GLint, 2 * kSeaClasses> none{};
-  for (std::size_t k = 0; k < kSeaClasses; ++k) none.at(2 * k) = kNoRow, none.at(2 * k + 1) = -1;
+  const std::array<GLint, 2 * kSeaClasses> none = noClassRows();
   glNamedBufferSubData(classRows_.id(), 0, sizeof none, none.data());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kClassRowsBinding, classRows_.id());
 }
 
-const gl::Program& OceanRenderer::classifyProgram() {
+unsigned OceanRenderer::prepareClassify(const geo::CameraView& view, int height, const OceanPatterns& patterns,
+                                        const ocean::OceanFrame& frame, const OceanLighting& lighting,
+                                        double amplitudeScale, const WindTextures& wind, unsigned features,
+                                        const glm::vec4& margin) {
   if (classify_.id() == 0) {
     std::vector<std::string> d = defines_;
     d.emplace_back("OCEAN_SEA_CLASSIFY");
     classify_ = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_classify.frag"}}, d);
   }
-  return classify_;
+  prepare(classify_, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
+  const unsigned routedShadows = setClassUniforms(classify_, view, patterns, lighting, amplitudeScale, features);
+  resetClassRows();
+  return routedShadows;
 }
 
 bool OceanRenderer::seaShows(const geo::CameraView& view, int height, const OceanPatterns& patterns,
                              const ocean::OceanFrame& frame, const OceanLighting& lighting, double amplitudeScale,
                              const WindTextures& wind, unsigned features, const glm::vec4& margin) {
-  const gl::Program& p = classifyProgram();
-  prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
-  setClassUniforms(p, view, patterns, lighting, amplitudeScale, features);
-  resetClassRows();
+  prepareClassify(view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthMask(GL_FALSE);
-  const bool shows = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] { drawGrid(p); }) != 0;
+  const bool shows = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] { drawGrid(classify_); }) != 0;
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);
   return shows;
@@ -479,9 +487,8 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
                                    const ocean::OceanFrame& frame, const OceanLighting& lighting,
                                    double amplitudeScale, const WindTextures& wind, unsigned features,
                                    const glm::vec4& margin) {
-  classifyProgram();
-  prepare(classify_, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
-  const unsigned routedShadows = setClassUniforms(classify_, view, patterns, lighting, amplitudeScale, features);
+  const unsigned routedShadows =
+      prepareClassify(view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
   // The classes: the largest of the grid's fragments in a pixel (folds at grazing angles),
   // only where the sea passes the depth test (in front of the terrain).
   glEnable(GL_STENCIL_TEST);
@@ -491,14 +498,12 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthMask(GL_FALSE);
-  resetClassRows();
   if (timer_ != nullptr) timer_->mark("ocean classify");
   // Fragments behind the terrain record their rows too (the shader's side effects come before
   // the depth test); where none passes it (the sea hidden by mountains) nothing is drawn.
   const bool seaVisible = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] { drawGrid(classify_); }) != 0;
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::array<GLint, 2 * kSeaClasses> rows{};
-  for (std::size_t k = 0; k < kSeaClasses; ++k) rows.at(2 * k) = kNoRow, rows.at(2 * k + 1) = -1;
+  std::array<GLint, 2 * kSeaClasses> rows = noClassRows();
   if (seaVisible) glGetNamedBufferSubData(classRows_.id(), 0, sizeof rows, rows.data());
   if (timer_ != nullptr) timer_->mark("ocean");
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -567,9 +572,8 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   if (timer_ != nullptr) timer_->mark("ocean surface");
   const bool seaVisible = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] { drawGrid(surface); }) != 0;
-  std::array<GLint, 2 * kSeaClasses> rows{};
+  std::array<GLint, 2 * kSeaClasses> rows = noClassRows();
   rows.at(0) = 0, rows.at(1) = 0;  // without classes, all is class 1
-  for (std::size_t k = 1; k < kSeaClasses; ++k) rows.at(2 * k) = kNoRow, rows.at(2 * k + 1) = -1;
   if (classes && seaVisible) {
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glGetNamedBufferSubData(classRows_.id(), 0, sizeof rows, rows.data());

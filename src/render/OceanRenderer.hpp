@@ -205,10 +205,15 @@ class OceanRenderer {
                             const OceanLighting& lighting, double amplitudeScale, unsigned features) const;
   /// Each class's features (sea_classify.frag's list) given the frame's and the routed shadows.
   static std::array<unsigned, kSeaClasses> classFeatures(unsigned features, unsigned routedShadows);
+  /// Per class, no row yet (first kNoRow, last -1): the classes' row bounds before a draw.
+  static std::array<GLint, 2 * kSeaClasses> noClassRows();
   /// Clears the classes' row bounds and binds their buffer.
   void resetClassRows();
-  /// The classifying program (ocean/sea_classify.frag), compiled on first use.
-  const gl::Program& classifyProgram();
+  /// The classifying program (ocean/sea_classify.frag, compiled on first use) prepared for this
+  /// frame, its row bounds cleared; returns the shadows routed to classes (setClassUniforms).
+  unsigned prepareClassify(const geo::CameraView& view, int height, const OceanPatterns& patterns,
+                           const ocean::OceanFrame& frame, const OceanLighting& lighting, double amplitudeScale,
+                           const WindTextures& wind, unsigned features, const glm::vec4& margin);
   /// Whether any of the grid's sea passes the depth test (the classifying draw in an occlusion
   /// query, writing nothing).
   bool seaShows(const geo::CameraView& view, int height, const OceanPatterns& patterns,
