@@ -9,7 +9,8 @@ packages=(
   libegl-dev libgl-dev libosmesa6-dev libegl-mesa0 libgl1-mesa-dri
   libnetcdf-dev libeccodes-dev libpng-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev
-  # FFTW: the CPU reference of the GPU FFT wave patterns in the tests
+  # FFTW: the wave patterns' FFTs where GL renders on the CPU (llvmpipe), and the tests'
+  # reference of the GPU's
   libfftw3-dev
   # Google Earth KML tours (record/view/path convert)
   libpugixml-dev

@@ -78,6 +78,8 @@ void Context::finishInit(std::string backend, void* (*getProcAddress)(const char
   info_.profile = makeDriverProfile(info_.renderer, anisotropy);
   info_.profile.stencilExport = hasGlExtension("GL_ARB_shader_stencil_export") &&
                                 !envSaysOff("OCEANGLOBE_STENCIL_EXPORT");
+  if (const char* fft = std::getenv("OCEANGLOBE_FFT"); fft != nullptr && *fft != '\0')
+    info_.profile.cpuWaveFft = std::string_view(fft) == "cpu";
   log::info("GL context: " + info_.backend + ", " + info_.renderer + ", " + info_.version);
 }
 

@@ -16,6 +16,7 @@ DriverProfile makeDriverProfile(std::string_view renderer, float deviceMaxAnisot
   p.autoSamples = p.software ? 1 : 4;
   p.maxAnisotropy = p.software ? 1.0f : std::max(deviceMaxAnisotropy, 1.0f);
   p.timestampsTimeWork = !p.software;
+  p.cpuWaveFft = p.software;
   return p;
 }
 

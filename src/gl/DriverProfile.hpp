@@ -22,6 +22,11 @@ struct DriverProfile {
   /// classifies its pixels in one draw instead of one per class (GlobeRenderer::classifyGlobe).
   /// Off when the driver lacks it, or with OCEANGLOBE_STENCIL_EXPORT=0 (to compare the paths).
   bool stencilExport = false;
+  /// The wave patterns' FFTs on the CPU with FFTW, uploaded (render/OceanPatterns): on a
+  /// software renderer, whose compute shaders run their barriers as coroutines, that takes a
+  /// fifth of the time on the same cores (docs/performance.md, "Eighth session"). On a GPU the
+  /// compute shaders. OCEANGLOBE_FFT=cpu or gpu overrides (to compare the paths).
+  bool cpuWaveFft = false;
 };
 
 /// Whether a GL_RENDERER string names a software renderer: the one list of their names.

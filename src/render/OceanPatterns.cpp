@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "gl/DriverProfile.hpp"
 #include "gl/ShaderContract.hpp"
 
 namespace og::render {
@@ -74,65 +75,90 @@ std::vector<std::string> fftDefines(const ocean::WavePatternParams& p) {
 }
 }  // namespace
 
-OceanPatterns::OceanPatterns(std::shared_ptr<const ocean::WavePatterns> patterns, double requestedWindMs)
-    : patterns_(std::move(patterns)),
-      tables_(ocean::makePatternTables(*patterns_)),
-      spectrum_({{GL_COMPUTE_SHADER, "ocean/fft_spectrum.comp"}}, fftDefines(patterns_->params)),
-      line_({{GL_COMPUTE_SHADER, "ocean/fft_line.comp"}}, fftDefines(patterns_->params)),
-      finish_({{GL_COMPUTE_SHADER, "ocean/fft_finish.comp"}}, fftDefines(patterns_->params)),
-      mips_({{GL_COMPUTE_SHADER, "ocean/pattern_mips.comp"}}) {
+// The GPU's transforms: the compute programs, the spectra (h0(k), conj(h0(-k)) per texel,
+// RGBA32F; each mode's frequency step, R32UI) and the FFT's ping-pong buffers.
+struct OceanPatterns::GpuFft {
+  explicit GpuFft(const ocean::WavePatterns& w);
+  void uploadSpectra(const ocean::WavePatterns& w);
+  void setLayerUniforms(const ocean::WavePatternParams& p, const gl::Program& program) const;
+
+  gl::Program spectrum;
+  gl::Program line;  ///< whole-line FFT in shared memory
+  gl::Program finish;
+  gl::Program mips;  ///< ocean/pattern_mips.comp: one mip level of both textures
+  gl::Texture h0;
+  gl::Texture steps;
+  gl::Texture fields[2];
+  int fftLayers = 0;  ///< layers of the FFT buffers (1 or 2 per pattern layer)
+};
+
+OceanPatterns::GpuFft::GpuFft(const ocean::WavePatterns& w)
+    : spectrum({{GL_COMPUTE_SHADER, "ocean/fft_spectrum.comp"}}, fftDefines(w.params)),
+      line({{GL_COMPUTE_SHADER, "ocean/fft_line.comp"}}, fftDefines(w.params)),
+      finish({{GL_COMPUTE_SHADER, "ocean/fft_finish.comp"}}, fftDefines(w.params)),
+      mips({{GL_COMPUTE_SHADER, "ocean/pattern_mips.comp"}}),
+      fftLayers(ocean::kPatternSets * fftLayersPerSet(w.params)) {
+  uploadSpectra(w);
+  for (gl::Texture& f : fields) f = makeArray(GL_RGBA32F, w.params.fftSize, fftLayers, 1);
+  for (const gl::Program* p : {&spectrum, &line, &finish}) setLayerUniforms(w.params, *p);
+}
+
+OceanPatterns::OceanPatterns(std::shared_ptr<const ocean::WavePatterns> patterns, double requestedWindMs,
+                             std::optional<Fft> fft)
+    : patterns_(std::move(patterns)), tables_(ocean::makePatternTables(*patterns_)) {
   requestedWindMs_ = requestedWindMs;
   const int n = patterns_->params.fftSize;
-  fftLayers_ = ocean::kPatternSets * fftLayersPerSet(patterns_->params);
-  uploadSpectra();
-  for (gl::Texture& f : fields_) f = makeArray(GL_RGBA32F, n, fftLayers_, 1);
+  const auto texels = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+  if (fft.value_or(gl::driverProfile().cpuWaveFft ? Fft::Cpu : Fft::Gpu) == Fft::Cpu) {
+    cpu_ = std::make_unique<ocean::PatternSynthesis>(*patterns_);
+  } else {
+    gpu_ = std::make_unique<GpuFft>(*patterns_);
+    // Spectra (16 B/texel) + steps (4) + FFT buffers (2 x 16 per FFT layer).
+    gpuBytes_ = texels * kLayers * 20 + texels * static_cast<std::size_t>(gpu_->fftLayers) * 32;
+  }
   const int levels = log2Of(n) + 1;
   displacement_ = makeArray(GL_RGBA16F, n, kLayers, levels);
   slopes_ = makeArray(GL_RGBA32F, n, kLayers, levels);  // squares of slopes ~1e-5: below half floats
   table_ = makeTableTexture(tables_);
-  for (const gl::Program* p : {&spectrum_, &line_, &finish_}) setLayerUniforms(*p);
-  const auto texels = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
-  // Spectra (16 B/texel) + steps (4) + FFT buffers (2 x 16 per FFT layer) + mip-mapped outputs.
-  gpuBytes_ = texels * kLayers * 20 + texels * static_cast<std::size_t>(fftLayers_) * 32 +
-              texels * kLayers * 24 * 4 / 3;
+  gpuBytes_ += texels * kLayers * 24 * 4 / 3;  // the mip-mapped outputs
   gl::checkErrors("OceanPatterns setup");
 }
 
+OceanPatterns::~OceanPatterns() = default;
+
 // h0(k) and conj(h0(-k)) per texel (RGBA32F), and each mode's frequency step (R32UI).
-void OceanPatterns::uploadSpectra() {
-  const ocean::WavePatterns& w = *patterns_;
+void OceanPatterns::GpuFft::uploadSpectra(const ocean::WavePatterns& w) {
   const int n = w.params.fftSize;
   const auto texelsPerLayer = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
-  std::vector<float> h0(4 * texelsPerLayer * kLayers);
-  std::vector<std::uint32_t> steps(texelsPerLayer * kLayers);
+  std::vector<float> spectra(4 * texelsPerLayer * kLayers);
+  std::vector<std::uint32_t> frequencySteps(texelsPerLayer * kLayers);
   for (int layer = 0; layer < kLayers; ++layer) {
     const auto set = static_cast<std::size_t>(layer / ocean::kPatternCount);
     const auto pattern = static_cast<std::size_t>(layer % ocean::kPatternCount);
-    const auto& spectrum = w.h0[set][pattern];
+    const auto& modes = w.h0[set][pattern];
     const double dk = 2.0 * 3.14159265358979323846 / w.params.sizesM[pattern];
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x) {
         const std::size_t at = static_cast<std::size_t>(y) * n + x;
         const std::size_t mirror = static_cast<std::size_t>((n - y) % n) * n + (n - x) % n;
         const std::size_t texel = static_cast<std::size_t>(layer) * texelsPerLayer + at;
-        float* t = &h0[4 * texel];
-        t[0] = spectrum[at].real();
-        t[1] = spectrum[at].imag();
-        t[2] = spectrum[mirror].real();  // conj(h0(-k))
-        t[3] = -spectrum[mirror].imag();
+        float* t = &spectra[4 * texel];
+        t[0] = modes[at].real();
+        t[1] = modes[at].imag();
+        t[2] = modes[mirror].real();  // conj(h0(-k))
+        t[3] = -modes[mirror].imag();
         const int mx = x < n / 2 ? x : x - n, my = y < n / 2 ? y : y - n;
-        steps[texel] = ocean::patternFrequencyStep(dk * std::hypot(mx, my));
+        frequencySteps[texel] = ocean::patternFrequencyStep(dk * std::hypot(mx, my));
       }
   }
-  h0_ = makeArray(GL_RGBA32F, n, kLayers, 1);
+  h0 = makeArray(GL_RGBA32F, n, kLayers, 1);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage3D(h0_.id(), 0, 0, 0, 0, n, n, kLayers, GL_RGBA, GL_FLOAT, h0.data());
-  steps_ = makeArray(GL_R32UI, n, kLayers, 1);
-  glTextureSubImage3D(steps_.id(), 0, 0, 0, 0, n, n, kLayers, GL_RED_INTEGER, GL_UNSIGNED_INT, steps.data());
+  glTextureSubImage3D(h0.id(), 0, 0, 0, 0, n, n, kLayers, GL_RGBA, GL_FLOAT, spectra.data());
+  steps = makeArray(GL_R32UI, n, kLayers, 1);
+  glTextureSubImage3D(steps.id(), 0, 0, 0, 0, n, n, kLayers, GL_RED_INTEGER, GL_UNSIGNED_INT, frequencySteps.data());
 }
 
-void OceanPatterns::setLayerUniforms(const gl::Program& program) const {
-  const ocean::WavePatternParams& p = patterns_->params;
+void OceanPatterns::GpuFft::setLayerUniforms(const ocean::WavePatternParams& p, const gl::Program& program) const {
   std::vector<float> chop, sizes;
   for (int i = 0; i < ocean::kPatternCount; ++i) {
     chop.push_back(static_cast<float>(p.choppiness[static_cast<std::size_t>(i)]));
@@ -147,7 +173,12 @@ void OceanPatterns::setLayerUniforms(const gl::Program& program) const {
 void OceanPatterns::update(double timeS, int patternCount) {
   patternCount = std::clamp(patternCount, 1, ocean::kPatternCount);
   if (computed_ >= patternCount && timeS == timeS_) return;
-  runFft(timeS, patternCount);
+  if (cpu_ != nullptr) {
+    cpu_->compute(timeS, patternCount);
+    uploadCpuFft(patternCount);
+  } else {
+    runGpuFft(timeS, patternCount);
+  }
   timeS_ = timeS;
   computed_ = patternCount;
 }
@@ -185,44 +216,44 @@ double OceanPatterns::finestSeaFootprintM(const geo::CameraView& view, int heigh
   return finest;
 }
 
-void OceanPatterns::runFft(double timeS, int patternCount) {
+void OceanPatterns::runGpuFft(double timeS, int patternCount) {
   const ocean::WavePatterns& w = *patterns_;
   const int n = w.params.fftSize;
   // tau = (t mod period) / period, split into a 12-bit integer part and the rest (exact).
   const double tau = std::fmod(std::fmod(timeS, ocean::kWaveRepeatPeriodS) + ocean::kWaveRepeatPeriodS,
                                ocean::kWaveRepeatPeriodS) / ocean::kWaveRepeatPeriodS;
   const double coarse = std::floor(tau * 4096.0);
-  glProgramUniform1ui(spectrum_.id(), spectrum_.location("uTimeSteps"), static_cast<GLuint>(coarse));
-  spectrum_.set("uTimeFine", static_cast<float>(tau - coarse / 4096.0));
-  spectrum_.set("uPatternCount", patternCount);
-  finish_.set("uPatternCount", patternCount);
+  glProgramUniform1ui(gpu_->spectrum.id(), gpu_->spectrum.location("uTimeSteps"), static_cast<GLuint>(coarse));
+  gpu_->spectrum.set("uTimeFine", static_cast<float>(tau - coarse / 4096.0));
+  gpu_->spectrum.set("uPatternCount", patternCount);
+  gpu_->finish.set("uPatternCount", patternCount);
   // The FFT layers the first patternCount patterns fill (slots in pattern order, two a layer).
   int slots = 0;
   for (int i = 0; i < patternCount; ++i) slots += (displacedMask(w.params) >> i & 1) != 0 ? 3 : 2;
   const int lineLayers = std::min((slots + 1) / 2, fftLayersPerSet(w.params));
-  glBindImageTexture(0, h0_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
-  glBindImageTexture(1, steps_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
-  glBindImageTexture(2, fields_[0].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  spectrum_.use();
+  glBindImageTexture(0, gpu_->h0.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+  glBindImageTexture(1, gpu_->steps.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+  glBindImageTexture(2, gpu_->fields[0].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  gpu_->spectrum.use();
   glDispatchCompute(static_cast<GLuint>(n / 8), static_cast<GLuint>(n / 8), ocean::kPatternSets);
 
   // Rows, then columns: one work group per line of every FFT layer (fft_line.comp).
   int source = 0;
-  line_.use();
+  gpu_->line.use();
   for (int vertical = 0; vertical < 2; ++vertical) {
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    line_.set("uVertical", vertical);
-    glBindImageTexture(0, fields_[source].id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
-    glBindImageTexture(1, fields_[1 - source].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    gpu_->line.set("uVertical", vertical);
+    glBindImageTexture(0, gpu_->fields[source].id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, gpu_->fields[1 - source].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glDispatchCompute(static_cast<GLuint>(n), static_cast<GLuint>(lineLayers), ocean::kPatternSets);
     source = 1 - source;
   }
 
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  glBindImageTexture(0, fields_[source].id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+  glBindImageTexture(0, gpu_->fields[source].id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
   glBindImageTexture(1, displacement_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   glBindImageTexture(2, slopes_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  finish_.use();
+  gpu_->finish.use();
   glDispatchCompute(static_cast<GLuint>(n / 8), static_cast<GLuint>(n / 8), ocean::kPatternSets);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   generateMipmaps(patternCount);
@@ -235,9 +266,9 @@ void OceanPatterns::runFft(double timeS, int patternCount) {
 // every layer and level on llvmpipe (14-30 ms a frame) and has no layer range.
 void OceanPatterns::generateMipmaps(int patternCount) {
   const int levels = log2Of(patterns_->params.fftSize) + 1;
-  mips_.set("uPatternCount", patternCount);
-  mips_.set("uLayersPerSet", ocean::kPatternCount);
-  mips_.use();
+  gpu_->mips.set("uPatternCount", patternCount);
+  gpu_->mips.set("uLayersPerSet", ocean::kPatternCount);
+  gpu_->mips.use();
   for (int level = 1; level < levels; ++level) {
     glBindImageTexture(0, displacement_.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA16F);
     glBindImageTexture(1, displacement_.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
@@ -248,6 +279,21 @@ void OceanPatterns::generateMipmaps(int patternCount) {
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+}
+
+// The CPU's transforms of the first patternCount patterns of each set, every mip level.
+void OceanPatterns::uploadCpuFft(int patternCount) {
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  for (int lod = 0; lod < cpu_->levels(); ++lod) {
+    const int side = patterns_->params.fftSize >> lod;
+    for (int set = 0; set < ocean::kPatternSets; ++set) {
+      const int first = set * ocean::kPatternCount;
+      for (const auto& [texture, texels] : {std::pair{displacement_.id(), cpu_->displacement(lod, first, patternCount)},
+                                            std::pair{slopes_.id(), cpu_->slopes(lod, first, patternCount)}})
+        glTextureSubImage3D(texture, lod, 0, 0, first, side, side, patternCount, GL_RGBA, GL_FLOAT, texels.data());
+    }
+  }
+  gl::checkErrors("OceanPatterns::uploadCpuFft");
 }
 
 std::vector<std::string> OceanPatterns::shaderDefines() {

@@ -2,12 +2,14 @@
 // The FFT wave patterns on the GPU (Dupuy & Bruneton 2012): the initial spectra of
 // ocean::WavePatterns uploaded once, and every frame an inverse FFT per pattern and direction
 // set (compute shaders shaders/ocean/fft_*.comp) into three mip-mapped texture arrays the sea
-// shaders sample (shaders/ocean/patterns.glsl):
+// shaders sample (shaders/ocean/patterns.glsl); where the driver renders on the CPU, the same
+// transforms by FFTW (ocean::PatternSynthesis) uploaded instead (gl::DriverProfile::cpuWaveFft):
 //   displacement (OG_UNIT_PATTERN_DISPLACEMENT): (lambda Dx, lambda Dy, h, 0), m, tile axes
 //   slopes       (OG_UNIT_PATTERN_SLOPES): (s_u, s_c, s_u² + s_c², j): slopes along/across the
 //                set's wind, their second moment, the whitecaps' Jacobian term
 // layer = set * 4 + pattern. Plus the per-wind tables (OG_UNIT_PATTERN_TABLE, ocean::PatternTables).
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,15 +17,22 @@
 #include "gl/Objects.hpp"
 #include "gl/Shader.hpp"
 #include "ocean/OceanFrame.hpp"
+#include "ocean/PatternSynthesis.hpp"
 #include "ocean/WavePatterns.hpp"
 
 namespace og::render {
 
 class OceanPatterns {
  public:
-  /// Needs a current GL 4.5 context. Uploads the spectra and the per-wind tables.
+  /// Where the transforms run: the GPU's compute shaders, or FFTW on the CPU (uploaded).
+  enum class Fft { Gpu, Cpu };
+  /// Needs a current GL 4.5 context. Uploads the spectra (GPU) and the per-wind tables.
   /// `requestedWindMs`: the reference wind the caller asked for (before clamping), for reuse.
-  explicit OceanPatterns(std::shared_ptr<const ocean::WavePatterns> patterns, double requestedWindMs = -1.0);
+  /// `fft`: none takes the driver profile's choice (gl::DriverProfile::cpuWaveFft).
+  explicit OceanPatterns(std::shared_ptr<const ocean::WavePatterns> patterns, double requestedWindMs = -1.0,
+                         std::optional<Fft> fft = std::nullopt);
+  ~OceanPatterns();
+  [[nodiscard]] Fft fft() const { return cpu_ != nullptr ? Fft::Cpu : Fft::Gpu; }
   [[nodiscard]] double requestedWindMs() const { return requestedWindMs_; }
 
   [[nodiscard]] const ocean::WavePatterns& patterns() const { return *patterns_; }
@@ -69,25 +78,19 @@ class OceanPatterns {
   [[nodiscard]] std::size_t gpuBytes() const { return gpuBytes_; }
 
  private:
-  void runFft(double timeS, int patternCount);
+  struct GpuFft;  ///< the compute programs, the spectra and the FFT's buffers
+  void runGpuFft(double timeS, int patternCount);
   void generateMipmaps(int patternCount);
-  void uploadSpectra();
-  void setLayerUniforms(const gl::Program& program) const;
+  void uploadCpuFft(int patternCount);
 
   std::shared_ptr<const ocean::WavePatterns> patterns_;
   ocean::PatternTables tables_;
-  gl::Program spectrum_;
-  gl::Program line_;  ///< whole-line FFT in shared memory
-  gl::Program finish_;
-  gl::Program mips_;  ///< ocean/pattern_mips.comp: one mip level of both textures
-  gl::Texture h0_;
-  gl::Texture steps_;
-  gl::Texture fields_[2];  ///< ping-pong buffers of the FFT
+  std::unique_ptr<GpuFft> gpu_;                   ///< Fft::Gpu
+  std::unique_ptr<ocean::PatternSynthesis> cpu_;  ///< Fft::Cpu
   gl::Texture displacement_;
   gl::Texture slopes_;
   gl::Texture table_;
   double requestedWindMs_ = -1.0;
-  int fftLayers_ = 0;         ///< layers of the FFT buffers (1 or 2 per pattern layer)
   double timeS_ = 0.0;
   int computed_ = 0;          ///< patterns the textures hold at timeS_ (0: none)
   std::size_t gpuBytes_ = 0;

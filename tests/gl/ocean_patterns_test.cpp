@@ -1,5 +1,7 @@
-// GL tier: the FFT wave patterns computed on the GPU (render/OceanPatterns) against the same
-// sea synthesised on the CPU with FFTW from the same spectra (Dupuy & Bruneton 2012 §2).
+// GL tier: the FFT wave patterns (render/OceanPatterns), transformed by the GPU's compute shaders
+// and by the CPU path (ocean::PatternSynthesis, FFTW in single precision, uploaded), each
+// against the same sea synthesised in double with FFTW from the same spectra (Dupuy & Bruneton
+// 2012 §2).
 #include <gtest/gtest.h>
 #include <fftw3.h>
 
@@ -92,11 +94,18 @@ double relativeError(const std::vector<float>& gpu, int channels, int channel, c
   return worst / std::max(rms(cpu), 1e-12);
 }
 
-TEST(OceanPatterns, GpuFftMatchesCpuSynthesis) {
+// Each test runs with both transforms (the driver profile picks one per driver).
+class OceanPatternsFft : public ::testing::TestWithParam<render::OceanPatterns::Fft> {};
+INSTANTIATE_TEST_SUITE_P(Transforms, OceanPatternsFft,
+                         ::testing::Values(render::OceanPatterns::Fft::Gpu, render::OceanPatterns::Fft::Cpu),
+                         [](const auto& test) { return test.param == render::OceanPatterns::Fft::Gpu ? "Gpu" : "Cpu"; });
+
+TEST_P(OceanPatternsFft, PatternsMatchDoubleSynthesis) {
   auto ctx = gl::createHeadlessContext();
   const ocean::WavePatternParams p = smallPatternParams();
   auto w = std::make_shared<const ocean::WavePatterns>(ocean::makeWavePatterns(p));
-  render::OceanPatterns gpu(w);
+  render::OceanPatterns gpu(w, -1.0, GetParam());
+  ASSERT_EQ(gpu.fft(), GetParam());
   // A large time exercises the exact phase path (t mod period on the CPU, integer steps on the GPU).
   for (const double t : {0.0, 37.25, 3.0e6 + 0.125}) {
     gpu.update(t);
@@ -141,11 +150,11 @@ TEST(OceanPatterns, GpuFftMatchesCpuSynthesis) {
 // A frame that resolves only the largest patterns transforms only those (the "ocean waves"
 // pass at altitude): they, and their mip-maps, are exact at the new time; the rest keep the
 // time they were last transformed at until a frame needs them again.
-TEST(OceanPatterns, PrefixUpdateTransformsOnlyTheLargestPatterns) {
+TEST_P(OceanPatternsFft, PrefixUpdateTransformsOnlyTheLargestPatterns) {
   auto ctx = gl::createHeadlessContext();
   const ocean::WavePatternParams p = smallPatternParams();
   auto w = std::make_shared<const ocean::WavePatterns>(ocean::makeWavePatterns(p));
-  render::OceanPatterns gpu(w);
+  render::OceanPatterns gpu(w, -1.0, GetParam());
   const int n = p.fftSize;
   auto heightError = [&](int set, int pattern, double t) {
     const std::vector<float> disp = readLayer(gpu.displacementTexture(), set * ocean::kPatternCount + pattern, n, 4);
@@ -210,13 +219,13 @@ TEST(OceanPatterns, ResolvedPatternsFollowTheFinestFootprint) {
   EXPECT_TRUE(std::isinf(render::OceanPatterns::finestSeaFootprintM(geo::makeCameraView(pose, 1000, 1000), 1000)));
 }
 
-TEST(OceanPatterns, FftCostAtProductionSize) {
+TEST_P(OceanPatternsFft, FftCostAtProductionSize) {
   auto ctx = gl::createHeadlessContext();
   for (int n : {64, 128}) {
     ocean::WavePatternParams p;
     p.fftSize = n;
     auto w = std::make_shared<const ocean::WavePatterns>(ocean::makeWavePatterns(p));
-    render::OceanPatterns gpu(w);
+    render::OceanPatterns gpu(w, -1.0, GetParam());
     gpu.update(0.0);
     glFinish();
     for (const int patterns : {ocean::kPatternCount, 3}) {
@@ -228,7 +237,8 @@ TEST(OceanPatterns, FftCostAtProductionSize) {
       clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
       const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / 5;
       const double cpu = (static_cast<double>(c1.tv_sec - c0.tv_sec) * 1e3 + static_cast<double>(c1.tv_nsec - c0.tv_nsec) * 1e-6) / 5;
-      std::printf("FFT patterns %d, %d of them: %.1f ms per update (process CPU %.1f ms)\n", n, patterns, ms, cpu);
+      std::printf("FFT patterns %d, %d of them (%s): %.1f ms per update (process CPU %.1f ms)\n", n, patterns,
+                  GetParam() == render::OceanPatterns::Fft::Gpu ? "GPU's compute shaders" : "CPU, FFTW", ms, cpu);
     }
   }
 }
@@ -237,11 +247,11 @@ TEST(OceanPatterns, FftCostAtProductionSize) {
 // every level of every layer transformed, in the displacement and the slopes' moments, is the
 // mean of the 2 x 2 texels under it in the level above, down to 1 x 1; after an update of the
 // three largest patterns only, their levels follow the new time and the others keep theirs.
-TEST(OceanPatterns, MipLevelsAreTheMeansOfTheLevelAbove) {
+TEST_P(OceanPatternsFft, MipLevelsAreTheMeansOfTheLevelAbove) {
   auto ctx = gl::createHeadlessContext();
   const ocean::WavePatternParams p = smallPatternParams();
   auto w = std::make_shared<const ocean::WavePatterns>(ocean::makeWavePatterns(p));
-  render::OceanPatterns gpu(w);
+  render::OceanPatterns gpu(w, -1.0, GetParam());
   const auto level = [&](GLuint texture, int lod, int layer) {
     const int size = std::max(1, p.fftSize >> lod);
     std::vector<float> texels(static_cast<std::size_t>(size) * size * 4);
