@@ -7,12 +7,12 @@
 // Needs (included first): render/elevation.glsl, geo/ellipsoid.glsl; without OCEAN_SIMPLE_SKY
 // uSunDirEcef.
 #ifndef OCEAN_NO_WATER_VOLUME
-out float vFloorDepthM;  // m below mean sea level, negative over land (the fine coast)
-out float vFloorFine;    // 1 where the land mask's fine level moves the floor (water_volume.glsl)
+GRID_OUT float vFloorDepthM;  // m below mean sea level, negative over land (the fine coast)
+GRID_OUT float vFloorFine;    // 1 where the land mask's fine level moves the floor (water_volume.glsl)
 #ifndef OCEAN_SIMPLE_SKY
 #include "atmosphere/skymap.glsl"
-out vec3 vWaterSunE;     // the Sun's irradiance at the vertex's Sun zenith (skymap.glsl's units)
-out vec3 vWaterSkyE;     // the sky's, on a horizontal surface
+GRID_OUT vec3 vWaterSunE;     // the Sun's irradiance at the vertex's Sun zenith (skymap.glsl's units)
+GRID_OUT vec3 vWaterSkyE;     // the sky's, on a horizontal surface
 #endif
 
 void prepareWaterVolumeVertex(vec2 latLon, vec3 up) {
@@ -47,8 +47,8 @@ uniform float uWaveReachM;  // how far the waves move a point of the grid, m (th
 // m (render/OceanRenderer::shadowReachM); negative: the frame's shadows are not routed (every
 // class keeps them).
 uniform float uShadowReachM;
-out float vNearLand;    // > 0 in triangles that may hold land (1 at a flagged vertex)
-out float vNearShadow;  // > 0 in triangles that the terrain's shadows may reach
+GRID_OUT float vNearLand;    // > 0 in triangles that may hold land (1 at a flagged vertex)
+GRID_OUT float vNearShadow;  // > 0 in triangles that the terrain's shadows may reach
 
 // The undisplaced point of grid vertex `i` (camera-relative, m): grid.vert's cast of its ray
 // onto the ellipsoid, rays above the horizon lowered onto it.
@@ -71,7 +71,7 @@ vec3 seaClassGridPoint(ivec2 i) {
 // the farthest of its 8 neighbours' points (the triangles are their convex hulls) plus what the
 // waves move the vertices by, m.
 float seaClassReachM(vec3 rel) {
-  ivec2 i = ivec2(gl_VertexID % uGridSize.x, gl_VertexID / uGridSize.x);
+  ivec2 i = ivec2(gGridVertexId % uGridSize.x, gGridVertexId / uGridSize.x);
   float most = 0.0;
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) most = max(most, distance(rel, seaClassGridPoint(i + ivec2(dx, dy))));
@@ -80,7 +80,7 @@ float seaClassReachM(vec3 rel) {
 
 // The vertex's grid row, for ocean/sea_classify.frag to record the rows of each class's pixels
 // (the provoking vertex's: a triangle row r spans vertex rows r and r + 1).
-flat out int vGridRow;
+GRID_FLAT_OUT int vGridRow;
 
 // Whether a regional layer's border is within `reachM` of (latitude, longitude): the -1 m
 // outside it is sea, but the slope bound does not hold across the border.
@@ -110,7 +110,7 @@ void prepareSeaClassVertex(vec2 latLon, vec3 rel) {
   float reachM = seaClassReachM(rel);
   vNearLand = seaClassLandWithin(latLon, reachM);
   vNearShadow = uShadowReachM < 0.0 ? 0.0 : seaClassLandWithin(latLon, reachM + uShadowReachM);
-  vGridRow = gl_VertexID / uGridSize.x;
+  vGridRow = gGridVertexId / uGridSize.x;
 }
 #else
 // Whether a regional layer's border is within `reachM` of (latitude, longitude): the -1 m

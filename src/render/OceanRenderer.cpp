@@ -538,6 +538,32 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
   glDisable(GL_STENCIL_TEST);
 }
 
+const gl::Program& OceanRenderer::surfaceProgram(unsigned key, const std::vector<std::string>& defines,
+                                                  const std::function<void(const gl::Program&)>& prepareProgram) {
+  gl::Program& surface = surfaceVariants_.at(key);
+  gl::Program& compute = gridComputeVariants_.at(key);
+  if (surface.id() == 0) {
+    surface = gl::Program({{GL_VERTEX_SHADER, "ocean/grid_cached.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_surface.frag"}},
+                          defines);
+    compute = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_vertices.comp"}}, defines);
+  }
+  const auto vertices = static_cast<std::size_t>(gridColumns_) * static_cast<std::size_t>(gridRows_);
+  const std::size_t bytes = vertices * kGridVertexVec4s * 4 * sizeof(float);
+  if (bytes > gridVerticesBytes_) {
+    gridVertices_ = gl::createBuffer();
+    glNamedBufferStorage(gridVertices_.id(), static_cast<GLsizeiptr>(bytes), nullptr, 0);
+    gridVerticesBytes_ = bytes;
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridVerticesBinding, gridVertices_.id());
+  prepareProgram(compute);
+  if (timer_ != nullptr) timer_->mark("ocean grid");
+  compute.use();
+  glDispatchCompute(static_cast<GLuint>((vertices + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  prepareProgram(surface);
+  return surface;
+}
+
 void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int height, const OceanPatterns& patterns,
                                  const ocean::OceanFrame& frame, const OceanLighting& lighting,
                                  double amplitudeScale, const WindTextures& wind, unsigned features,
@@ -551,15 +577,13 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   // The surface pass: with classes where the frame has a floor or a coast to route.
   const bool classes = lighting.classes && (features & (kFeatureWaterVolume | kFeatureCoastTest)) != 0;
   const unsigned surfaceKey = (features & (kFeatureWaterVolume | kFeatureCoastTest)) | (classes ? 4u : 0u);
-  gl::Program& surface = surfaceVariants_.at(surfaceKey);
-  if (surface.id() == 0) {
-    std::vector<std::string> d = featureDefines(features & (kFeatureWaterVolume | kFeatureCoastTest));
-    if (classes) d.emplace_back("OCEAN_SEA_CLASSIFY");
-    surface = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_surface.frag"}}, d);
-  }
-  prepare(surface, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
-  const unsigned routedShadows =
-      classes ? setClassUniforms(surface, view, patterns, lighting, amplitudeScale, features) : kFeatureShadows;
+  std::vector<std::string> d = featureDefines(features & (kFeatureWaterVolume | kFeatureCoastTest));
+  if (classes) d.emplace_back("OCEAN_SEA_CLASSIFY");
+  unsigned routedShadows = kFeatureShadows;
+  const gl::Program& surface = surfaceProgram(surfaceKey, d, [&](const gl::Program& p) {
+    prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
+    if (classes) routedShadows = setClassUniforms(p, view, patterns, lighting, amplitudeScale, features);
+  });
   if (classes) resetClassRows();
   GLint target = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);

@@ -3,6 +3,7 @@
 // shaded per pixel with the filtered BRDF (Bruneton 2010) and whitecaps (Dupuy 2012). Draws into the caller's HDR target with the
 // reversed-Z depth test, over the globe pass.
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -175,6 +176,16 @@ class OceanRenderer {
   void drawGridRows(const gl::Program& p, int firstRow, int lastRow) const;
   static constexpr GLint kNoRow = 1 << 30;
   static constexpr GLuint kClassRowsBinding = 3;  ///< ocean/sea_classify.frag's SeaClassRows
+  /// ocean/grid_vertex_buffer.glsl's GridVertices and its vec4s per vertex.
+  static constexpr GLuint kGridVerticesBinding = 4;
+  static constexpr int kGridVertexVec4s = 10;
+  /// The deferred sea's surface pass: its program (the variant for `key`: water volume, coast
+  /// test, classes bits, compiled on first use) and, before its draw, all the grid's vertices
+  /// computed by the matching compute pass into gridVertices_ (llvmpipe shades a draw's
+  /// vertices on one thread, a dispatch on every core). `prepareProgram` sets a program's
+  /// uniforms for the frame.
+  const gl::Program& surfaceProgram(unsigned key, const std::vector<std::string>& defines,
+                                    const std::function<void(const gl::Program&)>& prepareProgram);
   static constexpr int kFoldRows = 2;
   /// The index buffer's blocks of cells (ensureGrid): rows, columns.
   static constexpr int kGridBlockRows = 16, kGridBlockColumns = 16;
@@ -251,6 +262,9 @@ class OceanRenderer {
   gl::Program classify_;                    ///< ocean/sea_classify.frag; id() 0 until compiled
   std::array<gl::Program, 16> deferredVariants_;  ///< ocean.frag OCEAN_DEFERRED, by feature bits
   std::array<gl::Program, 8> surfaceVariants_;    ///< sea_surface.frag: volume, coast, classes bits
+  std::array<gl::Program, 8> gridComputeVariants_;  ///< grid_vertices.comp, as surfaceVariants_
+  gl::Buffer gridVertices_;  ///< the surface pass's vertices (ocean/grid_vertex_buffer.glsl)
+  std::size_t gridVerticesBytes_ = 0;
   SeaSurfaceBuffer surface_;
   bool lastDeferred_ = false;
   unsigned classesDrawn_ = 0;  ///< classesDrawn()

@@ -1,0 +1,85 @@
+// The projected grid's vertices computed once per frame by a compute pass (ocean/grid_vertices.comp)
+// and read back by the deferred sea's surface pass (ocean/grid_cached.vert), render/OceanRenderer's
+// drawDeferred: llvmpipe runs a draw's vertex shader on one thread, compute work groups on every
+// core (docs/performance.md, "Eighth session"). Each vertex takes GRID_VERTEX_VEC4S vec4s, what
+// ocean/sea_surface.frag reads of ocean/grid_vertex.glsl's outputs (the per-wind bands the
+// deferred shading looks up per pixel are not kept); one layout for every program variant, the
+// outputs a variant lacks left out.
+// Needs (included first): ocean/grid_vertex.glsl with GRID_OUT empty (compute) or out (vertex).
+#if PATTERN_COUNT != 5
+#error "grid_vertex_buffer.glsl packs 5 patterns' shares"
+#endif
+const int GRID_VERTEX_VEC4S = 10;  // render/OceanRenderer::kGridVertexVec4s
+#ifdef GRID_VERTEX_STORE
+layout(std430, binding = 4) writeonly buffer GridVertices { vec4 gridVertices[]; };  // kGridVerticesBinding
+#else
+layout(std430, binding = 4) readonly buffer GridVertices { vec4 gridVertices[]; };
+#endif
+
+#ifdef GRID_VERTEX_STORE
+// After gridVertex(i): its outputs (globals here) into the buffer.
+void storeGridVertex(int i, vec4 position) {
+  int at = i * GRID_VERTEX_VEC4S;
+  gridVertices[at] = position;
+  gridVertices[at + 1] = vec4(vRelative, vOceanXY.x);
+  gridVertices[at + 2] = vec4(vOceanXY.y, vPatternMean, vPatternJacobian.x);
+  gridVertices[at + 3] = vec4(vPatternJacobian.y, vPatternCov);
+  gridVertices[at + 4] = vec4(vPatternShare[0], vPatternShare[1], vPatternShare[2], vPatternShare[3]);
+  vec3 transmittance = vec3(0.0), inscatter = vec3(0.0), sunE = vec3(0.0), skyE = vec3(0.0);
+  float floorDepthM = 0.0, floorFine = 0.0, nearLand = 0.0, nearShadow = 0.0, gridRow = 0.0;
+#ifndef OCEAN_SIMPLE_SKY
+  transmittance = vTransmittance;
+  inscatter = vInscatter;
+#endif
+#ifndef OCEAN_NO_WATER_VOLUME
+  floorDepthM = vFloorDepthM;
+  floorFine = vFloorFine;
+#ifndef OCEAN_SIMPLE_SKY
+  sunE = vWaterSunE;
+  skyE = vWaterSkyE;
+#endif
+#endif
+#ifdef OCEAN_SEA_CLASSIFY
+  nearLand = vNearLand;
+  nearShadow = vNearShadow;
+  gridRow = float(vGridRow);
+#endif
+  gridVertices[at + 5] = vec4(vPatternShare[4], transmittance);
+  gridVertices[at + 6] = vec4(inscatter, floorDepthM);
+  gridVertices[at + 7] = vec4(floorFine, sunE);
+  gridVertices[at + 8] = vec4(skyE, nearLand);
+  gridVertices[at + 9] = vec4(nearShadow, gridRow, 0.0, 0.0);
+}
+#else
+// Vertex i's outputs from the buffer; returns its clip-space position.
+vec4 loadGridVertex(int i) {
+  int at = i * GRID_VERTEX_VEC4S;
+  vec4 v1 = gridVertices[at + 1], v2 = gridVertices[at + 2], v3 = gridVertices[at + 3];
+  vec4 v4 = gridVertices[at + 4], v5 = gridVertices[at + 5], v6 = gridVertices[at + 6];
+  vec4 v7 = gridVertices[at + 7], v8 = gridVertices[at + 8], v9 = gridVertices[at + 9];
+  vRelative = v1.xyz;
+  vOceanXY = vec2(v1.w, v2.x);
+  vPatternMean = v2.yz;
+  vPatternJacobian = vec2(v2.w, v3.x);
+  vPatternCov = v3.yzw;
+  vPatternShare = float[PATTERN_COUNT](v4.x, v4.y, v4.z, v4.w, v5.x);
+#ifndef OCEAN_SIMPLE_SKY
+  vTransmittance = v5.yzw;
+  vInscatter = v6.xyz;
+#endif
+#ifndef OCEAN_NO_WATER_VOLUME
+  vFloorDepthM = v6.w;
+  vFloorFine = v7.x;
+#ifndef OCEAN_SIMPLE_SKY
+  vWaterSunE = v7.yzw;
+  vWaterSkyE = v8.xyz;
+#endif
+#endif
+#ifdef OCEAN_SEA_CLASSIFY
+  vNearLand = v8.w;
+  vNearShadow = v9.x;
+  vGridRow = int(v9.y);
+#endif
+  return gridVertices[at];
+}
+#endif
