@@ -72,7 +72,6 @@ void main() {
   vec3 frameUp = oceanToEcef[2];
   vec3 up = ellipsoidNormal(dir, dist);
   vec2 latLon = latLonOfNormal(up);
-  KEEP_SEA_SAMPLES(vRelative)  // no sea over land (ocean/coast.glsl)
   gSeaSunVisibility = sunVisibility(vRelative, up);  // mountains shade the sea at their feet
   vec2 wind = localWind(latLon);  // speed, azimuth
   SeaSurface sea = oceanSurface(vOceanXY, max(footprint, 1e-4), wind,
@@ -84,6 +83,10 @@ void main() {
 #else
                                 PatternBands(vPatternBand, vPatternAveragedFrom));
 #endif
+  // The resolved slopes' change to the next pixel, taken while the pixel's quad is whole
+  // (before the coast test's discard: derivatives of discarded neighbours are undefined on GPUs).
+  vec2 dSlopeDx = dFdx(sea.meanSlope), dSlopeDy = dFdy(sea.meanSlope);
+  KEEP_SEA_SAMPLES(vRelative)  // no sea over land (ocean/coast.glsl)
 #ifdef OCEAN_VALIDATION_CONSTANT_BRDF
   sea.covariance = vec3(patternTable(PATTERN_COUNT, wind.x).xy, 0.0);  // the paper's constant BRDF
 #endif
@@ -106,7 +109,7 @@ void main() {
   vec3 windDir = sin(wind.y) * local[0] + cos(wind.y) * local[1];
 #ifdef OCEAN_VALIDATION_REFERENCE
   // Validation reference: a mirror per sample, the Sun's disc integrated over the sample's patch.
-  vec3 patchCov = referencePatchCovariance(dFdx(sea.meanSlope), dFdy(sea.meanSlope), wind.y);
+  vec3 patchCov = referencePatchCovariance(dSlopeDx, dSlopeDy, wind.y);
   vec3 radiance = seaRadianceMirror(v, n, windDir, patchCov, up, uSunDirEcef);
   // Weighted sample: premultiplied radiance, weight in alpha (never 0, alpha also marks sea).
   fragRadiance = vec4(oceanSurfaceRadiance(vRelative, radiance) * sampleWeight, max(sampleWeight, 1e-6));
@@ -118,7 +121,7 @@ void main() {
   // How the pixel's slopes spread: the mean slope's change to the next pixel (deferred:
   // between neighbouring pixels' own values, which at the sea's edges may belong to no sea
   // pixel: capped) and the unresolved slopes' standard deviation within it.
-  vec2 slopeSpread = vec2(min(max(length(dFdx(sea.meanSlope)), length(dFdy(sea.meanSlope))), 0.5),
+  vec2 slopeSpread = vec2(min(max(length(dSlopeDx), length(dSlopeDy)), 0.5),
                           sqrt(sea.variance.x + sea.variance.y));
   prepareWaterVolume(vRelative, v, n, up, latLon, vOceanXY, uEcefToOcean, max(footprint, 1e-4), wind, uSunDirEcef,
                      floorSlope, slopeSpread);
