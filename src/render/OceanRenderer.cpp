@@ -538,7 +538,7 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
   glDisable(GL_STENCIL_TEST);
 }
 
-const gl::Program& OceanRenderer::surfaceProgram(unsigned key, const std::vector<std::string>& defines,
+const gl::Program& OceanRenderer::prepareSurfacePass(unsigned key, const std::vector<std::string>& defines,
                                                   const std::function<void(const gl::Program&)>& prepareProgram) {
   gl::Program& surface = surfaceVariants_.at(key);
   gl::Program& compute = gridComputeVariants_.at(key);
@@ -580,7 +580,7 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   std::vector<std::string> d = featureDefines(features & (kFeatureWaterVolume | kFeatureCoastTest));
   if (classes) d.emplace_back("OCEAN_SEA_CLASSIFY");
   unsigned routedShadows = kFeatureShadows;
-  const gl::Program& surface = surfaceProgram(surfaceKey, d, [&](const gl::Program& p) {
+  const gl::Program& surface = prepareSurfacePass(surfaceKey, d, [&](const gl::Program& p) {
     prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
     if (classes) routedShadows = setClassUniforms(p, view, patterns, lighting, amplitudeScale, features);
   });

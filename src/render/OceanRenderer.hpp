@@ -184,7 +184,7 @@ class OceanRenderer {
   /// computed by the matching compute pass into gridVertices_ (llvmpipe shades a draw's
   /// vertices on one thread, a dispatch on every core). `prepareProgram` sets a program's
   /// uniforms for the frame.
-  const gl::Program& surfaceProgram(unsigned key, const std::vector<std::string>& defines,
+  const gl::Program& prepareSurfacePass(unsigned key, const std::vector<std::string>& defines,
                                     const std::function<void(const gl::Program&)>& prepareProgram);
   static constexpr int kFoldRows = 2;
   /// The index buffer's blocks of cells (ensureGrid): rows, columns.
