@@ -25,7 +25,6 @@ uniform float uEyeHeight;     // eye height above the ellipsoid, m
 uniform float uCellAngle;     // angular size of a grid cell, radians
 
 uniform float uCellPixels;    // grid cell size, pixels
-int gGridVertexId;            // the vertex gridVertex is computing
 // The rows: below the screen, where only waves tall enough to rise into view matter, cells
 // kGridCoarseFactor times taller (render/OceanRenderer::draw); from just below the screen's
 // bottom up, cells of uCellPixels.
@@ -61,7 +60,6 @@ GRID_OUT vec3 vInscatter;          // light scattered towards the eye along it (
 #include "ocean/water_volume_vertex.glsl"  // the water volume's smooth terms per vertex
 // Grid vertex `vertexId` (row after row); returns its clip-space position.
 vec4 gridVertex(int vertexId) {
-  gGridVertexId = vertexId;
   int ix = vertexId % uGridSize.x;
   int iy = vertexId / uGridSize.x;
   vec2 ndc = gridNdc(ivec2(ix, iy));
@@ -88,7 +86,7 @@ vec4 gridVertex(int vertexId) {
   vec2 wind = localWind(latLon);
   vec3 d = oceanDisplacement(local.xy, cell, wind) * shoreWaveFactor(latLon, seaStateWaveHeightM(wind.x), cell / WGS84_A);
   prepareWaterVolumeVertex(latLon, ellipsoidNormal(dir, t));
-  prepareSeaClassVertex(latLon, rel);  // the classes' draw only (OCEAN_SEA_CLASSIFY)
+  prepareSeaClassVertex(latLon, rel, ivec2(ix, iy));  // the classes' draw only (OCEAN_SEA_CLASSIFY)
   // Displacement along the frame's axes; near the camera (where waves are resolved at all)
   // they coincide with the local tangent frame.
   vRelative = rel + transpose(uEcefToOcean) * d;

@@ -67,11 +67,11 @@ vec3 seaClassGridPoint(ivec2 i) {
   return t * dir;
 }
 
-// How far from this vertex's undisplaced point any pixel of the triangles around it can lie:
+// How far from the undisplaced point `rel` of grid vertex `i` (column, row) any pixel of the
+// triangles around it can lie:
 // the farthest of its 8 neighbours' points (the triangles are their convex hulls) plus what the
 // waves move the vertices by, m.
-float seaClassReachM(vec3 rel) {
-  ivec2 i = ivec2(gGridVertexId % uGridSize.x, gGridVertexId / uGridSize.x);
+float seaClassReachM(vec3 rel, ivec2 i) {
   float most = 0.0;
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) most = max(most, distance(rel, seaClassGridPoint(i + ivec2(dx, dy))));
@@ -105,12 +105,12 @@ float seaClassLandWithin(vec2 latLon, float reachM) {
 
 // The flags of classes 2 and 4 (the terrain's shadows may reach) where shadows are routed, and
 // of class 5 (land near: every feature) where the coast test is routed
-// (ocean/sea_classify.frag).
-void prepareSeaClassVertex(vec2 latLon, vec3 rel) {
-  float reachM = seaClassReachM(rel);
+// (ocean/sea_classify.frag), for grid vertex `i` (column, row) at `rel`.
+void prepareSeaClassVertex(vec2 latLon, vec3 rel, ivec2 i) {
+  float reachM = seaClassReachM(rel, i);
   vNearLand = seaClassLandWithin(latLon, reachM);
   vNearShadow = uShadowReachM < 0.0 ? 0.0 : seaClassLandWithin(latLon, reachM + uShadowReachM);
-  vGridRow = gGridVertexId / uGridSize.x;
+  vGridRow = i.y;
 }
 #else
 // Whether a regional layer's border is within `reachM` of (latitude, longitude): the -1 m
@@ -122,5 +122,5 @@ bool seaClassNearLayerBorder(vec2 latLon, float reachM) {
   return any(lessThan(cell, margin - 0.5)) || any(greaterThan(cell, uElevationSize - 0.5 - margin));
 }
 
-void prepareSeaClassVertex(vec2 latLon, vec3 rel) {}
+void prepareSeaClassVertex(vec2 latLon, vec3 rel, ivec2 i) {}
 #endif

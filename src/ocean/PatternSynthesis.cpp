@@ -12,10 +12,6 @@ namespace og::ocean {
 namespace {
 constexpr double kTwoPi = 6.283185307179586;
 constexpr int kLayers = kPatternSets * kPatternCount;
-
-bool displaced(const WavePatternParams& p, int pattern) {
-  return p.choppiness[static_cast<std::size_t>(pattern)] >= kDisplacedChoppiness;
-}
 }  // namespace
 
 struct PatternSynthesis::Mode {
@@ -37,7 +33,7 @@ struct PatternSynthesis::Plan {
 PatternSynthesis::PatternSynthesis(const WavePatterns& patterns)
     : patterns_(patterns), n_(patterns.params.fftSize), plan_(std::make_unique<Plan>()) {
   const WavePatternParams& p = patterns_.params;
-  for (int i = 0; i < kPatternCount; ++i) slotsPerSet_ += displaced(p, i) ? 3 : 2;
+  slotsPerSet_ = fftSlots(p, kPatternCount);
   const int n = n_;
   const auto texels = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
   // Only the modes in a pattern's band are nonzero (a fifth of the tile): the spectra at a
@@ -71,18 +67,11 @@ PatternSynthesis::PatternSynthesis(const WavePatterns& patterns)
 
 PatternSynthesis::~PatternSynthesis() = default;
 
-int PatternSynthesis::slotOf(int pattern) const {
-  int slot = 0;
-  for (int i = 0; i < pattern; ++i) slot += displaced(patterns_.params, i) ? 3 : 2;
-  return slot;
-}
-
 void PatternSynthesis::compute(double timeS, int patternCount) {
   patternCount = std::clamp(patternCount, 1, kPatternCount);
-  const double tau = std::fmod(std::fmod(timeS, kWaveRepeatPeriodS) + kWaveRepeatPeriodS, kWaveRepeatPeriodS) /
-                     kWaveRepeatPeriodS;
+  const double tau = waveRepeatFraction(timeS);
   const auto texels = static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_);
-  const int slots = slotOf(patternCount);
+  const int slots = fftSlots(patterns_.params, patternCount);
   // The sets are independent: one on a second thread (FFTW's execute is thread-safe).
   auto run = [&](int set) {
     fillSpectra(set, patternCount, tau);
@@ -106,11 +95,11 @@ void PatternSynthesis::compute(double timeS, int patternCount) {
 void PatternSynthesis::fillSpectra(int set, int patternCount, double tau) {
   const auto texels = static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_);
   auto* first = reinterpret_cast<std::complex<float>*>(plan_->buffer) + static_cast<std::size_t>(set * slotsPerSet_) * texels;
-  std::fill(first, first + static_cast<std::size_t>(slotOf(patternCount)) * texels, std::complex<float>());
+  std::fill(first, first + static_cast<std::size_t>(fftSlots(patterns_.params, patternCount)) * texels, std::complex<float>());
   const std::complex<float> i1(0.0f, 1.0f);
   for (int pattern = 0; pattern < patternCount; ++pattern) {
-    std::complex<float>* slot = first + static_cast<std::size_t>(slotOf(pattern)) * texels;
-    const bool chop = displaced(patterns_.params, pattern);
+    std::complex<float>* slot = first + static_cast<std::size_t>(fftSlots(patterns_.params, pattern)) * texels;
+    const bool chop = patternDisplaced(patterns_.params, pattern);
     for (const Mode& m : modes_[static_cast<std::size_t>(set * kPatternCount + pattern)]) {
       double cycles = std::fmod(static_cast<double>(m.steps) * tau, 1.0);
       const auto phase = static_cast<float>(kTwoPi * cycles);
@@ -131,9 +120,9 @@ void PatternSynthesis::finish(int set, int patternCount) {
   const double windAngle = WavePatterns::setWindAngleRad(set);
   const auto ax = static_cast<float>(std::cos(windAngle)), ay = static_cast<float>(std::sin(windAngle));
   for (int pattern = 0; pattern < patternCount; ++pattern) {
-    const std::complex<float>* slot = first + static_cast<std::size_t>(slotOf(pattern)) * texels;
+    const std::complex<float>* slot = first + static_cast<std::size_t>(fftSlots(patterns_.params, pattern)) * texels;
     const auto lambda = static_cast<float>(patterns_.params.choppiness[static_cast<std::size_t>(pattern)]);
-    const bool chop = displaced(patterns_.params, pattern);
+    const bool chop = patternDisplaced(patterns_.params, pattern);
     const std::size_t layer = static_cast<std::size_t>(set * kPatternCount + pattern) * texels * 4;
     float* disp = displacement_[0].data() + layer;
     float* slopes = slopes_[0].data() + layer;

@@ -46,7 +46,6 @@ class PatternSynthesis {
   void fillSpectra(int set, int patternCount, double tau);
   void finish(int set, int patternCount);
   void reduceMips(int set, int patternCount);
-  [[nodiscard]] int slotOf(int pattern) const;
 
   const WavePatterns& patterns_;
   int n_ = 0;

@@ -111,6 +111,20 @@ double directionalSpectrum(double k, double phiRad, double u10) {
   return elevationSpectrum(k, u10) / k * spread / (2.0 * kPi);
 }
 
+bool patternDisplaced(const WavePatternParams& p, int pattern) {
+  return p.choppiness[static_cast<std::size_t>(pattern)] >= kDisplacedChoppiness;
+}
+
+int fftSlots(const WavePatternParams& p, int patternCount) {
+  int slots = 0;
+  for (int i = 0; i < patternCount; ++i) slots += patternDisplaced(p, i) ? 3 : 2;
+  return slots;
+}
+
+double waveRepeatFraction(double timeS) {
+  return std::fmod(std::fmod(timeS, kWaveRepeatPeriodS) + kWaveRepeatPeriodS, kWaveRepeatPeriodS) / kWaveRepeatPeriodS;
+}
+
 std::uint32_t patternFrequencyStep(double k) {
   const double step = 2.0 * kPi / kWaveRepeatPeriodS;
   return std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::lround(angularFrequency(k) / step)));

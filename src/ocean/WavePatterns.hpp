@@ -58,6 +58,12 @@ struct WavePatternParams {
 /// Patterns with at least this choppiness are displaced horizontally (Dupuy 2012 Eq. 1); below
 /// it the displacement would be a fraction of a grid cell wherever the pattern is geometry.
 inline constexpr double kDisplacedChoppiness = 0.5;
+/// Whether pattern `pattern` of `p` is displaced horizontally (kDisplacedChoppiness).
+[[nodiscard]] bool patternDisplaced(const WavePatternParams& p, int pattern);
+/// Complex fields the FFTs of the first `patternCount` patterns of one direction set take, in
+/// pattern order (h + i dh/dx, dh/dy + i t, and Dx + i Dy for displaced patterns: 2 or 3 each);
+/// pattern i's first is fftSlots(p, i) (shaders/ocean/fft_common.glsl, ocean::PatternSynthesis).
+[[nodiscard]] int fftSlots(const WavePatternParams& p, int patternCount);
 
 /// Tile sizes for fftSize modes: the largest 4983 m (waves up to ~2.5 x the peak of a 45 m/s
 /// wind), the finest such that its shortest wave is kShortestPatternWaveM, and the ratios
@@ -101,6 +107,10 @@ WavePatterns makeWavePatterns(const WavePatternParams& params);
 /// (Eqs. 57-59) with its energy moved to the downwind half-plane (waves run with the wind);
 /// phi from the wind direction. Integrates to the height variance.
 double directionalSpectrum(double k, double phiRad, double u10);
+
+/// The waves' time as a fraction of their repeat period, [0, 1), for any `timeS` (s, negative
+/// too), in double: the phase every mode's integer frequency step multiplies.
+[[nodiscard]] double waveRepeatFraction(double timeS);
 
 /// Angular frequency of the patterns: omega(k) rounded to a multiple of 2 pi / kWaveRepeatPeriodS
 /// (at least one step); returned as that integer multiple.

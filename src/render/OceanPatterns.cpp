@@ -57,15 +57,11 @@ gl::Texture makeTableTexture(const ocean::PatternTables& t) {
 int displacedMask(const ocean::WavePatternParams& p) {
   int mask = 0;
   for (int i = 0; i < ocean::kPatternCount; ++i)
-    if (p.choppiness[static_cast<std::size_t>(i)] >= ocean::kDisplacedChoppiness) mask |= 1 << i;
+    if (ocean::patternDisplaced(p, i)) mask |= 1 << i;
   return mask;
 }
 
-int fftLayersPerSet(const ocean::WavePatternParams& p) {
-  int slots = 0;
-  for (int i = 0; i < ocean::kPatternCount; ++i) slots += (displacedMask(p) >> i & 1) != 0 ? 3 : 2;
-  return (slots + 1) / 2;
-}
+int fftLayersPerSet(const ocean::WavePatternParams& p) { return (ocean::fftSlots(p, ocean::kPatternCount) + 1) / 2; }
 
 std::vector<std::string> fftDefines(const ocean::WavePatternParams& p) {
   return {"PATTERN_COUNT " + std::to_string(ocean::kPatternCount),
@@ -220,17 +216,14 @@ void OceanPatterns::runGpuFft(double timeS, int patternCount) {
   const ocean::WavePatterns& w = *patterns_;
   const int n = w.params.fftSize;
   // tau = (t mod period) / period, split into a 12-bit integer part and the rest (exact).
-  const double tau = std::fmod(std::fmod(timeS, ocean::kWaveRepeatPeriodS) + ocean::kWaveRepeatPeriodS,
-                               ocean::kWaveRepeatPeriodS) / ocean::kWaveRepeatPeriodS;
+  const double tau = ocean::waveRepeatFraction(timeS);
   const double coarse = std::floor(tau * 4096.0);
   glProgramUniform1ui(gpu_->spectrum.id(), gpu_->spectrum.location("uTimeSteps"), static_cast<GLuint>(coarse));
   gpu_->spectrum.set("uTimeFine", static_cast<float>(tau - coarse / 4096.0));
   gpu_->spectrum.set("uPatternCount", patternCount);
   gpu_->finish.set("uPatternCount", patternCount);
   // The FFT layers the first patternCount patterns fill (slots in pattern order, two a layer).
-  int slots = 0;
-  for (int i = 0; i < patternCount; ++i) slots += (displacedMask(w.params) >> i & 1) != 0 ? 3 : 2;
-  const int lineLayers = std::min((slots + 1) / 2, fftLayersPerSet(w.params));
+  const int lineLayers = std::min((ocean::fftSlots(w.params, patternCount) + 1) / 2, fftLayersPerSet(w.params));
   glBindImageTexture(0, gpu_->h0.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
   glBindImageTexture(1, gpu_->steps.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
   glBindImageTexture(2, gpu_->fields[0].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
