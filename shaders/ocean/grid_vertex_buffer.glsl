@@ -82,4 +82,8 @@ vec4 loadGridVertex(int i) {
 #endif
   return gridVertices[at];
 }
+#ifdef OCEAN_SEA_CLASSIFY
+// Vertex i's vNearLand alone (ocean/grid_near_land.comp).
+float gridVertexNearLand(int i) { return gridVertices[i * GRID_VERTEX_VEC4S + 8].w; }
+#endif
 #endif

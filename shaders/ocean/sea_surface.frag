@@ -45,13 +45,13 @@ void main() {
 #else
   vec2 floorSlope = vec2(0.0);
 #endif
+  // With classes the grid is drawn twice, the triangles near land by the program with the coast
+  // test, the others by one without it (ocean/grid_near_land.comp): a condition here would
+  // skip nothing on llvmpipe.
+  KEEP_SEA_SAMPLES(vRelative)
 #ifdef OCEAN_SEA_CLASSIFY
-  // The coast test only in triangles where land may be near (a loop of 0 or 1 trips: llvmpipe
-  // skips it where no pixel of a block enters).
-  for (int near = 0; near < (vNearLand > 0.0 ? 1 : 0); ++near) KEEP_SEA_SAMPLES(vRelative)
   gl_FragStencilRefARB = seaClassOfFragment();
 #else
-  KEEP_SEA_SAMPLES(vRelative)
   gl_FragStencilRefARB = 1;
 #endif
   writeSeaSurface(footprint, floorSlope);

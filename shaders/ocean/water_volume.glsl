@@ -146,8 +146,8 @@ float floorPlaneRoot(float gap0, float down, float depthGain, float sMax) {
 #ifndef OCEAN_NO_WATER_VOLUME
 SEA_IN float vFloorDepthM;
 // Above 0 where a vertex of the triangle has the land mask's fine level moving the floor (its
-// coast differs from the 2′ one's there): only those pixels pay for the fine level's lookups
-// in the search below (llvmpipe: ~20 % of the floor class over the Bahamas' cays otherwise).
+// coast differs from the 2′ one's there): only those pixels need the fine level's lookups in
+// the search below (a GPU skips them elsewhere; llvmpipe runs them masked for every pixel).
 SEA_IN float vFloorFine;
 #ifndef OCEAN_SIMPLE_SKY
 SEA_IN vec3 vWaterSunE;  // the Sun's and the sky's irradiance at sea level
@@ -187,7 +187,7 @@ void prepareWaterVolume(vec3 rel, vec3 v, vec3 n, vec3 up, vec2 latLon, vec2 oce
   // (exact on a flat floor, ~1 % of the depth on the steepest shelves of a 5' layer).
   float sHit = floorPlaneRoot(gap0, down, dot(floorSlope, (ecefToOcean * t).xy), dMax);
   float gapHit = 0.0;
-  for (int fine = 0; fine < (vFloorFine > 0.0 ? 1 : 0); ++fine) {  // 0/1 trips: llvmpipe skips it
+  for (int fine = 0; fine < (vFloorFine > 0.0 ? 1 : 0); ++fine) {  // a GPU skips it; llvmpipe runs it, masked
     float s1 = min(gap0 / -down, dMax);
     float footprintRad = footprintM / WGS84_A;
     float gap1 = s1 * down - floorHeightAlong(latLon, horizontal, s1, footprintRad);

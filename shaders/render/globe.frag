@@ -446,8 +446,9 @@ void main() {
   float muS = dot(uSunDir, uCamUp);
   float skyCount = 4.0 - float(rays.nHit);
   vec3 radiance = vec3(0.0);
-  // Two loops of 0 or 1 trips rather than one if/else (see above): the globe's samples through
-  // the aerial perspective of their mean path, the sky's through the sky to the boundary.
+  // Two loops of 0 or 1 trips: the globe's samples through the aerial perspective of their mean
+  // path, the sky's through the sky to the boundary (llvmpipe runs each loop's first trip,
+  // masked, even where no pixel enters it: the parts' programs leave out what they lack).
   for (int k = 0; k < (PART_HAS_SURFACE && nHit > 0 ? 1 : 0); ++k)
     radiance += throughAerialPerspective(surface, hitDir, hitT, coverage);
   if (PART_HAS_SKY) {

@@ -76,8 +76,10 @@ uvec4 landMaskFineTexel(int i) {
 // the refined block from the rank index (data::LandMask::block).
 uvec2 landMaskBlock(int column, int row, uvec2 bits) {
   uvec2 block = (bits.x & 1u) != 0u ? uvec2(~0u) : uvec2(0u);
-  // A loop of 0 or 1 trips, not an if: llvmpipe runs both sides of an if (the fetches for every
-  // pixel), but skips a loop that no pixel of the vector enters.
+  // Behind a condition (a loop of 0 or 1 trips): a GPU skips the fetches where no pixel of a
+  // warp needs them. llvmpipe (Mesa 22.3) runs them for every pixel, masked, whatever the
+  // condition: loops run their first trip even when no pixel enters (docs/performance.md,
+  // "Ninth session").
   for (int k = 0; k < int(bits.y & 1u); ++k) {
     int rows = textureSize(uLandMask, 0).y;
     int perRow = landMaskDiv96(2 * rows + 95);
@@ -122,7 +124,7 @@ FineBlocks landMaskFineBlocks(int x0, int x1, int y0, int y1, int rows) {
   f.value = (land & 1u) != 0u ? 1.0 : 0.0;
   f.spline = refined != 0u || ((land & all) != 0u && (land & all) != all);
   f.b00 = f.b10 = f.b01 = f.b11 = uvec2(f.value > 0.5 ? ~0u : 0u);
-  for (int once = 0; once < (f.spline ? 1 : 0); ++once) {  // (a loop, not an if: landMaskBlock)
+  for (int once = 0; once < (f.spline ? 1 : 0); ++once) {  // (as in landMaskBlock)
     f.b00 = landMaskBlock(first, f.by0, south);
     int second = bx1 >= blockCols ? bx1 - blockCols : bx1;
     f.b10 = bx1 != f.bx0 ? landMaskBlock(second, f.by0, south >> 1u) : f.b00;
@@ -204,7 +206,7 @@ float coastFootprintRad(float t, float pixelRad, float cosIncidence) {
 float landFraction(vec2 latLon, float footprintRad) {
   float w = landMaskFineWeight(footprintRad);
   float coarse = 0.0, fine = 0.0;
-  for (int once = 0; once < (w < 1.0 ? 1 : 0); ++once) coarse = landFraction(latLon);  // (loops: landMaskBlock)
+  for (int once = 0; once < (w < 1.0 ? 1 : 0); ++once) coarse = landFraction(latLon);  // (as in landMaskBlock)
   for (int once = 0; once < (w > 0.0 ? 1 : 0); ++once) fine = landFractionFine(latLon);
   return mix(coarse, fine, w);
 }

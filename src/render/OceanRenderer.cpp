@@ -538,15 +538,19 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
   glDisable(GL_STENCIL_TEST);
 }
 
-const gl::Program& OceanRenderer::prepareSurfacePass(unsigned key, const std::vector<std::string>& defines,
-                                                  const std::function<void(const gl::Program&)>& prepareProgram) {
+const gl::Program& OceanRenderer::surfaceProgram(unsigned key, const std::vector<std::string>& defines) {
   gl::Program& surface = surfaceVariants_.at(key);
-  gl::Program& compute = gridComputeVariants_.at(key);
-  if (surface.id() == 0) {
+  if (surface.id() == 0)
     surface = gl::Program({{GL_VERTEX_SHADER, "ocean/grid_cached.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_surface.frag"}},
                           defines);
-    compute = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_vertices.comp"}}, defines);
-  }
+  return surface;
+}
+
+const gl::Program& OceanRenderer::prepareSurfacePass(unsigned key, const std::vector<std::string>& defines,
+                                                  const std::function<void(const gl::Program&)>& prepareProgram) {
+  const gl::Program& surface = surfaceProgram(key, defines);
+  gl::Program& compute = gridComputeVariants_.at(key);
+  if (compute.id() == 0) compute = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_vertices.comp"}}, defines);
   const auto vertices = static_cast<std::size_t>(gridColumns_) * static_cast<std::size_t>(gridRows_);
   const std::size_t bytes = vertices * kGridVertexVec4s * 4 * sizeof(float);
   if (bytes > gridVerticesBytes_) {
@@ -562,6 +566,32 @@ const gl::Program& OceanRenderer::prepareSurfacePass(unsigned key, const std::ve
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   prepareProgram(surface);
   return surface;
+}
+
+void OceanRenderer::splitNearLand(const std::vector<std::string>& defines) {
+  if (nearLandSplit_.id() == 0) nearLandSplit_ = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_near_land.comp"}}, defines);
+  const auto bytes = static_cast<GLsizeiptr>(static_cast<std::size_t>(indexCount_) * sizeof(GLuint));
+  if (bytes > nearLandSplitBytes_) {
+    openIndices_ = gl::createBuffer();
+    nearLandIndices_ = gl::createBuffer();
+    glNamedBufferStorage(openIndices_.id(), bytes, nullptr, 0);
+    glNamedBufferStorage(nearLandIndices_.id(), bytes, nullptr, 0);
+    nearLandSplitBytes_ = bytes;
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridIndicesBinding, indices_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOpenIndicesBinding, openIndices_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kNearLandIndicesBinding, nearLandIndices_.id());
+  const int triangles = indexCount_ / 3;
+  nearLandSplit_.set("uTriangleCount", triangles);
+  nearLandSplit_.use();
+  glDispatchCompute(static_cast<GLuint>((triangles + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT);
+}
+
+void OceanRenderer::drawGridIndices(const gl::Program& p, const gl::Buffer& indices) const {
+  glVertexArrayElementBuffer(vao_.id(), indices.id());
+  drawGrid(p);
+  glVertexArrayElementBuffer(vao_.id(), indices_.id());
 }
 
 void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int height, const OceanPatterns& patterns,
@@ -580,10 +610,20 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   std::vector<std::string> d = featureDefines(features & (kFeatureWaterVolume | kFeatureCoastTest));
   if (classes) d.emplace_back("OCEAN_SEA_CLASSIFY");
   unsigned routedShadows = kFeatureShadows;
-  const gl::Program& surface = prepareSurfacePass(surfaceKey, d, [&](const gl::Program& p) {
+  const auto prepareSurface = [&](const gl::Program& p) {
     prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
     if (classes) routedShadows = setClassUniforms(p, view, patterns, lighting, amplitudeScale, features);
-  });
+  };
+  const gl::Program& surface = prepareSurfacePass(surfaceKey, d, prepareSurface);
+  // With classes the coast test runs only where land may be near: the grid in two draws.
+  const gl::Program* open = nullptr;
+  if (classes && (features & kFeatureCoastTest) != 0) {
+    splitNearLand(d);
+    std::vector<std::string> openDefines = featureDefines(features & kFeatureWaterVolume);
+    openDefines.emplace_back("OCEAN_SEA_CLASSIFY");
+    open = &surfaceProgram(surfaceKey & ~kFeatureCoastTest, openDefines);
+    prepareSurface(*open);
+  }
   if (classes) resetClassRows();
   GLint target = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
@@ -595,7 +635,11 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   glStencilFunc(GL_ALWAYS, 0, 0xff);  // the reference is the shader's (gl_FragStencilRefARB)
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   if (timer_ != nullptr) timer_->mark("ocean surface");
-  const bool seaVisible = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] { drawGrid(surface); }) != 0;
+  const bool seaVisible = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] {
+                            if (open == nullptr) return drawGrid(surface);
+                            drawGridIndices(*open, openIndices_);
+                            drawGridIndices(surface, nearLandIndices_);
+                          }) != 0;
   std::array<GLint, 2 * kSeaClasses> rows = noClassRows();
   rows.at(0) = 0, rows.at(1) = 0;  // without classes, all is class 1
   if (classes && seaVisible) {

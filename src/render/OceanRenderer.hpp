@@ -186,6 +186,18 @@ class OceanRenderer {
   /// uniforms for the frame.
   const gl::Program& prepareSurfacePass(unsigned key, const std::vector<std::string>& defines,
                                     const std::function<void(const gl::Program&)>& prepareProgram);
+  /// The surface pass's program for `key` (as prepareSurfacePass), compiled on first use.
+  const gl::Program& surfaceProgram(unsigned key, const std::vector<std::string>& defines);
+  /// The grid's index list split in two copies by ocean/grid_near_land.comp (after the surface
+  /// pass's vertices): openIndices_ without the triangles where land may be near, nearLandIndices_
+  /// with only those (the others degenerate), so that only the second draw pays for the coast test
+  /// (llvmpipe runs a fragment shader's every line whatever its conditions). `defines`: the
+  /// surface pass's, with classes.
+  void splitNearLand(const std::vector<std::string>& defines);
+  /// drawGrid with another index list of the same layout (openIndices_, nearLandIndices_).
+  void drawGridIndices(const gl::Program& p, const gl::Buffer& indices) const;
+  /// ocean/grid_near_land.comp's buffers: the grid's indices, its two copies.
+  static constexpr GLuint kGridIndicesBinding = 5, kOpenIndicesBinding = 6, kNearLandIndicesBinding = 7;
   static constexpr int kFoldRows = 2;
   /// The index buffer's blocks of cells (ensureGrid): rows, columns.
   static constexpr int kGridBlockRows = 16, kGridBlockColumns = 16;
@@ -264,6 +276,9 @@ class OceanRenderer {
   std::array<gl::Program, 8> surfaceVariants_;    ///< sea_surface.frag: volume, coast, classes bits
   std::array<gl::Program, 8> gridComputeVariants_;  ///< grid_vertices.comp, as surfaceVariants_
   gl::Buffer gridVertices_;  ///< the surface pass's vertices (ocean/grid_vertex_buffer.glsl)
+  gl::Program nearLandSplit_;  ///< ocean/grid_near_land.comp; id() 0 until first used
+  gl::Buffer openIndices_, nearLandIndices_;  ///< splitNearLand's copies of indices_
+  GLsizeiptr nearLandSplitBytes_ = 0;
   std::size_t gridVerticesBytes_ = 0;
   SeaSurfaceBuffer surface_;
   bool lastDeferred_ = false;
