@@ -21,7 +21,6 @@
 // Needs PATTERN_COUNT defined (render/OceanPatterns::shaderDefines).
 #include "common/constants.glsl"
 
-layout(binding = OG_UNIT_PATTERN_TABLE) uniform sampler2D uPatternTable;            // per wind speed, see below
 layout(binding = OG_UNIT_PATTERN_DISPLACEMENT) uniform sampler2DArray uPatternDisplacement; // (lambda Dx, lambda Dy, h, 0)
 layout(binding = OG_UNIT_PATTERN_SLOPES) uniform sampler2DArray uPatternSlopes;       // (s_u, s_c, s_u² + s_c², j)
 uniform float uPatternSizeM[PATTERN_COUNT];
@@ -33,15 +32,20 @@ uniform float uWhitecapThreshold;             // epsilon of Dupuy 2012 Eq. 3
 uniform float uPatternFftSize;                 // texels per tile side
 uniform float uPatternTopLod;                 // log2(uPatternFftSize): the 1x1 mip level
 
-// uPatternTable: column c = wind speed c m/s (0..50); row i < PATTERN_COUNT: pattern i's
+// The per-wind tables (render/OceanPatterns, a uniform block: llvmpipe reads it faster than a
+// texture): column c = wind speed c m/s (0..50); row i < PATTERN_COUNT: pattern i's
 // (height scale, slope scale, up and cross slope variance of its band at that wind); row
 // PATTERN_COUNT: (tail up, tail cross, Jacobian variance of the whole sea, -); row
 // PATTERN_COUNT + 1 + i: (pattern i's Jacobian variance at that wind, -, -, -).
+const int PATTERN_TABLE_COLUMNS = 51;
+layout(std140, binding = OG_BLOCK_PATTERN_TABLE) uniform PatternTable {
+  vec4 uPatternTable[PATTERN_TABLE_COLUMNS * (2 * PATTERN_COUNT + 1)];  // row by row
+};
 vec4 patternTable(int row, float speedMs) {
   float c = clamp(speedMs, 0.0, 50.0);
-  int c0 = min(int(c), 49);
-  return mix(texelFetch(uPatternTable, ivec2(c0, row), 0), texelFetch(uPatternTable, ivec2(c0 + 1, row), 0),
-             c - float(c0));
+  int c0 = min(int(c), PATTERN_TABLE_COLUMNS - 2);
+  int at = row * PATTERN_TABLE_COLUMNS + c0;
+  return mix(uPatternTable[at], uPatternTable[at + 1], c - float(c0));
 }
 
 // The two direction bins around a wind blowing towards `thetaField` (radians, counter-clockwise

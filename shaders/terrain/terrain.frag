@@ -108,21 +108,25 @@ void main() {
   vec3 viewDir = normalize(vRelative);
   float maskFootprintRad = coastFootprintRad(length(vRelative), max(length(dFdx(viewDir)), length(dFdy(viewDir))),
                                              -dot(up, viewDir));
+  // Above the ceiling (the globe's sea) the mask decides every pixel of a tile with water;
+  // below it, the pixels of the mesh more than a metre under the sea, tested where the view
+  // ray crosses sea level, as the grid tests its surface (the mesh point lies |h| below it, up
+  // to a fine cell farther along the ray at oblique views). One lookup for either case:
+  // llvmpipe runs both sides of an if for every pixel.
+  bool globeSea = uSeaFromGlobe == 1;
   bool maskCoast = uTileHasWater == 1 && landMaskOn();
-  if (uSeaFromGlobe == 1 && maskCoast) {
-    if (landFraction(vec2(lat, lon), maskFootprintRad) < 0.5) discard;
-    heightM = max(heightM, 0.0);
-  } else if (heightM < (uSeaFromGlobe == 1 ? 0.0 : -1.0)) {
-    if (uSeaFromGlobe == 1 || !maskCoast) discard;
-    // Tested where the view ray crosses sea level, as the grid tests its surface: the mesh
-    // point lies |h| below it, up to a fine cell farther along the ray at oblique views.
+  bool below = heightM < (globeSea ? 0.0 : -1.0);
+  if (below && !maskCoast) discard;
+  bool maskTest = maskCoast && (globeSea || below);
+  vec2 maskLatLon = vec2(lat, lon);
+  if (!globeSea && below) {
     vec3 toSea = vRelative * (heightM / (uCamAltitude - heightM));
     vec3 east = vec3(-sin(lon), cos(lon), 0.0);
     vec3 north = vec3(-sin(lat) * cos(lon), -sin(lat) * sin(lon), cos(lat));
-    vec2 seaLatLon = vec2(lat, lon) + vec2(dot(toSea, north), dot(toSea, east) / max(cos(lat), 1e-3)) / WGS84_A;
-    if (landFraction(seaLatLon, maskFootprintRad) < 0.5) discard;
-    heightM = 0.0;
+    maskLatLon += vec2(dot(toSea, north), dot(toSea, east) / max(cos(lat), 1e-3)) / WGS84_A;
   }
+  if (maskTest && landFraction(maskLatLon, maskFootprintRad) < 0.5) discard;
+  if (maskTest) heightM = max(heightM, 0.0);
 #endif
   // Triangles that collapse at a pole give no normal (zero or NaN): the vertical stands in.
   vec3 n = dot(vNormal, vNormal) > 1e-20 ? normalize(vNormal) : up;

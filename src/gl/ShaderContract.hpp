@@ -21,7 +21,6 @@ enum TextureUnit : unsigned {
   kUnitSkyIrradiance = 7,
   kUnitBumpMap = 8,              ///< ocean/classic.frag
   kUnitFresnelRamp = 9,
-  kUnitPatternTable = 10,        ///< ocean/patterns.glsl
   kUnitShadowMap = 11,           ///< terrain/shadow.glsl
   kUnitPatternDisplacement = 12,
   kUnitPatternSlopes = 13,
@@ -38,6 +37,11 @@ enum TextureUnit : unsigned {
   // Passes of their own, which bind nothing else, reuse unit 0:
   kUnitToneRadiance = 0,         ///< render/tonemap.frag uRadiance (the HDR target)
   kUnitOverlayText = 0,          ///< viewer/text.frag uText (the viewer's text overlay)
+};
+
+/// Binding points of the uniform blocks (GLSL: OG_BLOCK_<NAME>).
+enum UniformBlockBinding : unsigned {
+  kBlockPatternTable = 0,  ///< ocean/patterns.glsl PatternTable (render/OceanPatterns)
 };
 
 /// The contract as "NAME value" #define bodies, in full double precision.

@@ -24,8 +24,12 @@ int log2Of(int n) {
   return l;
 }
 
-// The per-wind tables as a texture, laid out as shaders/ocean/patterns.glsl reads them.
-gl::Texture makeTableTexture(const ocean::PatternTables& t) {
+// The per-wind tables as a uniform block, laid out as shaders/ocean/patterns.glsl reads them
+// (row by row, a vec4 per wind speed: std140 packs a vec4 array tightly). A block rather than
+// a texture: llvmpipe's indexed block reads cost a pixel less than texel fetches (~10 % of the
+// open sea's shading, docs/performance.md "Ninth session").
+gl::Buffer makeTableBuffer(const ocean::PatternTables& t) {
+  static_assert(ocean::PatternTables::kSpeeds == 51, "shaders/ocean/patterns.glsl's PATTERN_TABLE_COLUMNS");
   constexpr int kColumns = ocean::PatternTables::kSpeeds, kRows = 2 * ocean::kPatternCount + 1;
   std::vector<float> texels(static_cast<std::size_t>(4 * kColumns * kRows), 0.0f);
   auto at = [&](int c, int r) { return &texels[static_cast<std::size_t>(4 * (r * kColumns + c))]; };
@@ -44,13 +48,9 @@ gl::Texture makeTableTexture(const ocean::PatternTables& t) {
     v[1] = static_cast<float>(t.tail[static_cast<std::size_t>(c)].cross);
     v[2] = static_cast<float>(t.jacobianVariance[static_cast<std::size_t>(c)]);
   }
-  gl::Texture tex = gl::createTexture(GL_TEXTURE_2D);
-  glTextureStorage2D(tex.id(), 1, GL_RGBA32F, kColumns, kRows);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage2D(tex.id(), 0, 0, 0, kColumns, kRows, GL_RGBA, GL_FLOAT, texels.data());
-  glTextureParameteri(tex.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(tex.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  return tex;
+  gl::Buffer buffer = gl::createBuffer();
+  glNamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(texels.size() * sizeof(float)), texels.data(), 0);
+  return buffer;
 }
 
 // Bit p set: pattern p is displaced horizontally (three FFT slots instead of two).
@@ -115,7 +115,7 @@ OceanPatterns::OceanPatterns(std::shared_ptr<const ocean::WavePatterns> patterns
   const int levels = log2Of(n) + 1;
   displacement_ = makeArray(GL_RGBA16F, n, kLayers, levels);
   slopes_ = makeArray(GL_RGBA32F, n, kLayers, levels);  // squares of slopes ~1e-5: below half floats
-  table_ = makeTableTexture(tables_);
+  table_ = makeTableBuffer(tables_);
   gpuBytes_ += texels * kLayers * 24 * 4 / 3;  // the mip-mapped outputs
   gl::checkErrors("OceanPatterns setup");
 }
@@ -330,7 +330,7 @@ void OceanPatterns::setUniforms(const gl::Program& program, const ocean::OceanFr
 }
 
 void OceanPatterns::bind() const {
-  glBindTextureUnit(gl::kUnitPatternTable, table_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, gl::kBlockPatternTable, table_.id());
   glBindTextureUnit(gl::kUnitPatternDisplacement, displacement_.id());
   glBindTextureUnit(gl::kUnitPatternSlopes, slopes_.id());
 }

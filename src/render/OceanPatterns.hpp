@@ -7,7 +7,7 @@
 //   displacement (OG_UNIT_PATTERN_DISPLACEMENT): (lambda Dx, lambda Dy, h, 0), m, tile axes
 //   slopes       (OG_UNIT_PATTERN_SLOPES): (s_u, s_c, s_u² + s_c², j): slopes along/across the
 //                set's wind, their second moment, the whitecaps' Jacobian term
-// layer = set * 4 + pattern. Plus the per-wind tables (OG_UNIT_PATTERN_TABLE, ocean::PatternTables).
+// layer = set * 4 + pattern. Plus the per-wind tables (the uniform block OG_BLOCK_PATTERN_TABLE, ocean::PatternTables).
 #include <memory>
 #include <optional>
 #include <string>
@@ -89,7 +89,7 @@ class OceanPatterns {
   std::unique_ptr<ocean::PatternSynthesis> cpu_;  ///< Fft::Cpu
   gl::Texture displacement_;
   gl::Texture slopes_;
-  gl::Texture table_;
+  gl::Buffer table_;  ///< the per-wind tables, a std140 uniform block (makeTableBuffer)
   double requestedWindMs_ = -1.0;
   double timeS_ = 0.0;
   int computed_ = 0;          ///< patterns the textures hold at timeS_ (0: none)
