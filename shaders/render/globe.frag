@@ -64,6 +64,7 @@
 #define GLOBE_PART_OPEN_SEA 5
 #define GLOBE_PART_SEA 6
 #define GLOBE_PART_LAND 7
+#define GLOBE_PART_SKY_LOW 8  // the sky below the grid's ceiling at a lower resolution (below)
 #ifndef GLOBE_PART
 #define GLOBE_PART GLOBE_PART_EDGE  // all the shading code
 #endif
@@ -75,6 +76,10 @@ in vec2 vNdc;
 // Each part's pixels pass the stencil test (see above). Both tests run before this shader;
 // the depth was written by the classifying draws.
 layout(early_fragment_tests) in;
+#endif
+#ifdef GLOBE_SKY_LOW
+layout(binding = OG_UNIT_SKY_LOW) uniform sampler2D uSkyLow;  // GLOBE_PART_SKY_LOW's texels
+uniform vec2 uSkyLowScale;  // 1 / (their count x uSkyLowFactor): fragment -> texture coordinates
 #endif
 
 uniform vec3 uRight;       // camera basis, ECEF axes
@@ -369,6 +374,27 @@ void main() {
   gl_FragDepth = rays.nHit > 0 ? clamp(uNear / depthZ, 0.0, 1.0) : 0.0;
 #endif
 }
+#elif GLOBE_PART == GLOBE_PART_SKY_LOW
+// The sky below the grid's ceiling, one texel per uSkyLowFactor² pixels (GlobeRenderer::drawSkyLow):
+// seen from under 20 km it varies over degrees, not pixels (the Sun's disc is added per pixel
+// by the sky part), and the precomputed atmosphere's lookups were ~40 % of the globe pass on
+// llvmpipe. Texel (i, j) holds the sky on the ray of the full frame's pixel coordinate
+// ((i, j) + 0.5) uSkyLowFactor, the pixel-centre ray's zenith cosine raised to just above the
+// horizon as skyOf raises it (below the horizon: the horizon's sky, so the lookup stays smooth
+// across it). No depth or stencil: every texel.
+uniform float uSkyLowFactor;
+uniform vec2 uFrameSize;  // the full frame, pixels
+void main() {
+  vec2 ndc = gl_FragCoord.xy * uSkyLowFactor / uFrameSize * 2.0 - 1.0;
+  vec3 dir = normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp);
+  float R = uAtmosphere.bottomRadius;
+  float r = R + uCamAltitude;
+  float mu = max(dot(dir, uCamUp), -sqrt(uCamAltitude * (2.0 * R + uCamAltitude)) / r + 1e-5);
+  vec3 transmittance;
+  fragRadiance = vec4(skyRadiance(uAtmosphere, uAtmTransmittance, uAtmScattering, uAtmSingleMie, r, mu,
+                                  dot(uSunDir, uCamUp), dot(dir, uSunDir), transmittance), 1.0);
+  fragAux = vec4(0.0);
+}
 #elif GLOBE_PART == GLOBE_PART_LAND || GLOBE_PART == GLOBE_PART_SEA || GLOBE_PART == GLOBE_PART_OPEN_SEA
 // The land, the sea and the open deep sea (classified above): four samples all on land or all
 // on the sea, shaded once at their mean ray as the surface part shades such a pixel, by
@@ -456,8 +482,15 @@ void main() {
     if (skyCount > 0.0 && sky.space) radiance += sky.sunDisc * sunDiscRadiance(uAtmosphere);
     for (int k = 0; k < (skyCount > 0.0 && !sky.space ? 1 : 0); ++k) {
       vec3 transmittance;
+#ifdef GLOBE_SKY_LOW
+      // Below the ceiling (inside the atmosphere, the ray raised above the horizon): the sky
+      // from the lower-resolution pass, the ray's transmittance for the Sun's disc here.
+      vec3 inscatter = textureLod(uSkyLow, gl_FragCoord.xy * uSkyLowScale, 0.0).rgb;
+      transmittance = transmittanceToTop(uAtmosphere, uAtmTransmittance, r, sky.mu);
+#else
       vec3 inscatter = skyRadiance(uAtmosphere, uAtmTransmittance, uAtmScattering, uAtmSingleMie,
                                    r, sky.mu, muS, dot(sky.dir, uSunDir), transmittance);
+#endif
       radiance += inscatter * skyCount + sky.sunDisc * transmittance * sunDiscRadiance(uAtmosphere);
     }
   }

@@ -299,6 +299,10 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
       defines.push_back(variant >= kClassifyExport ? std::string("GLOBE_CLASSIFY_EXPORT")
                                                    : "GLOBE_CLASSIFY_STEP " + std::to_string(variant));
       if (variant == kClassifyExportLandSea) defines.emplace_back("GLOBE_LAND_SEA");
+    } else if (variant == kSkyLowPass) {
+      defines.emplace_back("GLOBE_PART 8");
+    } else if (variant == kSkyLowPart) {
+      defines.insert(defines.end(), {"GLOBE_PART 1", "GLOBE_SKY_LOW"});
     } else {
       static constexpr std::array<int, 6> kPart{1, 2, 3, 7, 6, 5};
       defines.push_back("GLOBE_PART " + std::to_string(kPart.at(static_cast<std::size_t>(variant - kGlobePart0 - 1))));
@@ -429,13 +433,20 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   glDepthMask(GL_FALSE);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   if (!grid) scissorToGlobe(view, f);
+  lastSkyLowFactor_ = 1;
+  const bool skyLow = grid && drawSkyLow(view, f);
   // Sky, edge, surface, land, sea, open sea: the stencil counts 1-6 (one lower below 20 km).
   const std::vector<int> parts = globeParts(grid);
   if (countPartSamples_) partSamples_.clear();
   for (std::size_t k = 0; k < parts.size(); ++k) {
     glStencilFunc(GL_EQUAL, static_cast<GLint>(k) + 1 - firstClassifyingStep(grid), 0xff);
-    const gl::Program& globe = globeProgram(grid, parts[k]);
+    const bool readsSkyLow = skyLow && parts[k] == kGlobePart0 + 1;
+    const gl::Program& globe = globeProgram(grid, readsSkyLow ? kSkyLowPart : parts[k]);
     setGlobeUniforms(globe, view, f);
+    if (readsSkyLow) {
+      globe.set("uSkyLowScale", skyLowScale_);
+      glBindTextureUnit(gl::kUnitSkyLow, skyLow_.id());
+    }
     globe.use();
     const auto draw = [] { glDrawArrays(GL_TRIANGLES, 0, 3); };
     if (!countPartSamples_) {
@@ -450,6 +461,42 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   glDisable(GL_SCISSOR_TEST);
   glDepthMask(grid ? GL_FALSE : GL_TRUE);  // as the caller had it
   if (grid) glEndConditionalRender();
+}
+
+bool GlobeRenderer::drawSkyLow(const geo::CameraView& view, const FrameInput& f) {
+  const double pixelRad = 2.0 * std::tan(0.5 * view.verticalFovRad) / f.height;
+  const int factor = skyLowOn_ ? std::min(static_cast<int>(kSkyLowTexelRad / pixelRad), kSkyLowMaxFactor) : 1;
+  // The pass covers the whole frame, the sky a part of it (29 % of sea-4m): below 3 x 3 pixels a
+  // texel it saves too little (640 x 360, 2 x 2: no gain measured).
+  if (factor < kSkyLowMinFactor) return false;
+  lastSkyLowFactor_ = factor;
+  const int width = (f.width + factor - 1) / factor, height = (f.height + factor - 1) / factor;
+  if (width != skyLowWidth_ || height != skyLowHeight_) {
+    skyLow_ = gl::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(skyLow_.id(), 1, GL_RGBA16F, width, height);
+    glTextureParameteri(skyLow_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(skyLow_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(skyLow_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(skyLow_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    skyLowFbo_ = gl::createFramebuffer();
+    glNamedFramebufferTexture(skyLowFbo_.id(), GL_COLOR_ATTACHMENT0, skyLow_.id(), 0);
+    skyLowWidth_ = width;
+    skyLowHeight_ = height;
+  }
+  GLint target = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, skyLowFbo_.id());
+  glViewport(0, 0, width, height);
+  const gl::Program& sky = globeProgram(true, kSkyLowPass);
+  setGlobeUniforms(sky, view, f);
+  sky.set("uSkyLowFactor", static_cast<float>(factor));
+  sky.set("uFrameSize", glm::vec2(static_cast<float>(f.width), static_cast<float>(f.height)));
+  sky.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
+  glViewport(0, 0, f.width, f.height);
+  skyLowScale_ = 1.0f / (glm::vec2(static_cast<float>(width), static_cast<float>(height)) * static_cast<float>(factor));
+  return true;
 }
 
 void GlobeRenderer::setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view,

@@ -183,6 +183,12 @@ class GlobeRenderer {
   /// Above 20 km the globe pass is scissored to the rectangle around the globe, its atmosphere
   /// and the Sun (globeScissor); false draws it over the whole screen (the tests' reference).
   void setGlobeScissor(bool on) { scissorGlobe_ = on; }
+  /// Below 20 km the sky is drawn at a lower resolution and read back per pixel where a pixel
+  /// is finer than kSkyLowTexelRad / 3 (drawSkyLow: 1280 x 720 and up at the usual fields of
+  /// view); false computes it per pixel (the tests' reference).
+  void setSkyLow(bool on) { skyLowOn_ = on; }
+  /// The last frame's pixels per sky texel along a side (1: the sky per pixel).
+  [[nodiscard]] int lastSkyLowFactor() const { return lastSkyLowFactor_; }
   /// The coarse open-sea map (made on the first frame above 20 km; nullptr before).
   [[nodiscard]] const OpenSeaMap* openSeaMap() const { return openSeaMap_.get(); }
 
@@ -209,8 +215,10 @@ class GlobeRenderer {
   /// would not spare their lookups, llvmpipe runs both sides of an `if`), then six parts (8-13:
   /// sky, edge, surface, land, sea, open sea; see its GLOBE_PART), drawn first above the grid's
   /// ceiling and last (GLOBE_BEHIND, after the terrain and the grid) below; each compiled on
-  /// first use. `variant` in [0, kGlobeVariants).
-  static constexpr int kGlobeVariants = 14;
+  /// first use; 14 the sky at a lower resolution below the ceiling (GLOBE_PART_SKY_LOW) and 15
+  /// the sky part that reads it (GLOBE_SKY_LOW). `variant` in [0, kGlobeVariants).
+  static constexpr int kGlobeVariants = 16;
+  static constexpr int kSkyLowPass = 14, kSkyLowPart = 15;
   static constexpr int kClassifyExport = 6, kClassifyExportLandSea = 7;
   /// Part k (1 sky ... 6 open sea) is variant kGlobePart0 + k.
   static constexpr int kGlobePart0 = 7;
@@ -230,6 +238,19 @@ class GlobeRenderer {
   /// Enables the scissor test on globeScissor's box (when setGlobeScissor is on).
   void scissorToGlobe(const geo::CameraView& view, const FrameInput& f);
   const gl::Program& globeProgram(bool behind, int variant);
+  /// Below the grid's ceiling: the sky into skyLow_, one texel per kSkyLowTexelRad of view (at
+  /// most kSkyLowMaxFactor pixels a side), for the sky part to read (globe.frag's
+  /// GLOBE_PART_SKY_LOW). False, drawing nothing, where a texel would hold fewer than
+  /// kSkyLowMinFactor pixels a side (test frames, 640 x 360).
+  bool drawSkyLow(const geo::CameraView& view, const FrameInput& f);
+  static constexpr double kSkyLowTexelRad = 0.3 * 0.017453292519943295;  // 0.3°
+  static constexpr int kSkyLowMinFactor = 3, kSkyLowMaxFactor = 4;
+  gl::Texture skyLow_;
+  gl::Framebuffer skyLowFbo_;
+  int skyLowWidth_ = 0, skyLowHeight_ = 0;
+  glm::vec2 skyLowScale_{0.0f};  ///< globe.frag's uSkyLowScale for this frame
+  bool skyLowOn_ = true;
+  int lastSkyLowFactor_ = 1;
   void setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view, const FrameInput& f);
   std::array<gl::Program, 2 * kGlobeVariants> globePrograms_;
   /// Below 20 km: whether the terrain and the grid left any pixel for the globe (an occlusion
