@@ -445,7 +445,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
     setGlobeUniforms(globe, view, f);
     if (readsSkyLow) {
       globe.set("uSkyLowScale", skyLowScale_);
-      glBindTextureUnit(gl::kUnitSkyLow, skyLow_.id());
+      glBindTextureUnit(gl::kUnitSkyLow, skyLow_.color.id());
     }
     globe.use();
     const auto draw = [] { glDrawArrays(GL_TRIANGLES, 0, 3); };
@@ -471,21 +471,11 @@ bool GlobeRenderer::drawSkyLow(const geo::CameraView& view, const FrameInput& f)
   if (factor < kSkyLowMinFactor) return false;
   lastSkyLowFactor_ = factor;
   const int width = (f.width + factor - 1) / factor, height = (f.height + factor - 1) / factor;
-  if (width != skyLowWidth_ || height != skyLowHeight_) {
-    skyLow_ = gl::createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(skyLow_.id(), 1, GL_RGBA16F, width, height);
-    glTextureParameteri(skyLow_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(skyLow_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(skyLow_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(skyLow_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    skyLowFbo_ = gl::createFramebuffer();
-    glNamedFramebufferTexture(skyLowFbo_.id(), GL_COLOR_ATTACHMENT0, skyLow_.id(), 0);
-    skyLowWidth_ = width;
-    skyLowHeight_ = height;
-  }
+  if (width != skyLow_.width || height != skyLow_.height)
+    skyLow_ = gl::createRenderTarget(width, height, GL_RGBA16F, false);
   GLint target = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, skyLowFbo_.id());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, skyLow_.fbo.id());
   glViewport(0, 0, width, height);
   const gl::Program& sky = globeProgram(true, kSkyLowPass);
   setGlobeUniforms(sky, view, f);

@@ -245,9 +245,7 @@ class GlobeRenderer {
   bool drawSkyLow(const geo::CameraView& view, const FrameInput& f);
   static constexpr double kSkyLowTexelRad = 0.3 * 0.017453292519943295;  // 0.3°
   static constexpr int kSkyLowMinFactor = 3, kSkyLowMaxFactor = 4;
-  gl::Texture skyLow_;
-  gl::Framebuffer skyLowFbo_;
-  int skyLowWidth_ = 0, skyLowHeight_ = 0;
+  gl::RenderTarget skyLow_;  ///< drawSkyLow's texels (RGBA16F, bilinear)
   glm::vec2 skyLowScale_{0.0f};  ///< globe.frag's uSkyLowScale for this frame
   bool skyLowOn_ = true;
   int lastSkyLowFactor_ = 1;

@@ -538,19 +538,25 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
   glDisable(GL_STENCIL_TEST);
 }
 
-const gl::Program& OceanRenderer::surfaceProgram(unsigned key, const std::vector<std::string>& defines) {
+std::vector<std::string> OceanRenderer::surfaceDefines(unsigned key) const {
+  std::vector<std::string> d = featureDefines(key & (kFeatureWaterVolume | kFeatureCoastTest));
+  if ((key & kSurfaceClasses) != 0) d.emplace_back("OCEAN_SEA_CLASSIFY");
+  return d;
+}
+
+const gl::Program& OceanRenderer::surfaceProgram(unsigned key) {
   gl::Program& surface = surfaceVariants_.at(key);
   if (surface.id() == 0)
     surface = gl::Program({{GL_VERTEX_SHADER, "ocean/grid_cached.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_surface.frag"}},
-                          defines);
+                          surfaceDefines(key));
   return surface;
 }
 
-const gl::Program& OceanRenderer::prepareSurfacePass(unsigned key, const std::vector<std::string>& defines,
+const gl::Program& OceanRenderer::prepareSurfacePass(unsigned key,
                                                   const std::function<void(const gl::Program&)>& prepareProgram) {
-  const gl::Program& surface = surfaceProgram(key, defines);
+  const gl::Program& surface = surfaceProgram(key);
   gl::Program& compute = gridComputeVariants_.at(key);
-  if (compute.id() == 0) compute = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_vertices.comp"}}, defines);
+  if (compute.id() == 0) compute = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_vertices.comp"}}, surfaceDefines(key));
   const auto vertices = static_cast<std::size_t>(gridColumns_) * static_cast<std::size_t>(gridRows_);
   const std::size_t bytes = vertices * kGridVertexVec4s * 4 * sizeof(float);
   if (bytes > gridVerticesBytes_) {
@@ -568,8 +574,9 @@ const gl::Program& OceanRenderer::prepareSurfacePass(unsigned key, const std::ve
   return surface;
 }
 
-void OceanRenderer::splitNearLand(const std::vector<std::string>& defines) {
-  if (nearLandSplit_.id() == 0) nearLandSplit_ = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_near_land.comp"}}, defines);
+void OceanRenderer::splitNearLand(unsigned key) {
+  if (nearLandSplit_.id() == 0)
+    nearLandSplit_ = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_near_land.comp"}}, surfaceDefines(key));
   const auto bytes = static_cast<GLsizeiptr>(static_cast<std::size_t>(indexCount_) * sizeof(GLuint));
   if (bytes > nearLandSplitBytes_) {
     openIndices_ = gl::createBuffer();
@@ -606,22 +613,18 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   }
   // The surface pass: with classes where the frame has a floor or a coast to route.
   const bool classes = lighting.classes && (features & (kFeatureWaterVolume | kFeatureCoastTest)) != 0;
-  const unsigned surfaceKey = (features & (kFeatureWaterVolume | kFeatureCoastTest)) | (classes ? 4u : 0u);
-  std::vector<std::string> d = featureDefines(features & (kFeatureWaterVolume | kFeatureCoastTest));
-  if (classes) d.emplace_back("OCEAN_SEA_CLASSIFY");
+  const unsigned surfaceKey = (features & (kFeatureWaterVolume | kFeatureCoastTest)) | (classes ? kSurfaceClasses : 0u);
   unsigned routedShadows = kFeatureShadows;
   const auto prepareSurface = [&](const gl::Program& p) {
     prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
     if (classes) routedShadows = setClassUniforms(p, view, patterns, lighting, amplitudeScale, features);
   };
-  const gl::Program& surface = prepareSurfacePass(surfaceKey, d, prepareSurface);
+  const gl::Program& surface = prepareSurfacePass(surfaceKey, prepareSurface);
   // With classes the coast test runs only where land may be near: the grid in two draws.
   const gl::Program* open = nullptr;
   if (classes && (features & kFeatureCoastTest) != 0) {
-    splitNearLand(d);
-    std::vector<std::string> openDefines = featureDefines(features & kFeatureWaterVolume);
-    openDefines.emplace_back("OCEAN_SEA_CLASSIFY");
-    open = &surfaceProgram(surfaceKey & ~kFeatureCoastTest, openDefines);
+    splitNearLand(surfaceKey);
+    open = &surfaceProgram(surfaceKey & ~kFeatureCoastTest);
     prepareSurface(*open);
   }
   if (classes) resetClassRows();

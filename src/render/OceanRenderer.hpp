@@ -179,21 +179,24 @@ class OceanRenderer {
   /// ocean/grid_vertex_buffer.glsl's GridVertices and its vec4s per vertex.
   static constexpr GLuint kGridVerticesBinding = 4;
   static constexpr int kGridVertexVec4s = 10;
-  /// The deferred sea's surface pass: its program (the variant for `key`: water volume, coast
-  /// test, classes bits, compiled on first use) and, before its draw, all the grid's vertices
-  /// computed by the matching compute pass into gridVertices_ (llvmpipe shades a draw's
-  /// vertices on one thread, a dispatch on every core). `prepareProgram` sets a program's
-  /// uniforms for the frame.
-  const gl::Program& prepareSurfacePass(unsigned key, const std::vector<std::string>& defines,
-                                    const std::function<void(const gl::Program&)>& prepareProgram);
+  /// The deferred sea's surface pass: its program (the variant for `key`: kFeatureWaterVolume,
+  /// kFeatureCoastTest and kSurfaceClasses bits, compiled on first use) and, before its draw,
+  /// all the grid's vertices computed by the matching compute pass into gridVertices_ (llvmpipe
+  /// shades a draw's vertices on one thread, a dispatch on every core). `prepareProgram` sets a
+  /// program's uniforms for the frame.
+  const gl::Program& prepareSurfacePass(unsigned key, const std::function<void(const gl::Program&)>& prepareProgram);
+  /// The surface pass's key bit for the sea's classes (OCEAN_SEA_CLASSIFY).
+  static constexpr unsigned kSurfaceClasses = 4;
+  /// The defines of the surface pass's programs for `key` (as prepareSurfacePass).
+  [[nodiscard]] std::vector<std::string> surfaceDefines(unsigned key) const;
   /// The surface pass's program for `key` (as prepareSurfacePass), compiled on first use.
-  const gl::Program& surfaceProgram(unsigned key, const std::vector<std::string>& defines);
+  const gl::Program& surfaceProgram(unsigned key);
   /// The grid's index list split in two copies by ocean/grid_near_land.comp (after the surface
   /// pass's vertices): openIndices_ without the triangles where land may be near, nearLandIndices_
   /// with only those (the others degenerate), so that only the second draw pays for the coast test
-  /// (llvmpipe runs a fragment shader's every line whatever its conditions). `defines`: the
-  /// surface pass's, with classes.
-  void splitNearLand(const std::vector<std::string>& defines);
+  /// (llvmpipe runs a fragment shader's every line whatever its conditions). `key`: the surface
+  /// pass's, with classes.
+  void splitNearLand(unsigned key);
   /// drawGrid with another index list of the same layout (openIndices_, nearLandIndices_).
   void drawGridIndices(const gl::Program& p, const gl::Buffer& indices) const;
   /// ocean/grid_near_land.comp's buffers: the grid's indices, its two copies.
