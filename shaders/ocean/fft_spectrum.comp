@@ -37,9 +37,12 @@ void main() {
     vec2 e = vec2(cos(phase), sin(phase));
     vec2 h = complexMul(h0.xy, vec2(e.x, -e.y)) + complexMul(h0.zw, e);
     vec2 ih = timesI(h);
-    slots[slot++] = h + timesI(k.x * ih);   // h + i dh/dx  (dh/dx = i kx h)
-    slots[slot++] = k.y * ih + timesI(kl * h);  // dh/dy + i t  (t = |k| h)
-    if (patternDisplaced(p)) slots[slot++] = -k.x / kl * ih + timesI(-k.y / kl * ih);  // Dx + i Dy
+    // Each slot multiplied out to one real factor of h or of i h: NVIDIA's compiler (580.159)
+    // evaluated the nested form h + timesI(k.x * timesI(h)) as h + k.x * timesI(h), which put
+    // dh/dx into the heights and left the x slopes 0 (docs/performance.md, "Tenth session").
+    slots[slot++] = (1.0 - k.x) * h;          // h + i dh/dx = h + i (i kx h)
+    slots[slot++] = (k.y + kl) * ih;          // dh/dy + i t = i ky h + i |k| h
+    if (patternDisplaced(p)) slots[slot++] = (k.y * h - k.x * ih) / kl;  // Dx + i Dy = -i kx/|k| h + i (-i ky/|k| h)
   }
   for (int l = 0; l < FFT_LAYERS_PER_SET; ++l)
     imageStore(uFields, ivec3(texel, set * FFT_LAYERS_PER_SET + l), vec4(slots[2 * l], slots[2 * l + 1]));

@@ -417,7 +417,7 @@ data::LatLonGrid shadowingIsland(bool shelving) {
 // Bit k of OceanRenderer::classesDrawn: class k + 1 of ocean/sea_classify.frag.
 constexpr unsigned kClassOpenSea = 1, kClassShadows = 2, kClassFloor = 4, kClassFloorShadows = 8;
 
-// A 192 x 108 view from `position` (50° tall), wind 6 m/s at t = 1.5 s, the Sun
+// A 192 x 108 view from `position` (50° tall, one sample a pixel), wind 6 m/s at t = 1.5 s, the Sun
 // `sunElevationDeg` up at `sunAzimuthDeg`.
 render::FrameInput classView(const geo::Geodetic& position, double headingDeg, double pitchDeg,
                              double sunElevationDeg, double sunAzimuthDeg) {
@@ -428,6 +428,7 @@ render::FrameInput classView(const geo::Geodetic& position, double headingDeg, d
   f.camera.verticalFovDeg = 50.0;
   f.width = 192;
   f.height = 108;
+  f.samples = 1;  // the classes and the deferred surface are the single-sample path ("auto" is 4 on a GPU)
   f.wind.speedMs = 6.0;
   f.simulationTimeS = 1.5;
   f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, sunElevationDeg, sunAzimuthDeg);
