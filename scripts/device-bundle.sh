@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# Packs the built oceanglobe (and, with --tests, the GL test binary) with the shared libraries it
+# loads into .devbundle/og-bundle.tar.xz, for a machine without the Debian packages: the GPU
+# machine some sessions are lent (Ubuntu with NVIDIA's driver, no network; docs/performance.md,
+# "Tenth session"). scripts/device-check.sh unpacks and runs it there.
+#
+# The bundle must stay small (the lent machine takes 64 MiB with the working tree), so the
+# libraries of what a GPU check does not use are replaced by stubs of the same name: OSMesa,
+# FFmpeg (no `record` there), GLFW, ecCodes, ICU, and GDAL's drivers for formats the embedded
+# data does not use. Debian links its libraries with BIND_NOW, so a stub defines every symbol the
+# bundle imports from it: functions that return 0 (and say so once on stderr), data as zeros.
+# glibc and libstdc++ are the machine's own (newer than Debian 12's).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+tests=0
+[[ "${1:-}" == "--tests" ]] && tests=1
+[[ -x build/oceanglobe ]] || { echo "device-bundle: build/oceanglobe is missing (cmake --build build)" >&2; exit 2; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$work/lib" "$work/stubs" "$work/bin" .devbundle
+cp build/oceanglobe "$work/bin/"
+[[ $tests == 1 ]] && cp build/tests/og_gl_tests "$work/bin/"
+strip -s "$work"/bin/*
+
+stubbed=(libOSMesa.so.8 libavcodec.so.59 libavformat.so.59 libavutil.so.57 libswscale.so.6 libglfw.so.3
+  libeccodes.so.0 libicuuc.so.72 libcurl-gnutls.so.4 libodbc.so.2 libodbcinst.so.2 libblosc.so.1
+  libarmadillo.so.11 libqhull_r.so.8.0 libheif.so.1 libgif.so.7 libcfitsio.so.10 libwebp.so.7 libpq.so.5
+  libopenjp2.so.7 libkmlbase.so.1 libkmldom.so.1 libkmlengine.so.1 libfyba.so.0 libspatialite.so.7
+  libmariadb.so.3 libfreexl.so.1 libogdi.so.4.1 libgeos_c.so.1 libdfalt.so.0 libmfhdfalt.so.0)
+realpath_of() { readlink -f "$(ldconfig -p | awk -v n="$1" '$1 == n {print $NF; exit}')"; }
+
+# Empty stubs first, so that ldd lists only the libraries the rest still needs.
+for s in "${stubbed[@]}"; do gcc -shared -Wl,-soname,"$s" -o "$work/stubs/$s" -x c /dev/null; done
+LD_LIBRARY_PATH="$work/stubs" ldd "$work"/bin/* | awk '$3 ~ /^\// {print $3}' | sort -u |
+  grep -vE "/(libc|libm|libdl|libpthread|librt|libgcc_s|libstdc\+\+)\.so|ld-linux|$work" |
+  while read -r l; do cp -L "$l" "$work/lib/"; done
+cp -L "$(realpath_of libGLdispatch.so.0)" "$work/lib/"
+
+# Then each stub with what the bundle imports from the real library.
+for s in "${stubbed[@]}"; do
+  real=$(realpath_of "$s")
+  for f in "$work"/lib/* "$work"/bin/*; do nm -D --undefined-only "$f" | awk '{sub(/@.*/, "", $2); print $2}'; done |
+    sort -u >"$work/imports"
+  {
+    echo '#include <stdio.h>'
+    nm -D -S --defined-only "$real" | awk 'NF == 4 {sub(/@.*/, "", $4); print $3, $4, $2} NF == 3 {sub(/@.*/, "", $3); print $2, $3, 0}' |
+      sort -u -k2,2 | awk -v so="$s" 'NR == FNR {want[$1] = 1; next} ($2 in want) {
+        n++
+        if ($1 ~ /[TtWiI]/) printf "long f%d(void) __asm__(\"%s\");\nlong f%d(void) { static int told; if (!told++) fputs(\"stub called: %s\\n\", stderr); return 0; }\n", n, $2, n, $2
+        else printf "char d%d[0x%s + 8] __asm__(\"%s\") __attribute__((aligned(16)));\n", n, $3, $2
+      }' "$work/imports" -
+  } >"$work/stub.c"
+  gcc -shared -fPIC -w -Wl,-soname,"$s" -o "$work/stubs/$s" "$work/stub.c"
+done
+
+tar -C "$work" -cf - bin lib stubs | xz -T0 -6 >.devbundle/og-bundle.tar.xz.tmp
+mv .devbundle/og-bundle.tar.xz.tmp .devbundle/og-bundle.tar.xz
+echo "device-bundle: .devbundle/og-bundle.tar.xz, $(du -h .devbundle/og-bundle.tar.xz | cut -f1)"
