@@ -2,11 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <map>
+#include <span>
 #include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "core/Log.hpp"
 #include "gl/DriverProfile.hpp"
 #include "gl/ShaderContract.hpp"
 
@@ -69,6 +73,41 @@ std::vector<std::string> fftDefines(const ocean::WavePatternParams& p) {
           "FFT_LAYERS_PER_SET " + std::to_string(fftLayersPerSet(p)),
           "FFT_SIZE " + std::to_string(p.fftSize), "FFT_LOG2 " + std::to_string(log2Of(p.fftSize))};
 }
+
+/// Largest |gpu - cpu| of each channel of each layer, against that channel's rms over the layer
+/// (channels whose rms is below `floor` are skipped), at most `bound`.
+bool layersAgree(const std::vector<float>& gpu, std::span<const float> cpu, std::size_t texels, double bound, double floor) {
+  for (std::size_t layer = 0; layer < static_cast<std::size_t>(kLayers); ++layer)
+    for (std::size_t c = 0; c < 4; ++c) {
+      double sum = 0.0, worst = 0.0;
+      for (std::size_t i = 0; i < texels; ++i) {
+        const std::size_t at = 4 * (layer * texels + i) + c;
+        const double want = cpu[at];
+        sum += want * want;
+        worst = std::max(worst, std::abs(static_cast<double>(gpu[at]) - want));
+      }
+      const double rms = std::sqrt(sum / static_cast<double>(texels));
+      if (rms > floor && worst > bound * rms) return false;
+    }
+  return true;
+}
+
+// Whether the GPU may transform the patterns: OceanPatterns::gpuFftMatchesCpu, asked once per
+// driver and shader tree (OCEANGLOBE_SHADER_DIR) in a process.
+bool gpuFftTrusted(const std::shared_ptr<const ocean::WavePatterns>& patterns) {
+  static std::map<std::string, bool> verdicts;
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const char* shaderDir = std::getenv("OCEANGLOBE_SHADER_DIR");
+  const std::string key = std::string(renderer != nullptr ? renderer : "") + "|" + (shaderDir != nullptr ? shaderDir : "");
+  const auto known = verdicts.find(key);
+  if (known != verdicts.end()) return known->second;
+  const bool trusted = OceanPatterns::gpuFftMatchesCpu(patterns);
+  if (!trusted)
+    log::warn("the wave patterns' FFT on the GPU does not match the CPU's on this driver (" +
+              std::string(renderer != nullptr ? renderer : "?") + "): the CPU transforms them instead");
+  verdicts.emplace(key, trusted);
+  return trusted;
+}
 }  // namespace
 
 // The GPU's transforms: the compute programs, the spectra (h0(k), conj(h0(-k)) per texel,
@@ -105,7 +144,8 @@ OceanPatterns::OceanPatterns(std::shared_ptr<const ocean::WavePatterns> patterns
   requestedWindMs_ = requestedWindMs;
   const int n = patterns_->params.fftSize;
   const auto texels = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
-  if (fft.value_or(gl::driverProfile().cpuWaveFft ? Fft::Cpu : Fft::Gpu) == Fft::Cpu) {
+  if (!fft) fft = gl::driverProfile().cpuWaveFft || !gpuFftTrusted(patterns_) ? Fft::Cpu : Fft::Gpu;
+  if (*fft == Fft::Cpu) {
     cpu_ = std::make_unique<ocean::PatternSynthesis>(*patterns_);
   } else {
     gpu_ = std::make_unique<GpuFft>(*patterns_);
@@ -333,6 +373,23 @@ void OceanPatterns::bind() const {
   glBindBufferBase(GL_UNIFORM_BUFFER, gl::kBlockPatternTable, table_.id());
   glBindTextureUnit(gl::kUnitPatternDisplacement, displacement_.id());
   glBindTextureUnit(gl::kUnitPatternSlopes, slopes_.id());
+}
+
+bool OceanPatterns::gpuFftMatchesCpu(const std::shared_ptr<const ocean::WavePatterns>& patterns) {
+  OceanPatterns gpu(patterns, -1.0, Fft::Gpu);
+  gpu.update(0.0);
+  ocean::PatternSynthesis cpu(*patterns);
+  cpu.compute(0.0, ocean::kPatternCount);
+  const int n = patterns->params.fftSize;
+  const auto texels = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+  std::vector<float> read(4 * texels * kLayers);
+  const auto bytes = static_cast<GLsizei>(read.size() * sizeof(float));
+  glGetTextureSubImage(gpu.displacement_.id(), 0, 0, 0, 0, n, n, kLayers, GL_RGBA, GL_FLOAT, bytes, read.data());
+  // Half floats: ~1e-3 of a value; the heights of the shortest pattern are ~1e-3 m.
+  if (!layersAgree(read, cpu.displacement(0, 0, kLayers), texels, 0.02, 1e-6)) return false;
+  glGetTextureSubImage(gpu.slopes_.id(), 0, 0, 0, 0, n, n, kLayers, GL_RGBA, GL_FLOAT, bytes, read.data());
+  gl::checkErrors("OceanPatterns::gpuFftMatchesCpu");
+  return layersAgree(read, cpu.slopes(0, 0, kLayers), texels, 0.02, 1e-12);
 }
 
 }  // namespace og::render

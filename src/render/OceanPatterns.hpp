@@ -28,7 +28,8 @@ class OceanPatterns {
   enum class Fft { Gpu, Cpu };
   /// Needs a current GL 4.5 context. Uploads the spectra (GPU) and the per-wind tables.
   /// `requestedWindMs`: the reference wind the caller asked for (before clamping), for reuse.
-  /// `fft`: none takes the driver profile's choice (gl::DriverProfile::cpuWaveFft).
+  /// `fft`: none takes the driver profile's choice (gl::DriverProfile::cpuWaveFft), the CPU's
+  /// where the GPU's fails gpuFftMatchesCpu (checked once per driver and shader tree, logged).
   explicit OceanPatterns(std::shared_ptr<const ocean::WavePatterns> patterns, double requestedWindMs = -1.0,
                          std::optional<Fft> fft = std::nullopt);
   ~OceanPatterns();
@@ -76,6 +77,12 @@ class OceanPatterns {
 
   /// GPU memory of the textures, bytes.
   [[nodiscard]] std::size_t gpuBytes() const { return gpuBytes_; }
+
+  /// Whether the GPU's transforms of `patterns` at t = 0 (every pattern, mip level 0) match the
+  /// CPU's within 2 % of each channel's rms. A driver whose compiler gets the compute shaders
+  /// wrong (NVIDIA 580.159 did: docs/performance.md, "Tenth session") fails it. Needs a current
+  /// context; costs one transform on each side and a read-back (a few ms).
+  [[nodiscard]] static bool gpuFftMatchesCpu(const std::shared_ptr<const ocean::WavePatterns>& patterns);
 
  private:
   struct GpuFft;  ///< the compute programs, the spectra and the FFT's buffers

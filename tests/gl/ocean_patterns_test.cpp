@@ -10,7 +10,12 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
+#include <string>
 #include <numbers>
 #include <vector>
 
@@ -288,4 +293,35 @@ TEST_P(OceanPatternsFft, MipLevelsAreTheMeansOfTheLevelAbove) {
     EXPECT_LT(chainError(gpu.displacementTexture(), layer), 2e-3);
     EXPECT_LT(chainError(gpu.slopesTexture(), layer), 1e-5);
   }
+}
+
+// A driver whose compiler gets the FFT's compute shaders wrong (NVIDIA 580.159 lost the x
+// slopes: docs/performance.md, "Tenth session") must not draw a wrong sea: the patterns check
+// the GPU's transforms against the CPU's once and fall back to the CPU's. The driver's mistake
+// is played here by a shader tree whose first slot drops dh/dx, as that driver did.
+TEST(OceanPatternsCheck, GpuTransformsThatDisagreeWithTheCpusAreNotUsed) {
+  namespace fs = std::filesystem;
+  const fs::path broken = fs::path(OG_TEST_OUT_DIR) / "shaders_fft_without_x_slopes";
+  fs::remove_all(broken);
+  fs::copy(fs::path(OG_SOURCE_DIR) / "shaders", broken, fs::copy_options::recursive);
+  const fs::path spectrum = broken / "ocean" / "fft_spectrum.comp";
+  std::ifstream in(spectrum);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  in.close();
+  const std::string slot = "slots[slot++] = (1.0 - k.x) * h;";
+  const auto at = text.find(slot);
+  ASSERT_NE(at, std::string::npos) << "fft_spectrum.comp no longer writes its first slot as " << slot;
+  text.replace(at, slot.size(), "slots[slot++] = h;");
+  std::ofstream(spectrum) << text;
+
+  ASSERT_EQ(setenv("OCEANGLOBE_FFT", "gpu", 1), 0);  // the profile of a GPU driver
+  auto ctx = gl::createHeadlessContext();
+  auto w = std::make_shared<const ocean::WavePatterns>(ocean::makeWavePatterns(smallPatternParams()));
+  EXPECT_TRUE(render::OceanPatterns::gpuFftMatchesCpu(w));
+  EXPECT_EQ(render::OceanPatterns(w).fft(), render::OceanPatterns::Fft::Gpu);
+  ASSERT_EQ(setenv("OCEANGLOBE_SHADER_DIR", broken.c_str(), 1), 0);
+  EXPECT_FALSE(render::OceanPatterns::gpuFftMatchesCpu(w));
+  EXPECT_EQ(render::OceanPatterns(w).fft(), render::OceanPatterns::Fft::Cpu);
+  unsetenv("OCEANGLOBE_SHADER_DIR");
+  unsetenv("OCEANGLOBE_FFT");
 }
