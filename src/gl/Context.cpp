@@ -83,10 +83,12 @@ void Context::finishInit(std::string backend, void* (*getProcAddress)(const char
   log::info("GL context: " + info_.backend + ", " + info_.renderer + ", " + info_.version);
 }
 
-const DriverProfile& driverProfile() {
-  if (gLoadedBy == nullptr) throw InternalError("driverProfile: no GL context is current");
-  return gLoadedBy->info().profile;
+const ContextInfo& currentContextInfo() {
+  if (gLoadedBy == nullptr) throw InternalError("no GL context of ours is current");
+  return gLoadedBy->info();
 }
+
+const DriverProfile& driverProfile() { return currentContextInfo().profile; }
 
 std::unique_ptr<Context> createHeadlessContext(Backend backend) {
   switch (backend) {

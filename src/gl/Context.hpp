@@ -48,6 +48,9 @@ class Context {
   void* (*getProcAddress_)(const char*) = nullptr;
 };
 
+/// The info of the current context (of ours). Throws og::InternalError when none is current.
+[[nodiscard]] const ContextInfo& currentContextInfo();
+
 /// Creates a headless 4.5 core context and makes it current. Auto tries EGL then OSMesa.
 /// Throws og::InternalError listing what each backend said when none works.
 std::unique_ptr<Context> createHeadlessContext(Backend backend = Backend::Auto);

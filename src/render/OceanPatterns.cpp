@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/Log.hpp"
+#include "gl/Context.hpp"
 #include "gl/DriverProfile.hpp"
 #include "gl/ShaderContract.hpp"
 
@@ -96,15 +97,15 @@ bool layersAgree(const std::vector<float>& gpu, std::span<const float> cpu, std:
 // driver and shader tree (OCEANGLOBE_SHADER_DIR) in a process.
 bool gpuFftTrusted(const std::shared_ptr<const ocean::WavePatterns>& patterns) {
   static std::map<std::string, bool> verdicts;
-  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const std::string& renderer = gl::currentContextInfo().renderer;
   const char* shaderDir = std::getenv("OCEANGLOBE_SHADER_DIR");
-  const std::string key = std::string(renderer != nullptr ? renderer : "") + "|" + (shaderDir != nullptr ? shaderDir : "");
+  const std::string key = renderer + "|" + (shaderDir != nullptr ? shaderDir : "");
   const auto known = verdicts.find(key);
   if (known != verdicts.end()) return known->second;
   const bool trusted = OceanPatterns::gpuFftMatchesCpu(patterns);
   if (!trusted)
     log::warn("the wave patterns' FFT on the GPU does not match the CPU's on this driver (" +
-              std::string(renderer != nullptr ? renderer : "?") + "): the CPU transforms them instead");
+              renderer + "): the CPU transforms them instead");
   verdicts.emplace(key, trusted);
   return trusted;
 }
