@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# Packs the built oceanglobe (and, with --tests, the GL test binary) with the shared libraries it
-# loads into .devbundle/og-bundle.tar.xz, for a machine without the Debian packages: the GPU
-# machine some sessions are lent (Ubuntu with NVIDIA's driver, no network; docs/performance.md,
-# "Tenth session"). scripts/device-check.sh unpacks and runs it there.
+# Packs the built oceanglobe (with --tests, the GL test binary; with --record, FFmpeg and x264 for
+# `record`) with the shared libraries it loads into .devbundle/og-bundle.tar.xz, for a machine
+# without the Debian packages: the GPU machine some sessions are lent (Ubuntu with NVIDIA's
+# driver, no network; docs/performance.md, "Tenth session"). scripts/device-check.sh unpacks and
+# runs it there. The bundle is ~39 MB, ~46 MB with both options: with the working tree (~19 MB)
+# that is about the 64 MiB the lent machine takes, so bundle the tests or the recorder, not both.
 #
 # The bundle must stay small (the lent machine takes 64 MiB with the working tree), so the
 # libraries of what a GPU check does not use are replaced by stubs of the same name: OSMesa,
@@ -12,8 +14,14 @@
 # glibc and libstdc++ are the machine's own (newer than Debian 12's).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-tests=0
-[[ "${1:-}" == "--tests" ]] && tests=1
+tests=0 record=0
+for arg in "$@"; do
+  case $arg in
+    --tests) tests=1 ;;   # the GL tests too (build/tests/og_gl_tests)
+    --record) record=1 ;; # FFmpeg with H.264 (x264) for `record` and `bench --record`
+    *) echo "device-bundle: unknown option '$arg' (--tests, --record)" >&2; exit 2 ;;
+  esac
+done
 [[ -x build/oceanglobe ]] || { echo "device-bundle: build/oceanglobe is missing (cmake --build build)" >&2; exit 2; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -27,6 +35,20 @@ stubbed=(libOSMesa.so.8 libavcodec.so.59 libavformat.so.59 libavutil.so.57 libsw
   libarmadillo.so.11 libqhull_r.so.8.0 libheif.so.1 libgif.so.7 libcfitsio.so.10 libwebp.so.7 libpq.so.5
   libopenjp2.so.7 libkmlbase.so.1 libkmldom.so.1 libkmlengine.so.1 libfyba.so.0 libspatialite.so.7
   libmariadb.so.3 libfreexl.so.1 libogdi.so.4.1 libgeos_c.so.1 libdfalt.so.0 libmfhdfalt.so.0)
+if [[ $record == 1 ]]; then
+  # FFmpeg itself stays, with x264; its other codecs, formats and hardware back-ends go (not
+  # libdrm and libX11, which the drivers' EGL may load).
+  keep=" libavcodec.so.59 libavformat.so.59 libavutil.so.57 libswscale.so.6 "
+  kept=()
+  for s in "${stubbed[@]}"; do [[ $keep == *" $s "* ]] || kept+=("$s"); done
+  stubbed=("${kept[@]}" libvpx.so.7 libwebpmux.so.3 librsvg-2.so.2 libcairo.so.2 libzvbi.so.0 libsnappy.so.1
+    libaom.so.3 libcodec2.so.1.0 libgsm.so.1 libjxl.so.0.7 libjxl_threads.so.0.7 libmp3lame.so.0 libopus.so.0
+    librav1e.so.0 libshine.so.3 libspeex.so.1 libSvtAv1Enc.so.1 libtheoraenc.so.1 libtheoradec.so.1
+    libtwolame.so.0 libvorbis.so.0 libvorbisenc.so.2 libx265.so.199 libxvidcore.so.4 libva.so.2 libmfx.so.1
+    libdav1d.so.6 libgme.so.0 libopenmpt.so.0 libchromaprint.so.1 libbluray.so.2 librabbitmq.so.4 librist.so.4
+    libsrt-gnutls.so.1.5 libssh-gcrypt.so.4 libzmq.so.5 libva-drm.so.2 libva-x11.so.2 libvdpau.so.1
+    libOpenCL.so.1 libsoxr.so.0)
+fi
 realpath_of() { readlink -f "$(ldconfig -p | awk -v n="$1" '$1 == n {print $NF; exit}')"; }
 
 # Empty stubs first, so that ldd lists only the libraries the rest still needs.

@@ -5,7 +5,7 @@
 # tests, when bundled) set; shaders are read from this checkout, so a shader change needs no
 # new bundle. Without a command: the GPU check of docs/performance.md (bench of every view at
 # 1920x1080 and 1280x720 with 1 and 4 samples, the per-pass breakdown, and three 720p renders to
-# compare with llvmpipe's), its files written to $OUT.
+# compare with llvmpipe's; with FFmpeg bundled, the recording rate), its files written to $OUT.
 #   device run: bash scripts/device-check.sh            (carry .devbundle)
 #   device run: bash scripts/device-check.sh '$OG_TESTS --gtest_filter=Transforms*'
 set -uo pipefail
@@ -39,3 +39,7 @@ render coast-2m-bank --lat 24.2 --lon -78.2 --alt 2 --heading 270 --pitch -10
 render sea-2m-horizon --lat 36 --lon -5.5 --alt 2 --heading 270 --pitch 2
 timeout 200 "$OG" bench --size 1920x1080 --size 1280x720 --frames 30 --samples 1 4 2>&1 | quiet | tee "$out/bench.txt"
 timeout 120 "$OG" bench --size 1920x1080 --size 1280x720 --frames 20 --samples 1 --breakdown --json 2>&1 | quiet >"$out/breakdown.json"
+# The recording rate, where the bundle has FFmpeg (scripts/device-bundle.sh --record).
+if [[ -e $bundle/lib/libavcodec.so.59 ]]; then
+  timeout 150 "$OG" bench --record config/flythrough.toml --size 1280x720 --size 1920x1080 2>&1 | quiet | tee -a "$out/bench.txt"
+fi
