@@ -6,10 +6,9 @@
 # runs it there. The bundle is ~39 MB, ~46 MB with both options: with the working tree (~19 MB)
 # that is about the 64 MiB the lent machine takes, so bundle the tests or the recorder, not both.
 #
-# The bundle must stay small (the lent machine takes 64 MiB with the working tree), so the
-# libraries of what a GPU check does not use are replaced by stubs of the same name: OSMesa,
-# FFmpeg (no `record` there), GLFW, ecCodes, ICU, and GDAL's drivers for formats the embedded
-# data does not use. Debian links its libraries with BIND_NOW, so a stub defines every symbol the
+# To stay small, the libraries of what a GPU check does not use are replaced by stubs of the
+# same name: OSMesa, FFmpeg (unless --record), GLFW, ecCodes, ICU, and GDAL's drivers for formats
+# the embedded data does not use. Debian links its libraries with BIND_NOW, so a stub defines every symbol the
 # bundle imports from it: functions that return 0 (and say so once on stderr), data as zeros.
 # glibc and libstdc++ are the machine's own (newer than Debian 12's).
 set -euo pipefail
@@ -49,7 +48,12 @@ if [[ $record == 1 ]]; then
     libsrt-gnutls.so.1.5 libssh-gcrypt.so.4 libzmq.so.5 libva-drm.so.2 libva-x11.so.2 libvdpau.so.1
     libOpenCL.so.1 libsoxr.so.0)
 fi
-realpath_of() { readlink -f "$(ldconfig -p | awk -v n="$1" '$1 == n {print $NF; exit}')"; }
+realpath_of() {
+  local path
+  path=$(ldconfig -p | awk -v n="$1" '$1 == n {print $NF; exit}')
+  [[ -n $path ]] || { echo "device-bundle: $1 is not installed (scripts/install-deps.sh)" >&2; exit 2; }
+  readlink -f "$path"
+}
 
 # Empty stubs first, so that ldd lists only the libraries the rest still needs.
 for s in "${stubbed[@]}"; do gcc -shared -Wl,-soname,"$s" -o "$work/stubs/$s" -x c /dev/null; done
@@ -59,10 +63,10 @@ LD_LIBRARY_PATH="$work/stubs" ldd "$work"/bin/* | awk '$3 ~ /^\// {print $3}' | 
 cp -L "$(realpath_of libGLdispatch.so.0)" "$work/lib/"
 
 # Then each stub with what the bundle imports from the real library.
+for f in "$work"/lib/* "$work"/bin/*; do nm -D --undefined-only "$f" | awk '{sub(/@.*/, "", $2); print $2}'; done |
+  sort -u >"$work/imports"
 for s in "${stubbed[@]}"; do
   real=$(realpath_of "$s")
-  for f in "$work"/lib/* "$work"/bin/*; do nm -D --undefined-only "$f" | awk '{sub(/@.*/, "", $2); print $2}'; done |
-    sort -u >"$work/imports"
   {
     echo '#include <stdio.h>'
     nm -D -S --defined-only "$real" | awk 'NF == 4 {sub(/@.*/, "", $4); print $3, $4, $2} NF == 3 {sub(/@.*/, "", $3); print $2, $3, 0}' |
@@ -75,6 +79,6 @@ for s in "${stubbed[@]}"; do
   gcc -shared -fPIC -w -Wl,-soname,"$s" -o "$work/stubs/$s" "$work/stub.c"
 done
 
-tar -C "$work" -cf - bin lib stubs | xz -T0 -6 >.devbundle/og-bundle.tar.xz.tmp
-mv .devbundle/og-bundle.tar.xz.tmp .devbundle/og-bundle.tar.xz
+tar -C "$work" -cf - bin lib stubs | xz -T0 -6 >"$work/og-bundle.tar.xz"
+mv "$work/og-bundle.tar.xz" .devbundle/og-bundle.tar.xz
 echo "device-bundle: .devbundle/og-bundle.tar.xz, $(du -h .devbundle/og-bundle.tar.xz | cut -f1)"

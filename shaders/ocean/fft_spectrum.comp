@@ -37,9 +37,9 @@ void main() {
     vec2 e = vec2(cos(phase), sin(phase));
     vec2 h = complexMul(h0.xy, vec2(e.x, -e.y)) + complexMul(h0.zw, e);
     vec2 ih = timesI(h);
-    // Each slot multiplied out to one real factor of h or of i h: NVIDIA's compiler (580.159)
-    // evaluated the nested form h + timesI(k.x * timesI(h)) as h + k.x * timesI(h), which put
-    // dh/dx into the heights and left the x slopes 0 (docs/performance.md, "Tenth session").
+    // Each slot multiplied out, no timesI nested in another: NVIDIA's driver (580.159) gave the
+    // nested form h + timesI(k.x * timesI(h)) as h + k.x * timesI(h), which put dh/dx into the
+    // heights and left the x slopes 0 (docs/performance.md, "Tenth session").
     slots[slot++] = (1.0 - k.x) * h;          // h + i dh/dx = h + i (i kx h)
     slots[slot++] = (k.y + kl) * ih;          // dh/dy + i t = i ky h + i |k| h
     if (patternDisplaced(p)) slots[slot++] = (k.y * h - k.x * ih) / kl;  // Dx + i Dy = -i kx/|k| h + i (-i ky/|k| h)

@@ -75,9 +75,10 @@ std::vector<std::string> fftDefines(const ocean::WavePatternParams& p) {
           "FFT_SIZE " + std::to_string(p.fftSize), "FFT_LOG2 " + std::to_string(log2Of(p.fftSize))};
 }
 
-/// Largest |gpu - cpu| of each channel of each layer, against that channel's rms over the layer
-/// (channels whose rms is below `floor` are skipped), at most `bound`.
-bool layersAgree(const std::vector<float>& gpu, std::span<const float> cpu, std::size_t texels, double bound, double floor) {
+/// Whether every channel of every layer agrees: largest |gpu - cpu| at most `bound` times that
+/// channel's rms over the layer plus `absolute` (the outputs' rounding near zero).
+bool layersAgree(const std::vector<float>& gpu, std::span<const float> cpu, std::size_t texels, double bound,
+                 double absolute) {
   for (std::size_t layer = 0; layer < static_cast<std::size_t>(kLayers); ++layer)
     for (std::size_t c = 0; c < 4; ++c) {
       double sum = 0.0, worst = 0.0;
@@ -87,28 +88,11 @@ bool layersAgree(const std::vector<float>& gpu, std::span<const float> cpu, std:
         sum += want * want;
         worst = std::max(worst, std::abs(static_cast<double>(gpu[at]) - want));
       }
-      const double rms = std::sqrt(sum / static_cast<double>(texels));
-      if (rms > floor && worst > bound * rms) return false;
+      if (worst > bound * std::sqrt(sum / static_cast<double>(texels)) + absolute) return false;
     }
   return true;
 }
 
-// Whether the GPU may transform the patterns: OceanPatterns::gpuFftMatchesCpu, asked once per
-// driver and shader tree (OCEANGLOBE_SHADER_DIR) in a process.
-bool gpuFftTrusted(const std::shared_ptr<const ocean::WavePatterns>& patterns) {
-  static std::map<std::string, bool> verdicts;
-  const std::string& renderer = gl::currentContextInfo().renderer;
-  const char* shaderDir = std::getenv("OCEANGLOBE_SHADER_DIR");
-  const std::string key = renderer + "|" + (shaderDir != nullptr ? shaderDir : "");
-  const auto known = verdicts.find(key);
-  if (known != verdicts.end()) return known->second;
-  const bool trusted = OceanPatterns::gpuFftMatchesCpu(patterns);
-  if (!trusted)
-    log::warn("the wave patterns' FFT on the GPU does not match the CPU's on this driver (" +
-              renderer + "): the CPU transforms them instead");
-  verdicts.emplace(key, trusted);
-  return trusted;
-}
 }  // namespace
 
 // The GPU's transforms: the compute programs, the spectra (h0(k), conj(h0(-k)) per texel,
@@ -145,7 +129,8 @@ OceanPatterns::OceanPatterns(std::shared_ptr<const ocean::WavePatterns> patterns
   requestedWindMs_ = requestedWindMs;
   const int n = patterns_->params.fftSize;
   const auto texels = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
-  if (!fft) fft = gl::driverProfile().cpuWaveFft || !gpuFftTrusted(patterns_) ? Fft::Cpu : Fft::Gpu;
+  const bool profileChooses = !fft.has_value();
+  if (!fft) fft = gl::driverProfile().cpuWaveFft ? Fft::Cpu : Fft::Gpu;
   if (*fft == Fft::Cpu) {
     cpu_ = std::make_unique<ocean::PatternSynthesis>(*patterns_);
   } else {
@@ -159,6 +144,30 @@ OceanPatterns::OceanPatterns(std::shared_ptr<const ocean::WavePatterns> patterns
   table_ = makeTableBuffer(tables_);
   gpuBytes_ += texels * kLayers * 24 * 4 / 3;  // the mip-mapped outputs
   gl::checkErrors("OceanPatterns setup");
+  if (profileChooses && gpu_ != nullptr && !gpuFftTrusted()) {
+    gpu_.reset();
+    cpu_ = std::make_unique<ocean::PatternSynthesis>(*patterns_);
+    gpuBytes_ = texels * kLayers * 24 * 4 / 3;
+    computed_ = 0;
+  }
+}
+
+// The verdict of matchesCpu, asked once per driver, shader tree (OCEANGLOBE_SHADER_DIR) and
+// program variant in a process (GL runs on one thread: the map needs no lock).
+bool OceanPatterns::gpuFftTrusted() {
+  static std::map<std::string, bool> verdicts;
+  const std::string& renderer = gl::currentContextInfo().renderer;
+  const char* shaderDir = std::getenv("OCEANGLOBE_SHADER_DIR");
+  std::string key = renderer + "|" + (shaderDir != nullptr ? shaderDir : "");
+  for (const std::string& d : fftDefines(patterns_->params)) key += "|" + d;
+  const auto known = verdicts.find(key);
+  if (known != verdicts.end()) return known->second;
+  const bool trusted = matchesCpu();
+  if (!trusted)
+    log::warn("the wave patterns' FFT on the GPU does not match the CPU's on this driver (" + renderer +
+              "): the CPU transforms them instead");
+  verdicts.emplace(key, trusted);
+  return trusted;
 }
 
 OceanPatterns::~OceanPatterns() = default;
@@ -378,19 +387,25 @@ void OceanPatterns::bind() const {
 
 bool OceanPatterns::gpuFftMatchesCpu(const std::shared_ptr<const ocean::WavePatterns>& patterns) {
   OceanPatterns gpu(patterns, -1.0, Fft::Gpu);
-  gpu.update(0.0);
-  ocean::PatternSynthesis cpu(*patterns);
+  return gpu.matchesCpu();
+}
+
+// This object's GPU transforms at t = 0 against FFTW's, read back at level 0.
+bool OceanPatterns::matchesCpu() {
+  update(0.0);
+  ocean::PatternSynthesis cpu(*patterns_);
   cpu.compute(0.0, ocean::kPatternCount);
-  const int n = patterns->params.fftSize;
+  const int n = patterns_->params.fftSize;
   const auto texels = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
-  std::vector<float> read(4 * texels * kLayers);
-  const auto bytes = static_cast<GLsizei>(read.size() * sizeof(float));
-  glGetTextureSubImage(gpu.displacement_.id(), 0, 0, 0, 0, n, n, kLayers, GL_RGBA, GL_FLOAT, bytes, read.data());
-  // Half floats: ~1e-3 of a value; the heights of the shortest pattern are ~1e-3 m.
-  if (!layersAgree(read, cpu.displacement(0, 0, kLayers), texels, 0.02, 1e-6)) return false;
-  glGetTextureSubImage(gpu.slopes_.id(), 0, 0, 0, 0, n, n, kLayers, GL_RGBA, GL_FLOAT, bytes, read.data());
-  gl::checkErrors("OceanPatterns::gpuFftMatchesCpu");
-  return layersAgree(read, cpu.slopes(0, 0, kLayers), texels, 0.02, 1e-12);
+  std::vector<float> displacement(4 * texels * kLayers), slopes(displacement.size());
+  const auto bytes = static_cast<GLsizei>(displacement.size() * sizeof(float));
+  glGetTextureSubImage(displacement_.id(), 0, 0, 0, 0, n, n, kLayers, GL_RGBA, GL_FLOAT, bytes, displacement.data());
+  glGetTextureSubImage(slopes_.id(), 0, 0, 0, 0, n, n, kLayers, GL_RGBA, GL_FLOAT, bytes, slopes.data());
+  glUseProgram(0);
+  gl::checkErrors("OceanPatterns::matchesCpu");
+  // Half floats round to 2^-11 of a value, and to 6e-8 below 6e-5 (their subnormals).
+  return layersAgree(displacement, cpu.displacement(0, 0, kLayers), texels, 0.02, 1e-7) &&
+         layersAgree(slopes, cpu.slopes(0, 0, kLayers), texels, 0.02, 1e-9);
 }
 
 }  // namespace og::render

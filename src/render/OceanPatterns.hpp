@@ -79,9 +79,10 @@ class OceanPatterns {
   [[nodiscard]] std::size_t gpuBytes() const { return gpuBytes_; }
 
   /// Whether the GPU's transforms of `patterns` at t = 0 (every pattern, mip level 0) match the
-  /// CPU's within 2 % of each channel's rms. A driver whose compiler gets the compute shaders
-  /// wrong (NVIDIA 580.159 did: docs/performance.md, "Tenth session") fails it. Needs a current
-  /// context; costs one transform on each side and a read-back (a few ms).
+  /// CPU's within 2 % of each channel's rms (plus the outputs' rounding). A driver whose compiler
+  /// gets the compute shaders wrong (NVIDIA 580.159 did: docs/performance.md, "Tenth session")
+  /// fails it. Needs a current context; costs the GPU programs, one transform on each side and
+  /// a read-back. The constructor asks it of itself where the driver profile picks the GPU.
   [[nodiscard]] static bool gpuFftMatchesCpu(const std::shared_ptr<const ocean::WavePatterns>& patterns);
 
  private:
@@ -89,6 +90,8 @@ class OceanPatterns {
   void runGpuFft(double timeS, int patternCount);
   void generateMipmaps(int patternCount);
   void uploadCpuFft(int patternCount);
+  bool gpuFftTrusted();
+  bool matchesCpu();
 
   std::shared_ptr<const ocean::WavePatterns> patterns_;
   ocean::PatternTables tables_;

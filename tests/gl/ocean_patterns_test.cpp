@@ -23,6 +23,7 @@
 #include "gl/Context.hpp"
 #include "ocean/WavePatterns.hpp"
 #include "render/OceanPatterns.hpp"
+#include "support/GlFixtures.hpp"
 
 using namespace og;
 
@@ -303,6 +304,7 @@ TEST(OceanPatternsCheck, GpuTransformsThatDisagreeWithTheCpusAreNotUsed) {
   namespace fs = std::filesystem;
   const fs::path broken = fs::path(OG_TEST_OUT_DIR) / "shaders_fft_without_x_slopes";
   fs::remove_all(broken);
+  fs::create_directories(broken.parent_path());
   fs::copy(fs::path(OG_SOURCE_DIR) / "shaders", broken, fs::copy_options::recursive);
   const fs::path spectrum = broken / "ocean" / "fft_spectrum.comp";
   std::ifstream in(spectrum);
@@ -314,14 +316,12 @@ TEST(OceanPatternsCheck, GpuTransformsThatDisagreeWithTheCpusAreNotUsed) {
   text.replace(at, slot.size(), "slots[slot++] = h;");
   std::ofstream(spectrum) << text;
 
-  ASSERT_EQ(setenv("OCEANGLOBE_FFT", "gpu", 1), 0);  // the profile of a GPU driver
+  const test::ScopedEnv gpuProfile("OCEANGLOBE_FFT", "gpu");  // the profile of a GPU driver
   auto ctx = gl::createHeadlessContext();
   auto w = std::make_shared<const ocean::WavePatterns>(ocean::makeWavePatterns(smallPatternParams()));
   EXPECT_TRUE(render::OceanPatterns::gpuFftMatchesCpu(w));
   EXPECT_EQ(render::OceanPatterns(w).fft(), render::OceanPatterns::Fft::Gpu);
-  ASSERT_EQ(setenv("OCEANGLOBE_SHADER_DIR", broken.c_str(), 1), 0);
+  const test::ScopedEnv brokenShaders("OCEANGLOBE_SHADER_DIR", broken.c_str());
   EXPECT_FALSE(render::OceanPatterns::gpuFftMatchesCpu(w));
   EXPECT_EQ(render::OceanPatterns(w).fft(), render::OceanPatterns::Fft::Cpu);
-  unsetenv("OCEANGLOBE_SHADER_DIR");
-  unsetenv("OCEANGLOBE_FFT");
 }

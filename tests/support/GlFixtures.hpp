@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -80,16 +81,23 @@ inline void savePng(const render::GlobeRenderer& r, const std::string& name) {
   io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".png"), r.display());
 }
 
-/// Sets an environment variable for the scope's lifetime.
+/// Sets an environment variable for the scope's lifetime, then restores what it was.
 class ScopedEnv {
  public:
-  ScopedEnv(const char* name, const char* value) : name_(name) { setenv(name, value, 1); }
-  ~ScopedEnv() { unsetenv(name_); }
+  ScopedEnv(const char* name, const char* value) : name_(name) {
+    if (const char* before = std::getenv(name)) before_ = before;
+    setenv(name, value, 1);
+  }
+  ~ScopedEnv() {
+    if (before_) setenv(name_, before_->c_str(), 1);
+    else unsetenv(name_);
+  }
   ScopedEnv(const ScopedEnv&) = delete;
   ScopedEnv& operator=(const ScopedEnv&) = delete;
 
  private:
   const char* name_;
+  std::optional<std::string> before_;  ///< the value it had, restored (a run of many tests in one process)
 };
 
 }  // namespace og::test
