@@ -3,8 +3,12 @@
 // nearest fragment per pixel writes what its vertices hand the shading into the surface buffer
 // (ocean/sea_surface.glsl) and its class into the stencil (ocean/sea_class.glsl), after the
 // coast test where land may be near; the shading (ocean/ocean.frag with OCEAN_DEFERRED) then
-// runs once per pixel, class by class.
+// runs once per pixel, class by class. Without GL_ARB_shader_stencil_export (NVIDIA's drivers)
+// the class goes into the surface buffer (SEA_CLASS_IN_SURFACE) and ocean/sea_class_stencil.frag
+// copies it into the stencil.
+#ifndef SEA_CLASS_IN_SURFACE
 #extension GL_ARB_shader_stencil_export : require
+#endif
 #include "common/types.glsl"
 #include "geo/ellipsoid.glsl"
 #include "ocean/wind.glsl"
@@ -50,9 +54,12 @@ void main() {
   // skip nothing on llvmpipe.
   KEEP_SEA_SAMPLES(vRelative)
 #ifdef OCEAN_SEA_CLASSIFY
-  gl_FragStencilRefARB = seaClassOfFragment();
+  int seaClass = seaClassOfFragment();
 #else
-  gl_FragStencilRefARB = 1;
+  int seaClass = 1;
 #endif
-  writeSeaSurface(footprint, floorSlope);
+#ifndef SEA_CLASS_IN_SURFACE
+  gl_FragStencilRefARB = seaClass;
+#endif
+  writeSeaSurface(footprint, floorSlope, seaClass);
 }

@@ -11,7 +11,8 @@
 //   3: Jacobian statistic y, floor depth (m), the floor's depth gradient in the triangle
 //   4: halves: the vertices' pattern shares 0-4, aerial transmittance
 //   5: halves: aerial in-scatter, the water's Sun and sky irradiance (3 + 2 channels)
-//   6: halves: the sky irradiance's third channel, the fine-floor flag
+//   6: halves: the sky irradiance's third channel, the fine-floor flag; the pixel's class where
+//      the driver cannot export stencil values (SEA_CLASS_IN_SURFACE; 0: no sea)
 // Needs (included first): ocean/patterns.glsl (PATTERN_COUNT).
 const int SEA_SURFACE_LAYERS = 7;
 #if PATTERN_COUNT != 5
@@ -65,9 +66,9 @@ layout(location = 4) out uvec4 seaSurface4;
 layout(location = 5) out uvec4 seaSurface5;
 layout(location = 6) out uvec4 seaSurface6;
 
-// Writes the fragment's values: the grid's varyings, its footprint (m) and the floor's depth
-// gradient in its triangle (floorDepthSlope).
-void writeSeaSurface(float footprintM, vec2 floorSlope) {
+// Writes the fragment's values: the grid's varyings, its footprint (m), the floor's depth
+// gradient in its triangle (floorDepthSlope) and its class (1..5, kept where SEA_CLASS_IN_SURFACE).
+void writeSeaSurface(float footprintM, vec2 floorSlope, int seaClass) {
   seaSurface0 = uvec4(floatBitsToUint(vRelative), floatBitsToUint(footprintM));
   seaSurface1 = uvec4(floatBitsToUint(vOceanXY), floatBitsToUint(vPatternMean));
   seaSurface2 = uvec4(floatBitsToUint(vPatternCov), floatBitsToUint(vPatternJacobian.x));
@@ -76,7 +77,7 @@ void writeSeaSurface(float footprintM, vec2 floorSlope) {
   seaSurface4 = uvec4(seaHalves(vPatternShare[0], vPatternShare[1]), seaHalves(vPatternShare[2], vPatternShare[3]),
                       seaHalves(vPatternShare[4], t.r), seaHalves(t.g, t.b));
   seaSurface5 = uvec4(seaHalves(s.r, s.g), seaHalves(s.b, sunE.r), seaHalves(sunE.g, sunE.b), seaHalves(skyE.r, skyE.g));
-  seaSurface6 = uvec4(seaHalves(skyE.b, SEA_FLOOR_FINE), 0u, 0u, 0u);
+  seaSurface6 = uvec4(seaHalves(skyE.b, SEA_FLOOR_FINE), uint(seaClass), 0u, 0u);
 }
 #elif defined(OCEAN_DEFERRED)
 layout(binding = OG_UNIT_SEA_SURFACE) uniform usampler2DArray uSeaSurface;

@@ -98,14 +98,16 @@ std::vector<std::string> oceanDefines(const Atmosphere* atmosphere, ValidationMo
   if (mode == ValidationMode::BrdfOnly) d.emplace_back("OCEAN_VALIDATION_BRDF_ONLY");
   return d;
 }
-// Whether the sea may be drawn deferred: OCEANGLOBE_SEA=forward draws it forward (for
-// comparisons), deferred or unset lets it (OceanRenderer::setDeferred).
-bool deferredAllowed() {
+// OCEANGLOBE_SEA: unset (""), "forward" (for comparisons) or "deferred".
+std::string seaPathAsked() {
   const char* e = std::getenv("OCEANGLOBE_SEA");
-  if (e == nullptr || *e == '\0' || std::string(e) == "deferred") return true;
-  if (std::string(e) == "forward") return false;
-  throw InputError("OCEANGLOBE_SEA: '" + std::string(e) + "' is not forward or deferred");
+  const std::string asked = e != nullptr ? e : "";
+  if (asked.empty() || asked == "forward" || asked == "deferred") return asked;
+  throw InputError("OCEANGLOBE_SEA: '" + asked + "' is not forward or deferred");
 }
+
+// Whether the sea may be drawn deferred (OceanRenderer::setDeferred): unless it is asked forward.
+bool deferredAllowed() { return seaPathAsked() != "forward"; }
 
 // The sea's classes' passes in `bench --breakdown`.
 constexpr std::array<const char*, OceanRenderer::kSeaClasses> kClassPass{
@@ -117,6 +119,7 @@ OceanRenderer::OceanRenderer(const Atmosphere* atmosphere, ValidationMode mode)
       mode_(mode),
       defines_(oceanDefines(atmosphere, mode)),
       deferred_(deferredAllowed()),
+      deferredWithoutExport_(seaPathAsked() == "deferred"),
       vao_(gl::createVertexArray()),
       indices_(gl::createBuffer()) {}
 
@@ -343,7 +346,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     drawGrid(p);
   } else if (const GLuint depthStencil = deferred_ ? SeaSurfaceBuffer::boundDepthStencilTexture() : 0;
              deferred_ && mode_ == ValidationMode::Filtered && frameCellPixels_ < kDeferredMaxCellPixels &&
-             depthStencil != 0 && gl::driverProfile().stencilExport) {
+             depthStencil != 0 && (gl::driverProfile().stencilExport || deferredWithoutExport_)) {
     lastDeferred_ = true;
     drawDeferred(view, width, height, patterns, frame, lighting, amplitudeScale, wind, features, margin, depthStencil);
   } else if (lighting.classes && (features & (kFeatureWaterVolume | kFeatureCoastTest)) != 0 &&
@@ -541,7 +544,25 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
 std::vector<std::string> OceanRenderer::surfaceDefines(unsigned key) const {
   std::vector<std::string> d = featureDefines(key & (kFeatureWaterVolume | kFeatureCoastTest));
   if ((key & kSurfaceClasses) != 0) d.emplace_back("OCEAN_SEA_CLASSIFY");
+  if (!gl::driverProfile().stencilExport) d.emplace_back("SEA_CLASS_IN_SURFACE");
   return d;
+}
+
+void OceanRenderer::classesIntoStencil() {
+  if (classStencil_.id() == 0)
+    classStencil_ = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_class_stencil.frag"}});
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glStencilFunc(GL_ALWAYS, 0xff, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  surface_.bindForReading();
+  glBindVertexArray(vao_.id());
+  classStencil_.use();
+  for (int bit = 0; bit < 3; ++bit) {  // classes 1..kSeaClasses
+    glStencilMask(1u << bit);
+    classStencil_.set("uClassBit", bit);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
 const gl::Program& OceanRenderer::surfaceProgram(unsigned key) {
@@ -631,6 +652,11 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   GLint target = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
   surface_.bindForWriting(width, height, depthStencil);
+  const bool exportsStencil = gl::driverProfile().stencilExport;
+  if (!exportsStencil) {  // the classes go into layer 6 (0: no sea)
+    const std::array<GLuint, 4> none{};
+    glClearBufferuiv(GL_COLOR, 6, none.data());
+  }
   // Each pixel's class is its nearest fragment's (depth-tested, its values in the buffer).
   glEnable(GL_STENCIL_TEST);
   glStencilMask(0xff);
@@ -650,11 +676,12 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
     glGetNamedBufferSubData(classRows_.id(), 0, sizeof rows, rows.data());
   }
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  if (!exportsStencil && seaVisible) classesIntoStencil();
   // The shading: a full-screen pass per class present, only its pixels.
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glStencilMask(0);
-  glDisable(GL_DEPTH_TEST);
-  glDepthMask(GL_FALSE);
   surface_.bindForReading();
   glBindVertexArray(vao_.id());
   std::array<unsigned, kSeaClasses> perClass = classFeatures(features, routedShadows);

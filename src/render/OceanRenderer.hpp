@@ -114,7 +114,7 @@ class OceanRenderer {
   /// them (setCountClassSamples).
   [[nodiscard]] const std::array<std::uint64_t, kSeaClasses>& classSamples() const { return classSamples_; }
   /// Whether the filtered sea may be drawn deferred (drawDeferred) where the target allows it
-  /// (single-sampled, a depth-stencil texture, stencil export); on by default. Off, the grid's
+  /// (single-sampled, a depth-stencil texture; stencil export, or OCEANGLOBE_SEA=deferred); on by default. Off, the grid's
   /// fragments shade the sea themselves (as under multisampling and in `validate`).
   void setDeferred(bool on) { deferred_ = on; }
   /// Cells of this many pixels or more (grown: geometryIsSubPixel) are drawn forward: their
@@ -197,6 +197,10 @@ class OceanRenderer {
   /// (llvmpipe runs a fragment shader's every line whatever its conditions). `key`: the surface
   /// pass's, with classes.
   void splitNearLand(unsigned key);
+  /// Without stencil export (gl::DriverProfile::stencilExport): copies the surface pass's
+  /// classes from the surface buffer into the bound framebuffer's stencil, a pass per bit
+  /// (ocean/sea_class_stencil.frag).
+  void classesIntoStencil();
   /// drawGrid with another index list of the same layout (openIndices_, nearLandIndices_).
   void drawGridIndices(const gl::Program& p, const gl::Buffer& indices) const;
   /// ocean/grid_near_land.comp's buffers: the grid's indices, its two copies.
@@ -273,6 +277,9 @@ class OceanRenderer {
   ValidationMode mode_;
   std::vector<std::string> defines_;        ///< the filtered model's, whatever the features
   bool deferred_;                           ///< setDeferred
+  /// Deferred also where the driver cannot export stencil values (NVIDIA's): only when asked,
+  /// OCEANGLOBE_SEA=deferred, until measured on such a GPU (docs/performance.md, "Tenth session").
+  bool deferredWithoutExport_;
   std::array<gl::Program, 16> variants_;    ///< by feature bits; id() 0 until compiled
   gl::Program classify_;                    ///< ocean/sea_classify.frag; id() 0 until compiled
   std::array<gl::Program, 16> deferredVariants_;  ///< ocean.frag OCEAN_DEFERRED, by feature bits
@@ -280,6 +287,7 @@ class OceanRenderer {
   std::array<gl::Program, 8> gridComputeVariants_;  ///< grid_vertices.comp, as surfaceVariants_
   gl::Buffer gridVertices_;  ///< the surface pass's vertices (ocean/grid_vertex_buffer.glsl)
   gl::Program nearLandSplit_;  ///< ocean/grid_near_land.comp; id() 0 until first used
+  gl::Program classStencil_;   ///< ocean/sea_class_stencil.frag; id() 0 until first used
   gl::Buffer openIndices_, nearLandIndices_;  ///< splitNearLand's copies of indices_
   GLsizeiptr nearLandSplitBytes_ = 0;
   std::size_t gridVerticesBytes_ = 0;

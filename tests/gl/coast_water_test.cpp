@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -437,10 +438,12 @@ render::FrameInput classView(const geo::Geodetic& position, double headingDeg, d
 
 // `f` drawn deferred (render/OceanRenderer::drawDeferred), then by the grid's own fragments,
 // compared as the classes are below.
-void expectDeferredMatchesForward(render::GlobeRenderer& r, const render::FrameInput& f, const std::string& name) {
+// Returns the classes the deferred frame drew (OceanRenderer::classesDrawn).
+unsigned expectDeferredMatchesForward(render::GlobeRenderer& r, const render::FrameInput& f, const std::string& name) {
   r.ocean().setDeferred(true);
   r.render(f);
   EXPECT_TRUE(r.ocean().lastDrawDeferred()) << name;
+  const unsigned classesDrawn = r.ocean().classesDrawn();
   const io::ImageRgba8 deferred = r.display();
   save(r, name);
   r.ocean().setDeferred(false);
@@ -453,6 +456,7 @@ void expectDeferredMatchesForward(render::GlobeRenderer& r, const render::FrameI
   if (!c.within({2, 0.01, 1, 0.001}))
     io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".diff.png"), c.diff);
   EXPECT_TRUE(c.within({2, 0.01, 1, 0.001})) << name << ": " << c.describe();
+  return classesDrawn;
 }
 
 // `f` drawn with the sea in classes, then by one program (saved as `name` and `name`_single),
@@ -499,6 +503,7 @@ TEST(CoastWater, ShadowClassCoversEveryShadowOnTheSea) {
 // of the island looking south-south-west across the shadow's southern edge (the lit sea
 // beyond it has the Sun's glitter on its right): the picture is the single program's.
 TEST(CoastWater, FloorAndShadowClassesCombineIndependently) {
+  const test::ScopedEnv deferred("OCEANGLOBE_SEA", "deferred");  // also without stencil export (NVIDIA)
   auto ctx = gl::createHeadlessContext();
   for (const bool shelving : {true, false}) {
     SCOPED_TRACE(shelving ? "bank" : "deep water");
@@ -533,6 +538,7 @@ TEST(CoastWater, FloorAndShadowClassesCombineIndependently) {
 // (the floor's and the land's). A pixel sent to the wrong class shows the deep sea where the
 // floor is (tens of levels), or the sea over the beach. Measured: identical (max 0).
 TEST(CoastWater, SeaClassesMatchTheSingleProgram) {
+  const test::ScopedEnv deferred("OCEANGLOBE_SEA", "deferred");  // also without stencil export (NVIDIA)
   auto ctx = gl::createHeadlessContext();
   for (const auto& [deep, offshoreKm, heightM, pitch] :
        {std::tuple{true, 4.2, 100.0, -20.0}, std::tuple{false, 2.2, 20.0, -15.0}}) {
@@ -552,6 +558,7 @@ TEST(CoastWater, SeaClassesMatchTheSingleProgram) {
 // measured within 1 level. A pixel shaded with a wrong fragment's values, or of a wrong class,
 // differs by tens of levels.
 TEST(CoastWater, DeferredSeaMatchesTheGridsOwnFragments) {
+  const test::ScopedEnv deferred("OCEANGLOBE_SEA", "deferred");  // also without stencil export (NVIDIA)
   auto ctx = gl::createHeadlessContext();
   {
     render::GlobeRenderer r(shoreShelfAndDeep());
@@ -560,15 +567,53 @@ TEST(CoastWater, DeferredSeaMatchesTheGridsOwnFragments) {
   }
   {
     render::GlobeRenderer r(shelf());
-    expectDeferredMatchesForward(r, classView({kLat - 2.2 / 111.2, kLon, 20.0}, 10.0, -15.0, 40.0, 20.0),
-                                 "deferred_shelf");
-    EXPECT_NE(r.ocean().classesDrawn() & kClassFloor, 0u) << r.ocean().classesDrawn();
+    const unsigned drawn = expectDeferredMatchesForward(
+        r, classView({kLat - 2.2 / 111.2, kLon, 20.0}, 10.0, -15.0, 40.0, 20.0), "deferred_shelf");
+    EXPECT_NE(drawn & kClassFloor, 0u) << drawn;
   }
   {
     render::GlobeRenderer r(shadowingIsland(true));
-    expectDeferredMatchesForward(
+    const unsigned drawn = expectDeferredMatchesForward(
         r, classView({kLat - 1.0 / 110.8, kLon + 8.0 / (111.3 * std::cos(kLat * M_PI / 180.0)), 200.0}, 200.0, -25.0, 3.0, 250.0),
         "deferred_island_bank");
-    EXPECT_NE(r.ocean().classesDrawn() & kClassFloorShadows, 0u) << r.ocean().classesDrawn();
+    EXPECT_NE(drawn & kClassFloorShadows, 0u) << drawn;
+  }
+}
+
+// Where the driver cannot export stencil values from a fragment shader (NVIDIA's drivers), the
+// deferred sea's surface pass leaves each pixel's class in the surface buffer and three passes
+// copy its bits into the stencil (OceanRenderer::classesIntoStencil; asked with
+// OCEANGLOBE_SEA=deferred): the same classes, the same picture as with the exported stencil,
+// over the shelf (floor 3 = 011, coast 5 = 101) and the island's bank in its shadow (floor with
+// shadows 4 = 100), so every bit is copied.
+TEST(CoastWater, DeferredSeaWithoutStencilExportDrawsTheSameClasses) {
+  if (!gl::createHeadlessContext()->info().profile.stencilExport)
+    GTEST_SKIP() << "this driver cannot export stencil values: no exported classes to compare with";
+  const std::vector<std::tuple<std::string, data::LatLonGrid, render::FrameInput, unsigned>> views{
+      {"deferred_no_export_shelf", shelf(), classView({kLat - 2.2 / 111.2, kLon, 20.0}, 10.0, -15.0, 40.0, 20.0),
+       kClassFloor},
+      {"deferred_no_export_island_bank", shadowingIsland(true),
+       classView({kLat - 1.0 / 110.8, kLon + 8.0 / (111.3 * std::cos(kLat * M_PI / 180.0)), 200.0}, 200.0, -25.0, 3.0,
+                 250.0),
+       kClassFloorShadows}};
+  for (const auto& [name, grid, f, mustDraw] : views) {
+    SCOPED_TRACE(name);
+    auto drawn = [&](bool exportStencil) {
+      const std::optional<test::ScopedEnv> noExport =
+          exportStencil ? std::nullopt : std::optional<test::ScopedEnv>(std::in_place, "OCEANGLOBE_STENCIL_EXPORT", "0");
+      const test::ScopedEnv deferred("OCEANGLOBE_SEA", "deferred");
+      auto ctx = gl::createHeadlessContext();
+      EXPECT_EQ(gl::driverProfile().stencilExport, exportStencil);
+      render::GlobeRenderer r(grid);
+      r.render(f);
+      EXPECT_TRUE(r.ocean().lastDrawDeferred());
+      EXPECT_NE(r.ocean().classesDrawn() & mustDraw, 0u) << r.ocean().classesDrawn();
+      if (!exportStencil) save(r, name);
+      return r.display();
+    };
+    const io::ImageRgba8 exported = drawn(true), copied = drawn(false);
+    const test::Comparison c = test::compareRgb(copied, exported, 0);
+    if (c.maxDiff != 0) io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".diff.png"), c.diff);
+    EXPECT_EQ(c.maxDiff, 0) << name << ": " << c.describe();
   }
 }
