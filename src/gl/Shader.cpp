@@ -61,10 +61,15 @@ void expandInto(const std::string& path, ExpandedSource& out, std::set<std::stri
 
 }  // namespace
 
+std::string shaderSourceDir() {
+  const char* dir = std::getenv("OCEANGLOBE_SHADER_DIR");
+  return dir != nullptr ? dir : "";
+}
+
 std::string readShaderFile(const std::string& path) {
-  if (const char* dir = std::getenv("OCEANGLOBE_SHADER_DIR"); dir != nullptr && *dir != '\0') {
-    std::ifstream f(std::string(dir) + "/" + path, std::ios::binary);
-    if (!f) throw InternalError(std::string(dir) + "/" + path + ": cannot read shader file");
+  if (const std::string dir = shaderSourceDir(); !dir.empty()) {
+    std::ifstream f(dir + "/" + path, std::ios::binary);
+    if (!f) throw InternalError(dir + "/" + path + ": cannot read shader file");
     std::ostringstream ss;
     ss << f.rdbuf();
     return ss.str();

@@ -22,6 +22,10 @@ struct ExpandedSource {
   std::vector<std::string> files;
 };
 
+/// The directory programs read the shader tree from: OCEANGLOBE_SHADER_DIR, or empty for the
+/// tree embedded in the executable.
+[[nodiscard]] std::string shaderSourceDir();
+
 /// Reads a file of the shader tree (embedded, or from OCEANGLOBE_SHADER_DIR).
 /// Throws og::InternalError when it does not exist.
 std::string readShaderFile(const std::string& path);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <map>
 #include <span>
 #include <limits>
@@ -13,6 +12,7 @@
 #include "core/Log.hpp"
 #include "gl/Context.hpp"
 #include "gl/DriverProfile.hpp"
+#include "gl/Shader.hpp"
 #include "gl/ShaderContract.hpp"
 
 namespace og::render {
@@ -142,12 +142,13 @@ OceanPatterns::OceanPatterns(std::shared_ptr<const ocean::WavePatterns> patterns
   displacement_ = makeArray(GL_RGBA16F, n, kLayers, levels);
   slopes_ = makeArray(GL_RGBA32F, n, kLayers, levels);  // squares of slopes ~1e-5: below half floats
   table_ = makeTableBuffer(tables_);
-  gpuBytes_ += texels * kLayers * 24 * 4 / 3;  // the mip-mapped outputs
+  const std::size_t outputBytes = texels * kLayers * 24 * 4 / 3;  // the mip-mapped outputs
+  gpuBytes_ += outputBytes;
   gl::checkErrors("OceanPatterns setup");
   if (profileChooses && gpu_ != nullptr && !gpuFftTrusted()) {
     gpu_.reset();
     cpu_ = std::make_unique<ocean::PatternSynthesis>(*patterns_);
-    gpuBytes_ = texels * kLayers * 24 * 4 / 3;
+    gpuBytes_ = outputBytes;
     computed_ = 0;
   }
 }
@@ -157,8 +158,7 @@ OceanPatterns::OceanPatterns(std::shared_ptr<const ocean::WavePatterns> patterns
 bool OceanPatterns::gpuFftTrusted() {
   static std::map<std::string, bool> verdicts;
   const std::string& renderer = gl::currentContextInfo().renderer;
-  const char* shaderDir = std::getenv("OCEANGLOBE_SHADER_DIR");
-  std::string key = renderer + "|" + (shaderDir != nullptr ? shaderDir : "");
+  std::string key = renderer + "|" + gl::shaderSourceDir();
   for (const std::string& d : fftDefines(patterns_->params)) key += "|" + d;
   const auto known = verdicts.find(key);
   if (known != verdicts.end()) return known->second;

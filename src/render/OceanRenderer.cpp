@@ -653,10 +653,7 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
   surface_.bindForWriting(width, height, depthStencil);
   const bool exportsStencil = gl::driverProfile().stencilExport;
-  if (!exportsStencil) {  // the classes go into layer 6 (0: no sea)
-    const std::array<GLuint, 4> none{};
-    glClearBufferuiv(GL_COLOR, 6, none.data());
-  }
+  if (!exportsStencil) surface_.clearClasses();
   // Each pixel's class is its nearest fragment's (depth-tested, its values in the buffer).
   glEnable(GL_STENCIL_TEST);
   glStencilMask(0xff);

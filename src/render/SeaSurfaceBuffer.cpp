@@ -45,6 +45,12 @@ void SeaSurfaceBuffer::bindForWriting(int width, int height, GLuint depthStencil
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_.id());
 }
 
+void SeaSurfaceBuffer::clearClasses() const {
+  constexpr GLint kClassLayer = kLayers - 1;  // its .y (ocean/sea_class_stencil.frag reads it there)
+  const std::array<GLuint, 4> none{};
+  glClearNamedFramebufferuiv(fbo_.id(), GL_COLOR, kClassLayer, none.data());
+}
+
 void SeaSurfaceBuffer::bindForReading() const { glBindTextureUnit(gl::kUnitSeaSurface, layers_.id()); }
 
 }  // namespace og::render

@@ -17,6 +17,10 @@ class SeaSurfaceBuffer {
   /// Makes the buffer `width` x `height` over `depthStencil` (boundDepthStencilTexture) and binds
   /// its framebuffer with the kLayers draw buffers; remade only when either changes.
   void bindForWriting(int width, int height, GLuint depthStencil);
+  /// Zeroes the layer that holds each pixel's class where the driver cannot export stencil
+  /// values (layer 6, ocean/sea_surface.glsl's SEA_CLASS_IN_SURFACE; 0: no sea drawn), bound
+  /// for writing.
+  void clearClasses() const;
   /// Binds the texture to gl::kUnitSeaSurface for the shading passes.
   void bindForReading() const;
 
