@@ -299,11 +299,27 @@ void TerrainRenderer::setDetailUniforms(const gl::Program& p, const geo::CameraV
   p.set("uEyeFootScale", static_cast<float>(glm::length(foot * glm::dvec3(1.0, 1.0, ab * ab))));
 }
 
+std::vector<const terrain::Tile*> TerrainRenderer::tilesToDraw(const geo::CameraView& view,
+                                                               const std::vector<const terrain::Tile*>& tiles) const {
+  // The sea's horizon hides far more than the selection's occluder (11.5 km down, inside all
+  // bathymetry) from near the sea: from 2 m it is 36 km away against 380, and the coarse tiles
+  // of coasts beyond it cost their vertices' aerial perspective and their pixels' coast test
+  // for nothing (docs/performance.md, eleventh session).
+  const bool seaHorizon = seaHorizonCulling_ && cache_.heights().coastFromMask();
+  std::vector<const terrain::Tile*> drawn;
+  drawn.reserve(tiles.size());
+  for (const terrain::Tile* t : tiles) {
+    if (t->coveredBySea()) continue;  // the grid's sea, or the globe's from orbit, hides it
+    if (seaHorizon && !terrain::aboveSeaHorizon(view.positionEcef, *t)) continue;
+    drawn.push_back(t);
+  }
+  return drawn;
+}
+
 void TerrainRenderer::prepareImagery(const std::vector<const terrain::Tile*>& tiles) {
   std::vector<terrain::TileKey> keys;
   keys.reserve(tiles.size());
-  for (const terrain::Tile* t : tiles)
-    if (!t->coveredBySea()) keys.push_back(t->key);
+  for (const terrain::Tile* t : tiles) keys.push_back(t->key);
   imagery_->prepareTiles(keys, params_.wait);
 }
 
@@ -315,7 +331,8 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   if (timer_ != nullptr) timer_->mark("terrain selection");
   const auto tiles = terrain::selectTiles(cache_, view, params_, &sel);
   for (const std::uint64_t key : cache_.takeEvicted()) gpu_.erase(key);
-  if (imagery_ != nullptr) prepareImagery(tiles);
+  const std::vector<const terrain::Tile*> drawn = tilesToDraw(view, tiles);
+  if (imagery_ != nullptr) prepareImagery(drawn);
 
   if (timer_ != nullptr) timer_->mark("terrain shadows");
   // Casters: tiles that reach above the sea. Deep sea-floor tiles shadow nothing seen, so
@@ -343,8 +360,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   // tiles wait for drawWaterTiles(), after the globe, over which they draw as before.
   waterTiles_.clear();
   std::vector<const terrain::Tile*> now;
-  for (const terrain::Tile* t : tiles) {
-    if (t->coveredBySea()) continue;  // the grid's sea, or the globe's from orbit, hides it
+  for (const terrain::Tile* t : drawn) {
     const int lastRow = (1 << t->key.level) - 1;
     const bool landOnly = t->minHeightM > 0.0 && t->key.y > 0 && t->key.y < lastRow;
     (seaFromGlobe && !landOnly ? waterTiles_ : now).push_back(t);
@@ -358,6 +374,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   glDisable(GL_STENCIL_TEST);
   waterView_ = view;
   stats_.tiles = static_cast<int>(tiles.size());
+  stats_.drawnTiles = static_cast<int>(drawn.size());
   stats_.landTiles = static_cast<int>(casters.size());
   stats_.finestLevel = sel.finestLevel;
   stats_.tilesPending = sel.pending;

@@ -40,7 +40,8 @@ struct SunShadows {
 };
 
 struct TerrainStats {
-  int tiles = 0;                ///< drawn in the last frame
+  int tiles = 0;                ///< selected in the last frame
+  int drawnTiles = 0;           ///< of those, drawn (not under the sea nor beyond its horizon)
   int finestLevel = 0;
   std::size_t cpuBytes = 0;     ///< tile cache (CPU), bytes
   std::size_t gpuBytes = 0;     ///< vertex buffers, bytes
@@ -74,6 +75,10 @@ class TerrainRenderer {
   void setImagery(ImageryTextures* imagery) { imagery_ = imagery; }
   /// Selection settings; `wait = false` (progressive) never stalls a frame on tile builds.
   terrain::SelectionParams& selection() { return params_; }
+  /// Whether tiles wholly beyond the sea's horizon are left undrawn where the land mask decides
+  /// the coast (terrain::aboveSeaHorizon; default on). Off: only the deep occluder culls them
+  /// (terrain::aboveHorizon), as the selection does: for tests that compare the two.
+  void setSeaHorizonCulling(bool on) { seaHorizonCulling_ = on; }
 
  private:
   static constexpr int kMaxDetailOctaves = 24;  // MAX_DETAIL_OCTAVES in terrain.frag
@@ -93,6 +98,9 @@ class TerrainRenderer {
   void ensureShadowMap();
   void bindTile(const terrain::Tile& tile);
   /// Streams the imagery tiles the land tiles to draw want (ImageryTextures::prepareTiles).
+  /// The selected tiles this frame draws: not under the sea, not beyond its horizon.
+  [[nodiscard]] std::vector<const terrain::Tile*> tilesToDraw(const geo::CameraView& view,
+                                                             const std::vector<const terrain::Tile*>& tiles) const;
   void prepareImagery(const std::vector<const terrain::Tile*>& tiles);
   /// terrain.vert's uMorphScale for a tile.
   [[nodiscard]] float morphScale(const terrain::Tile& tile, const geo::CameraView& view) const;
@@ -104,6 +112,7 @@ class TerrainRenderer {
   ImageryTextures* imagery_ = nullptr;
   terrain::TileCache cache_;
   terrain::SelectionParams params_;
+  bool seaHorizonCulling_ = true;
   /// terrain.vert/frag variants by bits, built on first use: llvmpipe runs every branch, so
   /// a frame draws with only the code it needs. kLandOnly: without the discards, for tiles all
   /// above the sea and away from the poles above 20 km; kNoNight: no city lights (the Sun is up

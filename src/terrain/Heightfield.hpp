@@ -89,6 +89,9 @@ class Heightfield {
   /// Shortest wavelength of the detail in the shading normals, m.
   static constexpr double kNormalShortestM = 2.5;
 
+  /// True when the land mask decides the coast (a global layer coarser than it): land is then
+  /// never below sea level (layerHeightM), nor water above it.
+  [[nodiscard]] bool coastFromMask() const { return mask_ != nullptr; }
   [[nodiscard]] const DetailOctaves& octaves() const { return octaves_; }
   [[nodiscard]] const data::LatLonGrid& layer() const { return *layer_; }
   [[nodiscard]] const std::shared_ptr<const data::LatLonGrid>& sharedLayer() const { return layer_; }

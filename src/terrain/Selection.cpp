@@ -7,9 +7,6 @@
 namespace og::terrain {
 namespace {
 
-// The occluder: WGS84 scaled by (1 - 11.5 km / b), inside every point of relief or bathymetry.
-constexpr double kOccluderScale = 1.0 - 11500.0 / geo::kWgs84SemiMinorM;
-
 glm::dvec3 toScaled(const glm::dvec3& p) {
   return p / glm::dvec3(geo::kWgs84SemiMajorM, geo::kWgs84SemiMajorM, geo::kWgs84SemiMinorM);
 }
@@ -35,23 +32,32 @@ struct Request {
 
 }  // namespace
 
-bool aboveHorizon(const glm::dvec3& eyeEcef, const glm::dvec3& centreEcef, double radiusM) {
-  // In the ellipsoid's scaled space the occluder is a sphere of radius s; an affine map keeps
-  // lines of sight, and the tile's sphere maps into a sphere of radius r / b.
+bool aboveHorizon(const glm::dvec3& eyeEcef, const glm::dvec3& centreEcef, double radiusM,
+                  double occluderDepthM, double topHeightM) {
+  // In the ellipsoid's scaled space the occluder is a sphere of radius s (inside the ellipsoid
+  // lowered by occluderDepthM: no point of it is nearer the centre, scaled, than 1 - depth/b);
+  // an affine map keeps lines of sight, and the tile's sphere maps into a sphere of radius r / b.
   const glm::dvec3 e = toScaled(eyeEcef), c = toScaled(centreEcef);
   const double r = radiusM / geo::kWgs84SemiMinorM;
-  const double s2 = kOccluderScale * kOccluderScale;
+  const double s = 1.0 - occluderDepthM / geo::kWgs84SemiMinorM;
+  const double s2 = s * s;
   const double e2 = glm::dot(e, e);
   if (e2 <= s2) return true;
   // A point at radius rho is visible iff its distance to the eye is at most the sum of the two
   // tangent lengths, sqrt(|e|² - s²) + sqrt(rho² - s²); the sphere's nearest point is at
   // |c - e| - r and no point is farther out than |c| + r
-  // (and none is higher than 18 km above the ellipsoid: a layer's 10 km at most, plus at most
-  // 80 % of it in detail).
-  const double rhoMax = std::min(std::sqrt(glm::dot(c, c)) + r, 1.0 + 18000.0 / geo::kWgs84SemiMinorM);
+  // (nor higher than topHeightM above the ellipsoid: by default 18 km, a layer's 10 km at most
+  // plus at most 80 % of it in detail).
+  const double rhoMax = std::min(std::sqrt(glm::dot(c, c)) + r, 1.0 + topHeightM / geo::kWgs84SemiMinorM);
   if (rhoMax * rhoMax <= s2) return false;
   const double reach = std::sqrt(e2 - s2) + std::sqrt(rhoMax * rhoMax - s2);
   return glm::length(c - e) - r <= reach;
+}
+
+bool aboveSeaHorizon(const glm::dvec3& eyeEcef, const Tile& tile) {
+  // + 1 m: the morph's and the chords' rounding.
+  return aboveHorizon(eyeEcef, tile.boundCentreEcef, tile.boundRadiusM, kSeaOccluderDepthM,
+                      std::max(tile.maxHeightM, 0.0) + 1.0);
 }
 
 bool inFrustum(const geo::CameraView& view, int widthPx, int heightPx, const glm::dvec3& centreEcef,

@@ -57,8 +57,26 @@ struct SelectionStats {
 
 /// Whether a sphere (ECEF centre, radius m) can be seen over the planet from `eyeEcef`: false
 /// only when it lies wholly behind the horizon of an ellipsoid inside all terrain (the WGS84
-/// one shrunk by 11.5 km). Exact for the occluder, conservative for the sphere.
-bool aboveHorizon(const glm::dvec3& eyeEcef, const glm::dvec3& centreEcef, double radiusM);
+/// one shrunk by 11.5 km). Exact for the occluder, conservative for the sphere. With
+/// `occluderDepthM` (m below the ellipsoid, ≥ 0) the occluder is the ellipsoid shrunk by that
+/// much instead, and with `topHeightM` no point of the sphere is higher than that above it
+/// (default: 18 km, above all terrain).
+bool aboveHorizon(const glm::dvec3& eyeEcef, const glm::dvec3& centreEcef, double radiusM,
+                  double occluderDepthM = 11500.0, double topHeightM = 18000.0);
+
+/// How far below sea level (m) the drawn surface that hides what lies beyond the horizon can
+/// reach where the land mask decides the coast: the sea's wave troughs (the highest seas' are
+/// ~30 m deep) with margin, since land there is never below sea level (data::LandMask's
+/// constrained heights, Heightfield).
+inline constexpr double kSeaOccluderDepthM = 100.0;
+
+/// Whether any drawn point of `tile` can be seen from `eyeEcef` over the sea's horizon (the
+/// ellipsoid kSeaOccluderDepthM down: the sea and the land above it hide everything lower
+/// beyond it). Drawn points are at most at the tile's highest vertex, or at sea level where
+/// the mask raises land out of it (terrain.frag). Only where the land mask decides the coast
+/// (Heightfield::coastFromMask): elsewhere dry land may lie below the sea (a regional DEM of
+/// the Dead Sea), and aboveHorizon's deep occluder holds.
+bool aboveSeaHorizon(const glm::dvec3& eyeEcef, const Tile& tile);
 
 /// Whether a sphere intersects the view frustum's four side planes (no far plane).
 bool inFrustum(const geo::CameraView& view, int widthPx, int heightPx,

@@ -21,6 +21,7 @@
 
 #include "data/Elevation.hpp"
 #include "geo/Camera.hpp"
+#include "geo/Wgs84.hpp"
 #include "terrain/Heightfield.hpp"
 #include "terrain/Selection.hpp"
 #include "terrain/Tile.hpp"
@@ -247,6 +248,39 @@ TEST(TerrainSelection, HorizonAndFrustumCulling) {
   EXPECT_TRUE(aboveHorizon(eye, eye * 0.99999 + view.forward * 5e4, 1000.0));  // just ahead
   EXPECT_FALSE(inFrustum(view, 640, 360, eye - view.forward * 1e5, 1000.0));   // behind
   EXPECT_TRUE(inFrustum(view, 640, 360, eye + view.forward * 1e5, 1000.0));
+}
+
+// The sea's horizon (TerrainRenderer draws no tile beyond it where the land mask decides the
+// coast): from 2 m a point 11 m up is seen over an occluder 100 m down out to the two tangent
+// lengths, sqrt(2 N (2 + 100)) + sqrt(2 N (11 + 100)) = 73.7 km along the equator (N = a
+// there); the deep occluder sees it from 380 km more. An eye below the occluder sees all.
+TEST(TerrainSelection, SeaHorizonHidesWhatTheDeepOccluderDoesNot) {
+  auto onEquator = [](double distanceM, double heightM) {
+    return geo::geodeticToEcef({0.0, glm::degrees(distanceM / geo::kWgs84SemiMajorM), heightM});
+  };
+  const glm::dvec3 eye = onEquator(0.0, 2.0);
+  const double reachM = std::sqrt(2.0 * geo::kWgs84SemiMajorM * 102.0) + std::sqrt(2.0 * geo::kWgs84SemiMajorM * 111.0);
+  EXPECT_NEAR(reachM, 73.7e3, 0.1e3);
+  for (const double d : {0.95 * reachM, 1.05 * reachM, 4.0 * reachM}) {
+    const glm::dvec3 c = onEquator(d, 10.0);
+    EXPECT_EQ(aboveHorizon(eye, c, 1.0, kSeaOccluderDepthM, 11.0), d < reachM) << d;
+    EXPECT_TRUE(aboveHorizon(eye, c, 1.0)) << d;  // the default, deep occluder
+  }
+  EXPECT_TRUE(aboveHorizon(onEquator(0.0, -150.0), onEquator(4.0 * reachM, 10.0), 1.0, kSeaOccluderDepthM, 11.0));
+
+  // A tile's drawn points reach its highest vertex, or sea level where the mask raises land
+  // out of the water: a shallow tile counts as reaching sea level.
+  Tile t;
+  t.boundRadiusM = 1.0;
+  t.boundCentreEcef = onEquator(1.05 * std::sqrt(2.0 * geo::kWgs84SemiMajorM * 102.0) * 2.0, 0.0);  // beyond a 0 m top
+  t.maxHeightM = -0.5;
+  EXPECT_FALSE(aboveSeaHorizon(eye, t));
+  t.boundCentreEcef = onEquator(0.95 * std::sqrt(2.0 * geo::kWgs84SemiMajorM * 102.0) * 2.0, 0.0);
+  EXPECT_TRUE(aboveSeaHorizon(eye, t));
+  t.boundCentreEcef = onEquator(1.5 * reachM, 0.0);
+  t.boundRadiusM = 1000.0;
+  t.maxHeightM = 1000.0;  // a hill that far shows over it
+  EXPECT_TRUE(aboveSeaHorizon(eye, t));
 }
 
 TEST(TerrainSelection, OrbitViewIsCoarse) {
