@@ -91,10 +91,20 @@ bool seaClassNearLayerBorder(vec2 latLon, float reachM) {
   return any(lessThan(cell, margin - 0.5)) || any(greaterThan(cell, uElevationSize - 0.5 - margin));
 }
 
+// render/OpenSeaMap's land clearance (.g): per 1° cell, the great-circle radius (rad) around
+// any point of it within which the land mask (its fine cells included) has no land.
+layout(binding = OG_UNIT_OPEN_SEA) uniform sampler2D uOpenSea;
+float landClearanceM(vec2 latLon) {
+  vec2 cell = floor(degrees(vec2(latLon.y + PI, latLon.x + 0.5 * PI)));
+  // Radians to metres on the ellipsoid's tightest curvature (b² / a = 6335 km), less a margin.
+  return 6.3e6 * texelFetch(uOpenSea, ivec2(clamp(cell, vec2(0.0), vec2(359.0, 179.0))), 0).g;
+}
+
 // Whether land may lie within `reachM` of (latitude, longitude) (1) or not (0).
 float seaClassLandWithin(vec2 latLon, float reachM) {
   if (uElevationSize.x <= 0.0) return 0.0;  // no layer: sea everywhere (seaAt)
   if (landMaskOn()) {
+    if (reachM < landClearanceM(latLon)) return 0.0;  // no land that near (one fetch, 1° cells)
     float cellM = WGS84_A * PI / float(textureSize(uLandMask, 0).y);
     float perCell = reachM / (cellM * max(cos(latLon.x), 1e-3));
     return landFraction(latLon) + 1.4143 * perCell >= 0.5 ? 1.0 : 0.0;

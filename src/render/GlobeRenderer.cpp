@@ -158,6 +158,14 @@ GlobeRenderer::GlobeRenderer(std::shared_ptr<const data::LatLonGrid> layer,
   stage.emplace("renderer: land mask texture");
   const data::LandMask& mask = data::defaultLandMask();
   landMask_ = std::make_unique<LandMaskTexture>(mask.refines(elevation) ? &mask : nullptr);
+  if (landMask_->active())
+    maskBlocked_ = std::async(std::launch::async, [&mask] {
+      std::vector<unsigned char> coarse(static_cast<std::size_t>(OpenSeaMap::kWidth) * OpenSeaMap::kHeight, 0);
+      std::vector<unsigned char> fine = coarse;
+      addBlockedByMask(mask, coarse);
+      addBlockedByMask(mask, fine, true);
+      return std::pair{std::move(coarse), std::move(fine)};
+    });
   stage.emplace("renderer: layer's steepest slope and open sea's blocked cells (waiting)");
   ocean_->setLayerMaxSlope(maxSlope.get());  // the sea's classes (OceanRenderer)
   openSeaBlockedByLayer_ = blocked.get();
@@ -415,10 +423,18 @@ void GlobeRenderer::scissorToGlobe(const geo::CameraView& view, const FrameInput
 
 void GlobeRenderer::bindOpenSeaMap() {
   if (openSeaTexture_ == nullptr) {
-    // Made on the first frame above 20 km: the land mask's pass (~29 M cells) is not start-up's.
+    // Made on the first frame that needs it, the land mask's share on a helper thread since
+    // the constructor: not start-up's.
+    const core::startup::Scope stage("renderer: open sea and land clearance maps");
     std::vector<unsigned char> blocked = openSeaBlockedByLayer_;
-    if (landMask_->active()) addBlockedByMask(data::defaultLandMask(), blocked);
-    openSeaMap_ = std::make_unique<OpenSeaMap>(makeOpenSeaMap(std::move(blocked)));
+    if (maskBlocked_.valid()) {
+      auto [coarse, fine] = maskBlocked_.get();
+      for (std::size_t i = 0; i < blocked.size() && i < coarse.size(); ++i) blocked[i] |= coarse[i];
+      openSeaMap_ = std::make_unique<OpenSeaMap>(makeOpenSeaMap(std::move(blocked)));
+      openSeaMap_->landClearanceRad = makeOpenSeaMap(std::move(fine)).clearanceRad;
+    } else {
+      openSeaMap_ = std::make_unique<OpenSeaMap>(makeOpenSeaMap(std::move(blocked)));
+    }
     openSeaTexture_ = std::make_unique<OpenSeaTexture>(*openSeaMap_);
   }
   openSeaTexture_->bind();
@@ -553,6 +569,7 @@ void GlobeRenderer::drawOcean(const geo::CameraView& view, const FrameInput& f) 
   }
   if (timer_ != nullptr) timer_->mark("ocean");
   glDepthFunc(GL_GREATER);
+  if (landMask_->active()) bindOpenSeaMap();  // its land clearance: the sea's classes
   ocean_->setCellPixels(f.oceanCellPixels);
   ocean_->draw(view, f.width, f.height, *patterns_, frame, f.simulationTimeS, lighting, amplitude,
                f.oceanModel, *wind_);

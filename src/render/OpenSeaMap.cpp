@@ -82,9 +82,15 @@ std::vector<unsigned char> blockedByLayer(const data::LatLonGrid& layer, double 
   return blocked;
 }
 
-void addBlockedByMask(const data::LandMask& mask, std::vector<unsigned char>& blocked) {
-  const std::vector<std::uint8_t>& bits = mask.packedBits();
+void addBlockedByMask(const data::LandMask& mask, std::vector<unsigned char>& blocked, bool fineCells) {
   const auto bytesPerRow = static_cast<std::size_t>(mask.bytesPerRow());
+  std::vector<std::uint8_t> withFine;
+  if (fineCells && mask.hasFineLevel()) {
+    withFine = mask.packedBits();
+    const std::vector<std::uint8_t>& refined = mask.refinedBits();
+    for (std::size_t i = 0; i < withFine.size() && i < refined.size(); ++i) withFine[i] |= refined[i];
+  }
+  const std::vector<std::uint8_t>& bits = withFine.empty() ? mask.packedBits() : withFine;
   const double cell = mask.cellDeg();
   std::vector<unsigned char> columns(kW);
   for (int r = 0; r < mask.height(); ++r) {
@@ -147,9 +153,14 @@ OpenSeaMap makeOpenSeaMap(std::vector<unsigned char> blocked) {
 
 OpenSeaTexture::OpenSeaTexture(const OpenSeaMap& map) {
   texture_ = gl::createTexture(GL_TEXTURE_2D);
-  glTextureStorage2D(texture_.id(), 1, GL_R32F, kW, kH);
+  std::vector<float> texels(2 * map.clearanceRad.size(), 0.0f);
+  for (std::size_t i = 0; i < map.clearanceRad.size(); ++i) {
+    texels[2 * i] = map.clearanceRad[i];
+    if (i < map.landClearanceRad.size()) texels[2 * i + 1] = map.landClearanceRad[i];
+  }
+  glTextureStorage2D(texture_.id(), 1, GL_RG32F, kW, kH);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage2D(texture_.id(), 0, 0, 0, kW, kH, GL_RED, GL_FLOAT, map.clearanceRad.data());
+  glTextureSubImage2D(texture_.id(), 0, 0, 0, kW, kH, GL_RG, GL_FLOAT, texels.data());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);

@@ -25,6 +25,10 @@ struct OpenSeaMap {
   std::vector<float> clearanceRad;
   /// The blocked cells (1) that clearanceRad was measured from, same layout.
   std::vector<unsigned char> blocked;
+  /// The same radius around land alone (the mask's fine cells included; empty without a mask):
+  /// the projected grid's sea classes (ocean/water_volume_vertex.glsl's seaClassLandWithin)
+  /// leave the coast test and the terrain's shadows out of triangles that far from land.
+  std::vector<float> landClearanceRad;
 };
 
 /// Cells where `layer` (heights m; NaN = unknown) has a bilinear neighbourhood above
@@ -32,13 +36,15 @@ struct OpenSeaMap {
 /// -1 m there: shallow). Cheap (one pass over the layer's texels).
 std::vector<unsigned char> blockedByLayer(const data::LatLonGrid& layer, double minDepthM);
 /// Adds the cells where `mask`'s land fraction can be above 0 (its B-spline's reach around
-/// every land cell) to `blocked`.
-void addBlockedByMask(const data::LandMask& mask, std::vector<unsigned char>& blocked);
+/// every land cell) to `blocked`; with `fineCells`, also around the cells its fine level refines
+/// (an islet or a bay the 2′ cells do not hold).
+void addBlockedByMask(const data::LandMask& mask, std::vector<unsigned char>& blocked, bool fineCells = false);
 /// The clearance radii of the cells around the blocked ones (Chebyshev distance in cells up to
 /// 30, turned into a great-circle radius that holds for every point of the cell).
 OpenSeaMap makeOpenSeaMap(std::vector<unsigned char> blocked);
 
-/// The map on the GPU: an R32F texture (kWidth × kHeight, nearest) on gl::kUnitOpenSea.
+/// The map on the GPU: an RG32F texture (kWidth × kHeight, nearest) on gl::kUnitOpenSea, the
+/// clearance in .r and the land clearance in .g (0 where there is none).
 class OpenSeaTexture {
  public:
   /// Needs a current GL context.

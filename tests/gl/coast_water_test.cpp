@@ -531,6 +531,30 @@ TEST(CoastWater, FloorAndShadowClassesCombineIndependently) {
   }
 }
 
+// Far from land the sea's classes do without the coast test and the terrain's shadows even where
+// the grid's triangles are kilometres wide (render/OpenSeaMap's land clearance): the default
+// flythrough's 6.5 km frame, 195 km off Portugal looking at its coast under a Sun 7° up behind
+// it, had 27 % of its pixels in the coast's class and 55 % in the shadows' at 1280x720 (the
+// grid's far triangles are wider than the 2′ mask's cells, which the test alone flagged as
+// near land); 6 % and 0 % with the clearance. Here (192x108) all 17 411 sea samples were the
+// coast's before, 2 983 (and 220 the shadows') with it. The picture must be the single program's.
+TEST(CoastWater, SeaFarFromLandNeedsNoCoastOrShadowClass) {
+  const test::ScopedEnv deferred("OCEANGLOBE_SEA", "deferred");  // also without stencil export (NVIDIA)
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  render::FrameInput f = classView({38.04937, -11.74772, 6474.2}, 78.08, -20.44, 7.0, 80.0);
+  f.sunDirectionEcef = geo::sunDirectionFromHorizontal({38.0652, -11.6769, 3.0}, 7.0, 80.0);
+  r.ocean().setCountClassSamples(true);
+  r.render(f);
+  const auto n = r.ocean().classSamples();
+  const std::string counts = std::to_string(n[0]) + " " + std::to_string(n[1]) + " " + std::to_string(n[2]) +
+                             " " + std::to_string(n[3]) + " " + std::to_string(n[4]);
+  EXPECT_TRUE(r.terrain().shadows().on) << "the coast's tiles must be casters for this to test anything";
+  EXPECT_GT(n[0], 192u * 108u / 2u) << counts;                     // open sea
+  EXPECT_LT(n[1] + n[3] + n[4], 192u * 108u / 4u) << counts;       // shadows, floor shadows, coast
+  expectClassesMatchTheSingleProgram(r, f, "coast_classes_far_coast");
+}
+
 // The sea in classes (open sea, floor within reach, land near; each drawn by a program with
 // only its code) against the one program of all the frame's features, looking at the shore
 // with the Sun's glitter: over the shelf and deep layer 4.2 km offshore (180 m of water), 100 m

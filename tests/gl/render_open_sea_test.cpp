@@ -95,6 +95,27 @@ TEST(OpenSeaMap, ClearanceHoldsAgainstTheLandMask) {
   EXPECT_GT(map.clearanceRad[static_cast<std::size_t>(90) * 360 + 180 - 140], 5.0 * kDeg);  // 0° N, 140° W
 }
 
+// The land clearance (the projected grid's sea classes): around land alone, the mask's fine
+// cells included, so that no islet or spit only the 15" level holds is ever within a cell's
+// radius (the coast test keeps the sea off it there). Some 1° cells are blocked for such land
+// alone.
+TEST(OpenSeaMap, LandClearanceHoldsAgainstTheMasksFineCells) {
+  const data::LandMask& mask = data::defaultLandMask();
+  ASSERT_TRUE(mask.hasFineLevel());
+  std::vector<unsigned char> coarse(static_cast<std::size_t>(render::OpenSeaMap::kWidth) * render::OpenSeaMap::kHeight, 0);
+  std::vector<unsigned char> fine = coarse;
+  render::addBlockedByMask(mask, coarse);
+  render::addBlockedByMask(mask, fine, true);
+  int fineOnly = 0;
+  for (std::size_t i = 0; i < fine.size(); ++i) {
+    EXPECT_TRUE(fine[i] || !coarse[i]) << i;
+    fineOnly += fine[i] && !coarse[i] ? 1 : 0;
+  }
+  EXPECT_GT(fineOnly, 0) << "no 1° cell blocked for its fine land alone";
+  const render::OpenSeaMap map = render::makeOpenSeaMap(std::move(fine));
+  expectClearanceHolds(map, [&](double lat, double lon) { return mask.landFraction(lat, lon, 0.0) == 0.0f; }, 20000);
+}
+
 TEST(OpenSeaMap, ARegionalLayerHasNoOpenSea) {
   // elevationAt reads -1 m (a shallow sea) outside a regional layer: nothing may be open.
   const data::LatLonGrid regional = test::grid("regional", 0.0, 0.0, 1.0, 10, 10, false,
