@@ -262,7 +262,7 @@ Run addBenchCommand(CLI::App& parent) {
   cmd->add_flag("--json", o->json, "print JSON instead of a table");
   cmd->add_flag("--breakdown", o->breakdown,
                 "also time every pass (globe, terrain shadows, terrain, ocean waves, ocean, tone "
-                "mapping) and the read-back, per view");
+                "mapping) and the read-back, per view; with --record, per band of camera height");
   cmd->add_option("--timer", o->timer,
                   "how --breakdown times passes: auto (queries on a GPU, finish on llvmpipe), "
                   "queries (GL timestamps), finish (glFinish + wall clock) or cpu (glFinish + the "
@@ -285,8 +285,12 @@ Run addBenchCommand(CLI::App& parent) {
       if (!parseSize(s, w, h)) throw InputError("--size: expected WIDTHxHEIGHT, got '" + s + "'");
       sizes.emplace_back(w, h);
     }
-    if (!o->record.empty())
-      return benchRecord(o->record, sizes, o->frames, o->gl, samples, o->json);
+    if (!o->record.empty()) {
+      // `auto` times by glFinish and the clock here: the recording makes its context later, and
+      // that is right on any driver.
+      gl::PassTimer timer(o->timer == "auto" ? gl::PassTimer::Mode::Finish : timerMode(o->timer));
+      return benchRecord(o->record, sizes, o->frames, o->gl, samples, o->json, o->breakdown ? &timer : nullptr);
+    }
     if (o->startup) {
       StartupBenchOptions s{.gl = o->gl, .runs = o->startupRuns};
       if (cmd->count("--size") > 0) std::tie(s.width, s.height) = sizes.front();

@@ -239,6 +239,9 @@ class FrameRenderer {
     fixedSun_ = sunDirectionOf(sunScene);
   }
 
+  /// The camera's height above the ellipsoid in frame i, m.
+  [[nodiscard]] double heightM(std::int64_t i) const { return poseAt(i).position.heightM; }
+
   void render(std::int64_t i) {
     const io::SceneSettings& scene = job_.scene;
     const double t = static_cast<double>(i) / job_.fps;
@@ -296,8 +299,8 @@ class FrameRenderer {
 
 /// Step 4, progress: renders the frames in order, handing each to `write`, until done or
 /// stopped (SIGINT/SIGTERM); counts and times them in `result`.
-void renderFrames(const std::vector<std::int64_t>& todo, FrameRenderer& frames, Progress& progress,
-                  RecordResult& result, const std::function<void(std::int64_t)>& write) {
+void renderFrames(const std::vector<std::int64_t>& todo, FrameRenderer& frames, gl::PassTimer* timer,
+                  Progress& progress, RecordResult& result, const std::function<void(std::int64_t)>& write) {
   using Clock = std::chrono::steady_clock;
   for (const std::int64_t i : todo) {
     if (stopRequested()) {
@@ -306,6 +309,7 @@ void renderFrames(const std::vector<std::int64_t>& todo, FrameRenderer& frames, 
     }
     const auto s = Clock::now();
     frames.render(i);
+    if (timer != nullptr) result.framePasses.push_back({frames.heightM(i), timer->results()});
     write(i);
     result.renderS += std::chrono::duration<double>(Clock::now() - s).count();
     ++result.rendered;
@@ -318,7 +322,7 @@ void renderAndWrite(const RecordJob& job, const OutputPlan& plan, const std::vec
                     render::GlobeRenderer& renderer, Progress& progress, RecordResult& result) {
   FrameRenderer frames(job, renderer);
   auto loop = [&](const std::function<void(std::int64_t)>& write) {
-    renderFrames(todo, frames, progress, result, write);
+    renderFrames(todo, frames, job.passTimer, progress, result, write);
   };
   if (plan.sink == Sink::Mp4) {
     writeFileAtomically(job.output, [&](const fs::path& tmp) {
@@ -349,6 +353,7 @@ RecordResult runRecording(const RecordJob& job) {
   RecordResult result;
   const std::vector<std::int64_t> todo = framesToDo(job, plan, first, end, result);
   RecordingGl gl = setUpRenderer(job.scene, todo.size(), result);
+  gl.renderer->setPassTimer(job.passTimer);
 
   installStopHandlers();
   Progress progress("record", static_cast<std::int64_t>(todo.size()),
@@ -361,9 +366,52 @@ RecordResult runRecording(const RecordJob& job) {
   return result;
 }
 
+namespace {
+
+/// bench --record --breakdown: the mean of each pass over the frames whose camera is in each
+/// band of height (the globe's sea above the grid's ceiling; the grid's sea to 1 km; below),
+/// printed as "band (N frames, M ms): pass ms ..." lines and into `out` by band.
+void printRecordBreakdown(const std::vector<FramePasses>& frames, nlohmann::json& out, bool json) {
+  struct Band {
+    const char* name;
+    double lowM, highM;
+  };
+  const Band bands[] = {{"from 20 km up", render::kOceanGridMaxHeightM, 1e300},
+                        {"1 to 20 km", 1000.0, render::kOceanGridMaxHeightM},
+                        {"under 1 km", -1e300, 1000.0}};
+  for (const Band& b : bands) {
+    std::vector<std::pair<std::string, double>> sums;  // in the order the passes first ran
+    int n = 0;
+    for (const FramePasses& f : frames) {
+      if (f.heightM < b.lowM || f.heightM >= b.highM) continue;
+      ++n;
+      for (const auto& [name, ms] : f.passesMs) {
+        auto it = std::find_if(sums.begin(), sums.end(), [&](const auto& e) { return e.first == name; });
+        if (it == sums.end()) it = sums.insert(sums.end(), {name, 0.0});
+        it->second += ms;
+      }
+    }
+    if (n == 0) continue;
+    double total = 0.0;
+    std::string line;
+    nlohmann::json band = nlohmann::json::object();
+    for (const auto& [name, sum] : sums) {
+      band[name] = sum / n;
+      total += sum / n;
+      char buf[96];
+      std::snprintf(buf, sizeof buf, " %s %.1f", name.c_str(), sum / n);
+      line += buf;
+    }
+    out[b.name] = {{"frames", n}, {"passes_ms", band}};
+    if (!json) std::printf("    %s (%d frames, %.0f ms):%s ms\n", b.name, n, total, line.c_str());
+  }
+}
+
+}  // namespace
+
 int benchRecord(const std::string& pathFile, const std::vector<std::pair<int, int>>& sizes,
                 int frames, const std::string& glBackend, const std::vector<int>& samples,
-                bool json) {
+                bool json, gl::PassTimer* timer) {
   RecordJob job;
   job.path = loadPathFile(pathFile, [](const io::SceneSettings& s) { return s; });
   job.scene = job.path.scene;
@@ -391,7 +439,9 @@ int benchRecord(const std::string& pathFile, const std::vector<std::pair<int, in
       job.scene.width = w;
       job.scene.height = h;
       job.output.clear();
+      job.passTimer = timer;
       const RecordResult renderOnly = runRecording(job);
+      job.passTimer = nullptr;
       job.output = mp4.string();
       RecordResult withVideo;
       try {
@@ -414,6 +464,7 @@ int benchRecord(const std::string& pathFile, const std::vector<std::pair<int, in
         std::printf("%10s %7d %7lld %14.2f %16.2f %9.0f%%\n", size.c_str(), count,
                     static_cast<long long>(withVideo.rendered), renderFps, videoFps,
                     100.0 * videoFps / renderFps);
+      if (timer != nullptr) printRecordBreakdown(renderOnly.framePasses, report["record"].back()["passes_by_height"], json);
     }
   }
   if (json) std::printf("%s\n", report.dump(2).c_str());

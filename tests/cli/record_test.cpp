@@ -250,3 +250,22 @@ TEST(Record, ShippedPathsParse) {
     EXPECT_NE(r.out.find(std::to_string(frames)), std::string::npos) << file << ": " << r.out;
   }
 }
+
+// `bench --record --breakdown`: where a recording's time goes, pass by pass, in bands of the
+// camera's height (the globe's sea from 20 km up, the projected grid's below): the short path
+// flies from 400 km to 1 km, so both bands have frames and their own passes.
+TEST(Record, BenchBreakdownByHeight) {
+  const fs::path dir = scratch();
+  const fs::path path = writePath(dir);
+  const RunResult r = run("bench --record " + path.string() + " --size 64x36 --frames 9 --breakdown --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::size_t high = r.out.find("\"from 20 km up\""), low = r.out.find("\"1 to 20 km\"");
+  ASSERT_NE(high, std::string::npos) << r.out;
+  ASSERT_NE(low, std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("\"under 1 km\""), std::string::npos) << r.out;  // the path ends at 1 km
+  // Bands print in key order ("1 to 20 km" first): the grid's passes in its band only.
+  const std::string lowBand = r.out.substr(low, high - low), highBand = r.out.substr(high);
+  EXPECT_NE(lowBand.find("\"ocean grid\""), std::string::npos) << lowBand;
+  EXPECT_EQ(highBand.find("\"ocean grid\""), std::string::npos) << highBand;
+  EXPECT_NE(highBand.find("\"globe\""), std::string::npos) << highBand;
+}
