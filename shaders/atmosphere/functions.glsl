@@ -470,15 +470,19 @@ vec3 skyRadiance(IN(AtmosphereParameters) atm, IN(Texture2D) transmittance,
   return s * rayleighPhase(nu) + m * miePhase(atm.miePhaseG, nu);
 }
 
-// Aerial perspective: radiance in-scattered between the viewer and a point d metres along the
-// ray, S[L](x) - T(x, x_d) S[L](x_d) (Section 4), and the transmittance T(x, x_d). With d past
-// the atmosphere's boundary this is the sky (as skyRadiance, for rays that miss the ground).
-vec3 skyRadianceToPoint(IN(AtmosphereParameters) atm, IN(Texture2D) transmittance,
-                        IN(Texture3D) scattering, IN(Texture3D) singleMie, Number r, Number mu,
-                        Number muS, Number nu, Number d, OUT(vec3) rayTransmittance) {
+// Aerial perspective without its phase functions: the Rayleigh (and multiple) and the single
+// Mie radiance in-scattered between the viewer and a point d metres along the ray, each to be
+// multiplied by its phase function of nu (skyRadianceToPoint), and the transmittance T(x, x_d).
+// What render/aerial_table.comp tabulates.
+void aerialScatteringToPoint(IN(AtmosphereParameters) atm, IN(Texture2D) transmittance,
+                             IN(Texture3D) scattering, IN(Texture3D) singleMie, Number r, Number mu,
+                             Number muS, Number nu, Number d, OUT(vec3) rayTransmittance,
+                             OUT(vec3) rayleigh, OUT(vec3) mie) {
   rayTransmittance = vec3(1.0);
+  rayleigh = vec3(0.0);
+  mie = vec3(0.0);
   Number travelled = 0.0;
-  if (!enterAtmosphere(atm, r, mu, muS, nu, travelled)) return vec3(0.0);
+  if (!enterAtmosphere(atm, r, mu, muS, nu, travelled)) return;
   d = max(d - travelled, Number(0.0));
   bool hits = rayHitsGround(atm, r, mu);
   Number rP = radiusAlong(atm, r, mu, d);
@@ -492,7 +496,19 @@ vec3 skyRadianceToPoint(IN(AtmosphereParameters) atm, IN(Texture2D) transmittanc
   // The difference of two nearly equal Mie terms is noise once the Sun has set (not an issue
   // when the point is on the top boundary, where the second term vanishes: d past the sky).
   if (rP < atm.topRadius - 1.0) m *= smoothstep(Number(0.0), Number(0.01), muS);
-  return max(s, vec3(0.0)) * rayleighPhase(nu) + max(m, vec3(0.0)) * miePhase(atm.miePhaseG, nu);
+  rayleigh = max(s, vec3(0.0));
+  mie = max(m, vec3(0.0));
+}
+
+// Aerial perspective: radiance in-scattered between the viewer and a point d metres along the
+// ray, S[L](x) - T(x, x_d) S[L](x_d) (Section 4), and the transmittance T(x, x_d). With d past
+// the atmosphere's boundary this is the sky (as skyRadiance, for rays that miss the ground).
+vec3 skyRadianceToPoint(IN(AtmosphereParameters) atm, IN(Texture2D) transmittance,
+                        IN(Texture3D) scattering, IN(Texture3D) singleMie, Number r, Number mu,
+                        Number muS, Number nu, Number d, OUT(vec3) rayTransmittance) {
+  vec3 rayleigh, mie;
+  aerialScatteringToPoint(atm, transmittance, scattering, singleMie, r, mu, muS, nu, d, rayTransmittance, rayleigh, mie);
+  return rayleigh * rayleighPhase(nu) + mie * miePhase(atm.miePhaseG, nu);
 }
 
 // Light reaching a horizontal surface at radius r: returns the Sun's irradiance on a surface

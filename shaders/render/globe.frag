@@ -183,17 +183,9 @@ vec3 surfaceRadiance(vec3 dir, float t, bool sea) {
 // distances hitT, m), whose surface radiance sums to `surface`, through the aerial perspective
 // of their mean path (see the header); the sum of what reaches the eye from them.
 vec3 throughAerialPerspective(vec3 surface, vec3 hitDir, float hitT, float coverage) {
-  float R = uAtmosphere.bottomRadius;
-  float h = uCamAltitude;
-  float r = R + h;
-  float rho2 = h * (2.0 * R + h);
   vec3 dir = normalize(hitDir);
-  float d = min(hitT / coverage, sqrt(rho2));
-  float mu = -(rho2 + d * d) / (2.0 * r * max(d, 1e-3));
-  vec3 transmittance;
-  vec3 inscatter = skyRadianceToPoint(uAtmosphere, uAtmTransmittance, uAtmScattering,
-                                      uAtmSingleMie, r, mu, dot(uSunDir, uCamUp),
-                                      dot(dir, uSunDir), d, transmittance);
+  vec3 transmittance, inscatter;
+  aerialToSeaLevel(hitT / coverage, dot(dir, uSunDir), uSunDir, transmittance, inscatter);  // render/aerial.glsl
   return surface * transmittance + inscatter * coverage;
 }
 

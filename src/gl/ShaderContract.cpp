@@ -42,6 +42,7 @@ std::vector<std::string> contractDefines() {
           define("OG_UNIT_LAND_MASK_FINE", kUnitLandMaskFine),
           define("OG_UNIT_OPEN_SEA", kUnitOpenSea),
           define("OG_UNIT_SKY_LOW", kUnitSkyLow),
+          define("OG_UNIT_AERIAL_TABLE", kUnitAerialTable),
           define("OG_UNIT_CAUSTIC_CURVATURE", kUnitCausticCurvature),
           define("OG_UNIT_SEA_SURFACE", kUnitSeaSurface),
           define("OG_UNIT_TONE_RADIANCE", kUnitToneRadiance),

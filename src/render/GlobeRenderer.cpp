@@ -247,6 +247,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   wind_->setTime(f.utcTime);  // layers that follow the clock (uploads only on a change)
   patternsFor(std::max(f.wind.speedMs, wind_->maxLayerSpeedMs()), f.waveSeed);
   const bool grid = view.position.heightM < kOceanGridMaxHeightM;
+  aerialTableFrame_ = aerialTableOn_ && !grid && view.position.heightM < kAerialTableMaxHeightM;
 
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glBindFramebuffer(GL_FRAMEBUFFER, hdr_.fbo.id());
@@ -296,7 +297,9 @@ void GlobeRenderer::render(const FrameInput& f) {
 }
 
 const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
-  gl::Program& p = globePrograms_[static_cast<std::size_t>((behind ? kGlobeVariants : 0) + variant)];
+  // Sets of variants: above 20 km with the aerial table, without it, below 20 km.
+  const int set = behind ? 2 : aerialTableFrame_ ? 0 : 1;
+  gl::Program& p = globePrograms_[static_cast<std::size_t>(set * kGlobeVariants + variant)];
   if (p.id() == 0) {
     // Variants 0-5: GLOBE_PART_CLASSIFY (4) with its step; 6: all steps in one draw; 7-9: the
     // parts 1-3, 10: the land (GLOBE_PART_LAND, 7), 11: the sea (GLOBE_PART_SEA, 6), 12: the
@@ -316,6 +319,7 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
       defines.push_back("GLOBE_PART " + std::to_string(kPart.at(static_cast<std::size_t>(variant - kGlobePart0 - 1))));
     }
     if (behind) defines.emplace_back("GLOBE_BEHIND");
+    if (set == 0) defines.emplace_back("AERIAL_TABLE");
     p = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
                      {GL_FRAGMENT_SHADER, "render/globe.frag"}},
                     defines);
@@ -448,6 +452,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   glEnable(GL_STENCIL_TEST);
   glDepthMask(GL_FALSE);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  if (aerialTableFrame_) drawAerialTable(view, f);
   if (!grid) scissorToGlobe(view, f);
   lastSkyLowFactor_ = 1;
   const bool skyLow = grid && drawSkyLow(view, f);
@@ -503,6 +508,29 @@ bool GlobeRenderer::drawSkyLow(const geo::CameraView& view, const FrameInput& f)
   glViewport(0, 0, f.width, f.height);
   skyLowScale_ = 1.0f / (glm::vec2(static_cast<float>(width), static_cast<float>(height)) * static_cast<float>(factor));
   return true;
+}
+
+void GlobeRenderer::drawAerialTable(const geo::CameraView& view, const FrameInput& f) {
+  constexpr int kNu = 64, kPath = 256, kLayers = 3;  // render/aerial.glsl's AERIAL_TABLE_SIZE
+  if (aerialTable_.id() == 0) {
+    aerialTable_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
+    glTextureStorage3D(aerialTable_.id(), 1, GL_RGBA32F, kNu, kPath, kLayers);
+    glTextureParameteri(aerialTable_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(aerialTable_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(aerialTable_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(aerialTable_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    aerialTableProgram_ = gl::Program({{GL_COMPUTE_SHADER, "render/aerial_table.comp"}});
+  }
+  const gl::Program& p = aerialTableProgram_;
+  p.set("uCamUp", toFloat(view.enu.up));
+  p.set("uCamAltitude", static_cast<float>(view.position.heightM));
+  p.set("uSunDir", toFloat(glm::normalize(f.sunDirectionEcef)));
+  atmosphere_->bind(p);
+  p.use();
+  glBindImageTexture(0, aerialTable_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glDispatchCompute((kNu + 7) / 8, (kPath + 7) / 8, 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  glBindTextureUnit(gl::kUnitAerialTable, aerialTable_.id());
 }
 
 void GlobeRenderer::setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view,

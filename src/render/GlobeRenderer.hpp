@@ -170,6 +170,13 @@ class GlobeRenderer {
   /// Above 20 km, pixels in the open deep sea (render/OpenSeaMap) go to a part of their own
   /// (render/globe.frag); false shades them with the rest of the surface (the tests' reference).
   void setOpenSeaPart(bool on) { openSeaPart_ = on; }
+  /// From 20 km to kAerialTableMaxHeightM the globe's parts read the aerial perspective to sea
+  /// level from a table made per frame (drawAerialTable; default on); off: from the
+  /// atmosphere's tables per pixel (tests).
+  void setAerialTable(bool on) { aerialTableOn_ = on; }
+  /// Farther out the terminator and the limb change faster across the table's entries than it
+  /// resolves (docs/atmosphere.md), and the globe covers fewer pixels: per pixel there.
+  static constexpr double kAerialTableMaxHeightM = 5.0e5;
   /// Above 20 km, pixels whose four samples are all on land go to a part without the sea's
   /// code, those all on the sea to one without the land's (render/globe.frag); false shades
   /// them with the rest of the surface (the tests' reference).
@@ -250,8 +257,16 @@ class GlobeRenderer {
   glm::vec2 skyLowScale_{0.0f};  ///< globe.frag's uSkyLowScale for this frame
   bool skyLowOn_ = true;
   int lastSkyLowFactor_ = 1;
+  /// Above 20 km: this frame's aerial perspective to sea level by path length and angle to the
+  /// Sun (render/aerial_table.comp), which the globe's parts read (AERIAL_TABLE) instead of the
+  /// atmosphere's 4D tables per pixel.
+  void drawAerialTable(const geo::CameraView& view, const FrameInput& f);
+  gl::Program aerialTableProgram_;
+  gl::Texture aerialTable_;  ///< RGBA32F, 3 layers of AERIAL_TABLE_SIZE, bilinear, clamped
+  bool aerialTableOn_ = true;
+  bool aerialTableFrame_ = false;  ///< this frame's globe reads the table
   void setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view, const FrameInput& f);
-  std::array<gl::Program, 2 * kGlobeVariants> globePrograms_;
+  std::array<gl::Program, 3 * kGlobeVariants> globePrograms_;  ///< above 20 km with the aerial table, without, below
   /// Below 20 km: whether the terrain and the grid left any pixel for the globe (an occlusion
   /// query of render/uncovered.frag; the globe's draws are conditional on it).
   gl::Program uncovered_;
