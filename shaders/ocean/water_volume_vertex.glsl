@@ -91,14 +91,11 @@ bool seaClassNearLayerBorder(vec2 latLon, float reachM) {
   return any(lessThan(cell, margin - 0.5)) || any(greaterThan(cell, uElevationSize - 0.5 - margin));
 }
 
-// render/OpenSeaMap's land clearance (.g): per 1° cell, the great-circle radius (rad) around
-// any point of it within which the land mask (its fine cells included) has no land.
-layout(binding = OG_UNIT_OPEN_SEA) uniform sampler2D uOpenSea;
-float landClearanceM(vec2 latLon) {
-  vec2 cell = floor(degrees(vec2(latLon.y + PI, latLon.x + 0.5 * PI)));
-  // Radians to metres on the ellipsoid's tightest curvature (b² / a = 6335 km), less a margin.
-  return 6.3e6 * texelFetch(uOpenSea, ivec2(clamp(cell, vec2(0.0), vec2(359.0, 179.0))), 0).g;
-}
+#include "render/open_sea_map.glsl"
+// How far from (latitude, longitude) the land mask has no land (its fine cells included), m:
+// the map's land clearance, radians to metres on the ellipsoid's tightest curvature
+// (b² / a = 6335 km) less a margin.
+float landClearanceM(vec2 latLon) { return 6.3e6 * openSeaMapAt(latLon).g; }
 
 // Whether land may lie within `reachM` of (latitude, longitude) (1) or not (0).
 float seaClassLandWithin(vec2 latLon, float reachM) {

@@ -264,7 +264,7 @@ SkyView skyOf(PixelRays rays) {
 }
 
 #if GLOBE_PART == GLOBE_PART_CLASSIFY
-layout(binding = OG_UNIT_OPEN_SEA) uniform sampler2D uOpenSea;  // render/OpenSeaMap: clearance, rad
+#include "render/open_sea_map.glsl"
 uniform int uOpenSeaOn;  // 0: no pixel is classed open sea (GlobeRenderer::setOpenSeaPart)
 
 // How many of a pixel's four samples hit the globe on the sea (-1 unless all four hit): the
@@ -283,8 +283,7 @@ int samplesOnSea(PixelRays rays) {
 // largest angle from nCentre is compared with it, with a 10 % margin (the shading point, the
 // samples' mean ray, lies among them; float rounding).
 bool inOpenSea(PixelRays rays, vec3 nCentre, vec2 latLon) {
-  vec2 cell = floor(degrees(vec2(latLon.y + PI, latLon.x + 0.5 * PI)));
-  float clearance = texelFetch(uOpenSea, ivec2(clamp(cell, vec2(0.0), vec2(359.0, 179.0))), 0).r;
+  float clearance = openSeaMapAt(latLon).r;
   float minDot = 1.0;
   for (int i = 0; i < 4; ++i) minDot = min(minDot, dot(ellipsoidNormal(rays.dirs[i], rays.ts[i]), nCentre));
   return uOpenSeaOn != 0 && rays.nHit == 4 && minDot > cos(0.9 * clearance);

@@ -262,9 +262,10 @@ Run addBenchCommand(CLI::App& parent) {
   cmd->add_flag("--json", o->json, "print JSON instead of a table");
   cmd->add_flag("--breakdown", o->breakdown,
                 "also time every pass (globe, terrain shadows, terrain, ocean waves, ocean, tone "
-                "mapping) and the read-back, per view; with --record, per band of camera height");
+                "mapping) and the read-back, per view; with --record, per band of camera height (its "
+                "render-only run is then timed pass by pass, which slows it)");
   cmd->add_option("--timer", o->timer,
-                  "how --breakdown times passes: auto (queries on a GPU, finish on llvmpipe), "
+                  "how --breakdown times passes: auto (queries on a GPU, finish on llvmpipe and with --record), "
                   "queries (GL timestamps), finish (glFinish + wall clock) or cpu (glFinish + the "
                   "process's CPU time: llvmpipe's work whatever the machine's load)")
       ->check(CLI::IsMember({"auto", "queries", "finish", "cpu"}));
@@ -288,8 +289,9 @@ Run addBenchCommand(CLI::App& parent) {
     if (!o->record.empty()) {
       // `auto` times by glFinish and the clock here: the recording makes its context later, and
       // that is right on any driver.
-      gl::PassTimer timer(o->timer == "auto" ? gl::PassTimer::Mode::Finish : timerMode(o->timer));
-      return benchRecord(o->record, sizes, o->frames, o->gl, samples, o->json, o->breakdown ? &timer : nullptr);
+      const gl::PassTimer::Mode mode = o->timer == "auto" ? gl::PassTimer::Mode::Finish : timerMode(o->timer);
+      return benchRecord(o->record, sizes, o->frames, o->gl, samples, o->json,
+                         o->breakdown ? std::optional(mode) : std::nullopt);
     }
     if (o->startup) {
       StartupBenchOptions s{.gl = o->gl, .runs = o->startupRuns};

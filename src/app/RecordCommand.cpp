@@ -319,10 +319,10 @@ void renderFrames(const std::vector<std::int64_t>& todo, FrameRenderer& frames, 
 
 /// Step 3, encode/write: each frame to the MP4 encoder, to its image file, or read back only.
 void renderAndWrite(const RecordJob& job, const OutputPlan& plan, const std::vector<std::int64_t>& todo,
-                    render::GlobeRenderer& renderer, Progress& progress, RecordResult& result) {
+                    render::GlobeRenderer& renderer, gl::PassTimer* timer, Progress& progress, RecordResult& result) {
   FrameRenderer frames(job, renderer);
   auto loop = [&](const std::function<void(std::int64_t)>& write) {
-    renderFrames(todo, frames, job.passTimer, progress, result, write);
+    renderFrames(todo, frames, timer, progress, result, write);
   };
   if (plan.sink == Sink::Mp4) {
     writeFileAtomically(job.output, [&](const fs::path& tmp) {
@@ -353,13 +353,15 @@ RecordResult runRecording(const RecordJob& job) {
   RecordResult result;
   const std::vector<std::int64_t> todo = framesToDo(job, plan, first, end, result);
   RecordingGl gl = setUpRenderer(job.scene, todo.size(), result);
-  gl.renderer->setPassTimer(job.passTimer);
+  std::optional<gl::PassTimer> timer;  // its queries belong to this context: made after it, gone before it
+  if (job.passTimerMode) timer.emplace(*job.passTimerMode);
+  gl.renderer->setPassTimer(timer ? &*timer : nullptr);
 
   installStopHandlers();
   Progress progress("record", static_cast<std::int64_t>(todo.size()),
                     job.progress && log::level() <= log::Level::Warn);
   const auto start = std::chrono::steady_clock::now();
-  renderAndWrite(job, plan, todo, *gl.renderer, progress, result);
+  renderAndWrite(job, plan, todo, *gl.renderer, timer ? &*timer : nullptr, progress, result);
   // Step 5, finish: the wall time up to the closed output, the progress line ended.
   result.wallS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.finish();
@@ -385,10 +387,10 @@ void printRecordBreakdown(const std::vector<FramePasses>& frames, nlohmann::json
     for (const FramePasses& f : frames) {
       if (f.heightM < b.lowM || f.heightM >= b.highM) continue;
       ++n;
-      for (const auto& [name, ms] : f.passesMs) {
-        auto it = std::find_if(sums.begin(), sums.end(), [&](const auto& e) { return e.first == name; });
-        if (it == sums.end()) it = sums.insert(sums.end(), {name, 0.0});
-        it->second += ms;
+      for (const auto& pass : f.passesMs) {
+        auto it = std::find_if(sums.begin(), sums.end(), [&pass](const auto& e) { return e.first == pass.first; });
+        if (it == sums.end()) it = sums.insert(sums.end(), {pass.first, 0.0});
+        it->second += pass.second;
       }
     }
     if (n == 0) continue;
@@ -411,7 +413,7 @@ void printRecordBreakdown(const std::vector<FramePasses>& frames, nlohmann::json
 
 int benchRecord(const std::string& pathFile, const std::vector<std::pair<int, int>>& sizes,
                 int frames, const std::string& glBackend, const std::vector<int>& samples,
-                bool json, gl::PassTimer* timer) {
+                bool json, std::optional<gl::PassTimer::Mode> timerMode) {
   RecordJob job;
   job.path = loadPathFile(pathFile, [](const io::SceneSettings& s) { return s; });
   job.scene = job.path.scene;
@@ -439,9 +441,9 @@ int benchRecord(const std::string& pathFile, const std::vector<std::pair<int, in
       job.scene.width = w;
       job.scene.height = h;
       job.output.clear();
-      job.passTimer = timer;
+      job.passTimerMode = timerMode;
       const RecordResult renderOnly = runRecording(job);
-      job.passTimer = nullptr;
+      job.passTimerMode.reset();
       job.output = mp4.string();
       RecordResult withVideo;
       try {
@@ -464,7 +466,7 @@ int benchRecord(const std::string& pathFile, const std::vector<std::pair<int, in
         std::printf("%10s %7d %7lld %14.2f %16.2f %9.0f%%\n", size.c_str(), count,
                     static_cast<long long>(withVideo.rendered), renderFps, videoFps,
                     100.0 * videoFps / renderFps);
-      if (timer != nullptr) printRecordBreakdown(renderOnly.framePasses, report["record"].back()["passes_by_height"], json);
+      if (timerMode) printRecordBreakdown(renderOnly.framePasses, report["record"].back()["passes_by_height"], json);
     }
   }
   if (json) std::printf("%s\n", report.dump(2).c_str());

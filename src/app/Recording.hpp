@@ -3,15 +3,13 @@
 // camera path at a fixed clock and hand them to an MP4 encoder or an image sequence.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "gl/PassTimer.hpp"
 #include "io/CameraPath.hpp"
-
-namespace og::gl {
-class PassTimer;
-}
 
 namespace og::app {
 
@@ -29,10 +27,12 @@ struct RecordJob {
   bool exrFloat = false;        ///< 32-bit float EXR instead of half
   std::vector<std::string> aovs;  ///< extra EXR channels (app/Aovs.hpp); EXR outputs only
   bool progress = true;         ///< show the progress bar / lines
-  gl::PassTimer* passTimer = nullptr;  ///< times each frame's passes (bench --record --breakdown); not owned
+  /// Times each frame's passes (bench --record --breakdown) by a timer of this mode, made with
+  /// the recording's context.
+  std::optional<gl::PassTimer::Mode> passTimerMode;
 };
 
-/// One frame's passes as RecordJob::passTimer timed them (ms), and the camera's height (m).
+/// One frame's passes as RecordJob::passTimerMode's timer timed them (ms), and the camera's height (m).
 struct FramePasses {
   double heightM = 0.0;
   std::vector<std::pair<std::string, double>> passesMs;
@@ -45,7 +45,7 @@ struct RecordResult {
   double renderS = 0.0;        ///< of which rendering and read-back (the encoder runs alongside)
   bool interrupted = false;    ///< stopped early by SIGINT/SIGTERM; output closed properly
   std::string glRenderer;      ///< GL_RENDERER used
-  std::vector<FramePasses> framePasses;  ///< per rendered frame, with a RecordJob::passTimer
+  std::vector<FramePasses> framePasses;  ///< per rendered frame, with RecordJob::passTimerMode
 };
 
 /// Frames in a path of `durationS` seconds at `fps`: both ends included (t = 0 ... duration).
@@ -53,11 +53,11 @@ std::int64_t frameCount(double durationS, double fps);
 
 /// `oceanglobe bench --record PATH`: frames/s of the path at each size and sample count,
 /// rendering only and rendering + MP4 encoding, `frames` frames sampled evenly along the flight.
-/// With `timer`, also the mean time of each pass per frame in bands of camera height (the
-/// render-only run's frames).
+/// With `timerMode`, also the mean time of each pass per frame in bands of camera height (the
+/// render-only run's frames, then timed pass by pass).
 int benchRecord(const std::string& pathFile, const std::vector<std::pair<int, int>>& sizes,
                 int frames, const std::string& glBackend, const std::vector<int>& samples,
-                bool json, gl::PassTimer* timer = nullptr);
+                bool json, std::optional<gl::PassTimer::Mode> timerMode = std::nullopt);
 
 /// Runs the job. Throws og::InputError for bad output names or ranges (before rendering).
 RecordResult runRecording(const RecordJob& job);

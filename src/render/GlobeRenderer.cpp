@@ -298,7 +298,7 @@ void GlobeRenderer::render(const FrameInput& f) {
 
 const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
   // Sets of variants: above 20 km with the aerial table, without it, below 20 km.
-  const int set = behind ? 2 : aerialTableFrame_ ? 0 : 1;
+  const int set = behind ? 2 : aerialTableFrame_ && variant > kClassifyExportLandSea ? 0 : 1;  // (classifying: no table)
   gl::Program& p = globePrograms_[static_cast<std::size_t>(set * kGlobeVariants + variant)];
   if (p.id() == 0) {
     // Variants 0-5: GLOBE_PART_CLASSIFY (4) with its step; 6: all steps in one draw; 7-9: the
@@ -430,15 +430,13 @@ void GlobeRenderer::bindOpenSeaMap() {
     // Made on the first frame that needs it, the land mask's share on a helper thread since
     // the constructor: not start-up's.
     const core::startup::Scope stage("renderer: open sea and land clearance maps");
+    if (maskBlocked_.valid()) maskBlockedCells_ = maskBlocked_.get();  // kept should what follows throw
+    const auto& [coarse, fine] = maskBlockedCells_;
     std::vector<unsigned char> blocked = openSeaBlockedByLayer_;
-    if (maskBlocked_.valid()) {
-      auto [coarse, fine] = maskBlocked_.get();
-      for (std::size_t i = 0; i < blocked.size() && i < coarse.size(); ++i) blocked[i] |= coarse[i];
-      openSeaMap_ = std::make_unique<OpenSeaMap>(makeOpenSeaMap(std::move(blocked)));
-      openSeaMap_->landClearanceRad = makeOpenSeaMap(std::move(fine)).clearanceRad;
-    } else {
-      openSeaMap_ = std::make_unique<OpenSeaMap>(makeOpenSeaMap(std::move(blocked)));
-    }
+    for (std::size_t i = 0; i < blocked.size() && i < coarse.size(); ++i) blocked[i] |= coarse[i];
+    auto map = std::make_unique<OpenSeaMap>(makeOpenSeaMap(std::move(blocked)));
+    if (!fine.empty()) map->landClearanceRad = makeOpenSeaMap(fine).clearanceRad;
+    openSeaMap_ = std::move(map);
     openSeaTexture_ = std::make_unique<OpenSeaTexture>(*openSeaMap_);
   }
   openSeaTexture_->bind();

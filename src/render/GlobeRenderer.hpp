@@ -286,6 +286,7 @@ class GlobeRenderer {
   /// The land mask's blocked cells (OpenSeaMap): without and with its fine cells, made on a
   /// helper thread from the constructor on (two passes over its ~29 M cells, ~100 ms).
   std::future<std::pair<std::vector<unsigned char>, std::vector<unsigned char>>> maskBlocked_;
+  std::pair<std::vector<unsigned char>, std::vector<unsigned char>> maskBlockedCells_;  ///< its result (empty: no mask)
   std::unique_ptr<OpenSeaMap> openSeaMap_;
   std::unique_ptr<OpenSeaTexture> openSeaTexture_;
   bool openSeaPart_ = true;

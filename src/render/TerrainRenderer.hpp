@@ -97,10 +97,10 @@ class TerrainRenderer {
   /// Creates the shadow map and its framebuffer on first use (none over the open ocean).
   void ensureShadowMap();
   void bindTile(const terrain::Tile& tile);
-  /// Streams the imagery tiles the land tiles to draw want (ImageryTextures::prepareTiles).
   /// The selected tiles this frame draws: not under the sea, not beyond its horizon.
   [[nodiscard]] std::vector<const terrain::Tile*> tilesToDraw(const geo::CameraView& view,
                                                              const std::vector<const terrain::Tile*>& tiles) const;
+  /// Streams the imagery tiles the land tiles to draw want (ImageryTextures::prepareTiles).
   void prepareImagery(const std::vector<const terrain::Tile*>& tiles);
   /// terrain.vert's uMorphScale for a tile.
   [[nodiscard]] float morphScale(const terrain::Tile& tile, const geo::CameraView& view) const;

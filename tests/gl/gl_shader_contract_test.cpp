@@ -43,7 +43,8 @@ TEST(ShaderContract, EverySamplerOfTheFrameIsNamedInTheContract) {
   for (const char* file : {"render/elevation.glsl", "ocean/wind.glsl", "atmosphere/model.glsl",
                            "atmosphere/skymap.glsl", "ocean/classic.frag", "ocean/patterns.glsl",
                            "terrain/shadow.glsl", "terrain/imagery.glsl", "terrain/landmask.glsl",
-                           "render/tonemap.frag", "viewer/text.frag", "render/globe.frag", "ocean/water_volume.glsl"}) {
+                           "render/tonemap.frag", "viewer/text.frag", "render/globe.frag", "ocean/water_volume.glsl",
+                           "render/aerial.glsl", "render/open_sea_map.glsl"}) {
     const std::string text = og::gl::readShaderFile(file);
     EXPECT_FALSE(std::regex_search(text, literalSampler)) << file << " binds a sampler to a literal unit";
     for (auto it = std::sregex_iterator(text.begin(), text.end(), namedSampler); it != std::sregex_iterator(); ++it)
@@ -52,7 +53,7 @@ TEST(ShaderContract, EverySamplerOfTheFrameIsNamedInTheContract) {
   std::set<std::string> defined;
   for (const std::string& d : og::gl::contractDefines()) defined.insert(d.substr(0, d.find(' ')));
   for (const std::string& n : named) EXPECT_TRUE(defined.count(n) == 1) << n << " is not in the contract";
-  EXPECT_EQ(named.size(), 25u);  // the land mask, imagery, sky, patterns, open sea, caustics... all of them
+  EXPECT_EQ(named.size(), 26u);  // the land mask, imagery, sky, patterns, open sea, caustics... all of them
   // The frame's units are distinct (tone mapping and the overlay are passes of their own).
   std::set<unsigned> units;
   for (unsigned u : {og::gl::kUnitElevation, og::gl::kUnitWind, og::gl::kUnitAtmTransmittance,
@@ -62,7 +63,8 @@ TEST(ShaderContract, EverySamplerOfTheFrameIsNamedInTheContract) {
                      og::gl::kUnitPatternDisplacement, og::gl::kUnitPatternSlopes, og::gl::kUnitImageryDay,
                      og::gl::kUnitImageryNight, og::gl::kUnitImageryLayers, og::gl::kUnitLandMask,
                      og::gl::kUnitImageryTiles, og::gl::kUnitOpenSea, og::gl::kUnitSkyRipMap,
-                     og::gl::kUnitCausticCurvature, og::gl::kUnitLandMaskFine, og::gl::kUnitSkyLow})
+                     og::gl::kUnitCausticCurvature, og::gl::kUnitLandMaskFine, og::gl::kUnitSkyLow,
+                     og::gl::kUnitAerialTable})
     EXPECT_TRUE(units.insert(u).second) << "unit " << u << " named twice";
   // The uniform blocks too (the per-wind pattern tables).
   static const std::regex namedBlock(R"(layout\s*\(\s*std140\s*,\s*binding\s*=\s*(OG_BLOCK_\w+)\s*\)\s*uniform)");
