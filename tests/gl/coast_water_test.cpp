@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -418,6 +420,17 @@ data::LatLonGrid shadowingIsland(bool shelving) {
 // Bit k of OceanRenderer::classesDrawn: class k + 1 of ocean/sea_classify.frag.
 constexpr unsigned kClassOpenSea = 1, kClassShadows = 2, kClassFloor = 4, kClassFloorShadows = 8;
 
+// Samples per class (open sea, shadows, floor, floor with shadows, coast) as "n n n n n", for
+// failure messages.
+std::string classCounts(const std::array<std::uint64_t, render::OceanRenderer::kSeaClasses>& n) {
+  std::string s;
+  for (const std::uint64_t k : n) {
+    if (!s.empty()) s += ' ';
+    s += std::to_string(k);
+  }
+  return s;
+}
+
 // A 192 x 108 view from `position` (50° tall, one sample a pixel), wind 6 m/s at t = 1.5 s, the Sun
 // `sunElevationDeg` up at `sunAzimuthDeg`.
 render::FrameInput classView(const geo::Geodetic& position, double headingDeg, double pitchDeg,
@@ -516,9 +529,7 @@ TEST(CoastWater, FloorAndShadowClassesCombineIndependently) {
     const auto n = r.ocean().classSamples();
     expectClassesMatchTheSingleProgram(r, f, shelving ? "coast_classes_island_bank" : "coast_classes_island_deep");
     EXPECT_TRUE(r.terrain().shadows().on);
-    // Samples per class (open sea, shadows, floor, floor with shadows, coast).
-    const std::string counts = std::to_string(n[0]) + " " + std::to_string(n[1]) + " " + std::to_string(n[2]) +
-                               " " + std::to_string(n[3]) + " " + std::to_string(n[4]);
+    const std::string counts = classCounts(n);  // open sea, shadows, floor, floor with shadows, coast
     const std::uint64_t shadowed = shelving ? n[3] : n[1], volume = n[2] + n[3];
     EXPECT_GT(shadowed, 192u * 108u / 2u) << counts;
     // Over deep water the volume stays on the island's flanks (measured: 699 of 20 736 samples,
@@ -547,8 +558,7 @@ TEST(CoastWater, SeaFarFromLandNeedsNoCoastOrShadowClass) {
   r.ocean().setCountClassSamples(true);
   r.render(f);
   const auto n = r.ocean().classSamples();
-  const std::string counts = std::to_string(n[0]) + " " + std::to_string(n[1]) + " " + std::to_string(n[2]) +
-                             " " + std::to_string(n[3]) + " " + std::to_string(n[4]);
+  const std::string counts = classCounts(n);
   EXPECT_TRUE(r.terrain().shadows().on) << "the coast's tiles must be casters for this to test anything";
   EXPECT_GT(n[0], 192u * 108u / 2u) << counts;                     // open sea
   EXPECT_LT(n[1] + n[3] + n[4], 192u * 108u / 4u) << counts;       // shadows, floor shadows, coast
