@@ -106,12 +106,6 @@ float groundFootprintRad(vec3 dir, float t, vec3 n) {
   return coastFootprintRad(t, uPixelNdc.y * uTanHalfFov.y, dot(n, -dir));
 }
 
-// The elevation under the sample at distance t along dir, its coast as the pixel resolves it.
-float elevationOfSample(vec3 dir, float t) {
-  vec3 n = ellipsoidNormal(dir, t);
-  return elevationAt(latLonOfNormal(n), groundFootprintRad(dir, t, n));
-}
-
 const bool PART_HAS_SKY = GLOBE_PART != GLOBE_PART_SURFACE;
 const bool PART_HAS_SURFACE = GLOBE_PART != GLOBE_PART_SKY;
 
@@ -197,8 +191,8 @@ struct PixelRays {
   int nHit;  // rays that hit the ellipsoid
 };
 // Which of a pixel's four samples lie on the sea (samples that miss the globe: false), the
-// coast as the pixel's footprint resolves it: the same test as elevationOfSample's, the land
-// mask's fine blocks fetched once for the four (terrain/landmask.glsl's landFraction4).
+// coast as the pixel's footprint resolves it: the same test as surfaceRadiance's elevationAt
+// (render/elevation.glsl) with the sample's footprint, the land mask's fine blocks fetched once for the four (terrain/landmask.glsl's landFraction4).
 bvec4 samplesSea(PixelRays rays) {
   vec2 latLon[4];
   vec4 height, keep;
@@ -266,6 +260,7 @@ SkyView skyOf(PixelRays rays) {
 #if GLOBE_PART == GLOBE_PART_CLASSIFY
 #include "render/open_sea_map.glsl"
 uniform int uOpenSeaOn;  // 0: no pixel is classed open sea (GlobeRenderer::setOpenSeaPart)
+uniform float uGlobeDepthPushM;  // GlobeRenderer::kGlobeDepthPushM (below)
 
 // How many of a pixel's four samples hit the globe on the sea (-1 unless all four hit): the
 // surface part's own test of each sample (below), so the land and sea parts shade exactly the
@@ -358,9 +353,14 @@ void main() {
   if (centreT >= 0.0) {
     depthZ = centreT * dot(centreDir, uForward);
     // Over land the terrain draws the ground and this flat fallback must never stand in front
-    // of a tile: the coarsest tiles' chords sag up to ~0.5 km below the ellipsoid. Over the sea
-    // (from orbit) the depth stays exact, so the sea surface hides the bathymetry.
-    if (elevationOfSample(centreDir, centreT) > 0.0) depthZ += 20000.0;
+    // of a tile: the coarsest tiles' chords sag up to ~0.5 km below the ellipsoid; pushed
+    // uGlobeDepthPushM back (GlobeRenderer::viewDistance takes it back out). Over the sea the
+    // depth stays exact, hiding the land the terrain would draw as whole pixels where the
+    // globe's samples see sea (islets under a pixel). Land as the 2′ mask's coast has it: the
+    // pixel's own footprint and the fine level cost a fifth of the globe pass on llvmpipe
+    // (run masked wherever any pixel needs them); the 15″ islets and bays it leaves out are
+    // drawn by the globe's samples instead of the terrain.
+    if (elevationAt(centreLatLon) > 0.0) depthZ += uGlobeDepthPushM;
   }
   gl_FragDepth = rays.nHit > 0 ? clamp(uNear / depthZ, 0.0, 1.0) : 0.0;
 #endif

@@ -370,7 +370,10 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
     glDepthMask(!grid && step == steps.front() ? GL_TRUE : GL_FALSE);
     const gl::Program& classify = globeProgram(grid, step);
     setGlobeUniforms(classify, view, f);
-    if (!grid) classify.set("uOpenSeaOn", openSeaPart_ ? 1 : 0);
+    if (!grid) {
+      classify.set("uOpenSeaOn", openSeaPart_ ? 1 : 0);
+      classify.set("uGlobeDepthPushM", static_cast<float>(kGlobeDepthPushM));
+    }
     classify.use();
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
@@ -627,6 +630,10 @@ std::vector<float> GlobeRenderer::viewDistance() const {
   std::vector<float> d = depth();
   const int w = hdr_.width, h = hdr_.height;
   const double tanY = std::tan(0.5 * lastView_.verticalFovRad), tanX = tanY * lastView_.aspect;
+  // Above the grid's ceiling the globe pass's depth stands kGlobeDepthPushM behind the
+  // ellipsoid: nothing else lies that deep there (the terrain keeps no fragment under the sea
+  // up there, the deepest land is ~0.4 km under it, a tile's chord ~0.5 km).
+  const bool globeDepthPushed = lastView_.position.heightM >= kOceanGridMaxHeightM;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       float& z = d[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)];
@@ -634,8 +641,14 @@ std::vector<float> GlobeRenderer::viewDistance() const {
         z = kSkyDistanceM;
         continue;
       }
-      const double nx = (2.0 * (x + 0.5) / w - 1.0) * tanX, ny = (1.0 - 2.0 * (y + 0.5) / h) * tanY;
-      z = static_cast<float>(lastView_.nearM / static_cast<double>(z) * std::sqrt(1.0 + nx * nx + ny * ny));
+      const double ndcX = 2.0 * (x + 0.5) / w - 1.0, ndcY = 1.0 - 2.0 * (y + 0.5) / h;
+      const double nx = ndcX * tanX, ny = ndcY * tanY;
+      const double axial = lastView_.nearM / static_cast<double>(z);
+      z = static_cast<float>(axial * std::sqrt(1.0 + nx * nx + ny * ny));
+      if (!globeDepthPushed) continue;
+      const glm::dvec3 dir = lastView_.rayDirection(ndcX, ndcY);
+      const std::optional<double> t = geo::intersectEllipsoid(lastView_.positionEcef, dir);
+      if (t && axial > *t * glm::dot(dir, lastView_.forward) + 0.5 * kGlobeDepthPushM) z = static_cast<float>(*t);
     }
   return d;
 }

@@ -129,9 +129,14 @@ class GlobeRenderer {
   /// FrameInput::auxiliaryOutputs (else throws og::InternalError).
   [[nodiscard]] std::vector<float> whitecap() const;
   /// Distance from the eye to the surface seen in every pixel of the last render(), metres
-  /// along the pixel's ray, top row first; kSkyDistanceM where no surface is seen.
+  /// along the pixel's ray, top row first; kSkyDistanceM where no surface is seen. Where the
+  /// globe pass's own depth stands (kGlobeDepthPushM), the ellipsoid's exact distance.
   [[nodiscard]] std::vector<float> viewDistance() const;
   static constexpr float kSkyDistanceM = 1e10f;  ///< what compositors' Z passes use for the sky
+  /// Above the grid's ceiling the globe pass writes the depth of its pixel-centre ray this far
+  /// behind the ellipsoid (metres along the view axis), so that no terrain tile, whose chords
+  /// sag up to ~0.5 km below it, ever falls behind it (render/globe.frag).
+  static constexpr double kGlobeDepthPushM = 20000.0;
 
   /// Samples per pixel of the last render() (after clamping; the driver may round up).
   [[nodiscard]] int samples() const { return hdr_.samples; }

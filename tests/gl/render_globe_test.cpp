@@ -55,26 +55,28 @@ TEST(GlobeRender, GlobeInTheMiddleSpaceInTheCorners) {
 
 TEST(GlobeRender, DepthIsNearOverDistanceAtEveryScale) {
   // Above the grid's ceiling the globe pass writes the depth of its pixel-centre ray: exact
-  // over the sea (there it hides the bathymetry), 20 km farther over land (a fallback that
-  // must never stand in front of a terrain tile's chords). Below it, none.
+  // over the sea, 20 km (kGlobeDepthPushM) farther over land (a fallback that must never stand
+  // in front of a terrain tile's chords). viewDistance() (the depth AOV) is the distance to what
+  // the pixel shows: the ellipsoid over the sea, the terrain's plateau over land. Below the
+  // ceiling, no depth from the globe.
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(halfLand());
   struct Case {
-    double lat, lon, h, pushM;
+    double lat, lon, h, surfaceM;
   };
-  for (const Case c : {Case{-20, -100, 2.1e4, 0.0}, Case{-20, -100, 4.0e5, 0.0},
-                       Case{-20, -100, 2.0e7, 0.0},
-                       Case{20, 100, 1.0, 2.0e4}, Case{20, 100, 1000.0, 2.0e4}}) {
-    // Over land the camera is under the 1000 m plateau, whose back faces are culled: the
-    // globe pass alone.
+  for (const Case c : {Case{-20, -100, 2.1e4, 0.0}, Case{-20, -100, 4.0e5, 0.0}, Case{-20, -100, 2.0e7, 0.0},
+                       Case{45, 135, 4.0e5, 1000.0}, Case{20, 100, 1.0, 0.0}, Case{20, 100, 1000.0, 0.0}}) {
+    // Over land below the ceiling the camera is under the 1000 m plateau, whose back faces
+    // are culled: the globe pass alone.
     const render::FrameInput f = frame(c.lat, c.lon, c.h, -90);
     r.render(f);
     const geo::CameraView v = geo::makeCameraView(f.camera, f.width, f.height);
     const std::vector<float> depth = r.depth();
+    const std::vector<float> distance = r.viewDistance();
     // Pixel (32, 32) (rows from the bottom): its centre ray, half a pixel off axis each way.
     const double d = static_cast<double>(depth[32 * 64 + 32]);
     const glm::dvec3 dir = v.rayDirection(0.5 / 32.0, 0.5 / 32.0);
-    const std::optional<double> t = geo::intersectEllipsoid(v.positionEcef, dir);
+    const std::optional<double> t = geo::intersectEllipsoid(v.positionEcef, dir, c.surfaceM);
     ASSERT_TRUE(t.has_value());
     if (c.h < render::kOceanGridMaxHeightM) {
       // Below the grid's ceiling the globe is drawn last, behind the terrain and the grid,
@@ -82,8 +84,15 @@ TEST(GlobeRender, DepthIsNearOverDistanceAtEveryScale) {
       EXPECT_EQ(d, 0.0) << "height " << c.h;
       continue;
     }
-    const double expected = *t * glm::dot(dir, v.forward) + c.pushM;
+    // viewDistance's rows run from the top: pixel (32, 31) from it is (32, 32) from the bottom.
+    const double seen = static_cast<double>(distance[31 * 64 + 32]);
+    if (c.surfaceM > 0.0) {
+      EXPECT_NEAR(seen, *t, 600.0) << "the terrain's plateau (chords ~0.5 km off it), height " << c.h;
+      continue;
+    }
+    const double expected = *t * glm::dot(dir, v.forward);
     EXPECT_NEAR(v.nearM / d, expected, expected * 1e-6) << "height " << c.h;
+    EXPECT_NEAR(seen, *t, *t * 1e-6) << "height " << c.h;
   }
 }
 
