@@ -56,7 +56,12 @@
 // surface part ran both, masked, for every pixel), and within it the open deep sea
 // (render/OpenSeaMap: the four samples within a coarse map's clearance of land and shallow
 // floors), to a part without the water column either (count 6). Count 3 is left to the
-// coasts, shaded per sample.
+// coasts, shaded per sample. Above 20 km, where the land mask decides the coast, the CPU
+// first classes blocks of 8 x 8 pixels from their corners and the mask's pyramid
+// (render/GlobeBlocks): blocks wholly land, sea or open sea get their count and depth from a
+// draw that only intersects the pixel-centre ray (GLOBE_PART_BLOCK_FILL), the sky's blocks
+// the classifying draw without the land's and the sea's tests, and the classifying draws
+// proper cover only the rest (coasts, the limb, grazing views): render/blocks.vert.
 #define GLOBE_PART_SKY 1
 #define GLOBE_PART_EDGE 2
 #define GLOBE_PART_SURFACE 3
@@ -65,12 +70,13 @@
 #define GLOBE_PART_SEA 6
 #define GLOBE_PART_LAND 7
 #define GLOBE_PART_SKY_LOW 8  // the sky below the grid's ceiling at a lower resolution (below)
+#define GLOBE_PART_BLOCK_FILL 9  // blocks of pixels classed on the CPU: their depth (below)
 #ifndef GLOBE_PART
 #define GLOBE_PART GLOBE_PART_EDGE  // all the shading code
 #endif
 in vec2 vNdc;
 #include "render/outputs.glsl"
-#if GLOBE_PART != GLOBE_PART_CLASSIFY
+#if GLOBE_PART != GLOBE_PART_CLASSIFY && GLOBE_PART != GLOBE_PART_BLOCK_FILL
 // Below 20 km the globe is drawn last, behind the terrain and the grid (GlobeRenderer): only
 // the pixels they left empty (sky, far land, the grid's horizon gaps) pass the depth test.
 // Each part's pixels pass the stencil test (see above). Both tests run before this shader;
@@ -88,6 +94,7 @@ uniform vec3 uForward;
 uniform vec2 uTanHalfFov;  // (tan(fov_y/2) * aspect, tan(fov_y/2))
 uniform vec2 uPixelNdc;    // size of one pixel in NDC
 uniform float uNear;       // near plane, m
+uniform float uGlobeDepthPushM;  // the classifying draws' depth over land: GlobeRenderer::kGlobeDepthPushM
 uniform vec3 uSunDir;      // unit, ECEF axes
 
 // Below 20 km (GLOBE_BEHIND) the projected-grid pass draws the sea: the globe leaves its sea
@@ -260,7 +267,6 @@ SkyView skyOf(PixelRays rays) {
 #if GLOBE_PART == GLOBE_PART_CLASSIFY
 #include "render/open_sea_map.glsl"
 uniform int uOpenSeaOn;  // 0: no pixel is classed open sea (GlobeRenderer::setOpenSeaPart)
-uniform float uGlobeDepthPushM;  // GlobeRenderer::kGlobeDepthPushM (below)
 
 // How many of a pixel's four samples hit the globe on the sea (-1 unless all four hit): the
 // surface part's own test of each sample (below), so the land and sea parts shade exactly the
@@ -364,6 +370,21 @@ void main() {
   }
   gl_FragDepth = rays.nHit > 0 ? clamp(uNear / depthZ, 0.0, 1.0) : 0.0;
 #endif
+}
+#elif GLOBE_PART == GLOBE_PART_BLOCK_FILL
+// Blocks of pixels classed as a whole on the CPU (render/GlobeBlocks, drawn over them by
+// GlobeRenderer::classifyGlobe): every sample of their pixels lies on the land or on the sea,
+// which the stencil's reference value records. This writes the depth the per-pixel draw would
+// (its pixel-centre ray, which hits: the blocks' corners did; pushed back over land).
+uniform int uBlockLand;  // 1: the blocks are land
+void main() {
+  vec3 centreDir = normalize(uForward + vNdc.x * uTanHalfFov.x * uRight + vNdc.y * uTanHalfFov.y * uUp);
+  float centreT = max(intersectEllipsoid(centreDir), 0.0);
+  float depthZ = centreT * dot(centreDir, uForward);
+  if (uBlockLand != 0) depthZ += uGlobeDepthPushM;
+  gl_FragDepth = clamp(uNear / depthZ, 0.0, 1.0);
+  fragRadiance = vec4(0.0);  // colour writes are masked off
+  fragAux = vec4(0.0);
 }
 #elif GLOBE_PART == GLOBE_PART_SKY_LOW
 // The sky below the grid's ceiling, one texel per uSkyLowFactor² pixels (GlobeRenderer::drawSkyLow):

@@ -20,6 +20,7 @@
 #include "gl/Readback.hpp"
 #include "gl/ShaderContract.hpp"
 #include "ocean/WaterOptics.hpp"
+#include "render/GlobeBlocks.hpp"
 #include "render/WaterVolume.hpp"
 
 namespace og::render {
@@ -166,6 +167,8 @@ GlobeRenderer::GlobeRenderer(std::shared_ptr<const data::LatLonGrid> layer,
       addBlockedByMask(mask, fine, true);
       return std::pair{std::move(coarse), std::move(fine)};
     });
+  if (landMask_->active())
+    maskPyramidFuture_ = std::async(std::launch::async, [&mask] { return std::make_unique<data::LandMaskPyramid>(mask); });
   stage.emplace("renderer: layer's steepest slope and open sea's blocked cells (waiting)");
   ocean_->setLayerMaxSlope(maxSlope.get());  // the sea's classes (OceanRenderer)
   openSeaBlockedByLayer_ = blocked.get();
@@ -310,6 +313,7 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
       defines.push_back(variant >= kClassifyExport ? std::string("GLOBE_CLASSIFY_EXPORT")
                                                    : "GLOBE_CLASSIFY_STEP " + std::to_string(variant));
       if (variant == kClassifyExportLandSea) defines.emplace_back("GLOBE_LAND_SEA");
+    } else if (variant == kBlockFill) {
     } else if (variant == kSkyLowPass) {
       defines.emplace_back("GLOBE_PART 8");
     } else if (variant == kSkyLowPart) {
@@ -320,7 +324,10 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
     }
     if (behind) defines.emplace_back("GLOBE_BEHIND");
     if (set == 0) defines.emplace_back("AERIAL_TABLE");
-    p = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
+    if (variant == kBlockFill) defines.emplace_back("GLOBE_PART 9");
+    // Above the ceiling the classifying draws cover blocks of pixels (render/GlobeBlocks).
+    const bool blocks = !behind && (variant <= kClassifyExportLandSea || variant == kBlockFill);
+    p = gl::Program({{GL_VERTEX_SHADER, blocks ? "render/blocks.vert" : "render/fullscreen.vert"},
                      {GL_FRAGMENT_SHADER, "render/globe.frag"}},
                     defines);
   }
@@ -337,7 +344,7 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
 // (they zero the stencil where they draw); below, both come after the terrain and the grid.
 void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput& f, bool grid) {
   if (timer_ != nullptr) timer_->mark("globe");
-  if (!grid) scissorToGlobe(view, f);
+  const std::array<int, 4> box = grid ? std::array<int, 4>{0, 0, f.width, f.height} : scissorToGlobe(view, f);
   glBindVertexArray(emptyVao_.id());
   glDepthFunc(grid ? GL_GEQUAL : GL_ALWAYS);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the query's and the steps' draws
@@ -360,7 +367,9 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
   const bool oneDraw = gl::driverProfile().stencilExport;
   glStencilOp(GL_KEEP, GL_KEEP, oneDraw ? GL_REPLACE : GL_INCR);
   if (!grid) bindOpenSeaMap();
-  frameLandSea_ = !grid && landSeaParts_ && landSeaSplitPays(view);
+  const bool blocks = uploadClassifyingBlocks(view, f, box, grid);
+  // With blocks the land and the sea are mostly classed on the CPU: their split always pays.
+  frameLandSea_ = !grid && landSeaParts_ && (blocks || landSeaSplitPays(view));
   const std::vector<int> steps =
       oneDraw ? std::vector<int>{frameLandSea_ ? kClassifyExportLandSea : kClassifyExport} : classifyingSteps(grid);
   for (std::size_t i = 0; i < steps.size(); ++i) {
@@ -375,8 +384,26 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
       classify.set("uGlobeDepthPushM", static_cast<float>(kGlobeDepthPushM));
     }
     classify.use();
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (grid) {
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      continue;
+    }
+    glBindVertexArray(blocksVao_.id());
+    glDrawArrays(GL_TRIANGLES, blockRanges_.perPixel.first, blockRanges_.perPixel.second);
+    // The sky's blocks: the steps up to "all four rays hit", or the one draw without the
+    // land's and the sea's tests and without the open sea (no pixel there has four hits).
+    if (blockRanges_.miss.second == 0 || (!oneDraw && step > 2)) continue;
+    const gl::Program& sky = oneDraw ? globeProgram(false, kClassifyExport) : classify;
+    if (oneDraw) {
+      setGlobeUniforms(sky, view, f);
+      sky.set("uOpenSeaOn", 0);
+      sky.set("uGlobeDepthPushM", static_cast<float>(kGlobeDepthPushM));
+      sky.use();
+    }
+    glDrawArrays(GL_TRIANGLES, blockRanges_.miss.first, blockRanges_.miss.second);
   }
+  if (!grid) drawBlockFill(view, f);
+  glBindVertexArray(emptyVao_.id());
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(grid ? GL_FALSE : GL_TRUE);  // as the caller had it
   glDisable(GL_STENCIL_TEST);
@@ -420,12 +447,72 @@ std::vector<int> GlobeRenderer::globeParts(bool grid) const {
   return parts;
 }
 
-void GlobeRenderer::scissorToGlobe(const geo::CameraView& view, const FrameInput& f) {
-  if (!scissorGlobe_) return;
+std::array<int, 4> GlobeRenderer::scissorToGlobe(const geo::CameraView& view, const FrameInput& f) {
+  if (!scissorGlobe_) return {0, 0, f.width, f.height};
   const std::array<int, 4> box = globeScissor(view, f.width, f.height, atmosphere_->parameters(),
                                               f.sunDirectionEcef);
   glEnable(GL_SCISSOR_TEST);
   glScissor(box[0], box[1], box[2], box[3]);
+  return box;
+}
+
+bool GlobeRenderer::uploadClassifyingBlocks(const geo::CameraView& view, const FrameInput& f,
+                                            const std::array<int, 4>& box, bool grid) {
+  if (blocksBuffer_.id() == 0) {
+    blocksBuffer_ = gl::createBuffer();
+    blocksVao_ = gl::createVertexArray();
+    glVertexArrayVertexBuffer(blocksVao_.id(), 0, blocksBuffer_.id(), 0, 2 * sizeof(float));
+    glEnableVertexArrayAttrib(blocksVao_.id(), 0);
+    glVertexArrayAttribFormat(blocksVao_.id(), 0, 2, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(blocksVao_.id(), 0, 0);
+  }
+  blockRanges_ = {};
+  blockCounts_ = {};
+  if (grid) return false;
+  if (maskPyramidFuture_.valid()) maskPyramid_ = maskPyramidFuture_.get();
+  std::vector<float> vertices;
+  const bool blocks = blocksOn_ && maskPyramid_ != nullptr;
+  if (blocks) {
+    const GlobeBlocks b = classifyGlobeBlocks(view, f.width, f.height, box, *maskPyramid_, openSeaPart_ ? openSeaMap_.get() : nullptr);
+    auto append = [&](GlobeBlockClass c) {
+      const std::vector<float> t = b.triangles(c, f.width, f.height);
+      const std::pair<int, int> range{static_cast<int>(vertices.size() / 2), static_cast<int>(t.size() / 2)};
+      vertices.insert(vertices.end(), t.begin(), t.end());
+      return range;
+    };
+    for (const GlobeBlockClass c : b.classes) ++blockCounts_[static_cast<std::size_t>(c)];
+    blockRanges_.perPixel = append(GlobeBlockClass::PerPixel);
+    blockRanges_.miss = append(GlobeBlockClass::Miss);
+    blockRanges_.fills = {append(GlobeBlockClass::Land), append(GlobeBlockClass::Sea), append(GlobeBlockClass::OpenSea)};
+  } else {
+    vertices = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};  // fullscreen.vert's triangle
+    blockRanges_.perPixel = {0, 3};
+  }
+  glNamedBufferData(blocksBuffer_.id(), static_cast<GLsizeiptr>(vertices.size() * sizeof(float)), vertices.data(),
+                    GL_STREAM_DRAW);
+  return blocks;
+}
+
+// The blocks classed on the CPU: the stencil count the per-pixel draws would reach there (the
+// parts' numbering: 3 the surface, then the land 4, the sea 5 and the open sea 6 where the
+// frame splits them off) and the depth (globe.frag's GLOBE_PART_BLOCK_FILL).
+void GlobeRenderer::drawBlockFill(const geo::CameraView& view, const FrameInput& f) {
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  glDepthMask(GL_TRUE);
+  const gl::Program& fill = globeProgram(false, kBlockFill);
+  setGlobeUniforms(fill, view, f);
+  fill.set("uGlobeDepthPushM", static_cast<float>(kGlobeDepthPushM));
+  fill.use();
+  glBindVertexArray(blocksVao_.id());
+  for (std::size_t k = 0; k < blockRanges_.fills.size(); ++k) {
+    const auto [first, count] = blockRanges_.fills[k];
+    if (count == 0) continue;
+    const bool open = k == 2 && openSeaPart_;
+    const int stencil = frameLandSea_ ? (k == 0 ? 4 : 5) + (open ? 1 : 0) : 3 + (open ? 1 : 0);
+    fill.set("uBlockLand", k == 0 ? 1 : 0);
+    glStencilFunc(GL_ALWAYS, stencil, 0xff);
+    glDrawArrays(GL_TRIANGLES, first, count);
+  }
 }
 
 void GlobeRenderer::bindOpenSeaMap() {

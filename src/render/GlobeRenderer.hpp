@@ -15,6 +15,7 @@
 
 #include "atmosphere/Parameters.hpp"
 #include "core/Time.hpp"
+#include "data/LandMaskPyramid.hpp"
 #include "data/LatLonGrid.hpp"
 #include "geo/Camera.hpp"
 #include "geo/Wind.hpp"
@@ -196,6 +197,12 @@ class GlobeRenderer {
   /// Above 20 km the globe pass is scissored to the rectangle around the globe, its atmosphere
   /// and the Sun (globeScissor); false draws it over the whole screen (the tests' reference).
   void setGlobeScissor(bool on) { scissorGlobe_ = on; }
+  /// Above 20 km, blocks of pixels that are wholly land or wholly sea are classed on the CPU
+  /// (render/GlobeBlocks) and spared the per-pixel classifying draw; false classes every pixel
+  /// on the GPU (the tests' reference).
+  void setGlobeBlocks(bool on) { blocksOn_ = on; }
+  /// The last frame's blocks of each GlobeBlockClass (in its order; all 0 without blocks).
+  [[nodiscard]] const std::array<int, 5>& globeBlockCounts() const { return blockCounts_; }
   /// Below 20 km the sky is drawn at a lower resolution and read back per pixel where a pixel
   /// is finer than kSkyLowTexelRad / 3 (drawSkyLow: 1280 x 720 and up at the usual fields of
   /// view); false computes it per pixel (the tests' reference).
@@ -229,9 +236,11 @@ class GlobeRenderer {
   /// sky, edge, surface, land, sea, open sea; see its GLOBE_PART), drawn first above the grid's
   /// ceiling and last (GLOBE_BEHIND, after the terrain and the grid) below; each compiled on
   /// first use; 14 the sky at a lower resolution below the ceiling (GLOBE_PART_SKY_LOW) and 15
-  /// the sky part that reads it (GLOBE_SKY_LOW). `variant` in [0, kGlobeVariants).
-  static constexpr int kGlobeVariants = 16;
-  static constexpr int kSkyLowPass = 14, kSkyLowPart = 15;
+  /// the sky part that reads it (GLOBE_SKY_LOW); 16 the depth of blocks classed on the CPU
+  /// (GLOBE_PART_BLOCK_FILL). `variant` in [0, kGlobeVariants). Above the ceiling the
+  /// classifying variants draw the triangles of blocksVao_ (render/blocks.vert).
+  static constexpr int kGlobeVariants = 17;
+  static constexpr int kSkyLowPass = 14, kSkyLowPart = 15, kBlockFill = 16;
   static constexpr int kClassifyExport = 6, kClassifyExportLandSea = 7;
   /// Part k (1 sky ... 6 open sea) is variant kGlobePart0 + k.
   static constexpr int kGlobePart0 = 7;
@@ -248,8 +257,31 @@ class GlobeRenderer {
   bool frameLandSea_ = false;
   /// The open-sea map on its texture unit (made on first use).
   void bindOpenSeaMap();
-  /// Enables the scissor test on globeScissor's box (when setGlobeScissor is on).
-  void scissorToGlobe(const geo::CameraView& view, const FrameInput& f);
+  /// Enables the scissor test on globeScissor's box (when setGlobeScissor is on); the box (the
+  /// whole frame without it).
+  std::array<int, 4> scissorToGlobe(const geo::CameraView& view, const FrameInput& f);
+  /// Above the ceiling where the land mask decides the coast: the blocks of pixels that are
+  /// wholly land, sea or open sea (render/GlobeBlocks) get their stencil count and depth from
+  /// drawBlockFill, the per-pixel classifying draws cover the rest, those of the sky without
+  /// the land's and the sea's tests. Uploads this frame's triangles to blocksBuffer_ and sets
+  /// blockRanges_; false without blocks (one triangle over the frame, per pixel).
+  bool uploadClassifyingBlocks(const geo::CameraView& view, const FrameInput& f, const std::array<int, 4>& box,
+                               bool grid);
+  void drawBlockFill(const geo::CameraView& view, const FrameInput& f);
+  gl::Buffer blocksBuffer_;
+  gl::VertexArray blocksVao_;
+  /// First vertex and count in blocksBuffer_ of each kind of block.
+  struct BlockRanges {
+    std::pair<int, int> perPixel, miss;
+    std::array<std::pair<int, int>, 3> fills;  ///< land, sea, open sea
+  };
+  BlockRanges blockRanges_{};
+  std::array<int, 5> blockCounts_{};
+  bool blocksOn_ = true;
+  /// The land mask's pyramid (data::LandMaskPyramid), made on a helper thread from the
+  /// constructor on.
+  std::future<std::unique_ptr<data::LandMaskPyramid>> maskPyramidFuture_;
+  std::unique_ptr<data::LandMaskPyramid> maskPyramid_;
   const gl::Program& globeProgram(bool behind, int variant);
   /// Below the grid's ceiling: the sky into skyLow_, one texel per kSkyLowTexelRad of view (at
   /// most kSkyLowMaxFactor pixels a side), for the sky part to read (globe.frag's

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <random>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -17,6 +18,7 @@
 #include "data/Elevation.hpp"
 #include "data/GeoRaster.hpp"
 #include "data/LandMask.hpp"
+#include "data/LandMaskPyramid.hpp"
 #include "terrain/Heightfield.hpp"
 
 using og::data::LandMask;
@@ -247,4 +249,82 @@ TEST(LandMask, BadBitPngIsAnInputErrorNamingTheFile) {
   const auto grid = og::data::parseWorldFile("0.5 0 0 -0.5 -179.75 89.75", "w.pgw");
   EXPECT_DOUBLE_EQ(grid.westDeg, -180.0);
   EXPECT_DOUBLE_EQ(grid.northDeg, 90.0);
+}
+
+// The pyramid's answer for a rectangle holds what a scan of its cells finds (a refined cell is
+// both), at every size, across the antimeridian and at the poles' clamped rows.
+TEST(LandMaskPyramid, RectanglesHoldWhatTheirCellsHold) {
+  const og::data::LandMask& mask = og::data::defaultLandMask();
+  const og::data::LandMaskPyramid pyramid(mask);
+  using Content = og::data::LandMaskPyramid::Content;
+  auto scan = [&](int c0, int c1, int r0, int r1) {
+    int bits = 0;
+    for (int r = std::clamp(r0, 0, mask.height() - 1); r <= std::clamp(r1, 0, mask.height() - 1); ++r)
+      for (int c = c0; c <= c1; ++c) {
+        const int column = ((c % mask.width()) + mask.width()) % mask.width();
+        bits |= mask.refined(column, r) ? 3 : (mask.cell(column, r) ? 2 : 1);
+      }
+    return static_cast<Content>(bits);
+  };
+  std::mt19937 rng(7);
+  int counts[4] = {0, 0, 0, 0};
+  int agree = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const int span = 1 << std::uniform_int_distribution<int>(0, 9)(rng);
+    const int w = std::uniform_int_distribution<int>(1, span)(rng), h = std::uniform_int_distribution<int>(1, span)(rng);
+    // Around the coasts of Europe and West Africa, the antimeridian and the poles.
+    const int area = i % 3;
+    const int c0 = area == 1 ? std::uniform_int_distribution<int>(mask.width() - 40, mask.width() + 10)(rng)
+                             : std::uniform_int_distribution<int>(4800, 6000)(rng);
+    const int r0 = area == 2 ? std::uniform_int_distribution<int>(-5, 30)(rng) + (i % 2 ? mask.height() - 30 : 0)
+                             : std::uniform_int_distribution<int>(3000, 4000)(rng);
+    const Content expected = scan(c0, c0 + w - 1, r0, r0 + h - 1);
+    const Content got = pyramid.cells(c0, c0 + w - 1, r0, r0 + h - 1);
+    // Never less than the cells hold (the coarse levels see up to their own cell's size around
+    // the rectangle); exact up to 32 x 32 cells.
+    ASSERT_EQ(static_cast<int>(got) & static_cast<int>(expected), static_cast<int>(expected))
+        << "columns " << c0 << "+" << w << ", rows " << r0 << "+" << h;
+    if (std::max(w, h) <= 32) {
+      ASSERT_EQ(got, expected) << "columns " << c0 << "+" << w << ", rows " << r0 << "+" << h;
+    }
+    ++counts[static_cast<int>(expected)];
+    agree += got == expected ? 1 : 0;
+  }
+  // All three answers were asked for, and most answered exactly.
+  EXPECT_GT(counts[1], 100);
+  EXPECT_GT(counts[2], 100);
+  EXPECT_GT(counts[3], 100);
+  EXPECT_GT(agree, 2400);
+}
+
+// The fine level's rectangles: exactly what their fine cells hold (a refined cell's block, any
+// other cell's class), across the antimeridian too.
+TEST(LandMaskPyramid, FineRectanglesHoldExactlyTheirFineCells) {
+  const og::data::LandMask& mask = og::data::defaultLandMask();
+  ASSERT_TRUE(mask.hasFineLevel());
+  const og::data::LandMaskPyramid pyramid(mask);
+  constexpr int n = og::data::LandMask::kFinePerCell;
+  const int fineColumns = mask.width() * n;
+  auto fineLand = [&](int fx, int fy) {
+    const int wrapped = ((fx % fineColumns) + fineColumns) % fineColumns;
+    const int cx = wrapped / n, cy = fy / n;
+    return ((mask.block(cx, cy) >> (8 * (fy % n) + wrapped % n)) & 1u) != 0;
+  };
+  std::mt19937 rng(11);
+  int counts[4] = {0, 0, 0, 0};
+  for (int i = 0; i < 4000; ++i) {
+    const int w = std::uniform_int_distribution<int>(1, 24)(rng), h = std::uniform_int_distribution<int>(1, 24)(rng);
+    const int fc0 = i % 4 == 0 ? std::uniform_int_distribution<int>(fineColumns - 30, fineColumns + 10)(rng)
+                               : std::uniform_int_distribution<int>(5300 * n, 5500 * n)(rng);  // Gibraltar's coasts
+    const int fr0 = std::uniform_int_distribution<int>(3750 * n, 3800 * n)(rng);
+    int bits = 0;
+    for (int fy = fr0; fy < fr0 + h; ++fy)
+      for (int fx = fc0; fx < fc0 + w; ++fx) bits |= fineLand(fx, fy) ? 2 : 1;
+    ASSERT_EQ(static_cast<int>(pyramid.fineCells(fc0, fc0 + w - 1, fr0, fr0 + h - 1)), bits)
+        << "fine columns " << fc0 << "+" << w << ", rows " << fr0 << "+" << h;
+    ++counts[bits];
+  }
+  EXPECT_GT(counts[1], 100);
+  EXPECT_GT(counts[2], 100);
+  EXPECT_GT(counts[3], 100);
 }

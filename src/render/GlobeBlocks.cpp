@@ -1,0 +1,175 @@
+#include "render/GlobeBlocks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "geo/Wgs84.hpp"
+
+namespace og::render {
+namespace {
+
+// A block corner's ray on the ellipsoid: hit, geodetic normal, latitude and longitude
+// (degrees), cosine of incidence.
+struct CornerHit {
+  bool hit = false;
+  glm::dvec3 normal{0.0};
+  double latDeg = 0.0, lonDeg = 0.0, cosIncidence = 0.0;
+  double distanceM = 0.0;
+};
+
+CornerHit cornerHit(const geo::CameraView& view, double ndcX, double ndcY) {
+  CornerHit c;
+  const glm::dvec3 dir = view.rayDirection(ndcX, ndcY);
+  const std::optional<double> t = geo::intersectEllipsoid(view.positionEcef, dir);
+  if (!t) return c;
+  const glm::dvec3 p = view.positionEcef + *t * dir;
+  constexpr double a2 = geo::kWgs84SemiMajorM * geo::kWgs84SemiMajorM;
+  constexpr double b2 = geo::kWgs84SemiMinorM * geo::kWgs84SemiMinorM;
+  c.hit = true;
+  c.normal = glm::normalize(glm::dvec3(p.x / a2, p.y / a2, p.z / b2));
+  c.latDeg = std::asin(std::clamp(c.normal.z, -1.0, 1.0)) * (180.0 / std::numbers::pi);
+  c.lonDeg = std::atan2(c.normal.y, c.normal.x) * (180.0 / std::numbers::pi);
+  c.cosIncidence = -glm::dot(c.normal, dir);
+  c.distanceM = *t;
+  return c;
+}
+
+// Whether every point of the block (its four corners' hull) lies in the open deep sea: within
+// 0.9 of the clearance of the 1° cell under its centre normal (the per-pixel test's margin).
+bool blockInOpenSea(const std::array<const CornerHit*, 4>& corners, const OpenSeaMap& openSea) {
+  glm::dvec3 centre{0.0};
+  for (const CornerHit* c : corners) centre += c->normal;
+  centre = glm::normalize(centre);
+  const double lat = std::asin(std::clamp(centre.z, -1.0, 1.0)) * (180.0 / std::numbers::pi);
+  const double lon = std::atan2(centre.y, centre.x) * (180.0 / std::numbers::pi);
+  const int row = std::clamp(static_cast<int>(std::floor(lat + 90.0)), 0, OpenSeaMap::kHeight - 1);
+  const int col = std::clamp(static_cast<int>(std::floor(lon + 180.0)), 0, OpenSeaMap::kWidth - 1);
+  const double clearance = openSea.clearanceRad[static_cast<std::size_t>(row) * OpenSeaMap::kWidth + static_cast<std::size_t>(col)];
+  if (clearance <= 0.0) return false;
+  for (const CornerHit* c : corners)
+    if (glm::dot(c->normal, centre) <= std::cos(0.9 * clearance)) return false;
+  return true;
+}
+
+// The class the mask gives every point of the box (degrees) `lo` ... `hi` widened by `reach`
+// cells of `cellDeg` (columns from the mask's west edge, rows from its south edge), or Both.
+data::LandMaskPyramid::Content boxContent(const data::LandMaskPyramid& pyramid, glm::dvec2 lo, glm::dvec2 hi,
+                                          double cellDeg, bool fine) {
+  const data::LandMask& mask = pyramid.mask();
+  const int c0 = static_cast<int>(std::floor((lo.y - mask.westDeg()) / cellDeg)) - 1;
+  const int c1 = static_cast<int>(std::floor((hi.y - mask.westDeg()) / cellDeg)) + 1;
+  const int r0 = static_cast<int>(std::floor((lo.x - mask.southDeg()) / cellDeg)) - 1;
+  const int r1 = static_cast<int>(std::floor((hi.x - mask.southDeg()) / cellDeg)) + 1;
+  return fine ? pyramid.fineCells(c0, c1, r0, r1) : pyramid.cells(c0, c1, r0, r1);
+}
+
+GlobeBlockClass classifyBlock(const std::array<const CornerHit*, 4>& corners, const data::LandMaskPyramid& pyramid,
+                              const OpenSeaMap* openSea, bool missOk, double pixelRad) {
+  int misses = 0;
+  double minCos = 1.0;
+  for (const CornerHit* c : corners) {
+    misses += c->hit ? 0 : 1;
+    minCos = std::min(minCos, c->hit ? c->cosIncidence : 0.0);
+  }
+  if (misses == 4 && missOk) return GlobeBlockClass::Miss;
+  for (const CornerHit* c : corners)
+    if (!c->hit || c->cosIncidence < kMinCosIncidence || std::abs(c->latDeg) > 88.0) return GlobeBlockClass::PerPixel;
+  // The corners' box, longitudes unwrapped next to the first corner's.
+  double latLo = 90.0, latHi = -90.0, lonLo = 1e9, lonHi = -1e9;
+  for (const CornerHit* c : corners) {
+    double lon = c->lonDeg;
+    lon += lon - corners[0]->lonDeg > 180.0 ? -360.0 : (corners[0]->lonDeg - lon > 180.0 ? 360.0 : 0.0);
+    latLo = std::min(latLo, c->latDeg);
+    latHi = std::max(latHi, c->latDeg);
+    lonLo = std::min(lonLo, lon);
+    lonHi = std::max(lonHi, lon);
+  }
+  if (lonHi - lonLo > 30.0 || latHi - latLo > 30.0) return GlobeBlockClass::PerPixel;
+  // Widened by a quarter each way (the footprint's edges bow between the corners) and by the
+  // B-spline's reach: a point's fraction reads the 3 x 3 cells around its nearest centre, the
+  // centre of the cell it lies in (the fine level's 3 x 3 fine cells lie in those cells too).
+  const data::LandMask& mask = pyramid.mask();
+  const glm::dvec2 margin = 0.25 * glm::dvec2(latHi - latLo, lonHi - lonLo);
+  const glm::dvec2 lo = glm::dvec2(latLo, lonLo) - margin, hi = glm::dvec2(latHi, lonHi) + margin;
+  data::LandMaskPyramid::Content content = boxContent(pyramid, lo, hi, mask.cellDeg(), false);
+  // Where every pixel's footprint is under a fine cell (globe.frag: the fine level's weight is 1
+  // up to one, with a tenth of margin), the fine cells alone decide, up to 8 times closer to
+  // the coast.
+  const double fineCellDeg = mask.cellDeg() / data::LandMask::kFinePerCell;
+  double footprintDeg = 0.0;
+  for (const CornerHit* c : corners)
+    footprintDeg = std::max(footprintDeg, c->distanceM * pixelRad / (geo::kWgs84SemiMajorM * std::max(c->cosIncidence, 0.2)));
+  footprintDeg *= 180.0 / std::numbers::pi;
+  if (content == data::LandMaskPyramid::Content::Both && mask.hasFineLevel() && footprintDeg < 0.9 * fineCellDeg &&
+      hi.y - lo.y < 64.0 * fineCellDeg && hi.x - lo.x < 64.0 * fineCellDeg)
+    content = boxContent(pyramid, lo, hi, fineCellDeg, true);
+  switch (content) {
+    case data::LandMaskPyramid::Content::Land:
+      return GlobeBlockClass::Land;
+    case data::LandMaskPyramid::Content::Water:
+      return openSea != nullptr && minCos >= kMinCosIncidenceOpenSea && blockInOpenSea(corners, *openSea)
+                 ? GlobeBlockClass::OpenSea
+                 : GlobeBlockClass::Sea;
+    case data::LandMaskPyramid::Content::Both:
+      break;
+  }
+  return GlobeBlockClass::PerPixel;
+}
+
+}  // namespace
+
+GlobeBlocks classifyGlobeBlocks(const geo::CameraView& view, int width, int height, const std::array<int, 4>& rect,
+                                const data::LandMaskPyramid& mask, const OpenSeaMap* openSea) {
+  GlobeBlocks b;
+  b.rect = rect;
+  b.columns = (rect[2] + kGlobeBlockPx - 1) / kGlobeBlockPx;
+  b.rows = (rect[3] + kGlobeBlockPx - 1) / kGlobeBlockPx;
+  // The corners, shared between neighbouring blocks.
+  const int cornerColumns = b.columns + 1;
+  std::vector<CornerHit> corners(static_cast<std::size_t>(cornerColumns) * static_cast<std::size_t>(b.rows + 1));
+  for (int j = 0; j <= b.rows; ++j)
+    for (int i = 0; i <= b.columns; ++i) {
+      const int x = rect[0] + std::min(i * kGlobeBlockPx, rect[2]), y = rect[1] + std::min(j * kGlobeBlockPx, rect[3]);
+      corners[static_cast<std::size_t>(j) * static_cast<std::size_t>(cornerColumns) + static_cast<std::size_t>(i)] =
+          cornerHit(view, 2.0 * x / width - 1.0, 2.0 * y / height - 1.0);
+    }
+  // The ellipsoid's outline, a circle of angular radius asin(a / |eye|) or more, bulges by
+  // r (1 - cos(half a block's angle at its centre)) between two corners: under 0.03 pixels
+  // from a radius of 64 pixels, where a sample lies at least 0.125 pixels inside its block.
+  const double pixelRad = 2.0 * std::tan(0.5 * view.verticalFovRad) / height;
+  const bool missOk = std::asin(std::min(1.0, geo::kWgs84SemiMinorM / glm::length(view.positionEcef))) > 64.0 * pixelRad;
+  b.classes.resize(static_cast<std::size_t>(b.columns) * static_cast<std::size_t>(b.rows));
+  for (int j = 0; j < b.rows; ++j)
+    for (int i = 0; i < b.columns; ++i) {
+      auto at = [&](int di, int dj) {
+        return &corners[static_cast<std::size_t>(j + dj) * static_cast<std::size_t>(cornerColumns) + static_cast<std::size_t>(i + di)];
+      };
+      b.classes[static_cast<std::size_t>(j) * static_cast<std::size_t>(b.columns) + static_cast<std::size_t>(i)] =
+          classifyBlock({at(0, 0), at(1, 0), at(0, 1), at(1, 1)}, mask, openSea, missOk, pixelRad);
+    }
+  return b;
+}
+
+std::vector<float> GlobeBlocks::triangles(GlobeBlockClass c, int width, int height) const {
+  std::vector<float> v;
+  auto ndcX = [&](int x) { return static_cast<float>(2.0 * std::min(x, rect[0] + rect[2]) / width - 1.0); };
+  auto ndcY = [&](int y) { return static_cast<float>(2.0 * std::min(y, rect[1] + rect[3]) / height - 1.0); };
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns;) {
+      if (classes[static_cast<std::size_t>(j) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(i)] != c) {
+        ++i;
+        continue;
+      }
+      int end = i + 1;
+      while (end < columns && classes[static_cast<std::size_t>(j) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(end)] == c) ++end;
+      const float x0 = ndcX(rect[0] + i * kGlobeBlockPx), x1 = ndcX(rect[0] + end * kGlobeBlockPx);
+      const float y0 = ndcY(rect[1] + j * kGlobeBlockPx), y1 = ndcY(rect[1] + (j + 1) * kGlobeBlockPx);
+      v.insert(v.end(), {x0, y0, x1, y0, x1, y1, x0, y0, x1, y1, x0, y1});
+      i = end;
+    }
+  return v;
+}
+
+}  // namespace og::render

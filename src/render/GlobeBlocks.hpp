@@ -1,0 +1,53 @@
+#pragma once
+// The globe's classifying draw above the grid's ceiling by blocks of pixels (GlobeRenderer,
+// render/globe.frag's GLOBE_PART_CLASSIFY). Per pixel that draw traces four rays and tests each
+// sample against the land mask (a fifth to half of the globe pass on llvmpipe); most pixels lie
+// in blocks that are wholly land or wholly sea, which the CPU can tell for a whole block from
+// its corners and the mask's pyramid (data::LandMaskPyramid). Those blocks get their class by a
+// draw that only writes the depth; the per-pixel draw covers the rest (coasts, the limb, the
+// sky, grazing views).
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "data/LandMaskPyramid.hpp"
+#include "geo/Camera.hpp"
+#include "render/OpenSeaMap.hpp"
+
+namespace og::render {
+
+/// A block's side, pixels.
+inline constexpr int kGlobeBlockPx = 8;
+
+/// What a block's every pixel is, as the per-pixel classifying draw would class it: PerPixel
+/// where the CPU cannot tell (a coast, the limb, a grazing view), else land, sea, or open deep
+/// sea (render/OpenSeaMap) for all four samples of every pixel; Miss where its corners all miss
+/// the ellipsoid (the sky, space: classed per pixel, but without the land's and the sea's
+/// tests, which no sample there needs).
+enum class GlobeBlockClass : std::uint8_t { PerPixel, Land, Sea, OpenSea, Miss };
+
+struct GlobeBlocks {
+  std::array<int, 4> rect{0, 0, 0, 0};  ///< pixels covered: x, y (lower-left origin), width, height
+  int columns = 0, rows = 0;            ///< blocks across rect (the last ones may be partial)
+  std::vector<GlobeBlockClass> classes;  ///< row-major from rect's lower-left block
+
+  /// Triangles (x, y in NDC, 6 vertices a quad) over the blocks of class c, a row's runs of
+  /// neighbouring blocks merged, for a frame of width × height pixels.
+  [[nodiscard]] std::vector<float> triangles(GlobeBlockClass c, int width, int height) const;
+};
+
+/// Classes the blocks of kGlobeBlockPx² pixels of `rect` (x, y, width, height; lower-left
+/// origin) in a frame of width × height pixels seen by `view`. A block is land or sea when all
+/// its corners hit the ellipsoid at a cosine of incidence of at least kMinCosIncidence and the
+/// mask's cells within reach of its footprint (its corners' latitude-longitude box, widened by
+/// a quarter and by the B-spline's reach of a cell) are all that class, none refined; open
+/// sea when, besides, its corners' cosine is at least kMinCosIncidenceOpenSea (the per-pixel
+/// test's 0.2 at the pixel centre, with a margin) and they lie within 0.9 of `openSea`'s
+/// clearance of its centre's 1° cell (nullptr: none is). Miss where the ellipsoid's outline
+/// is too round to bulge between two corners onto a sample (a radius over 64 pixels).
+GlobeBlocks classifyGlobeBlocks(const geo::CameraView& view, int width, int height, const std::array<int, 4>& rect,
+                                const data::LandMaskPyramid& mask, const OpenSeaMap* openSea);
+inline constexpr double kMinCosIncidence = 0.1;
+inline constexpr double kMinCosIncidenceOpenSea = 0.25;
+
+}  // namespace og::render

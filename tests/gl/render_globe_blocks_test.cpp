@@ -1,0 +1,143 @@
+// The globe's classifying draw by blocks (render/GlobeBlocks): a block the CPU classes as a
+// whole holds only that class at every sample the per-pixel draw would test, and the picture
+// is the per-pixel classification's.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "data/Elevation.hpp"
+#include "data/LandMask.hpp"
+#include "data/LandMaskPyramid.hpp"
+#include "geo/Sun.hpp"
+#include "geo/Wgs84.hpp"
+#include "gl/Context.hpp"
+#include "io/Image.hpp"
+#include "render/GlobeBlocks.hpp"
+#include "render/GlobeRenderer.hpp"
+#include "support/GlFixtures.hpp"
+
+using namespace og;
+
+namespace {
+
+struct View {
+  const char* name;
+  double lat, lon, h, heading, pitch;
+};
+// Real coasts from above the grid's ceiling: the Strait of Gibraltar from 30 km (the fine
+// level decides), Portugal's coast from 100 km, the Atlantic's limb from 400 km, the Bahama
+// Banks straight down from 300 km (the sea's water column over shallow floors).
+constexpr std::array<View, 4> kViews{{{"gibraltar-30km", 35.6, -5.6, 3.0e4, 0, -30},
+                                      {"portugal-100km", 38.3, -10.5, 1.0e5, 74, -25},
+                                      {"limb-400km", 20, -40, 4.0e5, 90, -15},
+                                      {"bahamas-300km", 24.5, -77.5, 3.0e5, 0, -90}}};
+constexpr int kWidth = 320, kHeight = 180;
+
+render::FrameInput frameOf(const View& v) {
+  render::FrameInput f;
+  f.camera.position = {v.lat, v.lon, v.h};
+  f.camera.headingDeg = v.heading;
+  f.camera.pitchDeg = v.pitch;
+  f.width = kWidth;
+  f.height = kHeight;
+  f.samples = 1;
+  f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 30, 120);
+  return f;
+}
+
+}  // namespace
+
+TEST(GlobeBlocks, FilledBlocksHoldTheirClassAtEverySample) {
+  // Every sample of every pixel of a land (sea) block is land (sea) by the CPU twin of the
+  // per-pixel test (LandMask::landFraction with the pixel's footprint: globe.frag's
+  // samplesSea), and the blocks fill much of each view. (The blocks' margin of a cell around
+  // their footprint matters only for points within a hair of a cell's edge, which no lattice
+  // of test points is likely to hit: this checks the classes, the pyramid and the fine level.)
+  const data::LandMask& mask = data::defaultLandMask();
+  const data::LandMaskPyramid pyramid(mask);
+  for (const View& v : kViews) {
+    const geo::CameraView view = geo::makeCameraView(frameOf(v).camera, kWidth, kHeight);
+    const render::GlobeBlocks blocks =
+        render::classifyGlobeBlocks(view, kWidth, kHeight, {0, 0, kWidth, kHeight}, pyramid, nullptr);
+    const double pixelRad = 2.0 * std::tan(0.5 * view.verticalFovRad) / kHeight;
+    int filled = 0, onGlobe = 0, wrong = 0;
+    for (int by = 0; by < blocks.rows; ++by)
+      for (int bx = 0; bx < blocks.columns; ++bx) {
+        const render::GlobeBlockClass c = blocks.classes[static_cast<std::size_t>(by * blocks.columns + bx)];
+        onGlobe += c == render::GlobeBlockClass::Miss ? 0 : 1;
+        if (c != render::GlobeBlockClass::Land && c != render::GlobeBlockClass::Sea) continue;
+        ++filled;
+        // Its pixels' four samples (globe.frag's rotated grid), their footprint the pixel's.
+        constexpr std::array<std::array<double, 2>, 4> kOffsets{{{-0.125, -0.375}, {0.375, -0.125}, {0.125, 0.375}, {-0.375, 0.125}}};
+        for (int y = by * render::kGlobeBlockPx; y < std::min((by + 1) * render::kGlobeBlockPx, kHeight); ++y)
+          for (int x = bx * render::kGlobeBlockPx; x < std::min((bx + 1) * render::kGlobeBlockPx, kWidth); ++x) {
+            std::array<geo::Geodetic, 4> at{};
+            double footprintDeg = 0.0;
+            for (std::size_t k = 0; k < 4; ++k) {
+              const glm::dvec3 dir = view.rayDirection(2.0 * (x + 0.5 + kOffsets[k][0]) / kWidth - 1.0,
+                                                       2.0 * (y + 0.5 + kOffsets[k][1]) / kHeight - 1.0);
+              const std::optional<double> t = geo::intersectEllipsoid(view.positionEcef, dir);
+              ASSERT_TRUE(t.has_value()) << v.name << " pixel " << x << ", " << y;
+              const glm::dvec3 p = view.positionEcef + *t * dir;
+              at[k] = geo::ecefToGeodetic(p);
+              footprintDeg += 0.25 * *t * pixelRad /
+                              (geo::kWgs84SemiMajorM * std::max(-glm::dot(geo::ellipsoidNormalAt(p), dir), 0.2)) *
+                              (180.0 / std::numbers::pi);
+            }
+            for (const geo::Geodetic& g : at) {
+              const bool land = mask.landFraction(g.latitudeDeg, g.longitudeDeg, footprintDeg) >= 0.5f;
+              wrong += land != (c == render::GlobeBlockClass::Land) ? 1 : 0;
+            }
+          }
+      }
+    EXPECT_EQ(wrong, 0) << v.name;
+    EXPECT_GT(filled, onGlobe / 4) << v.name << ": " << filled << " of " << onGlobe << " blocks on the globe filled";
+  }
+}
+
+TEST(GlobeRender, BlocksClassedOnTheCpuKeepThePicture) {
+  // The same views rendered with the blocks and with every pixel classified on the GPU, by the
+  // one classifying draw and by the draws per step (OCEANGLOBE_STENCIL_EXPORT=0: NVIDIA's
+  // path): the same picture but at single pixels where the two draws' rays round differently
+  // across a coast (the blocks' triangles interpolate the pixel's position in other triangles
+  // than the full-screen one) or where the land/sea split (on with blocks) shades an edge
+  // otherwise.
+  for (int path = 0; path < 2; ++path) {
+    const std::optional<test::ScopedEnv> steps =
+        path == 1 ? std::optional<test::ScopedEnv>(std::in_place, "OCEANGLOBE_STENCIL_EXPORT", "0") : std::nullopt;
+    auto ctx = gl::createHeadlessContext();
+    render::GlobeRenderer r(data::defaultElevation());
+    for (const View& v : kViews) {
+      const std::string name = std::string(v.name) + (path == 1 ? " (draws per step)" : "");
+      const render::FrameInput f = frameOf(v);
+      r.setGlobeBlocks(false);
+      r.render(f);
+      const io::ImageRgba8 reference = r.display();
+      r.setGlobeBlocks(true);
+      r.render(f);
+      const io::ImageRgba8 blocks = r.display();
+      const std::array<int, 5>& counts = r.globeBlockCounts();
+      EXPECT_GT(counts[1] + counts[2] + counts[3], 100) << name << ": the blocks are in use";
+      int over2 = 0, maxDiff = 0;
+      for (std::size_t i = 0; i < blocks.pixels.size(); i += 4) {
+        int d = 0;
+        for (std::size_t c = 0; c < 3; ++c) d = std::max(d, std::abs(int{blocks.pixels[i + c]} - int{reference.pixels[i + c]}));
+        over2 += d > 2 ? 1 : 0;
+        maxDiff = std::max(maxDiff, d);
+      }
+      EXPECT_LE(over2, 3) << name << " (largest difference " << maxDiff << " levels)";
+      if (over2 > 3) {
+        const std::string prefix = std::string(OG_TEST_OUT_DIR) + "/globe_blocks_" + v.name + (path == 1 ? "_steps" : "");
+        io::writePng(prefix + "_off.png", reference);
+        io::writePng(prefix + "_on.png", blocks);
+      }
+    }
+  }
+}
