@@ -199,7 +199,8 @@ struct PixelRays {
 };
 // Which of a pixel's four samples lie on the sea (samples that miss the globe: false), the
 // coast as the pixel's footprint resolves it: the same test as surfaceRadiance's elevationAt
-// (render/elevation.glsl) with the sample's footprint, the land mask's fine blocks fetched once for the four (terrain/landmask.glsl's landFraction4).
+// (render/elevation.glsl) with the sample's footprint, the land mask's fine blocks fetched
+// once for the four (terrain/landmask.glsl's landFraction4).
 bvec4 samplesSea(PixelRays rays) {
   vec2 latLon[4];
   vec4 height, keep;
@@ -374,8 +375,9 @@ void main() {
 #elif GLOBE_PART == GLOBE_PART_BLOCK_FILL
 // Blocks of pixels classed as a whole on the CPU (render/GlobeBlocks, drawn over them by
 // GlobeRenderer::classifyGlobe): every sample of their pixels lies on the land or on the sea,
-// which the stencil's reference value records. This writes the depth the per-pixel draw would
-// (its pixel-centre ray, which hits: the blocks' corners did; pushed back over land).
+// which the stencil's reference value records. This writes the depth of the pixel-centre ray
+// (which hits: the blocks' corners did), pushed back over land as the per-pixel draw does
+// (there by the 2′ mask at the centre; a block the 15″ cells decide by its own class).
 uniform int uBlockLand;  // 1: the blocks are land
 void main() {
   vec3 centreDir = normalize(uForward + vNdc.x * uTanHalfFov.x * uRight + vNdc.y * uTanHalfFov.y * uUp);

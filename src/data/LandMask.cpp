@@ -89,7 +89,7 @@ bool LandMask::cell(int column, int row) const {
 
 float LandMask::landFraction(double latitudeDeg, double longitudeDeg) const {
   // Cell centres at west + (c + 0.5) cell; longitude wraps on a global mask, rows clamp.
-  const bool global = width_ * cellDeg_ >= 359.999;
+  const bool global = this->global();
   double x = (longitudeDeg - westDeg_) / cellDeg_ - 0.5;
   const double y = std::clamp((latitudeDeg - southDeg_) / cellDeg_ - 0.5, 0.0, height_ - 1.0);
   if (global) x = x - width_ * std::floor(x / width_);
@@ -112,7 +112,7 @@ double LandMask::constrainHeightM(double heightM, double latitudeDeg, double lon
 }
 
 void LandMask::setFineLevel(std::vector<std::uint8_t> refinedBits, std::vector<std::uint64_t> blocks) {
-  if (width_ * cellDeg_ < 359.999 || refinedBits.size() != bits_.size())
+  if (!global() || refinedBits.size() != bits_.size())
     throw InternalError("LandMask: a fine level needs a global mask and one bit per cell");
   const int stride = bytesPerRow(), chunks = (stride + 7) / 8;
   refinedBefore_.assign(static_cast<std::size_t>(height_) * static_cast<std::size_t>(chunks), 0);

@@ -64,6 +64,8 @@ class LandMask {
   static constexpr double kEarthAgreement = 0.85;
 
   [[nodiscard]] int width() const { return width_; }
+  /// Whether the mask covers 360° of longitude (its columns wrap).
+  [[nodiscard]] bool global() const { return width_ * cellDeg_ >= 359.999; }
   [[nodiscard]] int height() const { return height_; }
   [[nodiscard]] double westDeg() const { return westDeg_; }
   [[nodiscard]] double southDeg() const { return southDeg_; }

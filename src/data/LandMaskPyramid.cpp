@@ -10,7 +10,7 @@ constexpr std::uint8_t kBoth = static_cast<std::uint8_t>(LandMaskPyramid::Conten
 }  // namespace
 
 LandMaskPyramid::LandMaskPyramid(const LandMask& mask)
-    : mask_(mask), global_(mask.width() * mask.cellDeg() >= 359.999) {
+    : mask_(mask), global_(mask.global()) {
   // The first level from the packed bytes: a byte is 8 cells of a row, one level-3 column.
   const int stride = mask.bytesPerRow();
   const std::vector<std::uint8_t>& land = mask.packedBits();

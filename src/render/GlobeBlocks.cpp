@@ -19,34 +19,36 @@ struct CornerHit {
   double distanceM = 0.0;
 };
 
+// Latitude and longitude (degrees) of a unit geodetic normal.
+glm::dvec2 latLonDegOf(const glm::dvec3& n) {
+  return glm::dvec2(std::asin(std::clamp(n.z, -1.0, 1.0)), std::atan2(n.y, n.x)) * (180.0 / std::numbers::pi);
+}
+
 CornerHit cornerHit(const geo::CameraView& view, double ndcX, double ndcY) {
   CornerHit c;
   const glm::dvec3 dir = view.rayDirection(ndcX, ndcY);
   const std::optional<double> t = geo::intersectEllipsoid(view.positionEcef, dir);
   if (!t) return c;
-  const glm::dvec3 p = view.positionEcef + *t * dir;
-  constexpr double a2 = geo::kWgs84SemiMajorM * geo::kWgs84SemiMajorM;
-  constexpr double b2 = geo::kWgs84SemiMinorM * geo::kWgs84SemiMinorM;
   c.hit = true;
-  c.normal = glm::normalize(glm::dvec3(p.x / a2, p.y / a2, p.z / b2));
-  c.latDeg = std::asin(std::clamp(c.normal.z, -1.0, 1.0)) * (180.0 / std::numbers::pi);
-  c.lonDeg = std::atan2(c.normal.y, c.normal.x) * (180.0 / std::numbers::pi);
+  c.normal = geo::ellipsoidNormalAt(view.positionEcef + *t * dir);
+  const glm::dvec2 latLon = latLonDegOf(c.normal);
+  c.latDeg = latLon.x;
+  c.lonDeg = latLon.y;
   c.cosIncidence = -glm::dot(c.normal, dir);
   c.distanceM = *t;
   return c;
 }
 
 // Whether every point of the block (its four corners' hull) lies in the open deep sea: within
-// 0.9 of the clearance of the 1° cell under its centre normal (the per-pixel test's margin).
+// 0.9 of the clearance of the 1° cell under its mean normal (the per-pixel test's margin). Not
+// the per-pixel test itself (each pixel's own cell and centre), but as strict: a block it
+// passes is open deep sea at every pixel, which either part shades alike.
 bool blockInOpenSea(const std::array<const CornerHit*, 4>& corners, const OpenSeaMap& openSea) {
   glm::dvec3 centre{0.0};
   for (const CornerHit* c : corners) centre += c->normal;
   centre = glm::normalize(centre);
-  const double lat = std::asin(std::clamp(centre.z, -1.0, 1.0)) * (180.0 / std::numbers::pi);
-  const double lon = std::atan2(centre.y, centre.x) * (180.0 / std::numbers::pi);
-  const int row = std::clamp(static_cast<int>(std::floor(lat + 90.0)), 0, OpenSeaMap::kHeight - 1);
-  const int col = std::clamp(static_cast<int>(std::floor(lon + 180.0)), 0, OpenSeaMap::kWidth - 1);
-  const double clearance = openSea.clearanceRad[static_cast<std::size_t>(row) * OpenSeaMap::kWidth + static_cast<std::size_t>(col)];
+  const glm::dvec2 latLon = latLonDegOf(centre);
+  const double clearance = openSea.clearanceAt(latLon.x, latLon.y);
   if (clearance <= 0.0) return false;
   for (const CornerHit* c : corners)
     if (glm::dot(c->normal, centre) <= std::cos(0.9 * clearance)) return false;
@@ -135,11 +137,12 @@ GlobeBlocks classifyGlobeBlocks(const geo::CameraView& view, int width, int heig
       corners[static_cast<std::size_t>(j) * static_cast<std::size_t>(cornerColumns) + static_cast<std::size_t>(i)] =
           cornerHit(view, 2.0 * x / width - 1.0, 2.0 * y / height - 1.0);
     }
-  // The ellipsoid's outline, a circle of angular radius asin(a / |eye|) or more, bulges by
-  // r (1 - cos(half a block's angle at its centre)) between two corners: under 0.03 pixels
-  // from a radius of 64 pixels, where a sample lies at least 0.125 pixels inside its block.
+  // The ellipsoid's outline, a circle of r pixels (angular radius asin(b / |eye|) or more),
+  // bulges by r (1 - cos(4 / r)) between two corners 8 pixels apart: 0.06 pixels from r = 128,
+  // where a sample lies at least 0.125 pixels inside its block. (A sample that still hit would
+  // be classed per pixel without the land's and the sea's tests: the surface part's count.)
   const double pixelRad = 2.0 * std::tan(0.5 * view.verticalFovRad) / height;
-  const bool missOk = std::asin(std::min(1.0, geo::kWgs84SemiMinorM / glm::length(view.positionEcef))) > 64.0 * pixelRad;
+  const bool missOk = std::asin(std::min(1.0, geo::kWgs84SemiMinorM / glm::length(view.positionEcef))) > 128.0 * pixelRad;
   b.classes.resize(static_cast<std::size_t>(b.columns) * static_cast<std::size_t>(b.rows));
   for (int j = 0; j < b.rows; ++j)
     for (int i = 0; i < b.columns; ++i) {
@@ -156,14 +159,17 @@ std::vector<float> GlobeBlocks::triangles(GlobeBlockClass c, int width, int heig
   std::vector<float> v;
   auto ndcX = [&](int x) { return static_cast<float>(2.0 * std::min(x, rect[0] + rect[2]) / width - 1.0); };
   auto ndcY = [&](int y) { return static_cast<float>(2.0 * std::min(y, rect[1] + rect[3]) / height - 1.0); };
+  auto classAt = [&](int i, int j) {
+    return classes[static_cast<std::size_t>(j) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(i)];
+  };
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < columns;) {
-      if (classes[static_cast<std::size_t>(j) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(i)] != c) {
+      if (classAt(i, j) != c) {
         ++i;
         continue;
       }
       int end = i + 1;
-      while (end < columns && classes[static_cast<std::size_t>(j) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(end)] == c) ++end;
+      while (end < columns && classAt(end, j) == c) ++end;
       const float x0 = ndcX(rect[0] + i * kGlobeBlockPx), x1 = ndcX(rect[0] + end * kGlobeBlockPx);
       const float y0 = ndcY(rect[1] + j * kGlobeBlockPx), y1 = ndcY(rect[1] + (j + 1) * kGlobeBlockPx);
       v.insert(v.end(), {x0, y0, x1, y0, x1, y1, x0, y0, x1, y1, x0, y1});

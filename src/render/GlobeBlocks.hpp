@@ -44,7 +44,7 @@ struct GlobeBlocks {
 /// sea when, besides, its corners' cosine is at least kMinCosIncidenceOpenSea (the per-pixel
 /// test's 0.2 at the pixel centre, with a margin) and they lie within 0.9 of `openSea`'s
 /// clearance of its centre's 1° cell (nullptr: none is). Miss where the ellipsoid's outline
-/// is too round to bulge between two corners onto a sample (a radius over 64 pixels).
+/// is too round to bulge between two corners onto a sample (a radius over 128 pixels).
 GlobeBlocks classifyGlobeBlocks(const geo::CameraView& view, int width, int height, const std::array<int, 4>& rect,
                                 const data::LandMaskPyramid& mask, const OpenSeaMap* openSea);
 inline constexpr double kMinCosIncidence = 0.1;

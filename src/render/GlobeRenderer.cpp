@@ -174,6 +174,7 @@ GlobeRenderer::GlobeRenderer(std::shared_ptr<const data::LatLonGrid> layer,
   openSeaBlockedByLayer_ = blocked.get();
   stage.reset();
   maxSamples_ = gl::maxSamples(GL_RGBA32F);
+  blocksOn_ = gl::driverProfile().software;
   gl::checkErrors("GlobeRenderer setup");
 }
 
@@ -301,7 +302,8 @@ void GlobeRenderer::render(const FrameInput& f) {
 
 const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
   // Sets of variants: above 20 km with the aerial table, without it, below 20 km.
-  const int set = behind ? 2 : aerialTableFrame_ && variant > kClassifyExportLandSea ? 0 : 1;  // (classifying: no table)
+  const bool tableReader = variant > kClassifyExportLandSea && variant != kBlockFill;  // (classifying: no table)
+  const int set = behind ? 2 : aerialTableFrame_ && tableReader ? 0 : 1;
   gl::Program& p = globePrograms_[static_cast<std::size_t>(set * kGlobeVariants + variant)];
   if (p.id() == 0) {
     // Variants 0-5: GLOBE_PART_CLASSIFY (4) with its step; 6: all steps in one draw; 7-9: the
@@ -314,6 +316,7 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
                                                    : "GLOBE_CLASSIFY_STEP " + std::to_string(variant));
       if (variant == kClassifyExportLandSea) defines.emplace_back("GLOBE_LAND_SEA");
     } else if (variant == kBlockFill) {
+      defines.emplace_back("GLOBE_PART 9");
     } else if (variant == kSkyLowPass) {
       defines.emplace_back("GLOBE_PART 8");
     } else if (variant == kSkyLowPart) {
@@ -324,7 +327,6 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
     }
     if (behind) defines.emplace_back("GLOBE_BEHIND");
     if (set == 0) defines.emplace_back("AERIAL_TABLE");
-    if (variant == kBlockFill) defines.emplace_back("GLOBE_PART 9");
     // Above the ceiling the classifying draws cover blocks of pixels (render/GlobeBlocks).
     const bool blocks = !behind && (variant <= kClassifyExportLandSea || variant == kBlockFill);
     p = gl::Program({{GL_VERTEX_SHADER, blocks ? "render/blocks.vert" : "render/fullscreen.vert"},
@@ -402,7 +404,7 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
     }
     glDrawArrays(GL_TRIANGLES, blockRanges_.miss.first, blockRanges_.miss.second);
   }
-  if (!grid) drawBlockFill(view, f);
+  if (blocks) drawBlockFill(view, f);
   glBindVertexArray(emptyVao_.id());
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(grid ? GL_FALSE : GL_TRUE);  // as the caller had it
@@ -425,9 +427,7 @@ bool GlobeRenderer::landSeaSplitPays(const geo::CameraView& view) const {
       if (!t) continue;
       ++hits;
       const geo::Geodetic g = geo::ecefToGeodetic(view.positionEcef + *t * dir);
-      const int row = std::clamp(static_cast<int>(std::floor(g.latitudeDeg + 90.0)), 0, OpenSeaMap::kHeight - 1);
-      const int col = std::clamp(static_cast<int>(std::floor(g.longitudeDeg + 180.0)), 0, OpenSeaMap::kWidth - 1);
-      open += openSeaMap_->clearanceRad[static_cast<std::size_t>(row) * OpenSeaMap::kWidth + static_cast<std::size_t>(col)] > 0.0f ? 1 : 0;
+      open += openSeaMap_->clearanceAt(g.latitudeDeg, g.longitudeDeg) > 0.0f ? 1 : 0;
     }
   return 2 * open < hits;
 }
@@ -493,9 +493,10 @@ bool GlobeRenderer::uploadClassifyingBlocks(const geo::CameraView& view, const F
   return blocks;
 }
 
-// The blocks classed on the CPU: the stencil count the per-pixel draws would reach there (the
-// parts' numbering: 3 the surface, then the land 4, the sea 5 and the open sea 6 where the
-// frame splits them off) and the depth (globe.frag's GLOBE_PART_BLOCK_FILL).
+// The blocks classed on the CPU: their class's stencil count (the parts' numbering: 3 the
+// surface, then the land 4, the sea 5 and the open sea 6 where the frame splits them off; the
+// per-pixel draws' own but where the CPU's open-sea test, as strict, says sea) and the depth
+// (globe.frag's GLOBE_PART_BLOCK_FILL).
 void GlobeRenderer::drawBlockFill(const geo::CameraView& view, const FrameInput& f) {
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   glDepthMask(GL_TRUE);
@@ -717,9 +718,11 @@ std::vector<float> GlobeRenderer::viewDistance() const {
   std::vector<float> d = depth();
   const int w = hdr_.width, h = hdr_.height;
   const double tanY = std::tan(0.5 * lastView_.verticalFovRad), tanX = tanY * lastView_.aspect;
-  // Above the grid's ceiling the globe pass's depth stands kGlobeDepthPushM behind the
-  // ellipsoid: nothing else lies that deep there (the terrain keeps no fragment under the sea
-  // up there, the deepest land is ~0.4 km under it, a tile's chord ~0.5 km).
+  // Above the grid's ceiling the globe pass's depth over land stands kGlobeDepthPushM behind the
+  // ellipsoid; the terrain keeps no fragment under the sea up there, the deepest land is ~0.4
+  // km under it and a tile's chord ~0.5 km, which puts a terrain pixel half the push behind the
+  // ellipsoid only at grazing incidence near the limb (a tile's skirt there too): those read
+  // the ellipsoid's distance, some kilometres short at a thousand.
   const bool globeDepthPushed = lastView_.position.heightM >= kOceanGridMaxHeightM;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {

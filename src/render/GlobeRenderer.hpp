@@ -199,7 +199,8 @@ class GlobeRenderer {
   void setGlobeScissor(bool on) { scissorGlobe_ = on; }
   /// Above 20 km, blocks of pixels that are wholly land or wholly sea are classed on the CPU
   /// (render/GlobeBlocks) and spared the per-pixel classifying draw; false classes every pixel
-  /// on the GPU (the tests' reference).
+  /// on the GPU (the tests' reference). On by default on software renderers (llvmpipe), where
+  /// the per-pixel classification was a third of the globe pass; a GPU's is not measured yet.
   void setGlobeBlocks(bool on) { blocksOn_ = on; }
   /// The last frame's blocks of each GlobeBlockClass (in its order; all 0 without blocks).
   [[nodiscard]] const std::array<int, 5>& globeBlockCounts() const { return blockCounts_; }
@@ -252,7 +253,8 @@ class GlobeRenderer {
   /// the split pays): their classifying step costs four elevation lookups a pixel, which a
   /// view mostly of the open deep sea (the limb over the Atlantic) does not win back. From an
   /// 8 x 8 lattice of rays on the CPU: fewer than half of those that hit the globe land in open
-  /// sea cells (render/OpenSeaMap). Set by classifyGlobe, read by shadeGlobe.
+  /// sea cells (render/OpenSeaMap). Set by classifyGlobe, read by shadeGlobe; always on with
+  /// the blocks (uploadClassifyingBlocks), which class most of those pixels on the CPU.
   [[nodiscard]] bool landSeaSplitPays(const geo::CameraView& view) const;
   bool frameLandSea_ = false;
   /// The open-sea map on its texture unit (made on first use).
@@ -277,7 +279,7 @@ class GlobeRenderer {
   };
   BlockRanges blockRanges_{};
   std::array<int, 5> blockCounts_{};
-  bool blocksOn_ = true;
+  bool blocksOn_ = false;  ///< set from gl::driverProfile().software by the constructor
   /// The land mask's pyramid (data::LandMaskPyramid), made on a helper thread from the
   /// constructor on.
   std::future<std::unique_ptr<data::LandMaskPyramid>> maskPyramidFuture_;

@@ -10,6 +10,12 @@
 #include "gl/ShaderContract.hpp"
 
 namespace og::render {
+
+float OpenSeaMap::clearanceAt(double latitudeDeg, double longitudeDeg) const {
+  const int row = std::clamp(static_cast<int>(std::floor(latitudeDeg + 90.0)), 0, kHeight - 1);
+  const int col = std::clamp(static_cast<int>(std::floor(longitudeDeg + 180.0)), 0, kWidth - 1);
+  return clearanceRad[static_cast<std::size_t>(row) * kWidth + static_cast<std::size_t>(col)];
+}
 namespace {
 constexpr int kW = OpenSeaMap::kWidth;
 constexpr int kH = OpenSeaMap::kHeight;

@@ -29,6 +29,8 @@ struct OpenSeaMap {
   /// the projected grid's sea classes (ocean/water_volume_vertex.glsl's seaClassLandWithin)
   /// leave the coast test and the terrain's shadows out of triangles that far from land.
   std::vector<float> landClearanceRad;
+  /// clearanceRad of the cell holding (latitude, longitude) degrees (clamped to the map).
+  [[nodiscard]] float clearanceAt(double latitudeDeg, double longitudeDeg) const;
 };
 
 /// Cells where `layer` (heights m; NaN = unknown) has a bilinear neighbourhood above

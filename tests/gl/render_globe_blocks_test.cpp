@@ -19,6 +19,7 @@
 #include "geo/Wgs84.hpp"
 #include "gl/Context.hpp"
 #include "io/Image.hpp"
+#include "ocean/WaterOptics.hpp"
 #include "render/GlobeBlocks.hpp"
 #include "render/GlobeRenderer.hpp"
 #include "support/GlFixtures.hpp"
@@ -57,23 +58,35 @@ render::FrameInput frameOf(const View& v) {
 TEST(GlobeBlocks, FilledBlocksHoldTheirClassAtEverySample) {
   // Every sample of every pixel of a land (sea) block is land (sea) by the CPU twin of the
   // per-pixel test (LandMask::landFraction with the pixel's footprint: globe.frag's
-  // samplesSea), and the blocks fill much of each view. (The blocks' margin of a cell around
+  // samplesSea), an open-sea block's on a floor deeper than the water's reach, and the blocks
+  // fill much of each view. (The blocks' margin of a cell around
   // their footprint matters only for points within a hair of a cell's edge, which no lattice
   // of test points is likely to hit: this checks the classes, the pyramid and the fine level.)
   const data::LandMask& mask = data::defaultLandMask();
   const data::LandMaskPyramid pyramid(mask);
+  // The renderer's open-sea map (GlobeRenderer's constructor and bindOpenSeaMap): an open-sea
+  // block's samples must lie on a floor deeper than the water's reach.
+  const data::LatLonGrid& layer = data::defaultElevation();
+  const double reachM = ocean::waterMaxPathM(ocean::jerlovWater(ocean::kDefaultWater).attenuationPerM, ocean::kWaterEpsilon);
+  std::vector<unsigned char> blocked = render::blockedByLayer(layer, 1.5 * reachM);
+  render::addBlockedByMask(mask, blocked);
+  const render::OpenSeaMap openSea = render::makeOpenSeaMap(std::move(blocked));
+  int openBlocks = 0;
   for (const View& v : kViews) {
     const geo::CameraView view = geo::makeCameraView(frameOf(v).camera, kWidth, kHeight);
     const render::GlobeBlocks blocks =
-        render::classifyGlobeBlocks(view, kWidth, kHeight, {0, 0, kWidth, kHeight}, pyramid, nullptr);
+        render::classifyGlobeBlocks(view, kWidth, kHeight, {0, 0, kWidth, kHeight}, pyramid, &openSea);
     const double pixelRad = 2.0 * std::tan(0.5 * view.verticalFovRad) / kHeight;
-    int filled = 0, onGlobe = 0, wrong = 0;
+    int filled = 0, onGlobe = 0, wrong = 0, shallow = 0;
     for (int by = 0; by < blocks.rows; ++by)
       for (int bx = 0; bx < blocks.columns; ++bx) {
         const render::GlobeBlockClass c = blocks.classes[static_cast<std::size_t>(by * blocks.columns + bx)];
         onGlobe += c == render::GlobeBlockClass::Miss ? 0 : 1;
-        if (c != render::GlobeBlockClass::Land && c != render::GlobeBlockClass::Sea) continue;
+        if (c != render::GlobeBlockClass::Land && c != render::GlobeBlockClass::Sea &&
+            c != render::GlobeBlockClass::OpenSea)
+          continue;
         ++filled;
+        openBlocks += c == render::GlobeBlockClass::OpenSea ? 1 : 0;
         // Its pixels' four samples (globe.frag's rotated grid), their footprint the pixel's.
         constexpr std::array<std::array<double, 2>, 4> kOffsets{{{-0.125, -0.375}, {0.375, -0.125}, {0.125, 0.375}, {-0.375, 0.125}}};
         for (int y = by * render::kGlobeBlockPx; y < std::min((by + 1) * render::kGlobeBlockPx, kHeight); ++y)
@@ -94,12 +107,16 @@ TEST(GlobeBlocks, FilledBlocksHoldTheirClassAtEverySample) {
             for (const geo::Geodetic& g : at) {
               const bool land = mask.landFraction(g.latitudeDeg, g.longitudeDeg, footprintDeg) >= 0.5f;
               wrong += land != (c == render::GlobeBlockClass::Land) ? 1 : 0;
+              if (c == render::GlobeBlockClass::OpenSea)
+                shallow += double{layer.sample(g.latitudeDeg, g.longitudeDeg)} > -reachM ? 1 : 0;
             }
           }
       }
     EXPECT_EQ(wrong, 0) << v.name;
+    EXPECT_EQ(shallow, 0) << v.name << ": open-sea blocks over a floor the water shows";
     EXPECT_GT(filled, onGlobe / 4) << v.name << ": " << filled << " of " << onGlobe << " blocks on the globe filled";
   }
+  EXPECT_GT(openBlocks, 50) << "the open sea's blocks (the Atlantic's limb)";
 }
 
 TEST(GlobeRender, BlocksClassedOnTheCpuKeepThePicture) {

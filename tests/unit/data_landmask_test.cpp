@@ -315,7 +315,7 @@ TEST(LandMaskPyramid, FineRectanglesHoldExactlyTheirFineCells) {
   for (int i = 0; i < 4000; ++i) {
     const int w = std::uniform_int_distribution<int>(1, 24)(rng), h = std::uniform_int_distribution<int>(1, 24)(rng);
     const int fc0 = i % 4 == 0 ? std::uniform_int_distribution<int>(fineColumns - 30, fineColumns + 10)(rng)
-                               : std::uniform_int_distribution<int>(5300 * n, 5500 * n)(rng);  // Gibraltar's coasts
+                               : std::uniform_int_distribution<int>(5300 * n, 5500 * n)(rng);  // the Alboran Sea's coasts
     const int fr0 = std::uniform_int_distribution<int>(3750 * n, 3800 * n)(rng);
     int bits = 0;
     for (int fy = fr0; fy < fr0 + h; ++fy)
