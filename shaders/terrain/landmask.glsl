@@ -195,7 +195,8 @@ float landMaskFineWeight(float footprintRad) {
 // `t` (m) times the angle `pixelRad` a pixel subtends, widened at grazing incidence
 // (`cosIncidence`: the view's cosine to the vertical). Every pass that draws a side of the coast
 // (globe, terrain, grid) takes it from this, not from its geometry's screen derivatives (which
-// steep faces, waves and the mesh under the sea inflate), so all see one coast.
+// steep faces, waves and the mesh under the sea inflate), so all see one coast. CPU twin (in
+// degrees): data::LandMask::coastFootprintDeg.
 float coastFootprintRad(float t, float pixelRad, float cosIncidence) {
   return t * pixelRad / (WGS84_A * max(cosIncidence, 0.2));
 }

@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/BenchLines.hpp"
 #include "app/Commands.hpp"
 #include "app/Recording.hpp"
 #include "app/SceneOptions.hpp"
@@ -103,15 +104,10 @@ std::string pixelSharesLine(const char* title, const char* key,
                             const std::vector<std::pair<std::string, std::uint64_t>>& samples, int frameSamples,
                             nlohmann::json& breakdown) {
   if (samples.empty()) return {};
-  std::string line = std::string("    ") + title + " (% of pixels):";
+  std::vector<std::pair<std::string, double>> percents;
+  for (const auto& [name, count] : samples) percents.emplace_back(name, 100.0 * static_cast<double>(count) / frameSamples);
   nlohmann::json shares = nlohmann::json::object();
-  for (const auto& [name, count] : samples) {
-    const double percent = 100.0 * static_cast<double>(count) / frameSamples;
-    shares[name] = percent;
-    char buf[64];
-    std::snprintf(buf, sizeof buf, " %s %.1f", name.c_str(), percent);
-    line += buf;
-  }
+  const std::string line = std::string("    ") + title + " (% of pixels):" + namedValuesLine(percents, shares);
   breakdown[key] = shares;
   return line;
 }
@@ -410,13 +406,8 @@ Run addBenchCommand(CLI::App& parent) {
           nlohmann::json breakdown = nlohmann::json::object();
           const gl::PassTimer::Mode mode = timers[k].mode();
           std::string line = std::string("    passes (") +
-                             (mode == gl::PassTimer::Mode::Queries ? "queries" : mode == gl::PassTimer::Mode::Finish ? "finish" : "process CPU") + "):";
-          for (const auto& [name, passMs] : medianPasses(passes[k])) {
-            breakdown[name] = passMs;
-            char buf[96];
-            std::snprintf(buf, sizeof buf, " %s %.1f", name.c_str(), passMs);
-            line += buf;
-          }
+                             (mode == gl::PassTimer::Mode::Queries ? "queries" : mode == gl::PassTimer::Mode::Finish ? "finish" : "process CPU") + "):" +
+                             namedValuesLine(medianPasses(passes[k]), breakdown);
           report["cases"].back()["passes_ms"] = breakdown;
           if (!o->json) std::printf("%s ms\n", line.c_str());
           const int pixelSamples = w * h * renderers[k]->samples();

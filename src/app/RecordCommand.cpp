@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "app/Aovs.hpp"
+#include "app/BenchLines.hpp"
 #include "app/Commands.hpp"
 #include "app/PathFiles.hpp"
 #include "app/Recording.hpp"
@@ -395,15 +396,12 @@ void printRecordBreakdown(const std::vector<FramePasses>& frames, nlohmann::json
     }
     if (n == 0) continue;
     double total = 0.0;
-    std::string line;
-    nlohmann::json band = nlohmann::json::object();
-    for (const auto& [name, sum] : sums) {
-      band[name] = sum / n;
-      total += sum / n;
-      char buf[96];
-      std::snprintf(buf, sizeof buf, " %s %.1f", name.c_str(), sum / n);
-      line += buf;
+    for (auto& [name, sum] : sums) {
+      sum /= n;  // the mean
+      total += sum;
     }
+    nlohmann::json band = nlohmann::json::object();
+    const std::string line = namedValuesLine(sums, band);
     out[b.name] = {{"frames", n}, {"passes_ms", band}};
     if (!json) std::printf("    %s (%d frames, %.0f ms):%s ms\n", b.name, n, total, line.c_str());
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -10,6 +11,7 @@
 
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "geo/Wgs84.hpp"
 #include "core/StartupTrace.hpp"
 #include "data/BitPng.hpp"
 #include "data/EmbeddedCache.hpp"
@@ -157,6 +159,10 @@ float LandMask::fineFraction(double latitudeDeg, double longitudeDeg) const {
     r = std::clamp(r, 0, rows - 1);
     return ((block(c / n, r / n) >> ((r % n) * n + c % n)) & 1u) != 0;
   }));
+}
+
+double LandMask::coastFootprintDeg(double distanceM, double pixelRad, double cosIncidence) {
+  return distanceM * pixelRad / (geo::kWgs84SemiMajorM * std::max(cosIncidence, 0.2)) * (180.0 / std::numbers::pi);
 }
 
 double LandMask::fineWeight(double footprintDeg) const {

@@ -43,6 +43,11 @@ class LandMask {
   /// The quadratic B-spline of the 3 × 3 fine cells around a point, [0, 1]; a cell of a 2′ cell
   /// that is not refined is that cell's own class. Needs hasFineLevel().
   [[nodiscard]] float fineFraction(double latitudeDeg, double longitudeDeg) const;
+  /// A pixel's footprint on the ground for the coast, degrees of arc: its view distance
+  /// `distanceM` times the angle `pixelRad` a pixel subtends, widened at grazing incidence
+  /// (`cosIncidence`: the view's cosine to the vertical, counted from 0.2). The CPU twin of
+  /// terrain/landmask.glsl's coastFootprintRad, which every pass drawing a side of the coast uses.
+  [[nodiscard]] static double coastFootprintDeg(double distanceM, double pixelRad, double cosIncidence);
   /// The fine level's weight for a footprint (degrees of arc): 1 up to one fine cell, 0 from
   /// three, smooth between; 0 without a fine level.
   [[nodiscard]] double fineWeight(double footprintDeg) const;

@@ -102,8 +102,7 @@ GlobeBlockClass classifyBlock(const std::array<const CornerHit*, 4>& corners, co
   const double fineCellDeg = mask.cellDeg() / data::LandMask::kFinePerCell;
   double footprintDeg = 0.0;
   for (const CornerHit* c : corners)
-    footprintDeg = std::max(footprintDeg, c->distanceM * pixelRad / (geo::kWgs84SemiMajorM * std::max(c->cosIncidence, 0.2)));
-  footprintDeg *= 180.0 / std::numbers::pi;
+    footprintDeg = std::max(footprintDeg, data::LandMask::coastFootprintDeg(c->distanceM, pixelRad, c->cosIncidence));
   if (content == data::LandMaskPyramid::Content::Both && mask.hasFineLevel() && footprintDeg < 0.9 * fineCellDeg &&
       hi.y - lo.y < 64.0 * fineCellDeg && hi.x - lo.x < 64.0 * fineCellDeg)
     content = boxContent(pyramid, lo, hi, fineCellDeg, true);

@@ -381,10 +381,7 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
     glDepthMask(!grid && step == steps.front() ? GL_TRUE : GL_FALSE);
     const gl::Program& classify = globeProgram(grid, step);
     setGlobeUniforms(classify, view, f);
-    if (!grid) {
-      classify.set("uOpenSeaOn", openSeaPart_ ? 1 : 0);
-      classify.set("uGlobeDepthPushM", static_cast<float>(kGlobeDepthPushM));
-    }
+    if (!grid) classify.set("uOpenSeaOn", openSeaPart_ ? 1 : 0);
     classify.use();
     if (grid) {
       glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -399,7 +396,6 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
     if (oneDraw) {
       setGlobeUniforms(sky, view, f);
       sky.set("uOpenSeaOn", 0);
-      sky.set("uGlobeDepthPushM", static_cast<float>(kGlobeDepthPushM));
       sky.use();
     }
     glDrawArrays(GL_TRIANGLES, blockRanges_.miss.first, blockRanges_.miss.second);
@@ -502,7 +498,6 @@ void GlobeRenderer::drawBlockFill(const geo::CameraView& view, const FrameInput&
   glDepthMask(GL_TRUE);
   const gl::Program& fill = globeProgram(false, kBlockFill);
   setGlobeUniforms(fill, view, f);
-  fill.set("uGlobeDepthPushM", static_cast<float>(kGlobeDepthPushM));
   fill.use();
   glBindVertexArray(blocksVao_.id());
   for (std::size_t k = 0; k < blockRanges_.fills.size(); ++k) {
@@ -635,6 +630,7 @@ void GlobeRenderer::setGlobeUniforms(const gl::Program& globe, const geo::Camera
   globe.set("uTanHalfFov", glm::vec2(static_cast<float>(tanY * view.aspect), static_cast<float>(tanY)));
   globe.set("uPixelNdc", glm::vec2(2.0f / static_cast<float>(f.width), 2.0f / static_cast<float>(f.height)));
   globe.set("uNear", static_cast<float>(view.nearM));
+  globe.set("uGlobeDepthPushM", static_cast<float>(kGlobeDepthPushM));
   globe.set("uSunDir", toFloat(glm::normalize(f.sunDirectionEcef)));
   globe.set("uEyeScaled", toFloat(o));
   globe.set("uEyeC", static_cast<float>(glm::dot(o, o) - 1.0));

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -100,9 +99,7 @@ TEST(GlobeBlocks, FilledBlocksHoldTheirClassAtEverySample) {
               ASSERT_TRUE(t.has_value()) << v.name << " pixel " << x << ", " << y;
               const glm::dvec3 p = view.positionEcef + *t * dir;
               at[k] = geo::ecefToGeodetic(p);
-              footprintDeg += 0.25 * *t * pixelRad /
-                              (geo::kWgs84SemiMajorM * std::max(-glm::dot(geo::ellipsoidNormalAt(p), dir), 0.2)) *
-                              (180.0 / std::numbers::pi);
+              footprintDeg += 0.25 * data::LandMask::coastFootprintDeg(*t, pixelRad, -glm::dot(geo::ellipsoidNormalAt(p), dir));
             }
             for (const geo::Geodetic& g : at) {
               const bool land = mask.landFraction(g.latitudeDeg, g.longitudeDeg, footprintDeg) >= 0.5f;
