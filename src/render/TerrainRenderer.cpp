@@ -349,29 +349,34 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
       geo::sunMayBeDownInView(view.enu.up, view.position.heightM, glm::normalize(sunDirectionEcef), highestM);
   const unsigned frameBits = (shadows_.on ? 0u : kShadowsOff) | (nightInView ? 0u : kNoNight);
   const gl::Program& full = variant(frameBits);
-  const gl::Program& land = seaFromGlobe ? variant(frameBits | kLandOnly) : full;
   setFrameUniforms(full, view, sunDirectionEcef, seaFromGlobe);
-  if (&land != &full) setFrameUniforms(land, view, sunDirectionEcef, seaFromGlobe);
   waterProgram_ = &full;
-  // Above 20 km tiles all above the sea and away from the poles need none of terrain.frag's
-  // discards: drawn without them (kLandOnly) they pass the depth test before the shader
-  // even with the stencil on (llvmpipe tests late in a shader that may discard), and zero the
-  // stencil, so the globe's parts skip what they cover (GlobeRenderer::shadeGlobe). The other
-  // tiles wait for drawWaterTiles(), after the globe, over which they draw as before.
+  // Tiles all above the sea and away from the poles need none of terrain.frag's discards and
+  // coast test: drawn without them (kLandOnly), since llvmpipe runs the test's lookups even
+  // where a uniform turns it off (~13 % of the pass at mountain-15km, docs/performance.md). Above
+  // 20 km they also pass the depth test before the shader with the stencil on (llvmpipe tests
+  // late in a shader that may discard) and zero the stencil, so the globe's parts skip what
+  // they cover (GlobeRenderer::shadeGlobe); the other tiles then wait for drawWaterTiles(),
+  // after the globe, over which they draw as before.
   waterTiles_.clear();
-  std::vector<const terrain::Tile*> now;
+  std::vector<const terrain::Tile*> landTiles, otherTiles;
   for (const terrain::Tile* t : drawn) {
     const int lastRow = (1 << t->key.level) - 1;
     const bool landOnly = t->minHeightM > 0.0 && t->key.y > 0 && t->key.y < lastRow;
-    (seaFromGlobe && !landOnly ? waterTiles_ : now).push_back(t);
+    (landOnly ? landTiles : seaFromGlobe ? waterTiles_ : otherTiles).push_back(t);
   }
   if (seaFromGlobe) {
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_ALWAYS, 0, 0xff);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   }
-  drawTiles(view, now, land);
+  if (!landTiles.empty()) {  // (the variant is compiled on first use: none over the open sea)
+    const gl::Program& land = variant(frameBits | kLandOnly);
+    setFrameUniforms(land, view, sunDirectionEcef, seaFromGlobe);
+    drawTiles(view, landTiles, land);
+  }
   glDisable(GL_STENCIL_TEST);
+  drawTiles(view, otherTiles, full);
   waterView_ = view;
   stats_.tiles = static_cast<int>(tiles.size());
   stats_.drawnTiles = static_cast<int>(drawn.size());

@@ -114,8 +114,8 @@ class TerrainRenderer {
   terrain::SelectionParams params_;
   bool seaHorizonCulling_ = true;
   /// terrain.vert/frag variants by bits, built on first use: llvmpipe runs every branch, so
-  /// a frame draws with only the code it needs. kLandOnly: without the discards, for tiles all
-  /// above the sea and away from the poles above 20 km; kNoNight: no city lights (the Sun is up
+  /// a frame draws with only the code it needs. kLandOnly: without the discards and the coast
+  /// test, for tiles all above the sea and away from the poles; kNoNight: no city lights (the Sun is up
   /// everywhere in view, geo::sunMayBeDownInView); kShadowsOff: no shadow maps this frame.
   enum VariantBits : unsigned { kLandOnly = 1u, kNoNight = 2u, kShadowsOff = 4u };
   const gl::Program& variant(unsigned bits);
