@@ -50,9 +50,14 @@ vec4 patternTable(int row, float speedMs) {
 
 // The two direction bins around a wind blowing towards `thetaField` (radians, counter-clockwise
 // from the field's x axis), and their weights (w0² + w1² = 1).
+// With each bin's turn from the field's axes (binTurn: cos, sin of bin x 45°) and from the
+// wind's (windTurn: of bin x 45° - thetaField), the same for every pattern: taken once, not per
+// pattern and bin (a GPU's compiler may hoist them out of the pattern loop; llvmpipe's did not).
 struct WindBins {
   int bin[2];
   float weight[2];
+  vec2 binTurn[2];
+  vec2 windTurn[2];
 };
 WindBins windBins(float thetaField) {
   float b = thetaField / (0.25 * PI);
@@ -64,6 +69,11 @@ WindBins windBins(float thetaField) {
   w.bin[1] = (b0 + 1) & 7;
   w.weight[0] = cos(0.5 * PI * f);
   w.weight[1] = sin(0.5 * PI * f);
+  for (int k = 0; k < 2; ++k) {
+    float binAngle = float(w.bin[k]) * 0.25 * PI;
+    w.binTurn[k] = vec2(cos(binAngle), sin(binAngle));
+    w.windTurn[k] = vec2(cos(binAngle - thetaField), sin(binAngle - thetaField));
+  }
   return w;
 }
 
@@ -73,10 +83,9 @@ float fieldWindAngle(float azimuth) {
   return frameAngle - atan2Safe(uFieldRotation.y, uFieldRotation.x);
 }
 
-vec2 rotate2(vec2 v, float angle) {
-  float c = cos(angle), s = sin(angle);
-  return vec2(c * v.x - s * v.y, s * v.x + c * v.y);
-}
+// v turned counter-clockwise by the angle whose (cos, sin) is cs.
+vec2 turn2(vec2 v, vec2 cs) { return vec2(cs.x * v.x - cs.y * v.y, cs.y * v.x + cs.x * v.y); }
+vec2 rotate2(vec2 v, float angle) { return turn2(v, vec2(cos(angle), sin(angle))); }
 // Quarter turns, exact: q in 0..3, counter-clockwise.
 vec2 quarterTurn(vec2 v, int q) {
   return q == 0 ? v : q == 1 ? vec2(-v.y, v.x) : q == 2 ? -v : vec2(v.y, -v.x);
@@ -125,9 +134,9 @@ vec3 oceanDisplacement(vec2 xy, float cellFootprintM, vec2 wind) {
   return vec3(frameVector(d.xy), d.z) * uPatternAmplitude;
 }
 
-// A 2x2 covariance (xx, yy, xy) turned by `angle` (counter-clockwise).
-vec3 rotateCovariance(vec3 c, float angle) {
-  float cs = cos(angle), sn = sin(angle);
+// A 2x2 covariance (xx, yy, xy) turned counter-clockwise by the angle whose (cos, sin) is turn.
+vec3 rotateCovariance(vec3 c, vec2 turn) {
+  float cs = turn.x, sn = turn.y;
   float xx = cs * cs * c.x + sn * sn * c.y - 2.0 * cs * sn * c.z;
   float yy = sn * sn * c.x + cs * cs * c.y + 2.0 * cs * sn * c.z;
   float xy = cs * sn * (c.x - c.y) + (cs * cs - sn * sn) * c.z;
@@ -170,7 +179,7 @@ float patternVertexShare(float lod) { return clamp(uPatternVertexLod - lod, 0.0,
 // the footprint and its slope variance (the mip-mapped second moment minus the squared mean,
 // LEAN mapping) of the two wind bins, and the Jacobian's mean and variance (lambda² times the
 // slopes', Dupuy 2012 Eqs. 6-8). `band`: patternBand(i, wind speed).
-void addPatternStatistics(INOUT(PatternSums) sums, vec2 p, WindBins wb, float windField, int i, float lod,
+void addPatternStatistics(INOUT(PatternSums) sums, vec2 p, WindBins wb, int i, float lod,
                           vec2 band, float share) {
   float s = band.x;
   float alongShare = band.y;
@@ -178,10 +187,9 @@ void addPatternStatistics(INOUT(PatternSums) sums, vec2 p, WindBins wb, float wi
   for (int k = 0; k < 2; ++k) {
     float w = wb.weight[k];
     vec4 m = textureLod(uPatternSlopes, patternCoord(p, wb.bin[k], i), lod);
-    float binAngle = float(wb.bin[k]) * 0.25 * PI;
-    sums.mean += (share * w * s) * rotate2(m.xy, binAngle);
+    sums.mean += (share * w * s) * turn2(m.xy, wb.binTurn[k]);
     float variance = share * s * s * max(m.z - dot(m.xy, m.xy), 0.0);
-    sums.cov += w * w * rotateCovariance(variance * vec3(alongShare, 1.0 - alongShare, 0.0), binAngle - windField);
+    sums.cov += w * w * rotateCovariance(variance * vec3(alongShare, 1.0 - alongShare, 0.0), wb.windTurn[k]);
     sums.jac += vec2(share * w * s * m.w, w * w * lambda2 * variance);
   }
 }
@@ -248,7 +256,7 @@ PatternSums oceanVertexPatterns(vec2 xy, float pixelFootprintM, vec2 wind) {
   for (int i = 0; i < PATTERN_COUNT; ++i) sums.share[i] = patternVertexShare(patternLod(pixelFootprintM, i));
   for (int i = 0; i < PATTERN_COUNT; ++i) {
     if (sums.share[i] <= 0.0) break;  // finer patterns have larger lods: none of theirs either
-    addPatternStatistics(sums, p, wb, windField, i, patternLod(pixelFootprintM, i), patternBand(i, wind.x), sums.share[i]);
+    addPatternStatistics(sums, p, wb, i, patternLod(pixelFootprintM, i), patternBand(i, wind.x), sums.share[i]);
   }
   return sums;
 }
@@ -272,7 +280,7 @@ SeaSurface oceanSurface(vec2 xy, float footprintM, vec2 wind, PatternSums vertex
   while (first < resolved && vertexSums.share[first] >= 0.999) ++first;
   for (int i = first; i < resolved; ++i) {
     float lod = patternLod(footprintM, i);
-    addPatternStatistics(sums, p, wb, windField, i, lod, PATTERN_BAND(bands, i, wind.x), 1.0 - vertexSums.share[i]);
+    addPatternStatistics(sums, p, wb, i, lod, PATTERN_BAND(bands, i, wind.x), 1.0 - vertexSums.share[i]);
   }
   // The patterns averaged out entirely and the tail below the finest: their statistics at this
   // wind, analytic.
