@@ -14,6 +14,14 @@ const int MAX_IMAGERY_LAYERS = 8;  // data::kMaxImageryLayers
 uniform int uImageryEnabled;        // 0: the stand-in material ramps (no imagery)
 uniform float uImageryDayTexelRad;  // angular size of a base texel, radians
 uniform int uImageryLayerCount;
+// The user's layers a loop visits: none where the program is compiled without them
+// (IMAGERY_NO_LAYERS: render/TerrainRenderer's variants, when none is loaded), since llvmpipe
+// runs a loop's first trip, masked, even when no pixel enters it.
+#ifdef IMAGERY_NO_LAYERS
+#define IMAGERY_LAYER_COUNT 0
+#else
+#define IMAGERY_LAYER_COUNT min(uImageryLayerCount, MAX_IMAGERY_LAYERS)
+#endif
 uniform float uImageryLayerTexelRad;
 uniform vec4 uImageryLayerBounds[MAX_IMAGERY_LAYERS];  // west, south, east, north, radians
 // Streamed tiles (render/ImageryTiles), per draw and layer: the slot in uImageryTiles (-1: none,
@@ -67,7 +75,7 @@ vec3 imageryAlbedo(vec2 latLon, float footprintRad) {
   vec3 acc = vec3(0.0);
   float T = 1.0;
   float lodLayers = imageryLod(footprintRad, uImageryLayerTexelRad);
-  for (int i = min(uImageryLayerCount, MAX_IMAGERY_LAYERS) - 1; i >= 0 && T > 0.5 / 255.0; --i) {
+  for (int i = IMAGERY_LAYER_COUNT - 1; i >= 0 && T > 0.5 / 255.0; --i) {
     vec2 st = imageryBoxCoord(latLon, uImageryLayerBounds[i]);
     if (st.x < 0.0 || st.x > 1.0 || st.y < 0.0 || st.y > 1.0) continue;
     // No-data texels are black with alpha 0, so mip-mapped colour is premultiplied by coverage.

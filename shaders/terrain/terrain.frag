@@ -72,7 +72,7 @@ vec3 pixelDetailGradient(vec3 dUp, float footprint) {
 // user layer's where one's bounds hold the point (terrain/imagery.glsl's uniforms).
 float imageryFinestTexelRad(vec2 latLon) {
   float texel = uImageryDayTexelRad;
-  for (int i = 0; i < min(uImageryLayerCount, MAX_IMAGERY_LAYERS); ++i) {
+  for (int i = 0; i < IMAGERY_LAYER_COUNT; ++i) {
     vec2 st = imageryBoxCoord(latLon, uImageryLayerBounds[i]);
     if (all(greaterThanEqual(st, vec2(0.0))) && all(lessThanEqual(st, vec2(1.0))))
       texel = min(texel, uImageryLayerTexelRad);

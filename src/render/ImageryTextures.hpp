@@ -67,6 +67,9 @@ class ImageryTextures {
   void setNightLights(float scale) { nightScale_ = scale; }
   [[nodiscard]] float nightLights() const { return nightScale_; }
 
+  /// The user's layers loaded (setLayers), 0..data::kMaxImageryLayers.
+  [[nodiscard]] int layerCount() const { return layerCount_; }
+
   /// Draws land with the stand-in material ramps instead of the imagery (comparisons, tests).
   void setEnabled(bool enabled) { enabled_ = enabled; }
   [[nodiscard]] bool enabled() const { return enabled_; }

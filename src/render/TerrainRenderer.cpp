@@ -47,6 +47,7 @@ const gl::Program& TerrainRenderer::variant(unsigned bits) {
     if ((bits & kLandOnly) != 0) defines.emplace_back("TERRAIN_LAND_ONLY");
     if ((bits & kNoNight) != 0) defines.emplace_back("TERRAIN_NO_NIGHT");
     if ((bits & kShadowsOff) != 0) defines.emplace_back("SHADOWS_OFF");
+    if ((bits & kNoImageryLayers) != 0) defines.emplace_back("IMAGERY_NO_LAYERS");
     p = gl::Program({{GL_VERTEX_SHADER, "terrain/terrain.vert"}, {GL_FRAGMENT_SHADER, "terrain/terrain.frag"}},
                     defines);
   }
@@ -347,7 +348,9 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   const double highestM = std::max(stats_.maxHeightM, 0.0);  // seen farthest beyond the horizon
   const bool nightInView =
       geo::sunMayBeDownInView(view.enu.up, view.position.heightM, glm::normalize(sunDirectionEcef), highestM);
-  const unsigned frameBits = (shadows_.on ? 0u : kShadowsOff) | (nightInView ? 0u : kNoNight);
+  const bool imageryLayers = imagery_ != nullptr && imagery_->layerCount() > 0;
+  const unsigned frameBits = (shadows_.on ? 0u : kShadowsOff) | (nightInView ? 0u : kNoNight) |
+                             (imageryLayers ? 0u : kNoImageryLayers);
   const gl::Program& full = variant(frameBits);
   setFrameUniforms(full, view, sunDirectionEcef, seaFromGlobe);
   waterProgram_ = &full;

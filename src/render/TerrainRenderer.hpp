@@ -116,10 +116,11 @@ class TerrainRenderer {
   /// terrain.vert/frag variants by bits, built on first use: llvmpipe runs every branch, so
   /// a frame draws with only the code it needs. kLandOnly: without the discards and the coast
   /// test, for tiles all above the sea and away from the poles; kNoNight: no city lights (the Sun is up
-  /// everywhere in view, geo::sunMayBeDownInView); kShadowsOff: no shadow maps this frame.
-  enum VariantBits : unsigned { kLandOnly = 1u, kNoNight = 2u, kShadowsOff = 4u };
+  /// everywhere in view, geo::sunMayBeDownInView); kShadowsOff: no shadow maps this frame;
+  /// kNoImageryLayers: no user imagery layer loaded (terrain/imagery.glsl's loops compiled out).
+  enum VariantBits : unsigned { kLandOnly = 1u, kNoNight = 2u, kShadowsOff = 4u, kNoImageryLayers = 8u };
   const gl::Program& variant(unsigned bits);
-  std::array<gl::Program, 8> variants_;
+  std::array<gl::Program, 16> variants_;
   const gl::Program* waterProgram_ = nullptr;  ///< drawWaterTiles()' program this frame
   std::vector<const terrain::Tile*> waterTiles_;  ///< left by draw() for drawWaterTiles()
   geo::CameraView waterView_;
