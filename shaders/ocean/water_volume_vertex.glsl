@@ -47,6 +47,11 @@ uniform float uWaveReachM;  // how far the waves move a point of the grid, m (th
 // m (render/OceanRenderer::shadowReachM); negative: the frame's shadows are not routed (every
 // class keeps them).
 uniform float uShadowReachM;
+// Of uShadowReachM, the casters' part (m: their height over the tangent of the Sun's elevation)
+// and the Sun's horizontal direction at the eye (east, north; unit): a caster shades a sea point
+// only from between it and the Sun.
+uniform float uShadowTowardsSunM;
+uniform vec2 uSunEastNorth;
 GRID_OUT float vNearLand;    // > 0 in triangles that may hold land (1 at a flagged vertex)
 GRID_OUT float vNearShadow;  // > 0 in triangles that the terrain's shadows may reach
 
@@ -116,7 +121,17 @@ float seaClassLandWithin(vec2 latLon, float reachM) {
 void prepareSeaClassVertex(vec2 latLon, vec3 rel, ivec2 i) {
   float reachM = seaClassReachM(rel, i);
   vNearLand = seaClassLandWithin(latLon, reachM);
-  vNearShadow = uShadowReachM < 0.0 ? 0.0 : seaClassLandWithin(latLon, reachM + uShadowReachM);
+  // Every caster whose shadow may fall on the triangles lies in the disc around the point half
+  // the casters' reach towards the Sun, of radius the rest of the reach (the segment towards
+  // the Sun, widened by the floor's and the triangles' reach; 5 % of the half more holds the
+  // segment turned by up to 14°, the Sun's azimuth at the eye against the point's, hundreds
+  // of km away from 20 km up): a quarter of the disc round the point that holds them all, so
+  // sea whose land near lies away from the Sun is open sea.
+  float halfTowards = 0.5 * uShadowTowardsSunM;
+  vec2 d = halfTowards * uSunEastNorth / WGS84_A;  // radians east, north
+  float lon = latLon.y + d.x / max(cos(latLon.x), 1e-3);
+  vec2 centre = vec2(clamp(latLon.x + d.y, -0.5 * PI, 0.5 * PI), lon - 2.0 * PI * floor((lon + PI) / (2.0 * PI)));
+  vNearShadow = uShadowReachM < 0.0 ? 0.0 : seaClassLandWithin(centre, reachM + uShadowReachM - 0.95 * halfTowards);
   vGridRow = i.y;
 }
 #else

@@ -404,7 +404,8 @@ bool OceanRenderer::drawTargetHasStencil() {
 }
 
 double OceanRenderer::shadowReachM(const OceanLighting& lighting, const geo::CameraView& view, bool volume,
-                                   double waterReachM) {
+                                   double waterReachM, double* towardsSunM) {
+  if (towardsSunM != nullptr) *towardsSunM = 0.0;
   if (lighting.shadows == nullptr || !lighting.shadows->on) return -1.0;
   // The Sun's elevation at the eye; across the sea in view (a few km from a few metres up) the
   // vertical turns by less than the 0.01 rad taken off.
@@ -416,7 +417,9 @@ double OceanRenderer::shadowReachM(const OceanLighting& lighting, const geo::Cam
   // The casters' meshes with a margin for their morphing between levels.
   const double heightM = 1.05 * std::max(lighting.shadows->casterMaxHeightM, 0.0) + 5.0;
   constexpr double kTanCritical = 1.13;  // tan(asin(1 / 1.34)): a refracted ray's steepest slope
-  return heightM / std::tan(elevation) + (volume ? (1.0 + kTanCritical) * waterReachM : 0.0);
+  const double castersM = heightM / std::tan(elevation);
+  if (towardsSunM != nullptr) *towardsSunM = castersM;
+  return castersM + (volume ? (1.0 + kTanCritical) * waterReachM : 0.0);
 }
 
 unsigned OceanRenderer::setClassUniforms(const gl::Program& p, const geo::CameraView& view,
@@ -431,8 +434,20 @@ unsigned OceanRenderer::setClassUniforms(const gl::Program& p, const geo::Camera
   p.set("uWaveReachM", static_cast<float>(amplitudeScale * patterns.amplitudeBoundM()));
   // The terrain's shadows routed to classes 2 and 4 (and 5) where they can reach, if the frame
   // has them.
-  const double shadowReach = (features & kFeatureShadows) != 0 ? shadowReachM(lighting, view, volume, reachM) : -1.0;
-  p.set("uShadowReachM", static_cast<float>(shadowReach));
+  double towardsSunM = 0.0;
+  const double shadowReach =
+      (features & kFeatureShadows) != 0 ? shadowReachM(lighting, view, volume, reachM, &towardsSunM) : -1.0;
+  // A caster shades a sea point only from between it and the Sun: the classes look for land
+  // in the disc around the point half the casters' reach towards the Sun (ocean/
+  // water_volume_vertex.glsl), with a margin of the maps' soft edge (terrain/shadow.glsl: 4
+  // lookups 1 texel apart, 1.5 texels along the normal: 3 of the far cascade's texels).
+  const glm::dvec3 sun = glm::normalize(lighting.sunDirectionEcef);
+  const glm::dvec2 sunEastNorth(glm::dot(sun, view.enu.east), glm::dot(sun, view.enu.north));
+  const bool sunAzimuth = glm::length(sunEastNorth) > 1e-3;  // else the Sun near the zenith: a disc round the point
+  const double marginM = shadowReach >= 0.0 && lighting.shadows != nullptr ? 3.0 * double{lighting.shadows->texelM[1]} : 0.0;
+  p.set("uShadowReachM", static_cast<float>(shadowReach >= 0.0 ? shadowReach + marginM : shadowReach));
+  p.set("uShadowTowardsSunM", static_cast<float>(sunAzimuth ? towardsSunM : 0.0));
+  p.set("uSunEastNorth", glm::vec2(sunAzimuth ? glm::normalize(sunEastNorth) : glm::dvec2(1.0, 0.0)));
   return shadowReach >= 0.0 ? kFeatureShadows : 0u;
 }
 

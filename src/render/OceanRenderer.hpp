@@ -261,8 +261,10 @@ class OceanRenderer {
   /// waterReachM, and the refracted Sun ray's back up, at most its depth x tan 48.3°, the
   /// critical angle: 1.13 waterReachM); 0 when no caster rises above the sea. Negative where
   /// the shadows are not routed (no shadow maps, the Sun within 1° of the horizon).
+  /// `towardsSunM` (if given) receives the casters' part alone, the distance from a sea point
+  /// towards the Sun within which a caster can shade it (0 where not routed).
   [[nodiscard]] static double shadowReachM(const OceanLighting& lighting, const geo::CameraView& view,
-                                           bool volume, double waterReachM);
+                                           bool volume, double waterReachM, double* towardsSunM = nullptr);
   /// Whether the bound draw framebuffer has a stencil buffer.
   [[nodiscard]] static bool drawTargetHasStencil();
 

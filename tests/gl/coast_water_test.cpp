@@ -542,6 +542,35 @@ TEST(CoastWater, FloorAndShadowClassesCombineIndependently) {
   }
 }
 
+// A caster shades only the sea on its far side from the Sun (ocean/water_volume_vertex.glsl):
+// the island under a Sun 10° up in the west-south-west (its shadow 3.8 km long, to the
+// east-north-east) seen from 200 m 10 km west-south-west of it, the Sun behind the eye: the sea
+// between the eye and the island is lit, so it is the open sea's class, though the island is
+// within the shadows' reach of all of it. Measured: 9 600 open sea samples, none in the
+// shadows' classes (2 953 the coast's); with the disc round each point that this replaced, 0
+// and 9 600 (sea-2m-horizon's sea was all in the shadows' class, Morocco's coast within their
+// reach at Gibraltar: docs/performance.md). The picture must be the single program's, which
+// has the shadows everywhere.
+TEST(CoastWater, ShadowClassOnlyWhereACasterStandsTowardsTheSun) {
+  const test::ScopedEnv deferred("OCEANGLOBE_SEA", "deferred");  // also without stencil export (NVIDIA)
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(shadowingIsland(false));
+  const double az = 250.0 * M_PI / 180.0;
+  const render::FrameInput f = classView({kLat + 10.0 * std::cos(az) / 110.8,
+                                          kLon + 10.0 * std::sin(az) / (111.3 * std::cos(kLat * M_PI / 180.0)), 200.0},
+                                         70.0, -8.0, 10.0, 250.0);
+  r.ocean().setCountClassSamples(true);
+  r.render(f);
+  const auto n = r.ocean().classSamples();
+  const std::string counts = classCounts(n);  // open sea, shadows, floor, floor with shadows, coast
+  std::printf("samples per class (open sea, shadows, floor, floor with shadows, coast): %s\n", counts.c_str());
+  EXPECT_TRUE(r.terrain().shadows().on) << "the island must be a caster for this to test anything";
+  EXPECT_GT(r.terrain().shadows().casterMaxHeightM, 500.0);
+  EXPECT_GT(n[0], 192u * 108u / 3u) << counts;
+  EXPECT_LT(n[1] + n[3], n[0] / 4u) << counts;
+  expectClassesMatchTheSingleProgram(r, f, "coast_classes_island_sunny_side");
+}
+
 // Far from land the sea's classes do without the coast test and the terrain's shadows even where
 // the grid's triangles are kilometres wide (render/OpenSeaMap's land clearance): the default
 // flythrough's 6.5 km frame, 195 km off Portugal looking at its coast under a Sun 7° up behind
