@@ -47,11 +47,11 @@ uniform float uWaveReachM;  // how far the waves move a point of the grid, m (th
 // m (render/OceanRenderer::shadowReachM); negative: the frame's shadows are not routed (every
 // class keeps them).
 uniform float uShadowReachM;
-// Of uShadowReachM, the casters' part (m: their height over the tangent of the Sun's elevation)
-// and the Sun's horizontal direction at the eye (east, north; unit): a caster shades a sea point
-// only from between it and the Sun.
+// Of uShadowReachM, the casters' part (m: their height over the tangent of the Sun's elevation),
+// and the direction to the Sun (unit, ECEF axes): a caster shades a sea point only from between
+// it and the Sun.
 uniform float uShadowTowardsSunM;
-uniform vec2 uSunEastNorth;
+uniform vec3 uClassSunDirEcef;
 GRID_OUT float vNearLand;    // > 0 in triangles that may hold land (1 at a flagged vertex)
 GRID_OUT float vNearShadow;  // > 0 in triangles that the terrain's shadows may reach
 
@@ -122,16 +122,20 @@ void prepareSeaClassVertex(vec2 latLon, vec3 rel, ivec2 i) {
   float reachM = seaClassReachM(rel, i);
   vNearLand = seaClassLandWithin(latLon, reachM);
   // Every caster whose shadow may fall on the triangles lies in the disc around the point half
-  // the casters' reach towards the Sun, of radius the rest of the reach (the segment towards
-  // the Sun, widened by the floor's and the triangles' reach; 5 % of the half more holds the
-  // segment turned by up to 14°, the Sun's azimuth at the eye against the point's, hundreds
-  // of km away from 20 km up): a quarter of the disc round the point that holds them all, so
-  // sea whose land near lies away from the Sun is open sea.
-  float halfTowards = 0.5 * uShadowTowardsSunM;
-  vec2 d = halfTowards * uSunEastNorth / WGS84_A;  // radians east, north
-  float lon = latLon.y + d.x / max(cos(latLon.x), 1e-3);
+  // the casters' reach towards the Sun (its azimuth at the point), of radius the rest of the
+  // reach (the segment towards the Sun, widened by the floor's and the triangles' reach): a
+  // quarter of the disc round the point that holds them all, so sea whose land near lies away
+  // from the Sun is open sea. (With the Sun near the zenith, the disc round the point.)
+  vec2 sinCosLat = vec2(sin(latLon.x), cos(latLon.x)), sinCosLon = vec2(sin(latLon.y), cos(latLon.y));
+  vec3 east = vec3(-sinCosLon.x, sinCosLon.y, 0.0);
+  vec3 north = vec3(-sinCosLat.x * sinCosLon.y, -sinCosLat.x * sinCosLon.x, sinCosLat.y);
+  vec2 sunEastNorth = vec2(dot(uClassSunDirEcef, east), dot(uClassSunDirEcef, north));
+  float horizontal = length(sunEastNorth);
+  float halfTowards = horizontal > 1e-3 ? 0.5 * uShadowTowardsSunM : 0.0;
+  vec2 d = halfTowards * sunEastNorth / max(horizontal, 1e-3) / WGS84_A;  // radians east, north
+  float lon = latLon.y + d.x / max(sinCosLat.y, 1e-3);
   vec2 centre = vec2(clamp(latLon.x + d.y, -0.5 * PI, 0.5 * PI), lon - 2.0 * PI * floor((lon + PI) / (2.0 * PI)));
-  vNearShadow = uShadowReachM < 0.0 ? 0.0 : seaClassLandWithin(centre, reachM + uShadowReachM - 0.95 * halfTowards);
+  vNearShadow = uShadowReachM < 0.0 ? 0.0 : seaClassLandWithin(centre, reachM + uShadowReachM - halfTowards);
   vGridRow = i.y;
 }
 #else

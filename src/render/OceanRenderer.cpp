@@ -441,13 +441,10 @@ unsigned OceanRenderer::setClassUniforms(const gl::Program& p, const geo::Camera
   // in the disc around the point half the casters' reach towards the Sun (ocean/
   // water_volume_vertex.glsl), with a margin of the maps' soft edge (terrain/shadow.glsl: 4
   // lookups 1 texel apart, 1.5 texels along the normal: 3 of the far cascade's texels).
-  const glm::dvec3 sun = glm::normalize(lighting.sunDirectionEcef);
-  const glm::dvec2 sunEastNorth(glm::dot(sun, view.enu.east), glm::dot(sun, view.enu.north));
-  const bool sunAzimuth = glm::length(sunEastNorth) > 1e-3;  // else the Sun near the zenith: a disc round the point
   const double marginM = shadowReach >= 0.0 && lighting.shadows != nullptr ? 3.0 * double{lighting.shadows->texelM[1]} : 0.0;
   p.set("uShadowReachM", static_cast<float>(shadowReach >= 0.0 ? shadowReach + marginM : shadowReach));
-  p.set("uShadowTowardsSunM", static_cast<float>(sunAzimuth ? towardsSunM : 0.0));
-  p.set("uSunEastNorth", glm::vec2(sunAzimuth ? glm::normalize(sunEastNorth) : glm::dvec2(1.0, 0.0)));
+  p.set("uShadowTowardsSunM", static_cast<float>(towardsSunM));
+  p.set("uClassSunDirEcef", glm::vec3(glm::normalize(lighting.sunDirectionEcef)));
   return shadowReach >= 0.0 ? kFeatureShadows : 0u;
 }
 
