@@ -355,8 +355,9 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   setFrameUniforms(full, view, sunDirectionEcef, seaFromGlobe);
   waterProgram_ = &full;
   // Tiles all above the sea and away from the poles need none of terrain.frag's discards and
-  // coast test: drawn without them (kLandOnly), since llvmpipe runs the test's lookups even
-  // where a uniform turns it off (~13 % of the pass at mountain-15km, docs/performance.md). Above
+  // coast test (their skirts may hang under the sea, where the grid's surface hides them but
+  // for a pixel at the horizon): drawn without them (kLandOnly), since llvmpipe runs the test's
+  // lookups even where a uniform turns it off (~13 % of the pass at mountain-15km). Above
   // 20 km they also pass the depth test before the shader with the stencil on (llvmpipe tests
   // late in a shader that may discard) and zero the stencil, so the globe's parts skip what
   // they cover (GlobeRenderer::shadeGlobe); the other tiles then wait for drawWaterTiles(),
