@@ -47,10 +47,12 @@ uniform float uWaveReachM;  // how far the waves move a point of the grid, m (th
 // m (render/OceanRenderer::shadowReachM); negative: the frame's shadows are not routed (every
 // class keeps them).
 uniform float uShadowReachM;
-// Of uShadowReachM, the casters' part (m: their height over the tangent of the Sun's elevation),
-// and the direction to the Sun (unit, ECEF axes): a caster shades a sea point only from between
-// it and the Sun.
+// Of uShadowReachM, the casters' part at the eye (m: their height over the tangent of the Sun's
+// elevation there); the casters' height (m, with its margin) and the direction to the Sun (unit,
+// ECEF axes), from which each vertex takes its own part: a caster shades a sea point only from
+// between it and the Sun, and farther where the Sun stands lower.
 uniform float uShadowTowardsSunM;
+uniform float uShadowCasterHeightM;
 uniform vec3 uClassSunDirEcef;
 GRID_OUT float vNearLand;    // > 0 in triangles that may hold land (1 at a flagged vertex)
 GRID_OUT float vNearShadow;  // > 0 in triangles that the terrain's shadows may reach
@@ -122,20 +124,27 @@ void prepareSeaClassVertex(vec2 latLon, vec3 rel, ivec2 i) {
   float reachM = seaClassReachM(rel, i);
   vNearLand = seaClassLandWithin(latLon, reachM);
   // Every caster whose shadow may fall on the triangles lies in the disc around the point half
-  // the casters' reach towards the Sun (its azimuth at the point), of radius the rest of the
+  // the casters' reach towards the Sun (its azimuth and elevation at the point: from 20 km up
+  // the sea reaches hundreds of km, where both differ from the eye's), of radius the rest of the
   // reach (the segment towards the Sun, widened by the floor's and the triangles' reach): a
   // quarter of the disc round the point that holds them all, so sea whose land near lies away
-  // from the Sun is open sea. (With the Sun near the zenith, the disc round the point.)
+  // from the Sun is open sea. With the Sun near the zenith, the disc round the point; with it
+  // within ~1.6° of the horizon there, every point with land in reach at all keeps the shadows.
   vec2 sinCosLat = vec2(sin(latLon.x), cos(latLon.x)), sinCosLon = vec2(sin(latLon.y), cos(latLon.y));
   vec3 east = vec3(-sinCosLon.x, sinCosLon.y, 0.0);
   vec3 north = vec3(-sinCosLat.x * sinCosLon.y, -sinCosLat.x * sinCosLon.x, sinCosLat.y);
+  vec3 up = vec3(sinCosLat.y * sinCosLon.y, sinCosLat.y * sinCosLon.x, sinCosLat.x);
+  float elevation = asin(clamp(dot(uClassSunDirEcef, up), -1.0, 1.0)) - 0.01;  // as shadowReachM's
+  bool low = elevation < 0.0175;
+  float towards = low ? 0.0 : uShadowCasterHeightM / tan(elevation);
+  float otherM = uShadowReachM - uShadowTowardsSunM + (low ? 1e7 : 0.0);  // the floor's reach, the soft edge
   vec2 sunEastNorth = vec2(dot(uClassSunDirEcef, east), dot(uClassSunDirEcef, north));
   float horizontal = length(sunEastNorth);
-  float halfTowards = horizontal > 1e-3 ? 0.5 * uShadowTowardsSunM : 0.0;
+  float halfTowards = horizontal > 1e-3 ? 0.5 * towards : 0.0;
   vec2 d = halfTowards * sunEastNorth / max(horizontal, 1e-3) / WGS84_A;  // radians east, north
   float lon = latLon.y + d.x / max(sinCosLat.y, 1e-3);
   vec2 centre = vec2(clamp(latLon.x + d.y, -0.5 * PI, 0.5 * PI), lon - 2.0 * PI * floor((lon + PI) / (2.0 * PI)));
-  vNearShadow = uShadowReachM < 0.0 ? 0.0 : seaClassLandWithin(centre, reachM + uShadowReachM - halfTowards);
+  vNearShadow = uShadowReachM < 0.0 ? 0.0 : seaClassLandWithin(centre, reachM + otherM + towards - halfTowards);
   vGridRow = i.y;
 }
 #else

@@ -404,13 +404,14 @@ bool OceanRenderer::drawTargetHasStencil() {
 }
 
 double OceanRenderer::shadowReachM(const OceanLighting& lighting, const geo::CameraView& view, bool volume,
-                                   double waterReachM, double* towardsSunM) {
+                                   double waterReachM, double* towardsSunM, double* casterHeightM) {
   if (towardsSunM != nullptr) *towardsSunM = 0.0;
+  if (casterHeightM != nullptr) *casterHeightM = 0.0;
   if (lighting.shadows == nullptr || !lighting.shadows->on) return -1.0;
   // The Sun's elevation at the eye; across the sea in view from a few metres up (a few km) the
   // vertical turns by less than the 0.01 rad taken off. From 20 km up the sea reaches ~500 km,
-  // where the Sun can stand ~4° lower and shadows fall farther than this reach: not covered
-  // (a review's probe of Tenerife from 150-250 km at 19 km up, Sun 3-6°, found no miss).
+  // where the Sun can stand ~4° lower: the classes take each vertex's own elevation with the
+  // casters' height (ocean/water_volume_vertex.glsl); this reach is the eye's.
   const double sinElevation = glm::dot(glm::normalize(lighting.sunDirectionEcef), view.enu.up);
   const double elevation = std::asin(std::clamp(sinElevation, -1.0, 1.0)) - 0.01;
   if (elevation < 0.0175) return -1.0;
@@ -421,6 +422,7 @@ double OceanRenderer::shadowReachM(const OceanLighting& lighting, const geo::Cam
   constexpr double kTanCritical = 1.13;  // tan(asin(1 / 1.34)): a refracted ray's steepest slope
   const double castersM = heightM / std::tan(elevation);
   if (towardsSunM != nullptr) *towardsSunM = castersM;
+  if (casterHeightM != nullptr) *casterHeightM = heightM;
   return castersM + (volume ? (1.0 + kTanCritical) * waterReachM : 0.0);
 }
 
@@ -436,9 +438,10 @@ unsigned OceanRenderer::setClassUniforms(const gl::Program& p, const geo::Camera
   p.set("uWaveReachM", static_cast<float>(amplitudeScale * patterns.amplitudeBoundM()));
   // The terrain's shadows routed to classes 2 and 4 (and 5) where they can reach, if the frame
   // has them.
-  double towardsSunM = 0.0;
-  const double shadowReach =
-      (features & kFeatureShadows) != 0 ? shadowReachM(lighting, view, volume, reachM, &towardsSunM) : -1.0;
+  double towardsSunM = 0.0, casterHeightM = 0.0;
+  const double shadowReach = (features & kFeatureShadows) != 0
+                                 ? shadowReachM(lighting, view, volume, reachM, &towardsSunM, &casterHeightM)
+                                 : -1.0;
   // A caster shades a sea point only from between it and the Sun: the classes look for land
   // in the disc around the point half the casters' reach towards the Sun (ocean/
   // water_volume_vertex.glsl), with a margin of the maps' soft edge (terrain/shadow.glsl: 4
@@ -446,6 +449,7 @@ unsigned OceanRenderer::setClassUniforms(const gl::Program& p, const geo::Camera
   const double marginM = shadowReach >= 0.0 && lighting.shadows != nullptr ? 3.0 * double{lighting.shadows->texelM[1]} : 0.0;
   p.set("uShadowReachM", static_cast<float>(shadowReach >= 0.0 ? shadowReach + marginM : shadowReach));
   p.set("uShadowTowardsSunM", static_cast<float>(towardsSunM));
+  p.set("uShadowCasterHeightM", static_cast<float>(casterHeightM));
   p.set("uClassSunDirEcef", glm::vec3(glm::normalize(lighting.sunDirectionEcef)));
   return shadowReach >= 0.0 ? kFeatureShadows : 0u;
 }

@@ -262,9 +262,11 @@ class OceanRenderer {
   /// critical angle: 1.13 waterReachM); 0 when no caster rises above the sea. Negative where
   /// the shadows are not routed (no shadow maps, the Sun within 1° of the horizon).
   /// `towardsSunM` (if given) receives the casters' part alone, the distance from a sea point
-  /// towards the Sun within which a caster can shade it (0 where not routed).
+  /// towards the Sun within which a caster can shade it, and `casterHeightM` the casters'
+  /// height it divides (0 where not routed).
   [[nodiscard]] static double shadowReachM(const OceanLighting& lighting, const geo::CameraView& view,
-                                           bool volume, double waterReachM, double* towardsSunM = nullptr);
+                                           bool volume, double waterReachM, double* towardsSunM = nullptr,
+                                           double* casterHeightM = nullptr);
   /// Whether the bound draw framebuffer has a stencil buffer.
   [[nodiscard]] static bool drawTargetHasStencil();
 
