@@ -49,11 +49,11 @@ GRID_OUT float vPatternShare[PATTERN_COUNT];
 GRID_OUT vec2 vPatternBand[PATTERN_COUNT];              // patternBands at the vertex's wind
 GRID_OUT vec3 vPatternAveragedFrom[PATTERN_COUNT + 1];
 
+uniform vec3 uSunDirEcef;  // unit, ECEF axes
 #ifndef OCEAN_SIMPLE_SKY
 // Aerial perspective per vertex: smooth over a cell of a few pixels, and the costliest part
 // of the sea's shading when evaluated per pixel (docs/performance.md).
 #include "render/aerial.glsl"
-uniform vec3 uSunDirEcef;
 GRID_OUT vec3 vTransmittance;      // of the eye-to-vertex path
 GRID_OUT vec3 vInscatter;          // light scattered towards the eye along it (units of the Sun's irradiance)
 #endif

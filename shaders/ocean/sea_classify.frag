@@ -12,7 +12,7 @@
 //      has them)
 // The floor and the shadows combine independently (classes 2-4): the shadows' reach from
 // mountains under a low Sun covers most of the sea in view, and open sea there must not pay
-// for the water volume. When the frame does not route its shadows (uShadowReachM < 0: no
+// for the water volume. When the frame does not route its shadows (uShadowBesideCastersM < 0: no
 // shadow maps, or the Sun within 1 degree of the horizon) classes 1 and 3 keep them.
 // As the stencil's value the largest of the grid's overlapping fragments in a pixel wins
 // (GL_GEQUAL, REPLACE): each class's program has every feature of the classes below it but

@@ -43,17 +43,14 @@ void prepareWaterVolumeVertex(vec2 latLon, vec3 up) {}
 #ifdef OCEAN_SEA_CLASSIFY
 uniform float uLayerMaxSlope;
 uniform float uWaveReachM;  // how far the waves move a point of the grid, m (their amplitude bound)
-// How far from land the terrain's shadows can fall on the sea or on the floor seen through it,
-// m (render/OceanRenderer::shadowReachM); negative: the frame's shadows are not routed (every
-// class keeps them).
-uniform float uShadowReachM;
-// Of uShadowReachM, the casters' part at the eye (m: their height over the tangent of the Sun's
-// elevation there); the casters' height (m, with its margin) and the direction to the Sun (unit,
-// ECEF axes), from which each vertex takes its own part: a caster shades a sea point only from
-// between it and the Sun, and farther where the Sun stands lower.
-uniform float uShadowTowardsSunM;
+// How far from land the terrain's shadows can fall on the sea or on the floor seen through it
+// (render/OceanRenderer::shadowReachM), in two parts: the casters' height (m, with its margin),
+// which each vertex divides by the tangent of its own Sun elevation (uSunDirEcef: a caster
+// shades a sea point only from between it and the Sun, and farther where the Sun stands lower),
+// and the rest (m: the floor's lookups, the maps' soft edge); negative: the frame's shadows are
+// not routed (every class keeps them).
 uniform float uShadowCasterHeightM;
-uniform vec3 uClassSunDirEcef;
+uniform float uShadowBesideCastersM;
 GRID_OUT float vNearLand;    // > 0 in triangles that may hold land (1 at a flagged vertex)
 GRID_OUT float vNearShadow;  // > 0 in triangles that the terrain's shadows may reach
 
@@ -134,17 +131,17 @@ void prepareSeaClassVertex(vec2 latLon, vec3 rel, ivec2 i) {
   vec3 east = vec3(-sinCosLon.x, sinCosLon.y, 0.0);
   vec3 north = vec3(-sinCosLat.x * sinCosLon.y, -sinCosLat.x * sinCosLon.x, sinCosLat.y);
   vec3 up = vec3(sinCosLat.y * sinCosLon.y, sinCosLat.y * sinCosLon.x, sinCosLat.x);
-  float elevation = asin(clamp(dot(uClassSunDirEcef, up), -1.0, 1.0)) - 0.01;  // as shadowReachM's
+  float elevation = asin(clamp(dot(uSunDirEcef, up), -1.0, 1.0)) - 0.01;  // as shadowReachM's
   bool low = elevation < 0.0175;
   float towards = low ? 0.0 : uShadowCasterHeightM / tan(elevation);
-  float otherM = uShadowReachM - uShadowTowardsSunM + (low ? 1e7 : 0.0);  // the floor's reach, the soft edge
-  vec2 sunEastNorth = vec2(dot(uClassSunDirEcef, east), dot(uClassSunDirEcef, north));
+  float besideM = uShadowBesideCastersM + (low ? 1e7 : 0.0);
+  vec2 sunEastNorth = vec2(dot(uSunDirEcef, east), dot(uSunDirEcef, north));
   float horizontal = length(sunEastNorth);
   float halfTowards = horizontal > 1e-3 ? 0.5 * towards : 0.0;
   vec2 d = halfTowards * sunEastNorth / max(horizontal, 1e-3) / WGS84_A;  // radians east, north
   float lon = latLon.y + d.x / max(sinCosLat.y, 1e-3);
   vec2 centre = vec2(clamp(latLon.x + d.y, -0.5 * PI, 0.5 * PI), lon - 2.0 * PI * floor((lon + PI) / (2.0 * PI)));
-  vNearShadow = uShadowReachM < 0.0 ? 0.0 : seaClassLandWithin(centre, reachM + otherM + towards - halfTowards);
+  vNearShadow = uShadowBesideCastersM < 0.0 ? 0.0 : seaClassLandWithin(centre, reachM + besideM + towards - halfTowards);
   vGridRow = i.y;
 }
 #else

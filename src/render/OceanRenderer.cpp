@@ -443,14 +443,13 @@ unsigned OceanRenderer::setClassUniforms(const gl::Program& p, const geo::Camera
                                  ? shadowReachM(lighting, view, volume, reachM, &towardsSunM, &casterHeightM)
                                  : -1.0;
   // A caster shades a sea point only from between it and the Sun: the classes look for land
-  // in the disc around the point half the casters' reach towards the Sun (ocean/
-  // water_volume_vertex.glsl), with a margin of the maps' soft edge (terrain/shadow.glsl: 4
+  // in the disc around the point half the casters' reach towards the Sun, each vertex with its
+  // own Sun (ocean/water_volume_vertex.glsl), so they get the casters' height and the rest of
+  // the reach apart, the rest with a margin of the maps' soft edge (terrain/shadow.glsl: 4
   // lookups 1 texel apart, 1.5 texels along the normal: 3 of the far cascade's texels).
-  const double marginM = shadowReach >= 0.0 && lighting.shadows != nullptr ? 3.0 * double{lighting.shadows->texelM[1]} : 0.0;
-  p.set("uShadowReachM", static_cast<float>(shadowReach >= 0.0 ? shadowReach + marginM : shadowReach));
-  p.set("uShadowTowardsSunM", static_cast<float>(towardsSunM));
+  const double marginM = 3.0 * double{lighting.shadows != nullptr ? lighting.shadows->texelM[1] : 0.0f};
   p.set("uShadowCasterHeightM", static_cast<float>(casterHeightM));
-  p.set("uClassSunDirEcef", glm::vec3(glm::normalize(lighting.sunDirectionEcef)));
+  p.set("uShadowBesideCastersM", static_cast<float>(shadowReach >= 0.0 ? shadowReach - towardsSunM + marginM : -1.0));
   return shadowReach >= 0.0 ? kFeatureShadows : 0u;
 }
 

@@ -115,9 +115,10 @@ class TerrainRenderer {
   bool seaHorizonCulling_ = true;
   /// terrain.vert/frag variants by bits, built on first use: llvmpipe runs every branch, so
   /// a frame draws with only the code it needs. kLandOnly: without the discards and the coast
-  /// test, for tiles all above the sea and away from the poles; kNoNight: no city lights (the Sun is up
-  /// everywhere in view, geo::sunMayBeDownInView); kShadowsOff: no shadow maps this frame;
-  /// kNoImageryLayers: no user imagery layer loaded (terrain/imagery.glsl's loops compiled out).
+  /// test, for tiles all above the sea and away from the poles; kNoNight: no city lights (the
+  /// Sun is up everywhere in view, geo::sunMayBeDownInView); kShadowsOff: no shadow maps this
+  /// frame; kNoImageryLayers: no user imagery layer loaded (terrain/imagery.glsl's loops
+  /// compiled out).
   enum VariantBits : unsigned { kLandOnly = 1u, kNoNight = 2u, kShadowsOff = 4u, kNoImageryLayers = 8u };
   const gl::Program& variant(unsigned bits);
   std::array<gl::Program, 16> variants_;

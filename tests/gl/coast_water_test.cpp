@@ -548,9 +548,10 @@ TEST(CoastWater, FloorAndShadowClassesCombineIndependently) {
 // between the eye and the island is lit, so it is the open sea's class, though the island is
 // within the shadows' reach of all of it. Measured: 9 600 open sea samples, none in the
 // shadows' classes (2 953 the coast's); with the disc round each point that this replaced, or
-// with the disc moved away from the Sun instead of towards it, 0 and 9 600 (sea-2m-horizon's sea was all in the shadows' class, Morocco's coast within their
-// reach at Gibraltar: docs/performance.md). The picture must be the single program's, which
-// has the shadows everywhere.
+// with the disc moved away from the Sun instead of towards it, 0 and 9 600 (sea-2m-horizon's
+// sea was all in the shadows' class, Morocco's coast within their reach at Gibraltar:
+// docs/performance.md). The picture must be the single program's, which has the shadows
+// everywhere.
 TEST(CoastWater, ShadowClassOnlyWhereACasterStandsTowardsTheSun) {
   const test::ScopedEnv deferred("OCEANGLOBE_SEA", "deferred");  // also without stencil export (NVIDIA)
   auto ctx = gl::createHeadlessContext();
