@@ -56,8 +56,9 @@
 // surface part ran both, masked, for every pixel), and within it the open deep sea
 // (render/OpenSeaMap: the four samples within a coarse map's clearance of land and shallow
 // floors), to a part without the water column either (count 6). Count 3 is left to the
-// coasts, shaded per sample. Above 20 km, where the land mask decides the coast, the CPU
-// first classes blocks of 8 x 8 pixels from their corners and the mask's pyramid
+// coasts, their land samples and their sea samples each shaded once. Above 20 km, where the
+// land mask decides the coast, the CPU first classes blocks of 8 x 8 pixels from their
+// corners and the mask's pyramid
 // (render/GlobeBlocks): blocks wholly land, sea or open sea get their count and depth from a
 // draw that only intersects the pixel-centre ray (GLOBE_PART_BLOCK_FILL), the sky's blocks
 // the classifying draw without the land's and the sea's tests, and the classifying draws
@@ -188,6 +189,15 @@ vec3 throughAerialPerspective(vec3 surface, vec3 hitDir, float hitT, float cover
   vec3 transmittance, inscatter;
   aerialToSeaLevel(hitT / coverage, dot(dir, uSunDir), uSunDir, transmittance, inscatter);  // render/aerial.glsl
   return surface * transmittance + inscatter * coverage;
+}
+
+// surfaceRadiance on the mean of some of a pixel's rays that hit the globe (their summed
+// directions sumDir; meanT, m, their mean distance, the fallback should rounding make the mean
+// ray miss).
+vec3 surfaceAtMeanRay(vec3 sumDir, float meanT, bool sea) {
+  vec3 dir = normalize(sumDir);
+  float t = intersectEllipsoid(dir);
+  return surfaceRadiance(dir, t >= 0.0 ? t : meanT, sea);
 }
 
 // A pixel's four rays: 4 rotated-grid samples, for an anti-aliased limb, horizon and coastline;
@@ -423,18 +433,16 @@ void main() {
     hitDir += rays.dirs[i];
     hitT += rays.ts[i];
   }
-  vec3 dir = normalize(hitDir);
-  float t = intersectEllipsoid(dir);
-  vec3 surface = 4.0 * surfaceRadiance(dir, t, GLOBE_PART != GLOBE_PART_LAND);
+  vec3 surface = 4.0 * surfaceAtMeanRay(hitDir, 0.25 * hitT, GLOBE_PART != GLOBE_PART_LAND);
   float foam = 4.0 * gSeaFoam;  // 0 on land
   fragRadiance = vec4(throughAerialPerspective(surface, hitDir, hitT, 4.0) * 0.25, 1.0);
   fragAux = vec4(foam * 0.25, 0.0, 0.0, 0.0);
 }
 #else
 void main() {
-  // The surface is shaded per sample at edges, once inside (below); the atmosphere, smooth
-  // across a pixel, once per pixel for the samples on the globe (at their mean distance) and
-  // once for those in the sky. Loops run only as many times as needed: llvmpipe skips a
+  // The surface is shaded once for the samples on land and once for those on the sea (below);
+  // the atmosphere, smooth across a pixel, once per pixel for the samples on the globe (at
+  // their mean distance) and once for those in the sky. Loops run only as many times as needed: llvmpipe skips a
   // loop's remaining trips for a whole vector of pixels but evaluates both sides of an if.
   PixelRays rays = traceRays();
   bvec4 seaSamples = PART_HAS_SURFACE ? samplesSea(rays) : bvec4(false);
@@ -469,17 +477,27 @@ void main() {
   float rho2 = h * (2.0 * R + h);
   vec3 surface = vec3(0.0);
   float foam = 0.0;  // whitecap coverage summed over the samples
-  // Inside the globe's silhouette and away from coasts (four samples on the globe, all land or
-  // all sea) the surface varies little across a pixel: shaded once, at the samples' mean ray.
-  // Edges keep their four samples.
-  bool interior = nHit == 4 && (nSea == 0 || nSea == 4);
-  int nShade = interior ? 1 : nHit;
-  float weight = interior ? 4.0 : 1.0;
-  for (int k = 0; k < (PART_HAS_SURFACE ? nShade : 0); ++k) {
-    vec3 dir = interior ? normalize(hitDir) : rays.dirs[hits[k]];
-    float t = interior ? intersectEllipsoid(dir) : rays.ts[hits[k]];
-    surface += weight * surfaceRadiance(dir, t, interior ? nSea == 4 : seas[hits[k]]);
-    foam += weight * gSeaFoam;
+  // The surface varies little across a pixel but where it changes from land to sea: the
+  // samples on land are shaded once at their mean ray, those on the sea once at theirs (the
+  // rays that hit a convex body from outside form a convex cone, so a mean of hits hits),
+  // each weighted by its count. At most one trip of each loop: llvmpipe runs both sides of an
+  // if, so shading every sample with the land's and the sea's code cost a coast pixel 4x both.
+  vec3 landDir = vec3(0.0), seaDir = vec3(0.0);
+  float landT = 0.0, seaT = 0.0;
+  int nLand = 0;
+  for (int k = 0; k < nHit; ++k) {
+    int i = hits[k];
+    landDir += seas[i] ? vec3(0.0) : rays.dirs[i];
+    landT += seas[i] ? 0.0 : rays.ts[i];
+    seaDir += seas[i] ? rays.dirs[i] : vec3(0.0);
+    seaT += seas[i] ? rays.ts[i] : 0.0;
+    nLand += seas[i] ? 0 : 1;
+  }
+  for (int k = 0; k < (PART_HAS_SURFACE && nLand > 0 ? 1 : 0); ++k)
+    surface += float(nLand) * surfaceAtMeanRay(landDir, landT / float(nLand), false);
+  for (int k = 0; k < (PART_HAS_SURFACE && nSea > 0 ? 1 : 0); ++k) {
+    surface += float(nSea) * surfaceAtMeanRay(seaDir, seaT / float(nSea), true);
+    foam += float(nSea) * gSeaFoam;
   }
 
   float coverage = float(nHit);
