@@ -20,7 +20,13 @@ float terrainSnowLineM(float latitudeDeg) {
     if (a < lat[i]) return mix(line[i - 1], line[i], (a - lat[i - 1]) / (lat[i] - lat[i - 1]));
   return 0.0;
 }
-vec3 terrainAlbedo(float heightM, float slope, float latitudeRad) {
+// A beach's width, m: the sand band covers this much of a pixel's footprint on the coast.
+const float TERRAIN_BEACH_WIDTH_M = 100.0;
+
+// footprintM: the pixel's footprint on the ground, m: where it is wider than a beach, the
+// sand takes only the beach's share of it (from orbit a coast pixel spans kilometres: all
+// sand, it sparkled along every coastline).
+vec3 terrainAlbedo(float heightM, float slope, float latitudeRad, float footprintM) {
   const vec3 sand = vec3(0.35, 0.30, 0.20);
   const vec3 wetSand = vec3(0.16, 0.14, 0.10);
   const vec3 forest = vec3(0.05, 0.09, 0.035);
@@ -38,7 +44,8 @@ vec3 terrainAlbedo(float heightM, float slope, float latitudeRad) {
   c = mix(c, alpine, smoothstep(treeLine - 300.0, treeLine + 300.0, heightM));
   c = mix(c, rock, smoothstep(treeLine + 300.0, snowLine, heightM) * 0.7);
   // Beaches just above the sea, wet sand / sea floor below it.
-  c = mix(sand, c, smoothstep(2.0, 25.0, heightM));
+  float beachShare = min(TERRAIN_BEACH_WIDTH_M / max(footprintM, 1e-3), 1.0);
+  c = mix(c, sand, beachShare * (1.0 - smoothstep(2.0, 25.0, heightM)));
   c = mix(wetSand, c, step(0.0, heightM));
   // Bare rock where steep (cliffs, ridges, gullies).
   c = mix(c, rock, smoothstep(0.25, 0.45, slope));

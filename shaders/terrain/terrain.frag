@@ -150,7 +150,7 @@ void main() {
   vec3 skyIrr;
   vec3 sunIrr = sunAndSkyIrradiance(uAtmosphere, uAtmTransmittance, uAtmIrradiance,
                                     uAtmosphere.bottomRadius + hP, dot(up, uSunDir), skyIrr);
-  vec3 albedo = terrainAlbedo(heightM, slope, lat);
+  vec3 albedo = terrainAlbedo(heightM, slope, lat, footprint * WGS84_A);
   if (uImageryEnabled == 1 && heightM >= 0.0)
     albedo = terrainAlbedoOverImagery(imageryAlbedo(vec2(lat, lon), footprint), albedo, heightM, slope, lat,
                                       footprint / imageryFinestTexelRad(vec2(lat, lon)));
