@@ -18,9 +18,21 @@
 in vec3 vRelative;
 in vec3 vNormal;
 in vec4 vInfo;  // height m, latitude rad, longitude rad, detail amplitude m
+#ifndef TERRAIN_COVERAGE
 in vec3 vTransmittance;  // aerial perspective, per vertex (terrain/terrain.vert)
 in vec3 vInscatter;
+#endif
 #include "render/outputs.glsl"
+// Tiles that may discard are drawn twice (TerrainRenderer::drawTiles): TERRAIN_COVERAGE makes
+// only the discards and writes the depth of what survives them, then TERRAIN_AFTER_COVERAGE
+// shades, with the depth test (equal) before the shader and no discards: llvmpipe runs a
+// shader that may discard in full for every fragment, the sea floor's too, before its test.
+#ifdef TERRAIN_AFTER_COVERAGE
+layout(early_fragment_tests) in;
+#endif
+#if !defined(TERRAIN_LAND_ONLY) && !defined(TERRAIN_AFTER_COVERAGE)
+#define TERRAIN_DISCARDS
+#endif
 
 uniform vec3 uSunDir;  // unit, ECEF axes
 uniform int uSeaFromGlobe;  // 1 above the grid's ceiling: the globe pass draws the sea
@@ -83,7 +95,7 @@ float imageryFinestTexelRad(vec2 latLon) {
 void main() {
   // Triangles of a tile's row at a pole collapse onto the pole; llvmpipe can still emit a
   // fragment for them with undefined (NaN) attributes. They cover nothing: drop them.
-#ifndef TERRAIN_LAND_ONLY  // (tiles all above the sea, away from the poles: TerrainRenderer)
+#ifdef TERRAIN_DISCARDS  // (not for tiles all above the sea, away from the poles: TerrainRenderer)
   if (any(isnan(vInfo)) || any(isnan(vRelative)) || any(isnan(vNormal))) discard;
 #endif
   float heightM = vInfo.x;
@@ -116,8 +128,9 @@ void main() {
   bool globeSea = uSeaFromGlobe == 1;
   bool maskCoast = uTileHasWater == 1 && landMaskOn();
   bool below = heightM < (globeSea ? 0.0 : -1.0);
-  if (below && !maskCoast) discard;
   bool maskTest = maskCoast && (globeSea || below);
+#ifdef TERRAIN_DISCARDS
+  if (below && !maskCoast) discard;
   vec2 maskLatLon = vec2(lat, lon);
   if (!globeSea && below) {
     vec3 toSea = vRelative * (heightM / (uCamAltitude - heightM));
@@ -126,8 +139,13 @@ void main() {
     maskLatLon += vec2(dot(toSea, north), dot(toSea, east) / max(cos(lat), 1e-3)) / WGS84_A;
   }
   if (maskTest && landFraction(maskLatLon, maskFootprintRad) < 0.5) discard;
+#endif
   if (maskTest) heightM = max(heightM, 0.0);
 #endif
+#ifdef TERRAIN_COVERAGE  // the depth only (TerrainRenderer masks the colour writes)
+  fragRadiance = vec4(0.0);
+  fragAux = vec4(0.0);
+#else
   // Triangles that collapse at a pole give no normal (zero or NaN): the vertical stands in.
   vec3 n = dot(vNormal, vNormal) > 1e-20 ? normalize(vNormal) : up;
   float t = length(vRelative);
@@ -163,4 +181,5 @@ void main() {
 #endif
   fragRadiance = vec4(surface * vTransmittance + vInscatter, 1.0);
   fragAux = vec4(0.0);
+#endif
 }

@@ -48,6 +48,8 @@ const gl::Program& TerrainRenderer::variant(unsigned bits) {
     if ((bits & kNoNight) != 0) defines.emplace_back("TERRAIN_NO_NIGHT");
     if ((bits & kShadowsOff) != 0) defines.emplace_back("SHADOWS_OFF");
     if ((bits & kNoImageryLayers) != 0) defines.emplace_back("IMAGERY_NO_LAYERS");
+    if ((bits & kCoverage) != 0) defines.insert(defines.end(), {"TERRAIN_COVERAGE", "TERRAIN_DEPTH_ONLY"});
+    if ((bits & kAfterCoverage) != 0) defines.emplace_back("TERRAIN_AFTER_COVERAGE");
     p = gl::Program({{GL_VERTEX_SHADER, "terrain/terrain.vert"}, {GL_FRAGMENT_SHADER, "terrain/terrain.frag"}},
                     defines);
   }
@@ -218,19 +220,42 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
 void TerrainRenderer::drawWaterTiles() {
   if (waterTiles_.empty()) return;
   if (timer_ != nullptr) timer_->mark("terrain");
-  drawTiles(waterView_, waterTiles_, *waterProgram_);
+  drawCovered(waterView_, waterTiles_, waterBits_, waterSunDirection_, true);
   waterTiles_.clear();
   gl::checkErrors("TerrainRenderer::drawWaterTiles");
 }
 
+void TerrainRenderer::drawCovered(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
+                                  unsigned frameBits, const glm::dvec3& sunDirectionEcef, bool seaFromGlobe) {
+  if (tiles.empty()) return;
+  // Above the grid's ceiling the globe's depth, drawn before, already fails the sea floor's
+  // fragments before the shader (llvmpipe tests early when nothing but the depth is on):
+  // there the first draw would only add its cost (coast-30km's terrain +7 %, orbit's +17 %).
+  if (seaFromGlobe) {
+    const gl::Program& full = variant(frameBits);
+    setFrameUniforms(full, view, sunDirectionEcef, seaFromGlobe);
+    drawTiles(view, tiles, full);
+    return;
+  }
+  const gl::Program& cover = variant(kCoverage);
+  setFrameUniforms(cover, view, sunDirectionEcef, seaFromGlobe);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  drawTiles(view, tiles, cover, GL_GREATER);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  const gl::Program& shade = variant(frameBits | kAfterCoverage);
+  setFrameUniforms(shade, view, sunDirectionEcef, seaFromGlobe);
+  drawTiles(view, tiles, shade, GL_EQUAL);
+  glDepthMask(GL_TRUE);
+}
+
 void TerrainRenderer::drawTiles(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
-                                const gl::Program& p) {
+                                const gl::Program& p, GLenum depthFunc) {
   glBindTextureUnit(gl::kUnitShadowMap, shadowMap_.id());
   p.use();
   glBindVertexArray(vao_.id());
   glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_GREATER);
-  glDepthMask(GL_TRUE);
+  glDepthFunc(depthFunc);
+  glDepthMask(depthFunc == GL_EQUAL ? GL_FALSE : GL_TRUE);
   // A heightfield seen from above hides its back faces behind front ones: cull them (the
   // skirts, seen from either side, are drawn without culling). Fragments are not free even
   // when hidden: llvmpipe shades them before the depth test when multisampling.
@@ -351,9 +376,8 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   const bool imageryLayers = imagery_ != nullptr && imagery_->layerCount() > 0;
   const unsigned frameBits = (shadows_.on ? 0u : kShadowsOff) | (nightInView ? 0u : kNoNight) |
                              (imageryLayers ? 0u : kNoImageryLayers);
-  const gl::Program& full = variant(frameBits);
-  setFrameUniforms(full, view, sunDirectionEcef, seaFromGlobe);
-  waterProgram_ = &full;
+  waterBits_ = frameBits;
+  waterSunDirection_ = sunDirectionEcef;
   // Tiles all above the sea and away from the poles need none of terrain.frag's discards and
   // coast test (their skirts may hang under the sea, where the grid's surface hides them but
   // for a pixel at the horizon): drawn without them (kLandOnly), since llvmpipe runs the test's
@@ -380,7 +404,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
     drawTiles(view, landTiles, land);
   }
   glDisable(GL_STENCIL_TEST);
-  drawTiles(view, otherTiles, full);
+  drawCovered(view, otherTiles, frameBits, sunDirectionEcef, seaFromGlobe);
   waterView_ = view;
   stats_.tiles = static_cast<int>(tiles.size());
   stats_.drawnTiles = static_cast<int>(drawn.size());

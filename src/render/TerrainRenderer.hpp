@@ -85,8 +85,16 @@ class TerrainRenderer {
   static constexpr int kShadowMapSize = 2048;   // texels per side
   static constexpr int kShadowCascades = SunShadows::kCascades;
   void setDetailUniforms(const gl::Program& p, const geo::CameraView& view) const;
+  /// Draws `tiles` with `p`, the depth test `depthFunc` (GL_GREATER, writing the depth, or
+  /// GL_EQUAL, not writing it).
   void drawTiles(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
-                 const gl::Program& p);
+                 const gl::Program& p, GLenum depthFunc = GL_GREATER);
+  /// Tiles whose fragments may be discarded (under the sea, the coast test): below the grid's
+  /// ceiling their depth by the kCoverage program, then their shading by
+  /// variant(frameBits | kAfterCoverage) (sea-2m-horizon's terrain pass -20 %, mountain-15km's
+  /// -15 %); above it, variant(frameBits) alone.
+  void drawCovered(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
+                   unsigned frameBits, const glm::dvec3& sunDirectionEcef, bool seaFromGlobe);
   /// Everything terrain.frag/vert read that is the same for every tile of a frame.
   void setFrameUniforms(const gl::Program& p, const geo::CameraView& view,
                         const glm::dvec3& sunDirectionEcef, bool seaFromGlobe) const;
@@ -119,10 +127,21 @@ class TerrainRenderer {
   /// Sun is up everywhere in view, geo::sunMayBeDownInView); kShadowsOff: no shadow maps this
   /// frame; kNoImageryLayers: no user imagery layer loaded (terrain/imagery.glsl's loops
   /// compiled out).
-  enum VariantBits : unsigned { kLandOnly = 1u, kNoNight = 2u, kShadowsOff = 4u, kNoImageryLayers = 8u };
+  /// kCoverage: only the discards, writing the depth of what survives them (its colour writes
+  /// masked off); kAfterCoverage: the shading after it, the depth test (equal) before the
+  /// shader and no discards (drawCovered).
+  enum VariantBits : unsigned {
+    kLandOnly = 1u,
+    kNoNight = 2u,
+    kShadowsOff = 4u,
+    kNoImageryLayers = 8u,
+    kCoverage = 16u,
+    kAfterCoverage = 32u
+  };
   const gl::Program& variant(unsigned bits);
-  std::array<gl::Program, 16> variants_;
-  const gl::Program* waterProgram_ = nullptr;  ///< drawWaterTiles()' program this frame
+  std::array<gl::Program, 64> variants_;
+  unsigned waterBits_ = 0;  ///< drawWaterTiles()' variant bits this frame
+  glm::dvec3 waterSunDirection_{1.0, 0.0, 0.0};
   std::vector<const terrain::Tile*> waterTiles_;  ///< left by draw() for drawWaterTiles()
   geo::CameraView waterView_;
   gl::Program shadowProgram_;  ///< id 0 until ensureShadowMap()
