@@ -102,6 +102,10 @@ class TerrainRenderer {
   /// uniforms (uShadowOn = 0 when there is none this frame).
   void renderShadowMap(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
                        const glm::dvec3& sunDirectionEcef);
+  /// Clears cascade `cascade` of the shadow map and draws `casting` into it (lightClip: camera-
+  /// relative ECEF to its clip space).
+  void drawShadowCascade(const geo::CameraView& view, int cascade, const glm::mat4& lightClip,
+                         const std::vector<const terrain::Tile*>& casting);
   /// Creates the shadow map and its framebuffer on first use (none over the open ocean).
   void ensureShadowMap();
   void bindTile(const terrain::Tile& tile);
@@ -146,6 +150,8 @@ class TerrainRenderer {
   geo::CameraView waterView_;
   gl::Program shadowProgram_;  ///< id 0 until ensureShadowMap()
   gl::Texture shadowMap_;      ///< id 0 until ensureShadowMap()
+  /// Cascades left cleared with nothing drawn into them (drawShadowCascade).
+  std::array<bool, kShadowCascades> shadowCascadeEmpty_{};
   gl::Framebuffer shadowFbo_;
   gl::VertexArray vao_;
   gl::Buffer indices_;
