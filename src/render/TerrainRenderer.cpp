@@ -119,6 +119,53 @@ double maxHeightOverBox(const terrain::Tile& t, const glm::dvec3& eyeEcef, const
 }
 }  // namespace
 
+namespace {
+// A cascade's square in the light's frame (x, y along lx, ly, camera-relative): over the tiles
+// within `reach` of the eye, clamped to +-reach; a 2 m box when none is.
+struct ShadowBox {
+  glm::dvec2 mid;
+  double half;
+};
+ShadowBox shadowBox(const std::vector<const terrain::Tile*>& tiles, const glm::dvec3& eyeEcef, const glm::dvec3& lx,
+                    const glm::dvec3& ly, double reach) {
+  glm::dvec2 lo(1e300), hi(-1e300);
+  for (const terrain::Tile* t : tiles) {
+    const glm::dvec3 c = t->boundCentreEcef - eyeEcef;
+    const double r = t->boundRadiusM;
+    if (glm::length(c) - r > reach) continue;
+    const glm::dvec2 xy(glm::dot(c, lx), glm::dot(c, ly));
+    lo = glm::min(lo, xy - r);
+    hi = glm::max(hi, xy + r);
+  }
+  lo = glm::max(lo, glm::dvec2(-reach));
+  hi = glm::min(hi, glm::dvec2(reach));
+  if (!(hi.x > lo.x && hi.y > lo.y)) {  // nothing near: an empty box far below
+    lo = glm::dvec2(-1.0);
+    hi = glm::dvec2(1.0);
+  }
+  // Square texels: the larger extent sets the scale.
+  return {0.5 * (lo + hi), 0.5 * std::max(hi.x - lo.x, hi.y - lo.y)};
+}
+}  // namespace
+
+int TerrainRenderer::shadowCascadeTexels(const geo::CameraView& view, const std::vector<const terrain::Tile*>& casting,
+                                         double half, double nearestServedM, const glm::dvec3& sunDirectionEcef) const {
+  const double sinSun = glm::dot(sunDirectionEcef, view.enu.up);
+  if (!shadowTexelsFitted_ || casting.empty() || sinSun < 0.05) return kShadowMapSize;  // low Sun: shadows reach far
+  const double tanSun = sinSun / std::sqrt(1.0 - sinSun * sinSun);
+  double nearestCasterM = 1e300, longestShadowM = 0.0;
+  for (const terrain::Tile* t : casting) {
+    nearestCasterM = std::min(nearestCasterM, std::max(glm::length(t->boundCentreEcef - view.positionEcef) - t->boundRadiusM, 0.0));
+    longestShadowM = std::max(longestShadowM, std::max(t->maxHeightM, 0.0) / tanSun);
+  }
+  // The nearest point the cascade can shadow, and the ground a screen pixel spans there.
+  const double nearestM = std::max(nearestServedM, nearestCasterM - longestShadowM);
+  const double pixelM = nearestM * 2.0 * std::tan(0.5 * view.verticalFovRad) / params_.heightPx;
+  int texels = kShadowMapSize;
+  while (texels > kShadowMinTexels && 4.0 * half / texels <= pixelM) texels /= 2;
+  return texels;
+}
+
 void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
                                       const std::vector<const terrain::Tile*>& tiles,
                                       const glm::dvec3& sunDirectionEcef) {
@@ -132,8 +179,9 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
   ensureShadowMap();
   // Cascades: the far one over the receivers within reach of the eye (by height: 30 h,
   // 20..400 km), the near one over an eighth of that, in a frame whose z axis points at the
-  // Sun. Camera-relative throughout.
+  // Sun. Camera-relative throughout. The near cascade serves the points well inside its reach.
   const double farReach = std::clamp(30.0 * h, 20000.0, 400000.0);
+  shadows_.splitM = static_cast<float>(0.8 * farReach / std::pow(8.0, kShadowCascades - 1));
   const glm::dvec3 helper = std::abs(s.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
   const glm::dvec3 lx = glm::normalize(glm::cross(helper, s));
   const glm::dvec3 ly = glm::cross(s, lx);
@@ -149,34 +197,14 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFbo);
   glGetIntegerv(GL_VIEWPORT, viewport);
   glBindFramebuffer(GL_FRAMEBUFFER, shadowFbo_.id());
-  glViewport(0, 0, kShadowMapSize, kShadowMapSize);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   shadowProgram_.use();
   glBindVertexArray(vao_.id());
-  std::array<glm::mat4, kShadowCascades>& matrices = shadows_.matrices;
-  std::array<float, kShadowCascades>& texels = shadows_.texelM;
   for (int cascade = 0; cascade < kShadowCascades; ++cascade) {
-    const double reach = farReach / std::pow(8.0, kShadowCascades - 1 - cascade);
-    glm::dvec2 lo(1e300), hi(-1e300);
-    for (const terrain::Tile* t : tiles) {
-      const glm::dvec3 c = t->boundCentreEcef - view.positionEcef;
-      const double r = t->boundRadiusM;
-      if (glm::length(c) - r > reach) continue;
-      const glm::dvec2 xy(glm::dot(c, lx), glm::dot(c, ly));
-      lo = glm::min(lo, xy - r);
-      hi = glm::max(hi, xy + r);
-    }
-    lo = glm::max(lo, glm::dvec2(-reach));
-    hi = glm::min(hi, glm::dvec2(reach));
-    if (!(hi.x > lo.x && hi.y > lo.y)) {  // nothing near: an empty box far below
-      lo = glm::dvec2(-1.0);
-      hi = glm::dvec2(1.0);
-    }
-    // Square texels: the larger extent sets the scale.
-    const double half = 0.5 * std::max(hi.x - lo.x, hi.y - lo.y);
-    const glm::dvec2 mid = 0.5 * (lo + hi);
+    const auto [mid, half] =
+        shadowBox(tiles, view.positionEcef, lx, ly, farReach / std::pow(8.0, kShadowCascades - 1 - cascade));
     // Camera-relative ECEF -> clip: x, y over the box, depth 0 nearest the Sun (zHi) .. 1 (zLo).
     glm::dmat4 m(1.0);
     for (int col = 0; col < 3; ++col) {
@@ -187,12 +215,6 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
     m[3][0] = -mid.x / half;
     m[3][1] = -mid.y / half;
     m[3][2] = zHi / (zHi - zLo);
-    glm::dmat4 toTexture(1.0);  // clip x, y in [-1, 1] -> uv in [0, 1]
-    toTexture[0][0] = toTexture[1][1] = 0.5;
-    toTexture[3][0] = toTexture[3][1] = 0.5;
-    matrices[static_cast<std::size_t>(cascade)] = glm::mat4(toTexture * m);
-    texels[static_cast<std::size_t>(cascade)] = static_cast<float>(2.0 * half / kShadowMapSize);
-
     // Only tiles over the box cast into it.
     std::vector<const terrain::Tile*> casting;
     for (const terrain::Tile* t : tiles) {
@@ -202,26 +224,37 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
       shadows_.casterMaxHeightM = std::max(shadows_.casterMaxHeightM, maxHeightOverBox(*t, view.positionEcef, lx, ly, mid, half));
       casting.push_back(t);
     }
-    drawShadowCascade(view, cascade, glm::mat4(m), casting);
+    const int texels = shadowCascadeTexels(view, casting, half, cascade == 0 ? 0.0 : static_cast<double>(shadows_.splitM), s);
+    const double share = static_cast<double>(texels) / kShadowMapSize;  // of the map's side
+    glm::dmat4 toTexture(1.0);  // clip x, y in [-1, 1] -> uv in [0, share]
+    toTexture[0][0] = toTexture[1][1] = toTexture[3][0] = toTexture[3][1] = 0.5 * share;
+    const auto k = static_cast<std::size_t>(cascade);
+    shadows_.matrices[k] = glm::mat4(toTexture * m);
+    shadows_.texelM[k] = static_cast<float>(2.0 * half / texels);
+    shadows_.extentUv[k] = static_cast<float>(share);
+    drawShadowCascade(view, cascade, glm::mat4(m), casting, texels);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFbo));
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-
   shadows_.on = true;
-  // The near cascade serves the points well inside its reach.
-  shadows_.splitM = static_cast<float>(0.8 * farReach / std::pow(8.0, kShadowCascades - 1));
 }
 
 void TerrainRenderer::drawShadowCascade(const geo::CameraView& view, int cascade, const glm::mat4& lightClip,
-                                        const std::vector<const terrain::Tile*>& casting) {
+                                        const std::vector<const terrain::Tile*>& casting, int texels) {
   const auto k = static_cast<std::size_t>(cascade);
   // A cascade with nothing in it stays cleared: its clear (16 MiB, ~2 ms on llvmpipe, every
   // frame of a view whose land is all beyond the near cascade's reach) is made once.
   if (casting.empty() && shadowCascadeEmpty_[k]) return;
   glNamedFramebufferTextureLayer(shadowFbo_.id(), GL_DEPTH_ATTACHMENT, shadowMap_.id(), 0, cascade);
+  // The part the cascade uses and a texel beyond it (the lookups' filter reaches it), or all.
+  const int cleared = casting.empty() ? kShadowMapSize : std::min(texels + 1, kShadowMapSize);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(0, 0, cleared, cleared);
   const float one = 1.0f;
   glClearNamedFramebufferfv(shadowFbo_.id(), GL_DEPTH, 0, &one);
+  glDisable(GL_SCISSOR_TEST);
   shadowCascadeEmpty_[k] = casting.empty();
+  glViewport(0, 0, texels, texels);
   shadowProgram_.set("uViewProjection", lightClip);
   for (const terrain::Tile* t : casting) {
     shadowProgram_.set("uTileOffset", glm::vec3(t->centreEcef - view.positionEcef));
@@ -312,6 +345,7 @@ void SunShadows::apply(const gl::Program& p) const {
   if (!on) return;
   glProgramUniformMatrix4fv(p.id(), p.location("uShadowMatrix"), kCascades, GL_FALSE, &matrices[0][0][0]);
   glProgramUniform1fv(p.id(), p.location("uShadowTexelM"), kCascades, texelM.data());
+  glProgramUniform1fv(p.id(), p.location("uShadowExtentUv"), kCascades, extentUv.data());
   p.set("uShadowSplitM", splitM);
 }
 

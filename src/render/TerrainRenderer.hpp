@@ -31,6 +31,8 @@ struct SunShadows {
   bool on = false;
   std::array<glm::mat4, kCascades> matrices{};
   std::array<float, kCascades> texelM{};
+  /// The part of the map's side each cascade uses (its texels over kShadowMapSize), (0, 1].
+  std::array<float, kCascades> extentUv{};
   float splitM = 0.0f;
   /// The highest point of the tiles drawn into the maps, m above sea level: bounds how far
   /// from land their shadows fall (the sea's classes, render/OceanRenderer).
@@ -79,10 +81,15 @@ class TerrainRenderer {
   /// the coast (terrain::aboveSeaHorizon; default on). Off: only the deep occluder culls them
   /// (terrain::aboveHorizon), as the selection does: for tests that compare the two.
   void setSeaHorizonCulling(bool on) { seaHorizonCulling_ = on; }
+  /// Whether a shadow cascade draws only as many texels as the screen resolves at its nearest
+  /// receivers (shadowCascadeTexels; the default) or always kShadowMapSize: for tests that
+  /// compare the two.
+  void setShadowTexelsFitted(bool on) { shadowTexelsFitted_ = on; }
 
  private:
   static constexpr int kMaxDetailOctaves = 24;  // MAX_DETAIL_OCTAVES in terrain.frag
   static constexpr int kShadowMapSize = 2048;   // texels per side
+  static constexpr int kShadowMinTexels = 256;  // the least a cascade draws (shadowCascadeTexels)
   static constexpr int kShadowCascades = SunShadows::kCascades;
   void setDetailUniforms(const gl::Program& p, const geo::CameraView& view) const;
   /// Draws `tiles` with `p`, the depth test `depthFunc` (GL_GREATER, writing the depth, or
@@ -102,10 +109,17 @@ class TerrainRenderer {
   /// uniforms (uShadowOn = 0 when there is none this frame).
   void renderShadowMap(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
                        const glm::dvec3& sunDirectionEcef);
-  /// Clears cascade `cascade` of the shadow map and draws `casting` into it (lightClip: camera-
-  /// relative ECEF to its clip space).
+  /// Clears cascade `cascade` of the shadow map and draws `casting` into its first `texels`
+  /// texels (lightClip: camera-relative ECEF to its clip space).
   void drawShadowCascade(const geo::CameraView& view, int cascade, const glm::mat4& lightClip,
-                         const std::vector<const terrain::Tile*>& casting);
+                         const std::vector<const terrain::Tile*>& casting, int texels);
+  /// Texels per side a cascade of `half` (m) over `casting` draws: fewer than kShadowMapSize,
+  /// halving down to kShadowMinTexels, while one spans at most half the ground a screen pixel
+  /// covers at the nearest point it can shadow (beyond `nearestServedM` from the eye, where
+  /// the cascade takes over, and no nearer than a caster less its longest shadow): from near
+  /// the sea the far coast's map need not be finer than the screen resolves it.
+  int shadowCascadeTexels(const geo::CameraView& view, const std::vector<const terrain::Tile*>& casting,
+                          double half, double nearestServedM, const glm::dvec3& sunDirectionEcef) const;
   /// Creates the shadow map and its framebuffer on first use (none over the open ocean).
   void ensureShadowMap();
   void bindTile(const terrain::Tile& tile);
@@ -125,6 +139,7 @@ class TerrainRenderer {
   terrain::TileCache cache_;
   terrain::SelectionParams params_;
   bool seaHorizonCulling_ = true;
+  bool shadowTexelsFitted_ = true;
   /// terrain.vert/frag variants by bits, built on first use: llvmpipe runs every branch, so
   /// a frame draws with only the code it needs. kLandOnly: without the discards and the coast
   /// test, for tiles all above the sea and away from the poles; kNoNight: no city lights (the
