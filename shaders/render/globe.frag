@@ -116,6 +116,9 @@ float groundFootprintRad(vec3 dir, float t, vec3 n) {
 
 const bool PART_HAS_SKY = GLOBE_PART != GLOBE_PART_SURFACE;
 const bool PART_HAS_SURFACE = GLOBE_PART != GLOBE_PART_SKY;
+// The sky's part holds the pixels none of whose four rays hits the ellipsoid (the classifying
+// draws found so): it need not intersect them again.
+const bool PART_ALL_MISS = GLOBE_PART == GLOBE_PART_SKY;
 
 vec3 landAlbedo(float elevation, float latitude) {
   // Stand-in ramp until imagery/material layers exist: lowland green, upland brown, snow.
@@ -240,7 +243,7 @@ PixelRays traceRays() {
   for (int i = 0; i < 4; ++i) {
     vec2 ndc = vNdc + offsets[i] * uPixelNdc;
     rays.dirs[i] = normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp);
-    rays.ts[i] = intersectEllipsoid(rays.dirs[i]);
+    rays.ts[i] = PART_ALL_MISS ? -1.0 : intersectEllipsoid(rays.dirs[i]);
     rays.nHit += rays.ts[i] >= 0.0 ? 1 : 0;
   }
   return rays;
