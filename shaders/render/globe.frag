@@ -441,6 +441,26 @@ void main() {
   fragRadiance = vec4(throughAerialPerspective(surface, hitDir, hitT, 4.0) * 0.25, 1.0);
   fragAux = vec4(foam * 0.25, 0.0, 0.0, 0.0);
 }
+#elif GLOBE_PART == GLOBE_PART_SKY && defined(GLOBE_SKY_LOW)
+// The sky below the ceiling (no ray of the pixel on the globe): the lower-resolution pass's sky;
+// only pixels near the Sun's disc trace their four rays, for its coverage and the transmittance
+// towards it (a loop of a trip there: llvmpipe skips it for blocks of pixels that all miss).
+// What the general part below computes for such pixels, without its per-pixel ray work, which
+// was three quarters of the sky's cost at 1280x720.
+void main() {
+  vec3 centreDir = normalize(uForward + vNdc.x * uTanHalfFov.x * uRight + vNdc.y * uTanHalfFov.y * uUp);
+  vec3 radiance = 4.0 * textureLod(uSkyLow, gl_FragCoord.xy * uSkyLowScale, 0.0).rgb;
+  // A pixel spans at most this angle (its diagonal at the centre of the frame), rad.
+  float pixelRad = length(uPixelNdc * uTanHalfFov);
+  float cosNear = cos(uAtmosphere.sunAngularRadius + pixelRad);
+  for (int k = 0; k < (dot(centreDir, uSunDir) > cosNear ? 1 : 0); ++k) {
+    SkyView sky = skyOf(traceRays());
+    float r = uAtmosphere.bottomRadius + uCamAltitude;
+    radiance += sky.sunDisc * transmittanceToTop(uAtmosphere, uAtmTransmittance, r, sky.mu) * sunDiscRadiance(uAtmosphere);
+  }
+  fragRadiance = vec4(radiance * 0.25, 0.0);
+  fragAux = vec4(0.0);
+}
 #else
 void main() {
   // The surface is shaded once for the samples on land and once for those on the sea (below);
