@@ -13,6 +13,10 @@
 //   5: halves: aerial in-scatter, the water's Sun and sky irradiance (3 + 2 channels)
 //   6: halves: the sky irradiance's third channel, the fine-floor flag; the pixel's class where
 //      the driver cannot export stencil values (SEA_CLASS_IN_SURFACE; 0: no sea)
+// SEA_SURFACE_COMPACT (a frame without the water volume, the class in the stencil: render/
+// OceanRenderer::surfaceCompact): layers 0-4 only, layer 3 holding the Jacobian statistic y and
+// the aerial in-scatter as halves instead of the floor's values; each layer written and read
+// costs llvmpipe about as much as a texture lookup per pixel.
 // Needs (included first): ocean/patterns.glsl (PATTERN_COUNT).
 const int SEA_SURFACE_LAYERS = 7;
 #if PATTERN_COUNT != 5
@@ -63,8 +67,10 @@ layout(location = 1) out uvec4 seaSurface1;
 layout(location = 2) out uvec4 seaSurface2;
 layout(location = 3) out uvec4 seaSurface3;
 layout(location = 4) out uvec4 seaSurface4;
+#ifndef SEA_SURFACE_COMPACT
 layout(location = 5) out uvec4 seaSurface5;
 layout(location = 6) out uvec4 seaSurface6;
+#endif
 
 // Writes the fragment's values: the grid's varyings, its footprint (m), the floor's depth
 // gradient in its triangle (floorDepthSlope) and its class (1..5, kept where SEA_CLASS_IN_SURFACE).
@@ -72,12 +78,18 @@ void writeSeaSurface(float footprintM, vec2 floorSlope, int seaClass) {
   seaSurface0 = uvec4(floatBitsToUint(vRelative), floatBitsToUint(footprintM));
   seaSurface1 = uvec4(floatBitsToUint(vOceanXY), floatBitsToUint(vPatternMean));
   seaSurface2 = uvec4(floatBitsToUint(vPatternCov), floatBitsToUint(vPatternJacobian.x));
-  seaSurface3 = uvec4(floatBitsToUint(vec2(vPatternJacobian.y, SEA_FLOOR_DEPTH)), floatBitsToUint(floorSlope));
   vec3 t = SEA_AERIAL_T, s = SEA_AERIAL_S, sunE = SEA_WATER_SUN, skyE = SEA_WATER_SKY;
+#ifdef SEA_SURFACE_COMPACT
+  seaSurface3 = uvec4(floatBitsToUint(vPatternJacobian.y), seaHalves(s.r, s.g), seaHalves(s.b, 0.0), 0u);
+#else
+  seaSurface3 = uvec4(floatBitsToUint(vec2(vPatternJacobian.y, SEA_FLOOR_DEPTH)), floatBitsToUint(floorSlope));
+#endif
   seaSurface4 = uvec4(seaHalves(vPatternShare[0], vPatternShare[1]), seaHalves(vPatternShare[2], vPatternShare[3]),
                       seaHalves(vPatternShare[4], t.r), seaHalves(t.g, t.b));
+#ifndef SEA_SURFACE_COMPACT
   seaSurface5 = uvec4(seaHalves(s.r, s.g), seaHalves(s.b, sunE.r), seaHalves(sunE.g, sunE.b), seaHalves(skyE.r, skyE.g));
   seaSurface6 = uvec4(seaHalves(skyE.b, SEA_FLOOR_FINE), uint(seaClass), 0u, 0u);
+#endif
 }
 #elif defined(OCEAN_DEFERRED)
 layout(binding = OG_UNIT_SEA_SURFACE) uniform usampler2DArray uSeaSurface;
@@ -88,8 +100,13 @@ void readSeaSurface(out float footprintM, out vec2 floorSlope) {
   ivec2 p = ivec2(gl_FragCoord.xy);
   uvec4 s0 = texelFetch(uSeaSurface, ivec3(p, 0), 0), s1 = texelFetch(uSeaSurface, ivec3(p, 1), 0);
   uvec4 s2 = texelFetch(uSeaSurface, ivec3(p, 2), 0), s3 = texelFetch(uSeaSurface, ivec3(p, 3), 0);
-  uvec4 s4 = texelFetch(uSeaSurface, ivec3(p, 4), 0), s5 = texelFetch(uSeaSurface, ivec3(p, 5), 0);
-  uvec4 s6 = texelFetch(uSeaSurface, ivec3(p, 6), 0);
+  uvec4 s4 = texelFetch(uSeaSurface, ivec3(p, 4), 0);
+#ifdef SEA_SURFACE_COMPACT
+  // Layer 3's in-scatter where the full layout has layer 5's (its other values unread).
+  uvec4 s5 = uvec4(s3.yz, 0u, 0u), s6 = uvec4(0u);
+#else
+  uvec4 s5 = texelFetch(uSeaSurface, ivec3(p, 5), 0), s6 = texelFetch(uSeaSurface, ivec3(p, 6), 0);
+#endif
   vRelative = uintBitsToFloat(s0.xyz);
   footprintM = uintBitsToFloat(s0.w);
   vOceanXY = uintBitsToFloat(s1.xy);

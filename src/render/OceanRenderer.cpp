@@ -144,8 +144,9 @@ std::vector<std::string> OceanRenderer::featureDefines(unsigned features) const 
 const gl::Program& OceanRenderer::deferredProgram(unsigned features) {
   gl::Program& p = deferredVariants_.at(features);
   if (p.id() != 0) return p;
-  std::vector<std::string> d = featureDefines(features & ~kFeatureCoastTest);  // the surface pass's test
+  std::vector<std::string> d = featureDefines(features & ~(kFeatureCoastTest | kSurfaceCompact));  // the surface pass's test
   d.emplace_back("OCEAN_DEFERRED");
+  if ((features & kSurfaceCompact) != 0) d.emplace_back("SEA_SURFACE_COMPACT");
   p = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}}, d);
   return p;
 }
@@ -309,6 +310,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
 
   unsigned features = 0;
   lastDeferred_ = false;
+  lastSurfaceCompact_ = false;
   if (model == OceanModel::Classic) {
     features = kFeatureCoastTest | kFeatureShadows;  // classic.frag has no variants: its uniforms
   } else {
@@ -558,10 +560,15 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
   glDisable(GL_STENCIL_TEST);
 }
 
+bool OceanRenderer::surfaceCompact(unsigned surfaceKey) {
+  return (surfaceKey & kFeatureWaterVolume) == 0 && gl::driverProfile().stencilExport;
+}
+
 std::vector<std::string> OceanRenderer::surfaceDefines(unsigned key) const {
   std::vector<std::string> d = featureDefines(key & (kFeatureWaterVolume | kFeatureCoastTest));
   if ((key & kSurfaceClasses) != 0) d.emplace_back("OCEAN_SEA_CLASSIFY");
   if (!gl::driverProfile().stencilExport) d.emplace_back("SEA_CLASS_IN_SURFACE");
+  if (surfaceCompact(key)) d.emplace_back("SEA_SURFACE_COMPACT");
   return d;
 }
 
@@ -668,7 +675,9 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   if (classes) resetClassRows();
   GLint target = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
-  surface_.bindForWriting(width, height, depthStencil);
+  const bool compact = surfaceCompact(surfaceKey);
+  lastSurfaceCompact_ = compact;
+  surface_.bindForWriting(width, height, depthStencil, compact);
   const bool exportsStencil = gl::driverProfile().stencilExport;
   if (!exportsStencil) surface_.clearClasses();
   // Each pixel's class is its nearest fragment's (depth-tested, its values in the buffer).
@@ -700,6 +709,8 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   glBindVertexArray(vao_.id());
   std::array<unsigned, kSeaClasses> perClass = classFeatures(features, routedShadows);
   if (!classes) perClass.at(0) = features & ~kFeatureCoastTest;  // one class: all but the coast test
+  if (compact)
+    for (unsigned& f : perClass) f |= kSurfaceCompact;
   for (std::size_t k = 0; k < kSeaClasses && seaVisible; ++k) {
     if (rows.at(2 * k + 1) < rows.at(2 * k)) continue;  // no pixel of this class
     if (timer_ != nullptr) timer_->mark(kClassPass.at(k));

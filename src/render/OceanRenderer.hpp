@@ -124,6 +124,8 @@ class OceanRenderer {
   static constexpr int kDeferredMaxCellPixels = 16;
   /// Whether the last draw was deferred.
   [[nodiscard]] bool lastDrawDeferred() const { return lastDeferred_; }
+  /// Whether the last deferred draw's surface buffer had the compact layout (kSurfaceCompact).
+  [[nodiscard]] bool lastSurfaceCompact() const { return lastSurfaceCompact_; }
   /// Grid cell size in pixels (the paper's ~8 px); smaller = finer geometry, slower.
   void setCellPixels(int pixels) { cellPixels_ = pixels; }
   /// Whether the grid's cells may grow (2 or kGrownCellFactor-fold, to at most kGrownCellMaxRad
@@ -189,6 +191,8 @@ class OceanRenderer {
   static constexpr unsigned kSurfaceClasses = 4;
   /// The defines of the surface pass's programs for `key` (as prepareSurfacePass).
   [[nodiscard]] std::vector<std::string> surfaceDefines(unsigned key) const;
+  /// Whether a surface pass of key `surfaceKey` writes the compact layout (kSurfaceCompact).
+  static bool surfaceCompact(unsigned surfaceKey);
   /// The surface pass's program for `key` (as prepareSurfacePass), compiled on first use.
   const gl::Program& surfaceProgram(unsigned key);
   /// The grid's index list split in two copies by ocean/grid_near_land.comp (after the surface
@@ -277,6 +281,10 @@ class OceanRenderer {
   /// angle varies by no more than that across the sea in view: the sea from a few metres (the
   /// horizon 7 km away at 4 m: 0.06°), or looking down from a few km (sea-8km: 0.70°).
   static constexpr unsigned kFeatureFrameSky = 8;
+  /// Not a feature of the shading: the deferred programs' key bit for the surface buffer's
+  /// compact layout (SEA_SURFACE_COMPACT: the frame's surface has no water volume and the
+  /// driver exports stencil values).
+  static constexpr unsigned kSurfaceCompact = 16;
   const Atmosphere* atmosphere_;
   ValidationMode mode_;
   std::vector<std::string> defines_;        ///< the filtered model's, whatever the features
@@ -286,7 +294,7 @@ class OceanRenderer {
   bool deferredWithoutExport_;
   std::array<gl::Program, 16> variants_;    ///< by feature bits; id() 0 until compiled
   gl::Program classify_;                    ///< ocean/sea_classify.frag; id() 0 until compiled
-  std::array<gl::Program, 16> deferredVariants_;  ///< ocean.frag OCEAN_DEFERRED, by feature bits
+  std::array<gl::Program, 32> deferredVariants_;  ///< ocean.frag OCEAN_DEFERRED, by feature bits and kSurfaceCompact
   std::array<gl::Program, 8> surfaceVariants_;    ///< sea_surface.frag: volume, coast, classes bits
   std::array<gl::Program, 8> gridComputeVariants_;  ///< grid_vertices.comp, as surfaceVariants_
   gl::Buffer gridVertices_;  ///< the surface pass's vertices (ocean/grid_vertex_buffer.glsl)
@@ -297,6 +305,7 @@ class OceanRenderer {
   std::size_t gridVerticesBytes_ = 0;
   SeaSurfaceBuffer surface_;
   bool lastDeferred_ = false;
+  bool lastSurfaceCompact_ = false;
   unsigned classesDrawn_ = 0;  ///< classesDrawn()
   bool countClassSamples_ = false;
   std::array<std::uint64_t, kSeaClasses> classSamples_{};

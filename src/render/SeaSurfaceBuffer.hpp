@@ -10,13 +10,17 @@ namespace og::render {
 class SeaSurfaceBuffer {
  public:
   static constexpr int kLayers = 7;  ///< SEA_SURFACE_LAYERS
+  /// Layers of the compact layout (SEA_SURFACE_COMPACT: no water volume, the class in the
+  /// stencil), the draw buffers beyond them off.
+  static constexpr int kCompactLayers = 5;
 
   /// The single-sampled 2D depth-stencil texture attached to the bound draw framebuffer, 0
   /// where it has none (the default framebuffer, a renderbuffer, a multisample texture).
   [[nodiscard]] static GLuint boundDepthStencilTexture();
   /// Makes the buffer `width` x `height` over `depthStencil` (boundDepthStencilTexture) and binds
-  /// its framebuffer with the kLayers draw buffers; remade only when either changes.
-  void bindForWriting(int width, int height, GLuint depthStencil);
+  /// its framebuffer with the kLayers draw buffers (kCompactLayers when `compact`); remade only
+  /// when the size or the depth-stencil texture changes.
+  void bindForWriting(int width, int height, GLuint depthStencil, bool compact = false);
   /// Zeroes the layer that holds each pixel's class where the driver cannot export stencil
   /// values (layer 6, ocean/sea_surface.glsl's SEA_CLASS_IN_SURFACE; 0: no sea drawn), bound
   /// for writing.
@@ -29,6 +33,7 @@ class SeaSurfaceBuffer {
   gl::Framebuffer fbo_;
   int width_ = 0, height_ = 0;
   GLuint depthStencil_ = 0;
+  int drawBuffers_ = 0;
 };
 
 }  // namespace og::render

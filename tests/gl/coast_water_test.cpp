@@ -630,6 +630,14 @@ TEST(CoastWater, DeferredSeaMatchesTheGridsOwnFragments) {
                                  "deferred_open_sea");
   }
   {
+    // The open Atlantic (no floor within reach): the surface buffer's compact layout, its
+    // in-scatter where the full layout keeps the floor (ocean/sea_surface.glsl).
+    render::GlobeRenderer r(data::defaultElevation());
+    expectDeferredMatchesForward(r, classView({20.0, -40.0, 4.0}, 270.0, -10.0, 30.0, 250.0), "deferred_open_atlantic");
+    r.render(classView({20.0, -40.0, 4.0}, 270.0, -10.0, 30.0, 250.0));
+    EXPECT_EQ(r.ocean().lastSurfaceCompact(), gl::driverProfile().stencilExport);
+  }
+  {
     render::GlobeRenderer r(shelf());
     const unsigned drawn = expectDeferredMatchesForward(
         r, classView({kLat - 2.2 / 111.2, kLon, 20.0}, 10.0, -15.0, 40.0, 20.0), "deferred_shelf");
