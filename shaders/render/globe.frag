@@ -456,7 +456,8 @@ void main() {
   for (int k = 0; k < (dot(centreDir, uSunDir) > cosNear ? 1 : 0); ++k) {
     SkyView sky = skyOf(traceRays());
     float r = uAtmosphere.bottomRadius + uCamAltitude;
-    radiance += sky.sunDisc * transmittanceToTop(uAtmosphere, uAtmTransmittance, r, sky.mu) * sunDiscRadiance(uAtmosphere);
+    vec3 transmittance = transmittanceToTop(uAtmosphere, uAtmTransmittance, r, sky.mu);
+    radiance += sky.sunDisc * transmittance * sunDiscRadiance(uAtmosphere);
   }
   fragRadiance = vec4(radiance * 0.25, 0.0);
   fragAux = vec4(0.0);
@@ -536,16 +537,9 @@ void main() {
     SkyView sky = skyOf(rays);
     if (skyCount > 0.0 && sky.space) radiance += sky.sunDisc * sunDiscRadiance(uAtmosphere);
     for (int k = 0; k < (skyCount > 0.0 && !sky.space ? 1 : 0); ++k) {
-      vec3 transmittance;
-#ifdef GLOBE_SKY_LOW
-      // Below the ceiling (inside the atmosphere, the ray raised above the horizon): the sky
-      // from the lower-resolution pass, the ray's transmittance for the Sun's disc here.
-      vec3 inscatter = textureLod(uSkyLow, gl_FragCoord.xy * uSkyLowScale, 0.0).rgb;
-      transmittance = transmittanceToTop(uAtmosphere, uAtmTransmittance, r, sky.mu);
-#else
+      vec3 transmittance;  // (the low-resolution sky's part is the main above)
       vec3 inscatter = skyRadiance(uAtmosphere, uAtmTransmittance, uAtmScattering, uAtmSingleMie,
                                    r, sky.mu, muS, dot(sky.dir, uSunDir), transmittance);
-#endif
       radiance += inscatter * skyCount + sky.sunDisc * transmittance * sunDiscRadiance(uAtmosphere);
     }
   }

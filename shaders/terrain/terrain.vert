@@ -28,7 +28,7 @@ out vec3 vRelative;
 out vec3 vNormal;
 out vec4 vInfo;
 // The same in every program (TERRAIN_DEPTH_ONLY too): the terrain's second draw of a tile
-// tests its depth for equality with the first's (TerrainRenderer::drawTiles).
+// tests its depth for equality with the first's (TerrainRenderer::drawCovered).
 invariant gl_Position;
 #ifndef TERRAIN_DEPTH_ONLY
 uniform vec3 uSunDir;  // unit, ECEF axes

@@ -144,7 +144,8 @@ std::vector<std::string> OceanRenderer::featureDefines(unsigned features) const 
 const gl::Program& OceanRenderer::deferredProgram(unsigned features) {
   gl::Program& p = deferredVariants_.at(features);
   if (p.id() != 0) return p;
-  std::vector<std::string> d = featureDefines(features & ~(kFeatureCoastTest | kSurfaceCompact));  // the surface pass's test
+  // The coast test is the surface pass's; kSurfaceCompact is not a feature.
+  std::vector<std::string> d = featureDefines(features & ~(kFeatureCoastTest | kSurfaceCompact));
   d.emplace_back("OCEAN_DEFERRED");
   if ((features & kSurfaceCompact) != 0) d.emplace_back("SEA_SURFACE_COMPACT");
   p = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}}, d);

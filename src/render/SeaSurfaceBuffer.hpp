@@ -23,7 +23,7 @@ class SeaSurfaceBuffer {
   void bindForWriting(int width, int height, GLuint depthStencil, bool compact = false);
   /// Zeroes the layer that holds each pixel's class where the driver cannot export stencil
   /// values (layer 6, ocean/sea_surface.glsl's SEA_CLASS_IN_SURFACE; 0: no sea drawn), bound
-  /// for writing.
+  /// for writing with all kLayers (never the compact layout, which needs the export).
   void clearClasses() const;
   /// Binds the texture to gl::kUnitSeaSurface for the shading passes.
   void bindForReading() const;

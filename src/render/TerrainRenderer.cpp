@@ -151,16 +151,19 @@ ShadowBox shadowBox(const std::vector<const terrain::Tile*>& tiles, const glm::d
 int TerrainRenderer::shadowCascadeTexels(const geo::CameraView& view, const std::vector<const terrain::Tile*>& casting,
                                          double half, double nearestServedM, const glm::dvec3& sunDirectionEcef) const {
   const double sinSun = glm::dot(sunDirectionEcef, view.enu.up);
-  if (!shadowTexelsFitted_ || casting.empty() || sinSun < 0.05) return kShadowMapSize;  // low Sun: shadows reach far
+  if (!shadowTexelsFitted_ || casting.empty() || sinSun < 0.05) return kShadowMapSize;  // low Sun: long shadows
   const double tanSun = sinSun / std::sqrt(1.0 - sinSun * sinSun);
   double nearestCasterM = 1e300, longestShadowM = 0.0;
   for (const terrain::Tile* t : casting) {
-    nearestCasterM = std::min(nearestCasterM, std::max(glm::length(t->boundCentreEcef - view.positionEcef) - t->boundRadiusM, 0.0));
+    const double distanceM = glm::length(t->boundCentreEcef - view.positionEcef) - t->boundRadiusM;
+    nearestCasterM = std::min(nearestCasterM, std::max(distanceM, 0.0));
     longestShadowM = std::max(longestShadowM, std::max(t->maxHeightM, 0.0) / tanSun);
   }
-  // The nearest point the cascade can shadow, and the ground a screen pixel spans there.
+  // The nearest point the cascade can shadow, and the ground a screen pixel spans there, as
+  // the map's texels measure it: a texel falls on level ground stretched by 1 / sin(the
+  // Sun's elevation) towards the Sun (and its normal offset, 1.5 texels, with it).
   const double nearestM = std::max(nearestServedM, nearestCasterM - longestShadowM);
-  const double pixelM = nearestM * 2.0 * std::tan(0.5 * view.verticalFovRad) / params_.heightPx;
+  const double pixelM = nearestM * 2.0 * std::tan(0.5 * view.verticalFovRad) / params_.heightPx * sinSun;
   int texels = kShadowMapSize;
   while (texels > kShadowMinTexels && 4.0 * half / texels <= pixelM) texels /= 2;
   return texels;
@@ -224,7 +227,8 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
       shadows_.casterMaxHeightM = std::max(shadows_.casterMaxHeightM, maxHeightOverBox(*t, view.positionEcef, lx, ly, mid, half));
       casting.push_back(t);
     }
-    const int texels = shadowCascadeTexels(view, casting, half, cascade == 0 ? 0.0 : static_cast<double>(shadows_.splitM), s);
+    const double servedFromM = cascade == 0 ? 0.0 : static_cast<double>(shadows_.splitM);
+    const int texels = shadowCascadeTexels(view, casting, half, servedFromM, s);
     const double share = static_cast<double>(texels) / kShadowMapSize;  // of the map's side
     glm::dmat4 toTexture(1.0);  // clip x, y in [-1, 1] -> uv in [0, share]
     toTexture[0][0] = toTexture[1][1] = toTexture[3][0] = toTexture[3][1] = 0.5 * share;
@@ -278,7 +282,11 @@ void TerrainRenderer::drawCovered(const geo::CameraView& view, const std::vector
   // Above the grid's ceiling the globe's depth, drawn before, already fails the sea floor's
   // fragments before the shader (llvmpipe tests early when nothing but the depth is on):
   // there the first draw would only add its cost (coast-30km's terrain +7 %, orbit's +17 %).
-  if (seaFromGlobe) {
+  // Multisampled, llvmpipe shades a fragment before its depth test anyway (docs/performance.md):
+  // the first draw would only add its cost there too.
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  if (seaFromGlobe || samples > 1) {
     const gl::Program& full = variant(frameBits);
     setFrameUniforms(full, view, sunDirectionEcef, seaFromGlobe);
     drawTiles(view, tiles, full);
@@ -292,6 +300,7 @@ void TerrainRenderer::drawCovered(const geo::CameraView& view, const std::vector
   const gl::Program& shade = variant(frameBits | kAfterCoverage);
   setFrameUniforms(shade, view, sunDirectionEcef, seaFromGlobe);
   drawTiles(view, tiles, shade, GL_EQUAL);
+  glDepthFunc(GL_GREATER);  // as draw() leaves it
   glDepthMask(GL_TRUE);
 }
 

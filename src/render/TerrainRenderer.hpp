@@ -57,7 +57,8 @@ class TerrainRenderer {
   /// Needs a current GL 4.5 context. Shares the elevation layer.
   TerrainRenderer(std::shared_ptr<const data::LatLonGrid> elevation, const Atmosphere* atmosphere);
 
-  /// Draws into the bound framebuffer (width x height) with GL_GREATER depth test and writes.
+  /// Draws into the bound framebuffer (width x height) with GL_GREATER depth test and writes
+  /// (and leaves them so).
   /// `seaFromGlobe`: the globe pass drew the sea (above the projected grid's ceiling), so
   /// fragments under sea level are left to it.
   void draw(const geo::CameraView& view, int width, int height, const glm::dvec3& sunDirectionEcef,
@@ -114,10 +115,11 @@ class TerrainRenderer {
   void drawShadowCascade(const geo::CameraView& view, int cascade, const glm::mat4& lightClip,
                          const std::vector<const terrain::Tile*>& casting, int texels);
   /// Texels per side a cascade of `half` (m) over `casting` draws: fewer than kShadowMapSize,
-  /// halving down to kShadowMinTexels, while one spans at most half the ground a screen pixel
-  /// covers at the nearest point it can shadow (beyond `nearestServedM` from the eye, where
-  /// the cascade takes over, and no nearer than a caster less its longest shadow): from near
-  /// the sea the far coast's map need not be finer than the screen resolves it.
+  /// halving down to kShadowMinTexels, while one, laid on level ground along the Sun's rays,
+  /// spans at most half the ground a screen pixel covers at the nearest point it can shadow
+  /// (beyond `nearestServedM` from the eye, where the cascade takes over, and no nearer than a
+  /// caster less its longest shadow): a far coast's map need not be finer than the screen
+  /// resolves it.
   int shadowCascadeTexels(const geo::CameraView& view, const std::vector<const terrain::Tile*>& casting,
                           double half, double nearestServedM, const glm::dvec3& sunDirectionEcef) const;
   /// Creates the shadow map and its framebuffer on first use (none over the open ocean).
