@@ -98,9 +98,9 @@ class TerrainRenderer {
   void drawTiles(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
                  const gl::Program& p, GLenum depthFunc = GL_GREATER);
   /// Tiles whose fragments may be discarded (under the sea, the coast test): below the grid's
-  /// ceiling their depth by the kCoverage program, then their shading by
-  /// variant(frameBits | kAfterCoverage) (sea-2m-horizon's terrain pass -20 %, mountain-15km's
-  /// -15 %); above it, variant(frameBits) alone.
+  /// ceiling and single-sampled, their depth by the kCoverage program, then their shading by
+  /// variant(frameBits | kAfterCoverage) (sea-2m-horizon's terrain pass -18 %; mountain-15km,
+  /// whose tiles are land, unchanged); otherwise variant(frameBits) alone.
   void drawCovered(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
                    unsigned frameBits, const glm::dvec3& sunDirectionEcef, bool seaFromGlobe);
   /// Everything terrain.frag/vert read that is the same for every tile of a frame.
