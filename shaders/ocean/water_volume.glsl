@@ -183,18 +183,22 @@ void prepareWaterVolume(vec3 rel, vec3 v, vec3 n, vec3 up, vec2 latLon, vec2 oce
   // The floor along the ray (seed 001 §3.2's search). Where the land mask's fine level does not
   // move the floor, the layer is bilinear over kilometres and the grid's triangle, a few pixels
   // wide, holds it as a plane: the ray meets that plane (no lookup). Where the fine coast moves
-  // it, two secant steps through the layer's heights from a flat floor at the vertices' depth
-  // (exact on a flat floor, ~1 % of the depth on the steepest shelves of a 5' layer).
+  // it, a secant step through the layer's heights at the pixel's surface point and where a flat
+  // floor at that depth would be (exact on a plane).
   float sHit = floorPlaneRoot(gap0, down, dot(floorSlope, (ecefToOcean * t).xy), dMax);
   float gapHit = 0.0;
   for (int fine = 0; fine < (vFloorFine > 0.0 ? 1 : 0); ++fine) {  // a GPU skips it; llvmpipe runs it, masked
-    float s1 = min(gap0 / -down, dMax);
+    // From the pixel's own floor under its surface point, at its footprint, then one secant
+    // step (exact on a plane). It started from the vertices' floor, which at the fine level's
+    // points can be land where the pixel (kept as sea by the coast test at its footprint) is
+    // not: a cell of a few hundred metres took the floor at the surface (a bright square of
+    // sand off Ceuta from 1 km), which the two secant steps from there never left.
     float footprintRad = footprintM / WGS84_A;
+    float gapStart = -floorHeightAlong(latLon, horizontal, 0.0, footprintRad);  // <= 0: at the surface
+    float s1 = min(max(gapStart, 0.0) / -down, dMax);
     float gap1 = s1 * down - floorHeightAlong(latLon, horizontal, s1, footprintRad);
-    float s2 = s1 > 1e-3 ? secantRoot(0.0, gap0, s1, gap1, dMax) : 0.0;  // 0: floor at the surface
-    float gap2 = s2 * down - floorHeightAlong(latLon, horizontal, s2, footprintRad);
-    sHit = abs(s2 - s1) > 1e-3 ? secantRoot(s1, gap1, s2, gap2, dMax) : s2;
-    gapHit = s2 >= dMax ? gap2 : 0.0;
+    sHit = s1 > 1e-3 ? secantRoot(0.0, gapStart, s1, gap1, dMax) : 0.0;  // 0: floor at the surface
+    gapHit = sHit >= dMax ? gap1 : 0.0;
   }
   if (sHit >= dMax && gapHit >= 0.0) {
     gWater = WaterVolume(true, uSeaColor);  // no floor within d_max
