@@ -446,8 +446,8 @@ void main() {
 // only pixels near the Sun's disc trace their four rays, for its coverage and the transmittance
 // towards it (a loop of a trip there: a GPU skips it elsewhere; llvmpipe runs its body once,
 // masked, whatever the condition). What the general part below computes for such pixels,
-// without its per-sample bookkeeping (arrays indexed per pixel, loops over the samples), which
-// cost llvmpipe a sixth of the globe pass at 1280x720.
+// without its per-sample bookkeeping (loops over the samples), which cost llvmpipe a sixth of
+// the globe pass at 1280x720.
 void main() {
   vec3 centreDir = normalize(uForward + vNdc.x * uTanHalfFov.x * uRight + vNdc.y * uTanHalfFov.y * uUp);
   vec3 radiance = 4.0 * textureLod(uSkyLow, gl_FragCoord.xy * uSkyLowScale, 0.0).rgb;
@@ -467,15 +467,18 @@ void main() {
 void main() {
   // The surface is shaded once for the samples on land and once for those on the sea (below);
   // the atmosphere, smooth across a pixel, once per pixel for the samples on the globe (at
-  // their mean distance) and once for those in the sky. Loops run only as many times as needed: llvmpipe skips a
-  // loop's remaining trips for a whole vector of pixels but evaluates both sides of an if.
+  // their mean distance) and once for those in the sky. Loops run only as many times as
+  // needed: llvmpipe skips a loop's trips after the first for a whole vector of pixels (the
+  // first it runs, masked) but evaluates both sides of an if.
   PixelRays rays = traceRays();
   bvec4 seaSamples = PART_HAS_SURFACE ? samplesSea(rays) : bvec4(false);
-  int hits[4];
-  bool seas[4];
   vec3 hitDir = vec3(0.0);
   float hitT = 0.0;
   int nHit = 0, nSea = 0;
+  // The samples on the globe apart on land and on the sea: their summed directions and distances.
+  vec3 landDir = vec3(0.0), seaDir = vec3(0.0);
+  float landT = 0.0, seaT = 0.0;
+  int nLand = 0;
   float seaHoles = 0.0;
   vec3 seaHoleDir = vec3(0.0);
   float seaHoleT = 0.0;
@@ -489,11 +492,15 @@ void main() {
       continue;
     }
     nSea += sea ? 1 : 0;
-    seas[i] = sea;
     if (rays.ts[i] >= 0.0) {
-      hits[nHit++] = i;
+      ++nHit;
       hitDir += rays.dirs[i];
       hitT += rays.ts[i];
+      landDir += sea ? vec3(0.0) : rays.dirs[i];
+      landT += sea ? 0.0 : rays.ts[i];
+      seaDir += sea ? rays.dirs[i] : vec3(0.0);
+      seaT += sea ? rays.ts[i] : 0.0;
+      nLand += sea ? 0 : 1;
     }
   }
   float R = uAtmosphere.bottomRadius;
@@ -507,17 +514,6 @@ void main() {
   // rays that hit a convex body from outside form a convex cone, so a mean of hits hits),
   // each weighted by its count. At most one trip of each loop: llvmpipe runs both sides of an
   // if, so shading every sample with the land's and the sea's code cost a coast pixel 4x both.
-  vec3 landDir = vec3(0.0), seaDir = vec3(0.0);
-  float landT = 0.0, seaT = 0.0;
-  int nLand = 0;
-  for (int k = 0; k < nHit; ++k) {
-    int i = hits[k];
-    landDir += seas[i] ? vec3(0.0) : rays.dirs[i];
-    landT += seas[i] ? 0.0 : rays.ts[i];
-    seaDir += seas[i] ? rays.dirs[i] : vec3(0.0);
-    seaT += seas[i] ? rays.ts[i] : 0.0;
-    nLand += seas[i] ? 0 : 1;
-  }
   for (int k = 0; k < (PART_HAS_SURFACE && nLand > 0 ? 1 : 0); ++k)
     surface += float(nLand) * surfaceAtMeanRay(landDir, landT / float(nLand), false);
   for (int k = 0; k < (PART_HAS_SURFACE && nSea > 0 ? 1 : 0); ++k) {

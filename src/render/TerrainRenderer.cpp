@@ -287,25 +287,22 @@ void TerrainRenderer::drawCovered(const geo::CameraView& view, const std::vector
   GLint samples = 0;
   glGetIntegerv(GL_SAMPLES, &samples);
   if (seaFromGlobe || samples > 1) {
-    const gl::Program& full = variant(frameBits);
-    setFrameUniforms(full, view, sunDirectionEcef, seaFromGlobe);
-    drawTiles(view, tiles, full);
+    drawTiles(view, tiles, frameBits, sunDirectionEcef, seaFromGlobe);
     return;
   }
-  const gl::Program& cover = variant(kCoverage);
-  setFrameUniforms(cover, view, sunDirectionEcef, seaFromGlobe);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  drawTiles(view, tiles, cover, GL_GREATER);
+  drawTiles(view, tiles, kCoverage, sunDirectionEcef, seaFromGlobe);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  const gl::Program& shade = variant(frameBits | kAfterCoverage);
-  setFrameUniforms(shade, view, sunDirectionEcef, seaFromGlobe);
-  drawTiles(view, tiles, shade, GL_EQUAL);
+  drawTiles(view, tiles, frameBits | kAfterCoverage, sunDirectionEcef, seaFromGlobe, GL_EQUAL);
   glDepthFunc(GL_GREATER);  // as draw() leaves it
   glDepthMask(GL_TRUE);
 }
 
 void TerrainRenderer::drawTiles(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
-                                const gl::Program& p, GLenum depthFunc) {
+                                unsigned bits, const glm::dvec3& sunDirectionEcef, bool seaFromGlobe,
+                                GLenum depthFunc) {
+  const gl::Program& p = variant(bits);
+  setFrameUniforms(p, view, sunDirectionEcef, seaFromGlobe);
   glBindTextureUnit(gl::kUnitShadowMap, shadowMap_.id());
   p.use();
   glBindVertexArray(vao_.id());
@@ -455,11 +452,8 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
     glStencilFunc(GL_ALWAYS, 0, 0xff);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   }
-  if (!landTiles.empty()) {  // (the variant is compiled on first use: none over the open sea)
-    const gl::Program& land = variant(frameBits | kLandOnly);
-    setFrameUniforms(land, view, sunDirectionEcef, seaFromGlobe);
-    drawTiles(view, landTiles, land);
-  }
+  if (!landTiles.empty())  // (the variant is compiled on first use: none over the open sea)
+    drawTiles(view, landTiles, frameBits | kLandOnly, sunDirectionEcef, seaFromGlobe);
   glDisable(GL_STENCIL_TEST);
   drawCovered(view, otherTiles, frameBits, sunDirectionEcef, seaFromGlobe);
   waterView_ = view;

@@ -93,10 +93,10 @@ class TerrainRenderer {
   static constexpr int kShadowMinTexels = 256;  // the least a cascade draws (shadowCascadeTexels)
   static constexpr int kShadowCascades = SunShadows::kCascades;
   void setDetailUniforms(const gl::Program& p, const geo::CameraView& view) const;
-  /// Draws `tiles` with `p`, the depth test `depthFunc` (GL_GREATER, writing the depth, or
-  /// GL_EQUAL, not writing it).
-  void drawTiles(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
-                 const gl::Program& p, GLenum depthFunc = GL_GREATER);
+  /// Draws `tiles` with variant(bits) and the frame's uniforms (setFrameUniforms), the depth
+  /// test `depthFunc` (GL_GREATER, writing the depth, or GL_EQUAL, not writing it).
+  void drawTiles(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles, unsigned bits,
+                 const glm::dvec3& sunDirectionEcef, bool seaFromGlobe, GLenum depthFunc = GL_GREATER);
   /// Tiles whose fragments may be discarded (under the sea, the coast test): below the grid's
   /// ceiling and single-sampled, their depth by the kCoverage program, then their shading by
   /// variant(frameBits | kAfterCoverage) (sea-2m-horizon's terrain pass -18 %; mountain-15km,

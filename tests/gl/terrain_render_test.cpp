@@ -228,13 +228,9 @@ TEST(TerrainRender, TilesBeyondTheSeaHorizonAreLeftOutUnseen) {
 TEST(TerrainRender, ShadowMapsFittedToTheScreenKeepThePicture) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(data::defaultElevation());
-  render::FrameInput f;
-  f.camera.position = {24.2, -78.2, 2.0};
-  f.camera.headingDeg = 270.0;
-  f.camera.pitchDeg = -10.0;
-  f.width = 640;
-  f.height = 360;
-  f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 20.0, 250.0);
+  const render::FrameInput f = test::frameOf({.latDeg = 24.2, .lonDeg = -78.2, .heightM = 2.0, .headingDeg = 270.0,
+                                              .pitchDeg = -10.0, .fovDeg = 45.0, .width = 640, .height = 360},
+                                             20.0, 250.0);
   r.terrain().setShadowTexelsFitted(false);
   r.render(f);
   const io::ImageRgbaF full = r.radiance();

@@ -86,15 +86,9 @@ TEST_F(TerrainBeach, CoastsFromOrbitAreNotDottedWithSand) {
   // South-western Europe from 4000 km (pixels ~14 km): the terrain's coast pixels where the
   // imagery shows water take the procedural material at sea level, whose sand band (0-25 m)
   // painted a pale dot on every such pixel (the Azores, the Balearics, Italy's coasts).
-  test::View v;
-  v.latDeg = 41.0;
-  v.lonDeg = -4.0;
-  v.heightM = 4.0e6;
-  v.pitchDeg = -90.0;
-  v.fovDeg = 30.0;
-  v.width = 160;
-  v.height = 96;
-  renderer_->render(test::frameOf(v, 60.0, 180.0));
+  renderer_->render(test::frameOf(
+      {.latDeg = 41.0, .lonDeg = -4.0, .heightM = 4.0e6, .pitchDeg = -90.0, .fovDeg = 30.0, .width = 160, .height = 96},
+      60.0, 180.0));
   test::savePng(*renderer_, "beach_iberia_4000km");
   const int dots = brightDots(renderer_->display(), 30.0);
   std::printf("bright dots from 4000 km: %d\n", dots);
