@@ -31,6 +31,9 @@ uniform float uPatternAmplitude;              // 0..1: fades the resolved waves 
 uniform float uWhitecapThreshold;             // epsilon of Dupuy 2012 Eq. 3
 uniform float uPatternFftSize;                 // texels per tile side
 uniform float uPatternTopLod;                 // log2(uPatternFftSize): the 1x1 mip level
+// The first pattern with waves (ocean::firstPatternWithWaves): under light winds the longest
+// tiles are empty (less than 1e-6 of the sea's heights and slopes), and every loop starts here.
+uniform int uPatternFirst;
 
 // The per-wind tables (render/OceanPatterns, a uniform block: llvmpipe reads it faster than a
 // texture): column c = wind speed c m/s (0..50); row i < PATTERN_COUNT: pattern i's
@@ -121,7 +124,7 @@ vec3 oceanDisplacement(vec2 xy, float cellFootprintM, vec2 wind) {
   vec2 p = fieldPosition(xy);
   WindBins wb = windBins(fieldWindAngle(wind.y));
   vec3 d = vec3(0.0);
-  for (int i = 0; i < PATTERN_COUNT; ++i) {
+  for (int i = uPatternFirst; i < PATTERN_COUNT; ++i) {
     float lod = patternLod(0.5 * cellFootprintM, i);
     if (lod >= uPatternTopLod) break;
     float scale = patternTable(i, wind.x).x;
@@ -254,7 +257,7 @@ PatternSums oceanVertexPatterns(vec2 xy, float pixelFootprintM, vec2 wind) {
   sums.cov = vec3(0.0);
   sums.jac = vec2(0.0);
   for (int i = 0; i < PATTERN_COUNT; ++i) sums.share[i] = patternVertexShare(patternLod(pixelFootprintM, i));
-  for (int i = 0; i < PATTERN_COUNT; ++i) {
+  for (int i = uPatternFirst; i < PATTERN_COUNT; ++i) {
     if (sums.share[i] <= 0.0) break;  // finer patterns have larger lods: none of theirs either
     addPatternStatistics(sums, p, wb, i, patternLod(pixelFootprintM, i), patternBand(i, wind.x), sums.share[i]);
   }
@@ -276,7 +279,7 @@ SeaSurface oceanSurface(vec2 xy, float footprintM, vec2 wind, PatternSums vertex
   // no loop trip after the first that no pixel of a block needs).
   int resolved = 0;
   while (resolved < PATTERN_COUNT && patternLod(footprintM, resolved) < uPatternTopLod) ++resolved;
-  int first = 0;
+  int first = uPatternFirst;
   while (first < resolved && vertexSums.share[first] >= 0.999) ++first;
   for (int i = first; i < resolved; ++i) {
     float lod = patternLod(footprintM, i);

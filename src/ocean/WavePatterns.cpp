@@ -209,6 +209,36 @@ PatternTables makePatternTables(const WavePatterns& w) {
   return t;
 }
 
+int firstPatternWithWaves(const WavePatterns& w, const PatternTables& t) {
+  // The realisation's variances per pattern (the larger of the two sets).
+  std::array<double, kPatternCount> height{}, slope{};
+  for (std::size_t i = 0; i < kPatternCount; ++i)
+    for (const auto& set : w.stats) {
+      height[i] = std::max(height[i], set[i].heightVarianceM2);
+      slope[i] = std::max(slope[i], set[i].slope.total());
+    }
+  const int lastSpeed = std::clamp(static_cast<int>(std::ceil(w.params.referenceWindMs)), 0, PatternTables::kSpeeds - 1);
+  // Whether pattern i holds at least kEmptyPatternShare of one of the sums at any speed.
+  auto holdsWaves = [&](std::size_t i) {
+    for (int s = 0; s <= lastSpeed; ++s) {
+      const auto& row = t.pattern[static_cast<std::size_t>(s)];
+      double heightSum = 0.0, slopeSum = 0.0;
+      for (std::size_t j = 0; j < kPatternCount; ++j) {
+        heightSum += row[j].heightScale * row[j].heightScale * height[j];
+        slopeSum += row[j].slopeScale * row[j].slopeScale * slope[j];
+      }
+      if (row[i].heightScale * row[i].heightScale * height[i] > kEmptyPatternShare * heightSum ||
+          row[i].slopeScale * row[i].slopeScale * slope[i] > kEmptyPatternShare * slopeSum ||
+          row[i].slope.total() > kEmptyPatternShare * t.totalSlopeVariance(s).total())
+        return true;
+    }
+    return false;
+  };
+  int first = 0;
+  while (first < kPatternCount - 1 && !holdsWaves(static_cast<std::size_t>(first))) ++first;
+  return first;
+}
+
 SlopeVariance PatternTables::totalSlopeVariance(int speed) const {
   const auto s = static_cast<std::size_t>(speed);
   SlopeVariance v = tail.at(s);

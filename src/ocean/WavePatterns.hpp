@@ -135,6 +135,17 @@ struct PatternTables {
 };
 PatternTables makePatternTables(const WavePatterns& patterns);
 
+/// Share of the sea's variance below which a pattern counts as empty (firstPatternWithWaves).
+inline constexpr double kEmptyPatternShare = 1e-6;
+/// The first pattern (largest first) holding waves at any wind the patterns are used for (up to
+/// the reference wind, `tables`' columns 0 .. ceil(reference)): the patterns before it carry less
+/// than kEmptyPatternShare of the height and of the slope variance, in the realisation (their
+/// textures, as each column scales them) and in the tables' analytic bands. Under light winds
+/// the longest tiles are empty (the 4983 m tile holds ~1e-8 of the slopes at 7 m/s), and the
+/// shaders' loops skip them (shaders/ocean/patterns.glsl, uPatternFirst). At most
+/// kPatternCount - 1.
+[[nodiscard]] int firstPatternWithWaves(const WavePatterns& patterns, const PatternTables& tables);
+
 /// Whitecaps (Dupuy 2012 Eq. 6): the fraction of sea whose Jacobian j of the horizontal
 /// displacement is below the breaking threshold, for j ~ Normal(mu, sigma²):
 /// W = 1/2 erfc((mu - epsilon) / (sqrt 2 sigma)).

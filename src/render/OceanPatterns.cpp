@@ -126,6 +126,7 @@ OceanPatterns::GpuFft::GpuFft(const ocean::WavePatterns& w)
 OceanPatterns::OceanPatterns(std::shared_ptr<const ocean::WavePatterns> patterns, double requestedWindMs,
                              std::optional<Fft> fft)
     : patterns_(std::move(patterns)), tables_(ocean::makePatternTables(*patterns_)) {
+  firstPattern_ = ocean::firstPatternWithWaves(*patterns_, tables_);
   requestedWindMs_ = requestedWindMs;
   const int n = patterns_->params.fftSize;
   const auto texels = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
@@ -377,6 +378,7 @@ void OceanPatterns::setUniforms(const gl::Program& program, const ocean::OceanFr
   program.set("uWhitecapThreshold", static_cast<float>(ocean::kWhitecapThreshold));
   program.set("uPatternFftSize", static_cast<float>(p.fftSize));
   program.set("uPatternTopLod", static_cast<float>(log2Of(p.fftSize)));
+  program.set("uPatternFirst", firstPattern_);
 }
 
 void OceanPatterns::bind() const {

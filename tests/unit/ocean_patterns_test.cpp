@@ -196,3 +196,30 @@ TEST(OceanPatterns, TablesStayFiniteUnderLightReferenceWinds) {
       }
   }
 }
+
+// The shaders skip the patterns before firstPatternWithWaves: under a light wind the longest
+// tiles hold nothing (the 4983 m tile at 7 m/s: waves of 156 m and more, the peak at ~40 m);
+// under a gale every tile has waves. Whatever it skips holds under kEmptyPatternShare of the
+// slopes at every wind the patterns serve, and the pattern it starts at holds more.
+TEST(OceanPatterns, LoopsSkipOnlyTheTilesWithoutWaves) {
+  EXPECT_EQ(firstPatternWithWaves(patternsFor(20.0), makePatternTables(patternsFor(20.0))), 0);
+  EXPECT_EQ(firstPatternWithWaves(patternsFor(10.0), makePatternTables(patternsFor(10.0))), 0);
+  for (double uRef : {0.5, 2.0, 7.0}) {
+    const WavePatterns w = patternsFor(uRef);
+    const PatternTables t = makePatternTables(w);
+    const int first = firstPatternWithWaves(w, t);
+    EXPECT_GE(first, 1) << uRef;
+    EXPECT_LT(first, kPatternCount) << uRef;
+    for (int s = 0; s <= static_cast<int>(std::ceil(uRef)); ++s) {
+      const double total = t.totalSlopeVariance(s).total();
+      for (int i = 0; i < first; ++i)
+        EXPECT_LT(t.pattern[s][i].slope.total(), kEmptyPatternShare * total) << uRef << " m/s, wind " << s << ", pattern " << i;
+    }
+    const auto& stats = w.stats[0];
+    double slopes = 0.0;
+    for (const PatternStats& p : stats) slopes += p.slope.total();
+    EXPECT_GT(stats[static_cast<std::size_t>(first)].slope.total(), kEmptyPatternShare * slopes) << uRef;
+    for (int i = 0; i < first; ++i) EXPECT_LT(stats[static_cast<std::size_t>(i)].slope.total(), kEmptyPatternShare * slopes);
+  }
+  EXPECT_EQ(firstPatternWithWaves(patternsFor(7.0), makePatternTables(patternsFor(7.0))), 1);
+}
