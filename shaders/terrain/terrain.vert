@@ -61,6 +61,12 @@ void main() {
   vNormal = aNormal;
   vInfo = vec4(aInfo.x + m * dot(aMorph, up), aInfo.yzw);
   gl_Position = uViewProjection * vec4(vRelative, 1.0);
+#ifdef TERRAIN_SHADOW_CASTER
+  // Ground below sea level casts no shadow (terrain/shadow_depth.frag): the clipper cuts it
+  // off where the interpolated height crosses 0, as a discard would per fragment, so the
+  // maps' fragments need no shader (llvmpipe then writes their depth without running one).
+  gl_ClipDistance[0] = vInfo.x;
+#endif
 #ifndef TERRAIN_DEPTH_ONLY
   float t = max(length(vRelative), 1e-3);
   aerialToAltitude(vRelative / t, t, max(vInfo.x, 0.0), vTransmittance, vInscatter);

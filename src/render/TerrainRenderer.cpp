@@ -62,7 +62,7 @@ void TerrainRenderer::ensureShadowMap() {
   if (shadowMap_.id() != 0) return;
   shadowProgram_ = gl::Program({{GL_VERTEX_SHADER, "terrain/terrain.vert"},
                                 {GL_FRAGMENT_SHADER, "terrain/shadow_depth.frag"}},
-                               {"TERRAIN_DEPTH_ONLY"});  // so is its program
+                               {"TERRAIN_DEPTH_ONLY", "TERRAIN_SHADOW_CASTER"});  // so is its program
   shadowMap_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
   shadowFbo_ = gl::createFramebuffer();
   glTextureStorage3D(shadowMap_.id(), 1, GL_DEPTH_COMPONENT32F, kShadowMapSize, kShadowMapSize,
@@ -203,6 +203,7 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
+  glEnable(GL_CLIP_DISTANCE0);  // the ground below sea level (TERRAIN_SHADOW_CASTER)
   shadowProgram_.use();
   glBindVertexArray(vao_.id());
   for (int cascade = 0; cascade < kShadowCascades; ++cascade) {
@@ -238,6 +239,7 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
     shadows_.extentUv[k] = static_cast<float>(share);
     drawShadowCascade(view, cascade, glm::mat4(m), casting, texels);
   }
+  glDisable(GL_CLIP_DISTANCE0);
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFbo));
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   shadows_.on = true;
