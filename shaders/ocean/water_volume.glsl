@@ -110,7 +110,7 @@ float floorSunVisibility(vec3 rel, vec3 n) {
   for (int on = 0; on < uShadowOn; ++on) {
     int c = length(rel) < uShadowSplitM ? 0 : 1;
     vec4 s = uShadowMatrix[c] * vec4(rel + n * (1.5 * uShadowTexelM[c]), 1.0);
-    bool inside = all(greaterThanEqual(s.xy, vec2(0.0))) && all(lessThanEqual(s.xy, vec2(uShadowExtentUv[c]))) && s.z > 0.0;
+    bool inside = all(greaterThanEqual(s.xy, uShadowCropUv[c].xy)) && all(lessThanEqual(s.xy, uShadowCropUv[c].zw)) && s.z > 0.0;
     visible = inside ? texture(uShadowMap, vec4(s.xy, float(c), min(s.z, 1.0))) : 1.0;  // as terrain/shadow.glsl
   }
 #endif

@@ -6,9 +6,10 @@ const int SHADOW_CASCADES = 2;
 layout(binding = OG_UNIT_SHADOW_MAP) uniform sampler2DArrayShadow uShadowMap;
 uniform mat4 uShadowMatrix[SHADOW_CASCADES];  // camera-relative ECEF -> uv in [0, extent], depth [0,1]
 uniform float uShadowTexelM[SHADOW_CASCADES]; // texel size, m
-// The part of the map's side a cascade uses, [0, extent]^2 of uv (TerrainRenderer::
-// shadowCascadeTexels: fewer texels where the screen does not resolve them).
-uniform float uShadowExtentUv[SHADOW_CASCADES];
+// The part of a cascade's map its lookups may read, (u0, v0, u1, v1) of uv: its first texels
+// (TerrainRenderer::shadowCascadeTexels: fewer where the screen does not resolve them), over
+// the receivers the screen shows (render/ShadowReceivers); outside it every point is lit.
+uniform vec4 uShadowCropUv[SHADOW_CASCADES];
 uniform float uShadowSplitM;  // distance from the eye where the near cascade hands over, m
 uniform int uShadowOn;        // 0: no maps this frame (Sun down, or seen from far out)
 
@@ -17,7 +18,7 @@ float sunVisibilityFromMaps(vec3 rel, vec3 n) {
   int c = length(rel) < uShadowSplitM ? 0 : 1;
   // Offset along the normal by a texel and a half: a surface never shadows itself.
   vec4 s = uShadowMatrix[c] * vec4(rel + n * (1.5 * uShadowTexelM[c]), 1.0);
-  if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(uShadowExtentUv[c]))) || s.z <= 0.0) return 1.0;
+  if (any(lessThan(s.xy, uShadowCropUv[c].xy)) || any(greaterThan(s.xy, uShadowCropUv[c].zw)) || s.z <= 0.0) return 1.0;
   // A point farther from the Sun than every caster (depth beyond 1: the open sea between the
   // eye and a far coast towards a low Sun) is lit unless a caster stands over it: the cleared
   // map's 1 must pass the comparison (a float depth map does not clamp the reference).

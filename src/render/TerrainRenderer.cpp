@@ -99,20 +99,20 @@ void TerrainRenderer::bindTile(const terrain::Tile& t) {
 }
 
 namespace {
-// The highest vertex of `t` (m above sea level) over the square box |xy - mid| <= half of a
-// shadow map (xy camera-relative along lx, ly), widened by two of its cells so that the
-// triangles reaching in count: what the tile casts into that map (the sea's classes bound its
-// shadows' reach by it, render/OceanRenderer::shadowReachM). Coarse tiles' bounding spheres
-// overlap the box while their heights (a far island's peaks) lie outside it.
-double maxHeightOverBox(const terrain::Tile& t, const glm::dvec3& eyeEcef, const glm::dvec3& lx,
-                        const glm::dvec3& ly, const glm::dvec2& mid, double half) {
+// The highest vertex of `t` (m above sea level) over `rect` of a shadow map (xy
+// camera-relative along lx, ly), widened by two of its cells so that the triangles reaching in
+// count: what the tile casts into that map (the sea's classes bound its shadows' reach by it,
+// render/OceanRenderer::shadowReachM). Coarse tiles' bounding spheres overlap the rectangle
+// while their heights (a far island's peaks) lie outside it.
+double maxHeightOverRect(const terrain::Tile& t, const glm::dvec3& eyeEcef, const glm::dvec3& lx,
+                         const glm::dvec3& ly, const LightRect& rect) {
   const glm::dvec3 c = t.centreEcef - eyeEcef;
-  const double reach = half + 2.0 * t.spacingM;
+  const glm::dvec2 lo = rect.lo - 2.0 * t.spacingM, hi = rect.hi + 2.0 * t.spacingM;
   double most = -1e30;
   for (std::size_t k = 0; k < t.positions.size() && k < t.vertices.size(); ++k) {
     const glm::dvec3 p = c + t.positions[k];
     const glm::dvec2 xy(glm::dot(p, lx), glm::dot(p, ly));
-    if (std::abs(xy.x - mid.x) <= reach && std::abs(xy.y - mid.y) <= reach)
+    if (xy.x >= lo.x && xy.x <= hi.x && xy.y >= lo.y && xy.y <= hi.y)
       most = std::max(most, static_cast<double>(t.vertices[k].heightM));
   }
   return most;
@@ -188,12 +188,15 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
   const glm::dvec3 helper = std::abs(s.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
   const glm::dvec3 lx = glm::normalize(glm::cross(helper, s));
   const glm::dvec3 ly = glm::cross(s, lx);
-  // Casters: every tile in view (its depth range along the Sun).
-  double zLo = 1e300, zHi = -1e300;
+  // Casters: every tile in view (its depth range along the Sun); receivers: the ground and the
+  // sea between the tiles' lowest and highest points.
+  double zLo = 1e300, zHi = -1e300, lowM = 0.0, highM = 0.0;
   for (const terrain::Tile* t : tiles) {
     const double z = glm::dot(t->boundCentreEcef - view.positionEcef, s);
     zLo = std::min(zLo, z - t->boundRadiusM);
     zHi = std::max(zHi, z + t->boundRadiusM);
+    lowM = std::min(lowM, t->minHeightM);
+    highM = std::max(highM, t->maxHeightM);
   }
 
   GLint previousFbo = 0, viewport[4];
@@ -204,6 +207,7 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   glEnable(GL_CLIP_DISTANCE0);  // the ground below sea level (TERRAIN_SHADOW_CASTER)
+  glEnable(GL_SCISSOR_TEST);    // the cascades' crops
   shadowProgram_.use();
   glBindVertexArray(vao_.id());
   for (int cascade = 0; cascade < kShadowCascades; ++cascade) {
@@ -219,47 +223,77 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
     m[3][0] = -mid.x / half;
     m[3][1] = -mid.y / half;
     m[3][2] = zHi / (zHi - zLo);
-    // Only tiles over the box cast into it.
-    std::vector<const terrain::Tile*> casting;
-    for (const terrain::Tile* t : tiles) {
-      const glm::dvec3 c = t->boundCentreEcef - view.positionEcef;
-      const glm::dvec2 xy(glm::dot(c, lx), glm::dot(c, ly));
-      if (glm::any(glm::greaterThan(glm::abs(xy - mid), glm::dvec2(half + t->boundRadiusM)))) continue;
-      shadows_.casterMaxHeightM = std::max(shadows_.casterMaxHeightM, maxHeightOverBox(*t, view.positionEcef, lx, ly, mid, half));
-      casting.push_back(t);
-    }
     const double servedFromM = cascade == 0 ? 0.0 : static_cast<double>(shadows_.splitM);
-    const int texels = shadowCascadeTexels(view, casting, half, servedFromM, s);
+    const int texels = shadowCascadeTexels(view, tilesOver(tiles, view.positionEcef, lx, ly, {mid - half, mid + half}),
+                                           half, servedFromM, s);
+    // The part of the map over the receivers the cascade serves, on the same texels.
+    const double servedToM = cascade == 0 ? static_cast<double>(shadows_.splitM) : 1e9;
+    const LightRect receivers = shadowCropped_ ? shadowReceiverRect(view, lx, ly, servedFromM, servedToM, lowM - kShadowSlabMarginM,
+                                                                    highM + kShadowSlabMarginM)
+                                               : LightRect{mid - half, mid + half};
+    const glm::ivec4 crop = shadowCropTexels(receivers, mid, half, texels);
+    const double metresPerTexel = 2.0 * half / texels;
+    const LightRect drawn{mid - half + glm::dvec2(crop.x, crop.y) * metresPerTexel,
+                          mid - half + glm::dvec2(crop.z, crop.w) * metresPerTexel};
+    // Only tiles over the part drawn cast into it.
+    const std::vector<const terrain::Tile*> casting =
+        crop.z > crop.x && crop.w > crop.y ? tilesOver(tiles, view.positionEcef, lx, ly, drawn) : std::vector<const terrain::Tile*>{};
+    for (const terrain::Tile* t : casting)
+      shadows_.casterMaxHeightM = std::max(shadows_.casterMaxHeightM, maxHeightOverRect(*t, view.positionEcef, lx, ly, drawn));
     const double share = static_cast<double>(texels) / kShadowMapSize;  // of the map's side
     glm::dmat4 toTexture(1.0);  // clip x, y in [-1, 1] -> uv in [0, share]
     toTexture[0][0] = toTexture[1][1] = toTexture[3][0] = toTexture[3][1] = 0.5 * share;
     const auto k = static_cast<std::size_t>(cascade);
     shadows_.matrices[k] = glm::mat4(toTexture * m);
-    shadows_.texelM[k] = static_cast<float>(2.0 * half / texels);
-    shadows_.extentUv[k] = static_cast<float>(share);
-    drawShadowCascade(view, cascade, glm::mat4(m), casting, texels);
+    shadows_.texelM[k] = static_cast<float>(metresPerTexel);
+    // The lookups' bound: the crop less the filter's texel beyond the point (terrain/shadow.glsl).
+    shadows_.cropUv[k] = casting.empty() ? glm::vec4(1.0f, 1.0f, 0.0f, 0.0f)
+                                         : glm::vec4(glm::vec4(crop) + glm::vec4(1.0f, 1.0f, -1.0f, -1.0f)) /
+                                               static_cast<float>(kShadowMapSize);
+    drawShadowCascade(view, cascade, glm::mat4(m), casting, texels, crop);
   }
+  glDisable(GL_SCISSOR_TEST);
   glDisable(GL_CLIP_DISTANCE0);
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFbo));
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   shadows_.on = true;
 }
 
+glm::ivec4 TerrainRenderer::shadowCropTexels(const LightRect& receivers, const glm::dvec2& mid, double half, int texels) {
+  if (receivers.empty()) return {0, 0, 0, 0};
+  // Texel coordinates of the receivers, and kShadowCropMarginTexels around them: the lookups'
+  // offset along the normal (1.5 texels) and their filter's texel beyond it.
+  const glm::dvec2 lo = ((receivers.lo - mid) / half + 1.0) * (0.5 * texels) - static_cast<double>(kShadowCropMarginTexels);
+  const glm::dvec2 hi = ((receivers.hi - mid) / half + 1.0) * (0.5 * texels) + static_cast<double>(kShadowCropMarginTexels);
+  const glm::dvec2 top(texels);
+  const glm::ivec2 a(glm::clamp(glm::floor(lo), glm::dvec2(0.0), top)), b(glm::clamp(glm::ceil(hi), glm::dvec2(0.0), top));
+  return b.x > a.x && b.y > a.y ? glm::ivec4(a, b) : glm::ivec4(0);
+}
+
+std::vector<const terrain::Tile*> TerrainRenderer::tilesOver(const std::vector<const terrain::Tile*>& tiles,
+                                                             const glm::dvec3& eyeEcef, const glm::dvec3& lx,
+                                                             const glm::dvec3& ly, const LightRect& rect) {
+  std::vector<const terrain::Tile*> over;
+  for (const terrain::Tile* t : tiles) {
+    const glm::dvec3 c = t->boundCentreEcef - eyeEcef;
+    const glm::dvec2 xy(glm::dot(c, lx), glm::dot(c, ly));
+    const double r = t->boundRadiusM;
+    if (xy.x + r < rect.lo.x || xy.x - r > rect.hi.x || xy.y + r < rect.lo.y || xy.y - r > rect.hi.y) continue;
+    over.push_back(t);
+  }
+  return over;
+}
+
 void TerrainRenderer::drawShadowCascade(const geo::CameraView& view, int cascade, const glm::mat4& lightClip,
-                                        const std::vector<const terrain::Tile*>& casting, int texels) {
-  const auto k = static_cast<std::size_t>(cascade);
-  // A cascade with nothing in it stays cleared: its clear (16 MiB, ~2 ms on llvmpipe, every
-  // frame of a view whose land is all beyond the near cascade's reach) is made once.
-  if (casting.empty() && shadowCascadeEmpty_[k]) return;
+                                        const std::vector<const terrain::Tile*>& casting, int texels,
+                                        const glm::ivec4& crop) {
+  // A cascade with nothing in it is neither cleared nor drawn: its lookups find every point lit
+  // (its crop is empty).
+  if (casting.empty()) return;
   glNamedFramebufferTextureLayer(shadowFbo_.id(), GL_DEPTH_ATTACHMENT, shadowMap_.id(), 0, cascade);
-  // The part the cascade uses and a texel beyond it (the lookups' filter reaches it), or all.
-  const int cleared = casting.empty() ? kShadowMapSize : std::min(texels + 1, kShadowMapSize);
-  glEnable(GL_SCISSOR_TEST);
-  glScissor(0, 0, cleared, cleared);
+  glScissor(crop.x, crop.y, crop.z - crop.x, crop.w - crop.y);
   const float one = 1.0f;
   glClearNamedFramebufferfv(shadowFbo_.id(), GL_DEPTH, 0, &one);
-  glDisable(GL_SCISSOR_TEST);
-  shadowCascadeEmpty_[k] = casting.empty();
   glViewport(0, 0, texels, texels);
   shadowProgram_.set("uViewProjection", lightClip);
   for (const terrain::Tile* t : casting) {
@@ -353,7 +387,7 @@ void SunShadows::apply(const gl::Program& p) const {
   if (!on) return;
   glProgramUniformMatrix4fv(p.id(), p.location("uShadowMatrix"), kCascades, GL_FALSE, &matrices[0][0][0]);
   glProgramUniform1fv(p.id(), p.location("uShadowTexelM"), kCascades, texelM.data());
-  glProgramUniform1fv(p.id(), p.location("uShadowExtentUv"), kCascades, extentUv.data());
+  glProgramUniform4fv(p.id(), p.location("uShadowCropUv"), kCascades, &cropUv[0][0]);
   p.set("uShadowSplitM", splitM);
 }
 

@@ -19,6 +19,7 @@
 #include "gl/Shader.hpp"
 #include "render/Atmosphere.hpp"
 #include "render/ImageryTextures.hpp"
+#include "render/ShadowReceivers.hpp"
 #include "terrain/Selection.hpp"
 #include "terrain/TileCache.hpp"
 
@@ -31,8 +32,10 @@ struct SunShadows {
   bool on = false;
   std::array<glm::mat4, kCascades> matrices{};
   std::array<float, kCascades> texelM{};
-  /// The part of the map's side each cascade uses (its texels over kShadowMapSize), (0, 1].
-  std::array<float, kCascades> extentUv{};
+  /// The part of each cascade's map that its lookups may read, (u0, v0, u1, v1) of the map's
+  /// uv: within its first texels (shadowCascadeTexels), over the receivers the screen shows
+  /// (shadowReceiverRect); outside it every point is lit. Empty (u1 < u0) when nothing casts.
+  std::array<glm::vec4, kCascades> cropUv{};
   float splitM = 0.0f;
   /// The highest point of the tiles drawn into the maps, m above sea level: bounds how far
   /// from land their shadows fall (the sea's classes, render/OceanRenderer).
@@ -86,11 +89,21 @@ class TerrainRenderer {
   /// receivers (shadowCascadeTexels; the default) or always kShadowMapSize: for tests that
   /// compare the two.
   void setShadowTexelsFitted(bool on) { shadowTexelsFitted_ = on; }
+  /// Whether a shadow cascade draws only the part of its map over the receivers the screen
+  /// shows in its distances (shadowReceiverRect; the default) or all of it: for tests that
+  /// compare the two.
+  void setShadowCropped(bool on) { shadowCropped_ = on; }
 
  private:
   static constexpr int kMaxDetailOctaves = 24;  // MAX_DETAIL_OCTAVES in terrain.frag
   static constexpr int kShadowMapSize = 2048;   // texels per side
   static constexpr int kShadowMinTexels = 256;  // the least a cascade draws (shadowCascadeTexels)
+  /// Texels drawn around a cascade's receivers: the lookups' offset along the normal (1.5
+  /// texels), their filter's texel beyond it and the rounding.
+  static constexpr int kShadowCropMarginTexels = 4;
+  /// Metres added below and above the tiles' heights for the receivers' slab: the sea's waves
+  /// and the raised ellipsoids' departure from constant heights.
+  static constexpr double kShadowSlabMarginM = 100.0;
   static constexpr int kShadowCascades = SunShadows::kCascades;
   void setDetailUniforms(const gl::Program& p, const geo::CameraView& view) const;
   /// Draws `tiles` with variant(bits) and the frame's uniforms (setFrameUniforms), the depth
@@ -110,10 +123,19 @@ class TerrainRenderer {
   /// uniforms (uShadowOn = 0 when there is none this frame).
   void renderShadowMap(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
                        const glm::dvec3& sunDirectionEcef);
-  /// Clears cascade `cascade` of the shadow map and draws `casting` into its first `texels`
-  /// texels (lightClip: camera-relative ECEF to its clip space).
+  /// Clears the part `crop` (texels x0, y0, x1, y1) of cascade `cascade` of the shadow map and
+  /// draws `casting` into it, the cascade's first `texels` texels on the viewport (lightClip:
+  /// camera-relative ECEF to its clip space); nothing when `casting` is empty.
   void drawShadowCascade(const geo::CameraView& view, int cascade, const glm::mat4& lightClip,
-                         const std::vector<const terrain::Tile*>& casting, int texels);
+                         const std::vector<const terrain::Tile*>& casting, int texels, const glm::ivec4& crop);
+  /// The texels (x0, y0, x1, y1) of a cascade of `texels` over the box mid +- half (m, across
+  /// the Sun's rays) that hold `receivers` and kShadowCropMarginTexels around them, clamped to
+  /// the cascade; all 0 when none.
+  [[nodiscard]] static glm::ivec4 shadowCropTexels(const LightRect& receivers, const glm::dvec2& mid, double half, int texels);
+  /// The tiles whose bounding spheres reach over `rect` (across the Sun's rays lx, ly).
+  [[nodiscard]] static std::vector<const terrain::Tile*> tilesOver(const std::vector<const terrain::Tile*>& tiles,
+                                                                   const glm::dvec3& eyeEcef, const glm::dvec3& lx,
+                                                                   const glm::dvec3& ly, const LightRect& rect);
   /// Texels per side a cascade of `half` (m) over `casting` draws: fewer than kShadowMapSize,
   /// halving down to kShadowMinTexels, while one, laid on level ground along the Sun's rays,
   /// spans at most half the ground a screen pixel covers at the nearest point it can shadow
@@ -142,6 +164,7 @@ class TerrainRenderer {
   terrain::SelectionParams params_;
   bool seaHorizonCulling_ = true;
   bool shadowTexelsFitted_ = true;
+  bool shadowCropped_ = true;
   /// terrain.vert/frag variants by bits, built on first use: llvmpipe runs every branch, so
   /// a frame draws with only the code it needs. kLandOnly: without the discards and the coast
   /// test, for tiles all above the sea and away from the poles; kNoNight: no city lights (the
@@ -167,8 +190,6 @@ class TerrainRenderer {
   geo::CameraView waterView_;
   gl::Program shadowProgram_;  ///< id 0 until ensureShadowMap()
   gl::Texture shadowMap_;      ///< id 0 until ensureShadowMap()
-  /// Cascades left cleared with nothing drawn into them (drawShadowCascade).
-  std::array<bool, kShadowCascades> shadowCascadeEmpty_{};
   gl::Framebuffer shadowFbo_;
   gl::VertexArray vao_;
   gl::Buffer indices_;

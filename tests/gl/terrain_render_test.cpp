@@ -240,7 +240,7 @@ TEST(TerrainRender, ShadowMapsFittedToTheScreenKeepThePicture) {
   test::savePng(r, "shadows_fitted_bahama_bank_2m");
   const render::SunShadows& s = r.terrain().shadows();
   ASSERT_TRUE(s.on);
-  const float least = std::min(s.extentUv[0], s.extentUv[1]);
+  const float least = std::min(s.cropUv[0].z, s.cropUv[1].z);
   EXPECT_LT(least, 1.0f) << "a cascade should draw fewer texels than the map holds";
   ASSERT_EQ(full.pixels.size(), fitted.pixels.size());
   double worst = 0.0;
@@ -255,7 +255,56 @@ TEST(TerrainRender, ShadowMapsFittedToTheScreenKeepThePicture) {
     over1 += change > 0.01 ? 1 : 0;
   }
   std::printf("shadow extents %.3f %.3f, largest change %.4f, %d pixels over 1 %%\n",
-              static_cast<double>(s.extentUv[0]), static_cast<double>(s.extentUv[1]), worst, over1);
+              static_cast<double>(s.cropUv[0].z), static_cast<double>(s.cropUv[1].z), worst, over1);
   EXPECT_LT(over1, pixels / 100) << "more than 1 % of the pixels changed by over 1 %";
   EXPECT_LT(worst, 0.05);
+}
+
+// A cascade draws only the part of its map over the receivers the screen shows in its range of
+// distances (render/ShadowReceivers), on the same texels as the whole map: a caster shades
+// only points across the Sun's rays from it, so the picture must not change. Views with the
+// Sun ahead, behind and low, from 2 m to 30 km; the near cascade of the Himalaya from 15 km
+// must come out cropped (else the test would compare a picture with itself).
+TEST(TerrainRender, ShadowMapsCroppedToTheReceiversKeepThePicture) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  struct Case {
+    const char* name;
+    test::View view;
+    double sunElevationDeg, sunAzimuthDeg;
+  };
+  const std::vector<Case> cases{
+      {"himalaya_15km_horizon", {.latDeg = 27.3, .lonDeg = 86.9, .heightM = 15000.0, .headingDeg = 10.0, .pitchDeg = -2.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0},
+      {"himalaya_6km_sun_behind", {.latDeg = 28.0, .lonDeg = 86.5, .heightM = 6000.0, .headingDeg = 70.0, .pitchDeg = -40.0, .fovDeg = 45.0, .width = 320, .height = 180}, 10.0, 250.0},
+      {"himalaya_9km_low_sun_ahead", {.latDeg = 27.8, .lonDeg = 87.2, .heightM = 9000.0, .headingDeg = 240.0, .pitchDeg = -10.0, .fovDeg = 45.0, .width = 320, .height = 180}, 5.0, 250.0},
+      {"gibraltar_2m", {.latDeg = 36.0, .lonDeg = -5.5, .heightM = 2.0, .headingDeg = 270.0, .pitchDeg = 2.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0},
+      {"gibraltar_30km", {.latDeg = 35.6, .lonDeg = -5.6, .heightM = 30000.0, .headingDeg = 0.0, .pitchDeg = -30.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0},
+  };
+  for (const Case& c : cases) {
+    const render::FrameInput f = test::frameOf(c.view, c.sunElevationDeg, c.sunAzimuthDeg);
+    r.terrain().setShadowCropped(false);
+    r.render(f);
+    const io::ImageRgbaF whole = r.radiance();
+    r.terrain().setShadowCropped(true);
+    r.render(f);
+    const io::ImageRgbaF cropped = r.radiance();
+    const render::SunShadows& s = r.terrain().shadows();
+    ASSERT_TRUE(s.on) << c.name;
+    if (std::string(c.name) == "himalaya_15km_horizon") {
+      const glm::vec4 near = s.cropUv[0];
+      EXPECT_LT((near.z - near.x) * (near.w - near.y), 0.5f) << "the near cascade should draw under half its map";
+    }
+    ASSERT_EQ(whole.pixels.size(), cropped.pixels.size());
+    double worst = 0.0;
+    for (std::size_t i = 0; i < whole.pixels.size(); i += 4)
+      for (std::size_t k = 0; k < 3; ++k) {
+        const double a = whole.pixels[i + k], b = cropped.pixels[i + k];
+        worst = std::max(worst, std::abs(a - b) / std::max(a, 1e-3));
+      }
+    std::printf("%s: crops %.3f x %.3f, %.3f x %.3f of the maps; largest change %.2e\n", c.name,
+                static_cast<double>(s.cropUv[0].z - s.cropUv[0].x), static_cast<double>(s.cropUv[0].w - s.cropUv[0].y),
+                static_cast<double>(s.cropUv[1].z - s.cropUv[1].x), static_cast<double>(s.cropUv[1].w - s.cropUv[1].y), worst);
+    if (worst > 1e-4) test::savePng(r, std::string("shadows_cropped_") + c.name);
+    EXPECT_LT(worst, 1e-4) << c.name;
+  }
 }

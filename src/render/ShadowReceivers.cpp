@@ -1,0 +1,70 @@
+#include "render/ShadowReceivers.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <utility>
+
+#include "geo/Wgs84.hpp"
+
+namespace og::render {
+
+namespace {
+// Distances along the ray where it is inside the ellipsoid raised by heightM: both roots of
+// |(eye + t dir) / axes|² = 1, or none. The constant term |eye / axes|² - 1 in double keeps
+// a metre above the sea (its relative size 1e-7).
+std::optional<std::pair<double, double>> insideRaised(const glm::dvec3& eye, const glm::dvec3& dir, double heightM) {
+  const glm::dvec3 axes(geo::kWgs84SemiMajorM + heightM, geo::kWgs84SemiMajorM + heightM, geo::kWgs84SemiMinorM + heightM);
+  const glm::dvec3 o = eye / axes, d = dir / axes;
+  const double a = glm::dot(d, d), b = glm::dot(o, d), c = glm::dot(o, o) - 1.0;
+  const double disc = b * b - a * c;
+  if (disc < 0.0) return std::nullopt;
+  const double root = std::sqrt(disc);
+  return std::pair{(-b - root) / a, (-b + root) / a};
+}
+}  // namespace
+
+LightRect shadowReceiverRect(const geo::CameraView& view, const glm::dvec3& lx, const glm::dvec3& ly,
+                             double nearM, double farM, double lowM, double highM) {
+  LightRect rect;
+  double farthestM = 0.0;
+  auto addPoint = [&](const glm::dvec3& dir, double t) {
+    const glm::dvec3 p = t * dir;
+    rect.add({glm::dot(p, lx), glm::dot(p, ly)});
+    farthestM = std::max(farthestM, t);
+  };
+  // A stretch [a, b] of the ray within the distances.
+  auto addStretch = [&](const glm::dvec3& dir, double a, double b) {
+    a = std::max(a, nearM);
+    b = std::min(b, farM);
+    if (a > b) return;
+    addPoint(dir, a);
+    addPoint(dir, b);
+  };
+  constexpr int n = kShadowReceiverRays;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const glm::dvec3 dir = view.rayDirection(-1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n);
+      const auto below = insideRaised(view.positionEcef, dir, highM);
+      if (!below || below->second < 0.0) continue;
+      const double enter = std::max(below->first, 0.0), leave = below->second;
+      // The slab is the inside of the upper surface less the inside of the lower one.
+      const auto under = insideRaised(view.positionEcef, dir, lowM);
+      if (!under || under->second < enter || under->first > leave) {
+        addStretch(dir, enter, leave);
+        continue;
+      }
+      if (under->first > enter) addStretch(dir, enter, under->first);
+      if (under->second < leave) addStretch(dir, under->second, leave);
+    }
+  if (rect.empty()) return rect;
+  // Between neighbouring rays: their angle (at most a step of tan) at the farthest point, and
+  // a share of the size for the stretches' ends, which move faster near grazing.
+  const double tanY = std::tan(0.5 * view.verticalFovRad), tanX = tanY * view.aspect;
+  const double pad = farthestM * 2.0 * std::max(tanX, tanY) / n + 0.02 * std::max(rect.hi.x - rect.lo.x, rect.hi.y - rect.lo.y);
+  rect.lo -= pad;
+  rect.hi += pad;
+  return rect;
+}
+
+}  // namespace og::render
