@@ -75,9 +75,19 @@
 #ifndef GLOBE_PART
 #define GLOBE_PART GLOBE_PART_EDGE  // all the shading code
 #endif
+#ifdef GLOBE_COMPUTE
+// The general part over a list of pixels (render/globe_pixels.glsl): a work group of 64, each
+// invocation a pixel, whose centre and outputs stand in for the fragment's.
+layout(local_size_x = 64) in;
+#include "render/globe_pixels.glsl"
+layout(binding = 0, rgba32f) uniform writeonly image2D uRadianceImage;  // the HDR target
+vec2 vNdc;
+vec4 fragRadiance, fragAux;
+#else
 in vec2 vNdc;
 #include "render/outputs.glsl"
-#if GLOBE_PART != GLOBE_PART_CLASSIFY && GLOBE_PART != GLOBE_PART_BLOCK_FILL
+#endif
+#if GLOBE_PART != GLOBE_PART_CLASSIFY && GLOBE_PART != GLOBE_PART_BLOCK_FILL && !defined(GLOBE_COMPUTE)
 // Below 20 km the globe is drawn last, behind the terrain and the grid (GlobeRenderer): only
 // the pixels they left empty (sky, far land, the grid's horizon gaps) pass the depth test.
 // Each part's pixels pass the stencil test (see above). Both tests run before this shader;
@@ -464,7 +474,7 @@ void main() {
   fragAux = vec4(0.0);
 }
 #else
-void main() {
+void shadePixel() {
   // The surface is shaded once for the samples on land and once for those on the sea (below);
   // the atmosphere, smooth across a pixel, once per pixel for the samples on the globe (at
   // their mean distance) and once for those in the sky. Loops run only as many times as
@@ -552,4 +562,16 @@ void main() {
   fragRadiance = vec4(radiance * 0.25, (coverage + seaHoles) * 0.25);
   fragAux = vec4(foam * 0.25, 0.0, 0.0, 0.0);
 }
+#ifdef GLOBE_COMPUTE
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= uCount) return;
+  ivec2 pixel = ivec2(uPixels[i] & 0xffffu, uPixels[i] >> 16);
+  vNdc = (vec2(pixel) + 0.5) * uPixelNdc - 1.0;
+  shadePixel();
+  imageStore(uRadianceImage, pixel, fragRadiance);
+}
+#else
+void main() { shadePixel(); }
+#endif
 #endif

@@ -46,6 +46,11 @@ enum UniformBlockBinding : unsigned {
   kBlockPatternTable = 0,  ///< ocean/patterns.glsl PatternTable (render/OceanPatterns)
 };
 
+/// Binding points of shader storage blocks that several programs share (GLSL: OG_<NAME>).
+enum StorageBinding : unsigned {
+  kGlobePixelsBinding = 8,  ///< render/globe_pixels.glsl GlobePixels (GlobeRenderer::shadeScatteredParts)
+};
+
 /// The contract as "NAME value" #define bodies, in full double precision.
 std::vector<std::string> contractDefines();
 

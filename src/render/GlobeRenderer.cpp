@@ -175,6 +175,7 @@ GlobeRenderer::GlobeRenderer(std::shared_ptr<const data::LatLonGrid> layer,
   stage.reset();
   maxSamples_ = gl::maxSamples(GL_RGBA32F);
   blocksOn_ = gl::driverProfile().software;
+  scatteredListed_ = gl::driverProfile().software;
   gl::checkErrors("GlobeRenderer setup");
 }
 
@@ -317,6 +318,8 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
       if (variant == kClassifyExportLandSea) defines.emplace_back("GLOBE_LAND_SEA");
     } else if (variant == kBlockFill) {
       defines.emplace_back("GLOBE_PART 9");
+    } else if (variant == kListedPixels) {
+      defines.insert(defines.end(), {"GLOBE_PART 2", "GLOBE_COMPUTE"});
     } else if (variant == kSkyLowPass) {
       defines.emplace_back("GLOBE_PART 8");
     } else if (variant == kSkyLowPart) {
@@ -329,9 +332,12 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
     if (set == 0) defines.emplace_back("AERIAL_TABLE");
     // Above the ceiling the classifying draws cover blocks of pixels (render/GlobeBlocks).
     const bool blocks = !behind && (variant <= kClassifyExportLandSea || variant == kBlockFill);
-    p = gl::Program({{GL_VERTEX_SHADER, blocks ? "render/blocks.vert" : "render/fullscreen.vert"},
-                     {GL_FRAGMENT_SHADER, "render/globe.frag"}},
-                    defines);
+    if (variant == kListedPixels)
+      p = gl::Program({{GL_COMPUTE_SHADER, "render/globe.frag"}}, defines);
+    else
+      p = gl::Program({{GL_VERTEX_SHADER, blocks ? "render/blocks.vert" : "render/fullscreen.vert"},
+                       {GL_FRAGMENT_SHADER, "render/globe.frag"}},
+                      defines);
   }
   return p;
 }
@@ -543,8 +549,15 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   // Sky, edge, surface, land, sea, open sea: the stencil counts 1-6 (one lower below 20 km).
   const std::vector<int> parts = globeParts(grid);
   if (countPartSamples_) partSamples_.clear();
+  const bool listed = listsScatteredParts();
+  std::vector<int> listedCounts;
   for (std::size_t k = 0; k < parts.size(); ++k) {
-    glStencilFunc(GL_EQUAL, static_cast<GLint>(k) + 1 - firstClassifyingStep(grid), 0xff);
+    const int count = static_cast<int>(k) + 1 - firstClassifyingStep(grid);
+    if (listed && (parts[k] == kGlobePart0 + 2 || parts[k] == kGlobePart0 + 3)) {  // the edge, the surface
+      listedCounts.push_back(count);
+      continue;
+    }
+    glStencilFunc(GL_EQUAL, count, 0xff);
     const bool readsSkyLow = skyLow && parts[k] == kGlobePart0 + 1;
     const gl::Program& globe = globeProgram(grid, readsSkyLow ? kSkyLowPart : parts[k]);
     setGlobeUniforms(globe, view, f);
@@ -562,10 +575,61 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
     partSamples_.emplace_back(kNames.at(static_cast<std::size_t>(parts[k] - kGlobePart0 - 1)),
                               gl::queryResult(GL_SAMPLES_PASSED, draw));
   }
+  if (!listedCounts.empty()) shadeScatteredParts(view, f, grid, listedCounts);
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_SCISSOR_TEST);
   glDepthMask(grid ? GL_FALSE : GL_TRUE);  // as the caller had it
   if (grid) glEndConditionalRender();
+}
+
+std::uint32_t GlobeRenderer::listedPixelCount() const {
+  GLuint count = 0;
+  if (scatteredPixels_.id() != 0) glGetNamedBufferSubData(scatteredPixels_.id(), 0, sizeof count, &count);
+  return count;
+}
+
+bool GlobeRenderer::listsScatteredParts() const {
+  return scatteredListed_ && hdr_.samples == 1 && !auxiliary_ && !countPartSamples_;
+}
+
+void GlobeRenderer::shadeScatteredParts(const geo::CameraView& view, const FrameInput& f, bool grid,
+                                        const std::vector<int>& counts) {
+  // The block: count, the dispatch's three group counts, then a pixel each (globe_pixels.glsl).
+  const std::size_t bytes = (4 + static_cast<std::size_t>(f.width) * static_cast<std::size_t>(f.height)) * sizeof(GLuint);
+  if (bytes > scatteredPixelsBytes_) {
+    scatteredPixels_ = gl::createBuffer();
+    glNamedBufferStorage(scatteredPixels_.id(), static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    scatteredPixelsBytes_ = bytes;
+  }
+  if (scatteredList_.id() == 0) {
+    scatteredList_ = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "render/globe_list.frag"}});
+    scatteredArgs_ = gl::Program({{GL_COMPUTE_SHADER, "render/globe_list_args.comp"}});
+  }
+  const GLuint zero = 0;
+  glNamedBufferSubData(scatteredPixels_.id(), 0, sizeof zero, &zero);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kGlobePixelsBinding, scatteredPixels_.id());
+  // The list: the parts' pixels, as their draws would pass the depth and stencil tests.
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  scatteredList_.use();
+  for (const int count : counts) {
+    glStencilFunc(GL_EQUAL, count, 0xff);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  // (Below the ceiling the draws above are conditional on the uncovered query; the dispatch is
+  // not, and finds the count they left: 0 when they were skipped.)
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  scatteredArgs_.use();
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  const gl::Program& shade = globeProgram(grid, kListedPixels);
+  setGlobeUniforms(shade, view, f);
+  shade.use();
+  glBindImageTexture(0, hdr_.color.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, scatteredPixels_.id());
+  glDispatchComputeIndirect(sizeof(GLuint));  // uArgs
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
 bool GlobeRenderer::drawSkyLow(const geo::CameraView& view, const FrameInput& f) {

@@ -208,6 +208,13 @@ class GlobeRenderer {
   /// is finer than kSkyLowTexelRad / 3 (drawSkyLow: 1280 x 720 and up at the usual fields of
   /// view); false computes it per pixel (the tests' reference).
   void setSkyLow(bool on) { skyLowOn_ = on; }
+  /// The globe's edge and surface parts (the limb, the horizon, the coasts: scattered pixels)
+  /// listed and shaded by a compute shader (shadeScatteredParts) instead of by fragments, which
+  /// on llvmpipe pay a vector of lanes for a lone pixel. On by default on software renderers
+  /// with one sample per pixel and no auxiliary outputs; false: fragments (the tests' reference).
+  void setScatteredPartsListed(bool on) { scatteredListed_ = on; }
+  /// The pixels the last frame listed (setScatteredPartsListed; reads the count back: for tests).
+  [[nodiscard]] std::uint32_t listedPixelCount() const;
   /// The last frame's pixels per sky texel along a side (1: the sky per pixel).
   [[nodiscard]] int lastSkyLowFactor() const { return lastSkyLowFactor_; }
   /// The coarse open-sea map (made on the first frame above 20 km; nullptr before).
@@ -238,10 +245,11 @@ class GlobeRenderer {
   /// ceiling and last (GLOBE_BEHIND, after the terrain and the grid) below; each compiled on
   /// first use; 14 the sky at a lower resolution below the ceiling (GLOBE_PART_SKY_LOW) and 15
   /// the sky part that reads it (GLOBE_SKY_LOW); 16 the depth of blocks classed on the CPU
-  /// (GLOBE_PART_BLOCK_FILL). `variant` in [0, kGlobeVariants). Above the ceiling the
+  /// (GLOBE_PART_BLOCK_FILL); 17 the edge part as a compute shader over listed pixels
+  /// (GLOBE_COMPUTE). `variant` in [0, kGlobeVariants). Above the ceiling the
   /// classifying variants draw the triangles of blocksVao_ (render/blocks.vert).
-  static constexpr int kGlobeVariants = 17;
-  static constexpr int kSkyLowPass = 14, kSkyLowPart = 15, kBlockFill = 16;
+  static constexpr int kGlobeVariants = 18;
+  static constexpr int kSkyLowPass = 14, kSkyLowPart = 15, kBlockFill = 16, kListedPixels = 17;
   static constexpr int kClassifyExport = 6, kClassifyExportLandSea = 7;
   /// Part k (1 sky ... 6 open sea) is variant kGlobePart0 + k.
   static constexpr int kGlobePart0 = 7;
@@ -305,6 +313,16 @@ class GlobeRenderer {
   bool aerialTableOn_ = true;
   bool aerialTableFrame_ = false;  ///< this frame's globe reads the table
   void setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view, const FrameInput& f);
+  /// Whether this frame lists its scattered parts (setScatteredPartsListed, one sample, no
+  /// auxiliary outputs, not counting the parts' samples).
+  [[nodiscard]] bool listsScatteredParts() const;
+  /// The pixels whose stencil count is one of `counts` (the edge's and the surface's), listed by
+  /// render/globe_list.frag and shaded by globe.frag's compute variant into the HDR target.
+  void shadeScatteredParts(const geo::CameraView& view, const FrameInput& f, bool grid, const std::vector<int>& counts);
+  gl::Buffer scatteredPixels_;  ///< render/globe_pixels.glsl's block: count, groups, pixels
+  std::size_t scatteredPixelsBytes_ = 0;
+  gl::Program scatteredList_, scatteredArgs_;
+  bool scatteredListed_ = false;  ///< set from gl::driverProfile().software by the constructor
   std::array<gl::Program, 3 * kGlobeVariants> globePrograms_;  ///< above 20 km with the aerial table, without, below
   /// Below 20 km: whether the terrain and the grid left any pixel for the globe (an occlusion
   /// query of render/uncovered.frag; the globe's draws are conditional on it).

@@ -155,3 +155,44 @@ TEST(GlobeRender, BlocksClassedOnTheCpuKeepThePicture) {
     }
   }
 }
+
+// The scattered parts (the limb, the horizon, the coasts) listed and shaded by the compute
+// variant of the globe's shader (GlobeRenderer::shadeScatteredParts) against the same parts'
+// fragments: the same code on the same pixel centres, so the same picture (to float rounding:
+// the centre's NDC computed, not interpolated, moves the rays by ~1e-7). From orbit, from
+// above the ceiling, and below it (the horizon's pixels behind the grid at 4 m). A list that
+// missed pixels would leave them black; one that shaded the wrong ones, another colour.
+TEST(GlobeRender, ScatteredPartsShadedFromAListKeepThePicture) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  std::vector<View> views(kViews.begin(), kViews.end());
+  views.push_back({"orbit-20000km", 10, -30, 2.0e7, 0, -90});
+  views.push_back({"sea-4m", 20, -40, 4.0, 270, -1});
+  for (const View& v : views) {
+    const render::FrameInput f = frameOf(v);
+    r.setScatteredPartsListed(false);
+    r.render(f);
+    const io::ImageRgbaF fragments = r.radiance();
+    r.setScatteredPartsListed(true);
+    r.render(f);
+    const io::ImageRgbaF listed = r.radiance();
+    EXPECT_GT(r.listedPixelCount(), 50u) << v.name << ": the list is in use";
+    ASSERT_EQ(fragments.pixels.size(), listed.pixels.size());
+    double worst = 0.0;
+    int changed = 0;
+    for (std::size_t i = 0; i < listed.pixels.size(); i += 4) {
+      double d = 0.0;
+      for (std::size_t c = 0; c < 4; ++c) {
+        const double a = fragments.pixels[i + c], b = listed.pixels[i + c];
+        d = std::max(d, std::abs(a - b) / std::max(std::abs(a), 1e-3));
+      }
+      worst = std::max(worst, d);
+      changed += d > 0.01 ? 1 : 0;
+    }
+    std::printf("%s: %u pixels listed, %d changed by over 1 %%, largest change %.2e\n", v.name, r.listedPixelCount(), changed, worst);
+    EXPECT_EQ(changed, 0) << v.name << " (largest relative change " << worst << ")";
+    if (changed > 0) {
+      test::savePng(r, std::string("globe_listed_") + v.name);
+    }
+  }
+}

@@ -1,0 +1,10 @@
+#version 450 core
+// The work groups that shade the listed pixels (render/globe_pixels.glsl), for
+// glDispatchComputeIndirect.
+layout(local_size_x = 1) in;
+#include "render/globe_pixels.glsl"
+void main() {
+  uArgs[0] = (uCount + GLOBE_PIXELS_GROUP - 1u) / GLOBE_PIXELS_GROUP;
+  uArgs[1] = 1u;
+  uArgs[2] = 1u;
+}

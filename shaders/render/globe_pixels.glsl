@@ -1,0 +1,13 @@
+// The globe's scattered pixels (GlobeRenderer::shadeScatteredParts): the pixels of its edge and
+// surface parts (the limb, the horizon, the coasts), listed by render/globe_list.frag and shaded
+// from the list by render/globe.frag compiled as a compute shader (GLOBE_COMPUTE). A fragment
+// shader runs on blocks of pixels, so on llvmpipe a lone coast pixel paid for its whole vector
+// of lanes (8 at 256 bits): listed, 64 of them share a work group's vectors.
+// uArgs: glDispatchComputeIndirect's groups, written from uCount by render/globe_list_args.comp.
+// A pixel is packed as x | y << 16.
+layout(std430, binding = OG_GLOBE_PIXELS_BINDING) buffer GlobePixels {
+  uint uCount;
+  uint uArgs[3];
+  uint uPixels[];
+};
+const uint GLOBE_PIXELS_GROUP = 64u;  // the compute shader's work group
