@@ -62,21 +62,42 @@ struct WindBins {
   vec2 binTurn[2];
   vec2 windTurn[2];
 };
+// PATTERN_ONE_BIN where every point's wind lies along one bin (a constant wind along one of
+// them: render/OceanRenderer::windAlongOneBin): the other bin's weight is under 1e-3 (its
+// share of the variance under 1e-6) and the loops over the bins take one trip (a compiled
+// constant: llvmpipe runs a loop's first trip even where a uniform leaves none).
+#ifdef PATTERN_ONE_BIN
+const int PATTERN_BINS = 1;
+#else
+const int PATTERN_BINS = 2;
+#endif
 WindBins windBins(float thetaField) {
   float b = thetaField / (0.25 * PI);
   b -= 8.0 * floor(b / 8.0);
+  WindBins w;
+#ifdef PATTERN_ONE_BIN
+  // The nearest bin alone (a wind along bin 0 can round to just below it), weight 1 (the other
+  // bin's is under 1e-3); the second slot the same bin, weight 0.
+  w.bin[0] = w.bin[1] = int(floor(b + 0.5)) & 7;
+  w.weight[0] = 1.0;
+  w.weight[1] = 0.0;
+#else
   int b0 = int(floor(b)) & 7;
   float f = b - floor(b);
-  WindBins w;
   w.bin[0] = b0;
   w.bin[1] = (b0 + 1) & 7;
   w.weight[0] = cos(0.5 * PI * f);
   w.weight[1] = sin(0.5 * PI * f);
-  for (int k = 0; k < 2; ++k) {
+#endif
+  for (int k = 0; k < PATTERN_BINS; ++k) {
     float binAngle = float(w.bin[k]) * 0.25 * PI;
     w.binTurn[k] = vec2(cos(binAngle), sin(binAngle));
     w.windTurn[k] = vec2(cos(binAngle - thetaField), sin(binAngle - thetaField));
   }
+#ifdef PATTERN_ONE_BIN
+  w.binTurn[1] = w.binTurn[0];  // (the unused slot defined)
+  w.windTurn[1] = w.windTurn[0];
+#endif
   return w;
 }
 
@@ -128,7 +149,7 @@ vec3 oceanDisplacement(vec2 xy, float cellFootprintM, vec2 wind) {
     float lod = patternLod(0.5 * cellFootprintM, i);
     if (lod >= uPatternTopLod) break;
     float scale = patternTable(i, wind.x).x;
-    for (int k = 0; k < 2; ++k) {
+    for (int k = 0; k < PATTERN_BINS; ++k) {
       if (wb.weight[k] < 1e-3) continue;
       vec3 t = textureLod(uPatternDisplacement, patternCoord(p, wb.bin[k], i), lod).xyz;
       d += (wb.weight[k] * scale) * vec3(quarterTurn(t.xy, wb.bin[k] >> 1), t.z);
@@ -187,7 +208,7 @@ void addPatternStatistics(INOUT(PatternSums) sums, vec2 p, WindBins wb, int i, f
   float s = band.x;
   float alongShare = band.y;
   float lambda2 = uPatternChoppiness[i] * uPatternChoppiness[i];
-  for (int k = 0; k < 2; ++k) {
+  for (int k = 0; k < PATTERN_BINS; ++k) {
     float w = wb.weight[k];
     vec4 m = textureLod(uPatternSlopes, patternCoord(p, wb.bin[k], i), lod);
     sums.mean += (share * w * s) * turn2(m.xy, wb.binTurn[k]);

@@ -76,7 +76,7 @@ float causticCurvature(vec2 xy, float footprintM, vec2 wind) {
     float lod = patternLod(footprintM, i);
     if (lod >= uPatternTopLod) break;
     float perM = patternTable(i, wind.x).y * uPatternFftSize / uPatternSizeM[i];
-    for (int k = 0; k < 2; ++k) {
+    for (int k = 0; k < PATTERN_BINS; ++k) {
       vec3 c = patternCoord(p, wb.bin[k], i);
       c.z = float((wb.bin[k] & 1) * CAUSTIC_PATTERNS + j);
       traceH += wb.weight[k] * perM * textureLod(uCausticCurvature, c, lod).x;

@@ -1,6 +1,7 @@
 #include "render/OceanRenderer.hpp"
 
 #include <algorithm>
+#include <numbers>
 #include <limits>
 #include <optional>
 #include <cmath>
@@ -124,7 +125,7 @@ OceanRenderer::OceanRenderer(const Atmosphere* atmosphere, ValidationMode mode)
       indices_(gl::createBuffer()) {}
 
 const gl::Program& OceanRenderer::program(unsigned features) {
-  gl::Program& p = variants_.at(features);
+  gl::Program& p = programs().variants.at(features);
   if (p.id() != 0) return p;
   p = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}},
                   featureDefines(features));
@@ -132,7 +133,7 @@ const gl::Program& OceanRenderer::program(unsigned features) {
 }
 
 std::vector<std::string> OceanRenderer::featureDefines(unsigned features) const {
-  std::vector<std::string> d = defines_;
+  std::vector<std::string> d = patternDefines();
   if ((features & kFeatureWaterVolume) == 0) d.emplace_back("OCEAN_NO_WATER_VOLUME");
   if ((features & kFeatureCoastTest) == 0) d.emplace_back("SEA_NO_COAST_TEST");
   if ((features & kFeatureShadows) == 0) d.emplace_back("SHADOWS_OFF");
@@ -142,7 +143,7 @@ std::vector<std::string> OceanRenderer::featureDefines(unsigned features) const 
 }
 
 const gl::Program& OceanRenderer::deferredProgram(unsigned features) {
-  gl::Program& p = deferredVariants_.at(features);
+  gl::Program& p = programs().deferredVariants.at(features);
   if (p.id() != 0) return p;
   // The coast test is the surface pass's; kSurfaceCompact is not a feature.
   std::vector<std::string> d = featureDefines(features & ~(kFeatureCoastTest | kSurfaceCompact));
@@ -309,6 +310,11 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
   ensureGrid(std::max(2, static_cast<int>(std::ceil(width * (1 + side) / frameCellPixels_)) + 1),
              coarseRows + rows - below + 1);
 
+  // A constant wind along one of the patterns' bins: the programs that read one bin.
+  programSet_ = model == OceanModel::Bruneton && oneBinAllowed_ && !wind.hasLayers() &&
+                        windAlongOneBin(glm::radians(wind.constantTowardsDeg()), frame.fieldRotationRad())
+                    ? 1
+                    : 0;
   unsigned features = 0;
   lastDeferred_ = false;
   lastSurfaceCompact_ = false;
@@ -391,6 +397,21 @@ void OceanRenderer::drawGridRows(const gl::Program& p, int firstRow, int lastRow
   glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(perRow * static_cast<std::size_t>(last - first + 1)),
                  GL_UNSIGNED_INT,
                  reinterpret_cast<const void*>(perRow * static_cast<std::size_t>(first) * sizeof(GLuint)));
+}
+
+std::vector<std::string> OceanRenderer::patternDefines() const {
+  std::vector<std::string> d = defines_;
+  if (programSet_ == 1) d.emplace_back("PATTERN_ONE_BIN");
+  return d;
+}
+
+bool OceanRenderer::windAlongOneBin(double towardsRad, double fieldRotationRad) {
+  // ocean/patterns.glsl's windBins in double: the wind's angle in the field's axes in bins of
+  // 45°, the second bin's weight sin(pi/2 f) for the fraction f past the first.
+  const double thetaField = 0.5 * std::numbers::pi - towardsRad - fieldRotationRad;
+  const double b = thetaField / (0.25 * std::numbers::pi);
+  const double f = b - std::floor(b);
+  return std::sin(0.5 * std::numbers::pi * std::min(f, 1.0 - f)) < 1e-3;
 }
 
 bool OceanRenderer::drawTargetHasStencil() {
@@ -483,13 +504,13 @@ unsigned OceanRenderer::prepareClassify(const geo::CameraView& view, int height,
                                         const ocean::OceanFrame& frame, const OceanLighting& lighting,
                                         double amplitudeScale, const WindTextures& wind, unsigned features,
                                         const glm::vec4& margin) {
-  if (classify_.id() == 0) {
-    std::vector<std::string> d = defines_;
+  if (programs().classify.id() == 0) {
+    std::vector<std::string> d = patternDefines();
     d.emplace_back("OCEAN_SEA_CLASSIFY");
-    classify_ = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_classify.frag"}}, d);
+    programs().classify = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_classify.frag"}}, d);
   }
-  prepare(classify_, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
-  const unsigned routedShadows = setClassUniforms(classify_, view, patterns, lighting, amplitudeScale, features);
+  prepare(programs().classify, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
+  const unsigned routedShadows = setClassUniforms(programs().classify, view, patterns, lighting, amplitudeScale, features);
   resetClassRows();
   return routedShadows;
 }
@@ -500,7 +521,7 @@ bool OceanRenderer::seaShows(const geo::CameraView& view, int height, const Ocea
   prepareClassify(view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthMask(GL_FALSE);
-  const bool shows = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] { drawGrid(classify_); }) != 0;
+  const bool shows = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] { drawGrid(programs().classify); }) != 0;
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);
   return shows;
@@ -524,7 +545,7 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
   if (timer_ != nullptr) timer_->mark("ocean classify");
   // Fragments behind the terrain record their rows too (the shader's side effects come before
   // the depth test); where none passes it (the sea hidden by mountains) nothing is drawn.
-  const bool seaVisible = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] { drawGrid(classify_); }) != 0;
+  const bool seaVisible = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] { drawGrid(programs().classify); }) != 0;
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::array<GLint, 2 * kSeaClasses> rows = noClassRows();
   if (seaVisible) glGetNamedBufferSubData(classRows_.id(), 0, sizeof rows, rows.data());
@@ -591,7 +612,7 @@ void OceanRenderer::classesIntoStencil() {
 }
 
 const gl::Program& OceanRenderer::surfaceProgram(unsigned key) {
-  gl::Program& surface = surfaceVariants_.at(key);
+  gl::Program& surface = programs().surfaceVariants.at(key);
   if (surface.id() == 0)
     surface = gl::Program({{GL_VERTEX_SHADER, "ocean/grid_cached.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_surface.frag"}},
                           surfaceDefines(key));
@@ -601,7 +622,7 @@ const gl::Program& OceanRenderer::surfaceProgram(unsigned key) {
 const gl::Program& OceanRenderer::prepareSurfacePass(unsigned key,
                                                   const std::function<void(const gl::Program&)>& prepareProgram) {
   const gl::Program& surface = surfaceProgram(key);
-  gl::Program& compute = gridComputeVariants_.at(key);
+  gl::Program& compute = programs().gridComputeVariants.at(key);
   if (compute.id() == 0) compute = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_vertices.comp"}}, surfaceDefines(key));
   const auto vertices = static_cast<std::size_t>(gridColumns_) * static_cast<std::size_t>(gridRows_);
   const std::size_t bytes = vertices * kGridVertexVec4s * 4 * sizeof(float);
@@ -621,8 +642,8 @@ const gl::Program& OceanRenderer::prepareSurfacePass(unsigned key,
 }
 
 void OceanRenderer::splitNearLand(unsigned key) {
-  if (nearLandSplit_.id() == 0)
-    nearLandSplit_ = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_near_land.comp"}}, surfaceDefines(key));
+  if (programs().nearLandSplit.id() == 0)
+    programs().nearLandSplit = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_near_land.comp"}}, surfaceDefines(key));
   const auto bytes = static_cast<GLsizeiptr>(static_cast<std::size_t>(indexCount_) * sizeof(GLuint));
   if (bytes > nearLandSplitBytes_) {
     openIndices_ = gl::createBuffer();
@@ -635,8 +656,8 @@ void OceanRenderer::splitNearLand(unsigned key) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOpenIndicesBinding, openIndices_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kNearLandIndicesBinding, nearLandIndices_.id());
   const int triangles = indexCount_ / 3;
-  nearLandSplit_.set("uTriangleCount", triangles);
-  nearLandSplit_.use();
+  programs().nearLandSplit.set("uTriangleCount", triangles);
+  programs().nearLandSplit.use();
   glDispatchCompute(static_cast<GLuint>((triangles + 63) / 64), 1, 1);
   glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT);
 }

@@ -122,6 +122,16 @@ class OceanRenderer {
   /// than one with its varyings (sea-8km at 640x360, process CPU: forward 110 ms, deferred
   /// 140-155 ms; sea-4m with 8-px cells: 160-170 against 110-140).
   static constexpr int kDeferredMaxCellPixels = 16;
+  /// Whether a wind blowing towards `towardsRad` (radians clockwise from north) lies along one
+  /// of the wave patterns' 8 direction bins in a field turned by `fieldRotationRad`
+  /// (ocean/patterns.glsl's windBins): the other bin's weight under 1e-3. A constant wind (no
+  /// wind layers) along one reads one bin's patterns instead of two (PATTERN_ONE_BIN): the
+  /// default westerly, towards 90°, lies along bin 0; a wind layer or a wind between bins, two.
+  [[nodiscard]] static bool windAlongOneBin(double towardsRad, double fieldRotationRad);
+  /// Whether a wind along one bin may read one bin's patterns (default on); off: two always.
+  void setOneBinAllowed(bool on) { oneBinAllowed_ = on; }
+  /// Whether the last draw read one bin's patterns.
+  [[nodiscard]] bool lastDrawOneBin() const { return programSet_ == 1; }
   /// Whether the last draw was deferred.
   [[nodiscard]] bool lastDrawDeferred() const { return lastDeferred_; }
   /// Whether the last deferred draw's surface buffer had the compact layout (kSurfaceCompact).
@@ -292,13 +302,24 @@ class OceanRenderer {
   /// Deferred also where the driver cannot export stencil values (NVIDIA's): only when asked,
   /// OCEANGLOBE_SEA=deferred, until measured on such a GPU (docs/performance.md, "Tenth session").
   bool deferredWithoutExport_;
-  std::array<gl::Program, 16> variants_;    ///< by feature bits; id() 0 until compiled
-  gl::Program classify_;                    ///< ocean/sea_classify.frag; id() 0 until compiled
-  std::array<gl::Program, 32> deferredVariants_;  ///< ocean.frag OCEAN_DEFERRED, by feature bits and kSurfaceCompact
-  std::array<gl::Program, 8> surfaceVariants_;    ///< sea_surface.frag: volume, coast, classes bits
-  std::array<gl::Program, 8> gridComputeVariants_;  ///< grid_vertices.comp, as surfaceVariants_
+  /// The programs that read the wave patterns, each compiled on first use: set 1 with
+  /// PATTERN_ONE_BIN (a constant wind along one of the patterns' direction bins: one bin's
+  /// lookups, windAlongOneBin), set 0 without.
+  struct PatternPrograms {
+    std::array<gl::Program, 16> variants;    ///< by feature bits
+    gl::Program classify;                    ///< ocean/sea_classify.frag
+    std::array<gl::Program, 32> deferredVariants;  ///< ocean.frag OCEAN_DEFERRED, by feature bits and kSurfaceCompact
+    std::array<gl::Program, 8> surfaceVariants;    ///< sea_surface.frag: volume, coast, classes bits
+    std::array<gl::Program, 8> gridComputeVariants;  ///< grid_vertices.comp, as surfaceVariants
+    gl::Program nearLandSplit;  ///< ocean/grid_near_land.comp
+  };
+  std::array<PatternPrograms, 2> programSets_;
+  std::size_t programSet_ = 0;  ///< this frame's (draw)
+  PatternPrograms& programs() { return programSets_.at(programSet_); }
+  /// defines_ with this frame's PATTERN_ONE_BIN.
+  [[nodiscard]] std::vector<std::string> patternDefines() const;
+  bool oneBinAllowed_ = true;
   gl::Buffer gridVertices_;  ///< the surface pass's vertices (ocean/grid_vertex_buffer.glsl)
-  gl::Program nearLandSplit_;  ///< ocean/grid_near_land.comp; id() 0 until first used
   gl::Program classStencil_;   ///< ocean/sea_class_stencil.frag; id() 0 until first used
   gl::Buffer openIndices_, nearLandIndices_;  ///< splitNearLand's copies of indices_
   GLsizeiptr nearLandSplitBytes_ = 0;

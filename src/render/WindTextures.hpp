@@ -38,6 +38,8 @@ class WindTextures {
   /// The wind everywhere while no layers are set (the layers carry their own fallback).
   void setConstantWind(const geo::Wind& wind);
   [[nodiscard]] double constantSpeedMs() const { return constant_.speedMs; }
+  /// Where the constant wind blows towards, degrees clockwise from north.
+  [[nodiscard]] double constantTowardsDeg() const { return constant_.towardsDeg; }
 
   /// Binds the texture to its unit (wind.glsl's uWind).
   void bind(const gl::Program& program) const;

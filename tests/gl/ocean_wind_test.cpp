@@ -2,6 +2,7 @@
 // must show the glint change across it: on the calm side a higher, narrower peak.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "data/Elevation.hpp"
@@ -70,4 +71,56 @@ TEST(OceanWind, GlintIsHigherAndNarrowerOnTheCalmSideOfAFront) {
               peakWindy, widthCalm, widthWindy);
   EXPECT_GT(peakCalm, 1.5 * peakWindy);
   EXPECT_LT(widthCalm, widthWindy);
+}
+
+// A constant wind along one of the patterns' direction bins reads that bin's patterns alone
+// (OceanRenderer::windAlongOneBin, uPatternOneBin): the other's weight is under 1e-3, so the
+// sea is the two bins' sea. Along bin 0 (the default westerly), just past it (float rounding
+// puts bin 0 second: the shader takes the heavier), along bin 3; and the decision itself.
+TEST(OceanWind, AWindAlongOneBinReadsOneBinsPatterns) {
+  using render::OceanRenderer;
+  constexpr double kDeg = 0.017453292519943295;
+  EXPECT_TRUE(OceanRenderer::windAlongOneBin(90.0 * kDeg, 0.0));
+  EXPECT_TRUE(OceanRenderer::windAlongOneBin(90.00001 * kDeg, 0.0));
+  EXPECT_TRUE(OceanRenderer::windAlongOneBin(225.0 * kDeg, 0.0));
+  EXPECT_TRUE(OceanRenderer::windAlongOneBin(100.0 * kDeg, -10.0 * kDeg));  // a field turned with it
+  EXPECT_FALSE(OceanRenderer::windAlongOneBin(100.0 * kDeg, 0.0));
+  EXPECT_FALSE(OceanRenderer::windAlongOneBin(90.1 * kDeg, 0.0));  // the other bin at 2.7e-3
+
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  for (const double towardsDeg : {90.0, 90.00001, 225.0, 0.0}) {
+    render::FrameInput f;
+    f.camera.position = {20.0, -40.0, 4.0};
+    f.camera.headingDeg = 250.0;
+    f.camera.pitchDeg = -20.0;
+    f.width = 320;
+    f.height = 180;
+    f.samples = 1;
+    f.wind = geo::Wind::blowingTowards(12.0, towardsDeg);
+    f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 20.0, 250.0);
+    r.ocean().setOneBinAllowed(false);
+    r.render(f);
+    const io::ImageRgbaF two = r.radiance();
+    r.ocean().setOneBinAllowed(true);
+    r.render(f);
+    const io::ImageRgbaF one = r.radiance();
+    EXPECT_TRUE(r.ocean().lastDrawOneBin()) << "towards " << towardsDeg << " deg";
+    // Along an even bin the other's weight is exactly 0: the same picture. Along an odd one
+    // (45° in float) it is ~1e-7, whose rounding can tip a pixel at a threshold (the
+    // back-facing fix): a handful of pixels.
+    double sum = 0.0;
+    int over1 = 0;
+    for (std::size_t i = 0; i < one.pixels.size(); i += 4) {
+      double d = 0.0;
+      for (std::size_t c = 0; c < 3; ++c)
+        d = std::max(d, static_cast<double>(std::abs(one.pixels[i + c] - two.pixels[i + c]) /
+                                            std::max(std::abs(two.pixels[i + c]), 1e-3f)));
+      sum += d;
+      over1 += d > 0.01 ? 1 : 0;
+    }
+    const auto pixels = static_cast<double>(one.pixels.size() / 4);
+    EXPECT_LT(sum / pixels, 1e-5) << "towards " << towardsDeg << " deg";
+    EXPECT_LE(over1, 20) << "towards " << towardsDeg << " deg";
+  }
 }
