@@ -81,6 +81,27 @@ std::array<int, 4> globeScissor(const geo::CameraView& view, int width, int heig
   return {x0, y0, x1 - x0, y1 - y0};
 }
 
+std::array<int, 4> ellipsoidScissor(const geo::CameraView& view, int width, int height) {
+  int x0 = width, y0 = height, x1 = -1, y1 = -1;
+  for (int y = 0; y <= height + kHitScanPx - 1; y += kHitScanPx)
+    for (int x = 0; x <= width + kHitScanPx - 1; x += kHitScanPx) {
+      const int px = std::min(x, width), py = std::min(y, height);
+      const glm::dvec3 dir = view.rayDirection(2.0 * px / width - 1.0, 2.0 * py / height - 1.0);
+      if (!geo::intersectEllipsoid(view.positionEcef, dir)) continue;
+      x0 = std::min(x0, px);
+      y0 = std::min(y0, py);
+      x1 = std::max(x1, px);
+      y1 = std::max(y1, py);
+    }
+  if (x1 < 0) return {0, 0, 0, 0};
+  constexpr int kMargin = kHitScanPx + 2;
+  x0 = std::max(x0 - kMargin, 0);
+  y0 = std::max(y0 - kMargin, 0);
+  x1 = std::min(x1 + kMargin, width);
+  y1 = std::min(y1 + kMargin, height);
+  return {x0, y0, x1 - x0, y1 - y0};
+}
+
 namespace {
 /// The layer as an RG16F texture: height (m) and keepDepth (the land mask leaves corrected
 /// banks' depth alone: data/ShallowBanks) per texel; missing values (NaN) read as sea (-1 m).
@@ -367,6 +388,13 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glEndQuery(GL_ANY_SAMPLES_PASSED);
     glBeginConditionalRender(uncoveredQuery_.id(), GL_QUERY_WAIT);
+    // The sky (every ray misses the ellipsoid) has count 0 below the ceiling: the draws skip it
+    // (after the query, which must see the sky the parts then shade).
+    if (ellipsoidScissorOn_) {
+      const std::array<int, 4> hits = ellipsoidScissor(view, f.width, f.height);
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(hits[0], hits[1], hits[2], hits[3]);
+    }
   }
   glEnable(GL_STENCIL_TEST);
   // One draw writing the count where the driver allows it, else one draw per step counting,

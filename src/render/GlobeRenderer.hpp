@@ -92,6 +92,14 @@ std::array<int, 4> globeScissor(const geo::CameraView& view, int width, int heig
                                 const atmosphere::Parameters& atmosphere,
                                 const glm::dvec3& sunDirectionEcef);
 
+/// The screen rectangle (x, y, width, height in pixels, lower-left origin) holding every pixel
+/// a ray of which can meet the ellipsoid: below the grid's ceiling the globe's classifying
+/// draw finds nothing to class elsewhere (its sky has count 0). From rays every kHitScanPx
+/// pixels over the screen against the ellipsoid, widened by that step and two
+/// pixels; empty (width 0) when none meets it.
+std::array<int, 4> ellipsoidScissor(const geo::CameraView& view, int width, int height);
+inline constexpr int kHitScanPx = 8;
+
 class GlobeRenderer {
  public:
   /// Needs a current GL 4.5 context. Uploads the elevation layer once and prepares the
@@ -197,6 +205,9 @@ class GlobeRenderer {
   /// Above 20 km the globe pass is scissored to the rectangle around the globe, its atmosphere
   /// and the Sun (globeScissor); false draws it over the whole screen (the tests' reference).
   void setGlobeScissor(bool on) { scissorGlobe_ = on; }
+  /// Below 20 km the classifying draws are scissored to the pixels whose rays can meet the
+  /// ellipsoid (ellipsoidScissor); false: the whole screen (the tests' reference).
+  void setEllipsoidScissor(bool on) { ellipsoidScissorOn_ = on; }
   /// Above 20 km, blocks of pixels that are wholly land or wholly sea are classed on the CPU
   /// (render/GlobeBlocks) and spared the per-pixel classifying draw; false classes every pixel
   /// on the GPU (the tests' reference). On by default on software renderers (llvmpipe), where
@@ -322,7 +333,8 @@ class GlobeRenderer {
   gl::Buffer scatteredPixels_;  ///< render/globe_pixels.glsl's block: count, groups, pixels
   std::size_t scatteredPixelsBytes_ = 0;
   gl::Program scatteredList_, scatteredArgs_;
-  bool scatteredListed_ = false;  ///< set from gl::driverProfile().software by the constructor
+  bool scatteredListed_ = false;
+  bool ellipsoidScissorOn_ = true;  ///< set from gl::driverProfile().software by the constructor
   std::array<gl::Program, 3 * kGlobeVariants> globePrograms_;  ///< above 20 km with the aerial table, without, below
   /// Below 20 km: whether the terrain and the grid left any pixel for the globe (an occlusion
   /// query of render/uncovered.frag; the globe's draws are conditional on it).

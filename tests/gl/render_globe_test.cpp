@@ -171,3 +171,39 @@ TEST(GlobeRender, OneClassifyingDrawMatchesOneDrawPerStep) {
     EXPECT_EQ(differ, 0u) << "frame " << i;
   }
 }
+
+// Below the grid's ceiling the classifying draws are scissored to the pixels whose rays can
+// meet the ellipsoid (render::ellipsoidScissor): the sky above the horizon has nothing to class.
+// The same picture as over the whole screen, from 2 m to 15 km, the horizon level, tilted by a
+// roll, looking down with no sky and up with no ellipsoid; the rectangle is the horizon's.
+TEST(GlobeRender, ClassifyingBelowTheCeilingOnlyWhereRaysMeetTheEllipsoid) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(halfLand());
+  struct Case {
+    double lat, lon, h, pitch, roll;
+  };
+  for (const Case& c : {Case{-1, -1, 2.0, 1.0, 0.0}, Case{-1, -1, 15000.0, -3.0, 0.0}, Case{3, 3, 500.0, 2.0, 25.0},
+                        Case{-1, -1, 4.0, -60.0, 0.0}, Case{-1, -1, 4.0, 60.0, 0.0}}) {
+    render::FrameInput f = frame(c.lat, c.lon, c.h, c.pitch, 160);
+    f.height = 90;
+    f.camera.rollDeg = c.roll;
+    r.setEllipsoidScissor(false);
+    r.render(f);
+    const io::ImageRgbaF whole = r.radiance();
+    r.setEllipsoidScissor(true);
+    r.render(f);
+    const io::ImageRgbaF scissored = r.radiance();
+    std::size_t differ = 0;
+    for (std::size_t k = 0; k < whole.pixels.size(); ++k) differ += whole.pixels[k] != scissored.pixels[k] ? 1 : 0;
+    EXPECT_EQ(differ, 0u) << "at " << c.h << " m, pitch " << c.pitch << ", roll " << c.roll;
+  }
+  // The rectangle: level at 2 m, the horizon at the middle row (pitch 0): the lower half.
+  render::FrameInput f = frame(-1, -1, 2.0, 0.0, 160);
+  f.height = 90;
+  const std::array<int, 4> box = render::ellipsoidScissor(geo::makeCameraView(f.camera, f.width, f.height), f.width, f.height);
+  EXPECT_EQ(box[1], 0);
+  EXPECT_GT(box[3], 45);
+  EXPECT_LT(box[3], 45 + 2 * render::kHitScanPx + 4);
+  f.camera.pitchDeg = 60.0;
+  EXPECT_EQ(render::ellipsoidScissor(geo::makeCameraView(f.camera, f.width, f.height), f.width, f.height)[2], 0);
+}
