@@ -10,6 +10,7 @@
 #include "geo/Sun.hpp"
 #include "gl/Context.hpp"
 #include "render/GlobeRenderer.hpp"
+#include "support/GlFixtures.hpp"
 
 using namespace og;
 
@@ -99,28 +100,13 @@ TEST(OceanWind, AWindAlongOneBinReadsOneBinsPatterns) {
     f.samples = 1;
     f.wind = geo::Wind::blowingTowards(12.0, towardsDeg);
     f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 20.0, 250.0);
-    r.ocean().setOneBinAllowed(false);
-    r.render(f);
-    const io::ImageRgbaF two = r.radiance();
-    r.ocean().setOneBinAllowed(true);
-    r.render(f);
-    const io::ImageRgbaF one = r.radiance();
+    const test::OffAndOn images = test::renderOffAndOn(r, f, [&r](bool on) { r.ocean().setOneBinAllowed(on); });
     EXPECT_TRUE(r.ocean().lastDrawOneBin()) << "towards " << towardsDeg << " deg";
     // Along an even bin the other's weight is exactly 0: the same picture. Along an odd one
     // (45° in float) it is ~1e-7, whose rounding can tip a pixel at a threshold (the
     // back-facing fix): a handful of pixels.
-    double sum = 0.0;
-    int over1 = 0;
-    for (std::size_t i = 0; i < one.pixels.size(); i += 4) {
-      double d = 0.0;
-      for (std::size_t c = 0; c < 3; ++c)
-        d = std::max(d, static_cast<double>(std::abs(one.pixels[i + c] - two.pixels[i + c]) /
-                                            std::max(std::abs(two.pixels[i + c]), 1e-3f)));
-      sum += d;
-      over1 += d > 0.01 ? 1 : 0;
-    }
-    const auto pixels = static_cast<double>(one.pixels.size() / 4);
-    EXPECT_LT(sum / pixels, 1e-5) << "towards " << towardsDeg << " deg";
-    EXPECT_LE(over1, 20) << "towards " << towardsDeg << " deg";
+    const test::RadianceChange change = test::radianceChange(images.off, images.on, 0.01);
+    EXPECT_LT(change.mean, 1e-5) << "towards " << towardsDeg << " deg";
+    EXPECT_LE(change.over, 20) << "towards " << towardsDeg << " deg";
   }
 }

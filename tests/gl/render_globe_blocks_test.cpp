@@ -170,29 +170,13 @@ TEST(GlobeRender, ScatteredPartsShadedFromAListKeepThePicture) {
   views.push_back({"sea-4m", 20, -40, 4.0, 270, -1});
   for (const View& v : views) {
     const render::FrameInput f = frameOf(v);
-    r.setScatteredPartsListed(false);
-    r.render(f);
-    const io::ImageRgbaF fragments = r.radiance();
-    r.setScatteredPartsListed(true);
-    r.render(f);
-    const io::ImageRgbaF listed = r.radiance();
+    const test::OffAndOn images = test::renderOffAndOn(r, f, [&r](bool on) { r.setScatteredPartsListed(on); });
     EXPECT_GT(r.listedPixelCount(), 50u) << v.name << ": the list is in use";
-    ASSERT_EQ(fragments.pixels.size(), listed.pixels.size());
-    double worst = 0.0;
-    int changed = 0;
-    for (std::size_t i = 0; i < listed.pixels.size(); i += 4) {
-      double d = 0.0;
-      for (std::size_t c = 0; c < 4; ++c) {
-        const double a = fragments.pixels[i + c], b = listed.pixels[i + c];
-        d = std::max(d, std::abs(a - b) / std::max(std::abs(a), 1e-3));
-      }
-      worst = std::max(worst, d);
-      changed += d > 0.01 ? 1 : 0;
-    }
-    std::printf("%s: %u pixels listed, %d changed by over 1 %%, largest change %.2e\n", v.name, r.listedPixelCount(), changed, worst);
-    EXPECT_EQ(changed, 0) << v.name << " (largest relative change " << worst << ")";
-    if (changed > 0) {
-      test::savePng(r, std::string("globe_listed_") + v.name);
-    }
+    ASSERT_EQ(images.off.pixels.size(), images.on.pixels.size());
+    const test::RadianceChange change = test::radianceChange(images.off, images.on, 0.01, 4);
+    std::printf("%s: %u pixels listed, %d changed by over 1 %%, largest change %.2e\n", v.name, r.listedPixelCount(),
+                change.over, change.worst);
+    EXPECT_EQ(change.over, 0) << v.name << " (largest relative change " << change.worst << ")";
+    if (change.over > 0) test::savePng(r, std::string("globe_listed_") + v.name);
   }
 }

@@ -231,33 +231,18 @@ TEST(TerrainRender, ShadowMapsFittedToTheScreenKeepThePicture) {
   const render::FrameInput f = test::frameOf({.latDeg = 24.2, .lonDeg = -78.2, .heightM = 2.0, .headingDeg = 270.0,
                                               .pitchDeg = -10.0, .fovDeg = 45.0, .width = 640, .height = 360},
                                              20.0, 250.0);
-  r.terrain().setShadowTexelsFitted(false);
-  r.render(f);
-  const io::ImageRgbaF full = r.radiance();
-  r.terrain().setShadowTexelsFitted(true);
-  r.render(f);
-  const io::ImageRgbaF fitted = r.radiance();
+  const test::OffAndOn images = test::renderOffAndOn(r, f, [&r](bool on) { r.terrain().setShadowTexelsFitted(on); });
   test::savePng(r, "shadows_fitted_bahama_bank_2m");
   const render::SunShadows& s = r.terrain().shadows();
   ASSERT_TRUE(s.on);
   const float least = std::min(s.cropUv[0].z, s.cropUv[1].z);
   EXPECT_LT(least, 1.0f) << "a cascade should draw fewer texels than the map holds";
-  ASSERT_EQ(full.pixels.size(), fitted.pixels.size());
-  double worst = 0.0;
-  int over1 = 0, pixels = 0;
-  for (std::size_t i = 0; i < full.pixels.size(); i += 4, ++pixels) {
-    double change = 0.0;
-    for (std::size_t c = 0; c < 3; ++c) {
-      const double a = full.pixels[i + c], b = fitted.pixels[i + c];
-      change = std::max(change, std::abs(a - b) / std::max(a, 1e-3));
-    }
-    worst = std::max(worst, change);
-    over1 += change > 0.01 ? 1 : 0;
-  }
+  ASSERT_EQ(images.off.pixels.size(), images.on.pixels.size());
+  const test::RadianceChange change = test::radianceChange(images.off, images.on, 0.01);
   std::printf("shadow extents %.3f %.3f, largest change %.4f, %d pixels over 1 %%\n",
-              static_cast<double>(s.cropUv[0].z), static_cast<double>(s.cropUv[1].z), worst, over1);
-  EXPECT_LT(over1, pixels / 100) << "more than 1 % of the pixels changed by over 1 %";
-  EXPECT_LT(worst, 0.05);
+              static_cast<double>(s.cropUv[0].z), static_cast<double>(s.cropUv[1].z), change.worst, change.over);
+  EXPECT_LT(change.over, static_cast<int>(images.on.pixels.size() / 4 / 100)) << "more than 1 % of the pixels changed by over 1 %";
+  EXPECT_LT(change.worst, 0.05);
 }
 
 // A cascade draws only the part of its map over the receivers the screen shows in its range of
@@ -282,25 +267,15 @@ TEST(TerrainRender, ShadowMapsCroppedToTheReceiversKeepThePicture) {
   };
   for (const Case& c : cases) {
     const render::FrameInput f = test::frameOf(c.view, c.sunElevationDeg, c.sunAzimuthDeg);
-    r.terrain().setShadowCropped(false);
-    r.render(f);
-    const io::ImageRgbaF whole = r.radiance();
-    r.terrain().setShadowCropped(true);
-    r.render(f);
-    const io::ImageRgbaF cropped = r.radiance();
+    const test::OffAndOn images = test::renderOffAndOn(r, f, [&r](bool on) { r.terrain().setShadowCropped(on); });
     const render::SunShadows& s = r.terrain().shadows();
     ASSERT_TRUE(s.on) << c.name;
     if (std::string(c.name) == "himalaya_15km_horizon") {
       const glm::vec4 near = s.cropUv[0];
       EXPECT_LT((near.z - near.x) * (near.w - near.y), 0.5f) << "the near cascade should draw under half its map";
     }
-    ASSERT_EQ(whole.pixels.size(), cropped.pixels.size());
-    double worst = 0.0;
-    for (std::size_t i = 0; i < whole.pixels.size(); i += 4)
-      for (std::size_t k = 0; k < 3; ++k) {
-        const double a = whole.pixels[i + k], b = cropped.pixels[i + k];
-        worst = std::max(worst, std::abs(a - b) / std::max(a, 1e-3));
-      }
+    ASSERT_EQ(images.off.pixels.size(), images.on.pixels.size());
+    const double worst = test::radianceChange(images.off, images.on, 1e-4).worst;
     std::printf("%s: crops %.3f x %.3f, %.3f x %.3f of the maps; largest change %.2e\n", c.name,
                 static_cast<double>(s.cropUv[0].z - s.cropUv[0].x), static_cast<double>(s.cropUv[0].w - s.cropUv[0].y),
                 static_cast<double>(s.cropUv[1].z - s.cropUv[1].x), static_cast<double>(s.cropUv[1].w - s.cropUv[1].y), worst);

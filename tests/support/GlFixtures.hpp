@@ -4,8 +4,11 @@
 // camera's horizon (frameOf), and the luminance and PNG helpers the image checks use.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -74,6 +77,47 @@ inline std::vector<double> luminance(const io::ImageRgbaF& im) {
   for (int row = 0; row < im.height; ++row)
     for (int x = 0; x < im.width; ++x) y.push_back(luminance(im, x, row));
   return y;
+}
+
+/// The radiance of frame `f` rendered with a feature off, then on (`set` switches it): for tests
+/// that a speed-up keeps the picture.
+struct OffAndOn {
+  io::ImageRgbaF off, on;
+};
+inline OffAndOn renderOffAndOn(render::GlobeRenderer& r, const render::FrameInput& f,
+                               const std::function<void(bool)>& set) {
+  OffAndOn images;
+  set(false);
+  r.render(f);
+  images.off = r.radiance();
+  set(true);
+  r.render(f);
+  images.on = r.radiance();
+  return images;
+}
+
+/// How two radiance images of the same size differ per pixel: the largest relative change of
+/// its first `channels` channels, |a - b| / max(|a|, floor), the worst and mean over the image
+/// and how many pixels change by more than `bound`.
+struct RadianceChange {
+  double worst = 0.0, mean = 0.0;
+  int over = 0;
+};
+inline RadianceChange radianceChange(const io::ImageRgbaF& a, const io::ImageRgbaF& b, double bound,
+                                     std::size_t channels = 3, float floor = 1e-3f) {
+  RadianceChange c;
+  const std::size_t n = std::min(a.pixels.size(), b.pixels.size()) / 4;
+  for (std::size_t i = 0; i < n; ++i) {
+    double d = 0.0;
+    for (std::size_t k = 0; k < channels; ++k) {
+      const float x = a.pixels[4 * i + k], y = b.pixels[4 * i + k];
+      d = std::max(d, static_cast<double>(std::abs(x - y) / std::max(std::abs(x), floor)));
+    }
+    c.worst = std::max(c.worst, d);
+    c.mean += d / static_cast<double>(n);
+    c.over += d > bound ? 1 : 0;
+  }
+  return c;
 }
 
 /// The renderer's display image as OG_TEST_OUT_DIR/<name>.png, to look at.
