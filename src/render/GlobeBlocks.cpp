@@ -13,6 +13,7 @@ namespace {
 // A block corner's ray on the ellipsoid: hit, geodetic normal, latitude and longitude
 // (degrees), cosine of incidence.
 struct CornerHit {
+  glm::dvec3 dir{0.0};  ///< the corner's ray, unit
   bool hit = false;
   glm::dvec3 normal{0.0};
   double latDeg = 0.0, lonDeg = 0.0, cosIncidence = 0.0;
@@ -27,6 +28,7 @@ glm::dvec2 latLonDegOf(const glm::dvec3& n) {
 CornerHit cornerHit(const geo::CameraView& view, double ndcX, double ndcY) {
   CornerHit c;
   const glm::dvec3 dir = view.rayDirection(ndcX, ndcY);
+  c.dir = dir;
   const std::optional<double> t = geo::intersectEllipsoid(view.positionEcef, dir);
   if (!t) return c;
   c.hit = true;
@@ -65,6 +67,19 @@ data::LandMaskPyramid::Content boxContent(const data::LandMaskPyramid& pyramid, 
   const int r0 = static_cast<int>(std::floor((lo.x - mask.southDeg()) / cellDeg)) - 1;
   const int r1 = static_cast<int>(std::floor((hi.x - mask.southDeg()) / cellDeg)) + 1;
   return fine ? pyramid.fineCells(c0, c1, r0, r1) : pyramid.cells(c0, c1, r0, r1);
+}
+
+// Whether every corner's ray sees space (globe.frag's skyOf: it misses the atmosphere's
+// sphere) and lies farther than `clearRad` from the Sun's direction.
+bool cornersInSpace(const std::array<const CornerHit*, 4>& corners, const geo::CameraView& view,
+                    const GlobeSkyOutline& sky, double clearRad) {
+  const double r = sky.bottomRadiusM + view.position.heightM;
+  for (const CornerHit* c : corners) {
+    const double mu = glm::dot(c->dir, view.enu.up);
+    if (!(mu >= 0.0 || r * r * (mu * mu - 1.0) + sky.topRadiusM * sky.topRadiusM < 0.0)) return false;
+    if (glm::dot(c->dir, sky.sunDirection) > std::cos(clearRad)) return false;
+  }
+  return true;
 }
 
 GlobeBlockClass classifyBlock(const std::array<const CornerHit*, 4>& corners, const data::LandMaskPyramid& pyramid,
@@ -122,7 +137,8 @@ GlobeBlockClass classifyBlock(const std::array<const CornerHit*, 4>& corners, co
 }  // namespace
 
 GlobeBlocks classifyGlobeBlocks(const geo::CameraView& view, int width, int height, const std::array<int, 4>& rect,
-                                const data::LandMaskPyramid& mask, const OpenSeaMap* openSea) {
+                                const data::LandMaskPyramid& mask, const OpenSeaMap* openSea,
+                                const GlobeSkyOutline* sky) {
   GlobeBlocks b;
   b.rect = rect;
   b.columns = (rect[2] + kGlobeBlockPx - 1) / kGlobeBlockPx;
@@ -142,14 +158,22 @@ GlobeBlocks classifyGlobeBlocks(const geo::CameraView& view, int width, int heig
   // be classed per pixel without the land's and the sea's tests: the surface part's count.)
   const double pixelRad = 2.0 * std::tan(0.5 * view.verticalFovRad) / height;
   const bool missOk = std::asin(std::min(1.0, geo::kWgs84SemiMinorM / glm::length(view.positionEcef))) > 128.0 * pixelRad;
+  // Space: the atmosphere's outline as round (outside it: the eye above the atmosphere), and
+  // a block's diagonal (under 12 pixels) clear of the Sun's disc.
+  const double r = sky != nullptr ? sky->bottomRadiusM + view.position.heightM : 0.0;
+  const bool spaceOk = sky != nullptr && r > sky->topRadiusM && std::asin(sky->topRadiusM / r) > 128.0 * pixelRad;
+  const double sunClearRad = sky != nullptr ? sky->sunAngularRadiusRad + 12.0 * pixelRad : 0.0;
   b.classes.resize(static_cast<std::size_t>(b.columns) * static_cast<std::size_t>(b.rows));
   for (int j = 0; j < b.rows; ++j)
     for (int i = 0; i < b.columns; ++i) {
       auto at = [&](int di, int dj) {
         return &corners[static_cast<std::size_t>(j + dj) * static_cast<std::size_t>(cornerColumns) + static_cast<std::size_t>(i + di)];
       };
-      b.classes[static_cast<std::size_t>(j) * static_cast<std::size_t>(b.columns) + static_cast<std::size_t>(i)] =
-          classifyBlock({at(0, 0), at(1, 0), at(0, 1), at(1, 1)}, mask, openSea, missOk, pixelRad);
+      const std::array<const CornerHit*, 4> blockCorners{at(0, 0), at(1, 0), at(0, 1), at(1, 1)};
+      GlobeBlockClass c = classifyBlock(blockCorners, mask, openSea, missOk, pixelRad);
+      if (c == GlobeBlockClass::Miss && spaceOk && cornersInSpace(blockCorners, view, *sky, sunClearRad))
+        c = GlobeBlockClass::Space;
+      b.classes[static_cast<std::size_t>(j) * static_cast<std::size_t>(b.columns) + static_cast<std::size_t>(i)] = c;
     }
   return b;
 }

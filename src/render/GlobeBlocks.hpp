@@ -7,8 +7,11 @@
 // draw that only writes the depth; the per-pixel draw covers the rest (coasts, the limb, the
 // sky, grazing views).
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "data/LandMaskPyramid.hpp"
 #include "geo/Camera.hpp"
@@ -23,8 +26,19 @@ inline constexpr int kGlobeBlockPx = 8;
 /// where the CPU cannot tell (a coast, the limb, a grazing view), else land, sea, or open deep
 /// sea (render/OpenSeaMap) for all four samples of every pixel; Miss where its corners all miss
 /// the ellipsoid (the sky, space: classed per pixel, but without the land's and the sea's
-/// tests, which no sample there needs).
-enum class GlobeBlockClass : std::uint8_t { PerPixel, Land, Sea, OpenSea, Miss };
+/// tests, which no sample there needs); Space where besides they all miss the atmosphere and
+/// the Sun's disc (globe.frag's count 0 at every sample: not drawn at all).
+enum class GlobeBlockClass : std::uint8_t { PerPixel, Land, Sea, OpenSea, Miss, Space };
+inline constexpr std::size_t kGlobeBlockClasses = 6;
+
+/// What tells space from the sky (render/globe.frag's skyOf): the atmosphere's sphere of radius
+/// topRadiusM around the centre bottomRadiusM + the eye's height below the eye, and the Sun's
+/// disc.
+struct GlobeSkyOutline {
+  double bottomRadiusM = 0.0, topRadiusM = 0.0;
+  glm::dvec3 sunDirection{0.0, 0.0, 1.0};  ///< unit, ECEF axes
+  double sunAngularRadiusRad = 0.0;
+};
 
 struct GlobeBlocks {
   std::array<int, 4> rect{0, 0, 0, 0};  ///< pixels covered: x, y (lower-left origin), width, height
@@ -45,8 +59,12 @@ struct GlobeBlocks {
 /// test's 0.2 at the pixel centre, with a margin) and they lie within 0.9 of `openSea`'s
 /// clearance of its centre's 1° cell (nullptr: none is). Miss where the ellipsoid's outline
 /// is too round to bulge between two corners onto a sample (a radius over 128 pixels).
+/// With `sky`, Miss blocks whose corners all lie in space (outside the atmosphere's outline,
+/// itself over 128 pixels in radius, and more than the Sun's radius and a block's diagonal from
+/// the Sun) are Space.
 GlobeBlocks classifyGlobeBlocks(const geo::CameraView& view, int width, int height, const std::array<int, 4>& rect,
-                                const data::LandMaskPyramid& mask, const OpenSeaMap* openSea);
+                                const data::LandMaskPyramid& mask, const OpenSeaMap* openSea,
+                                const GlobeSkyOutline* sky = nullptr);
 inline constexpr double kMinCosIncidence = 0.1;
 inline constexpr double kMinCosIncidenceOpenSea = 0.25;
 

@@ -503,7 +503,11 @@ bool GlobeRenderer::uploadClassifyingBlocks(const geo::CameraView& view, const F
   std::vector<float> vertices;
   const bool blocks = blocksOn_ && maskPyramid_ != nullptr;
   if (blocks) {
-    const GlobeBlocks b = classifyGlobeBlocks(view, f.width, f.height, box, *maskPyramid_, openSeaPart_ ? openSeaMap_.get() : nullptr);
+    // Blocks in space get no draw: the clear colour is what the classifying draw leaves there.
+    const atmosphere::Parameters& a = atmosphere_->parameters();
+    const GlobeSkyOutline sky{a.bottomRadiusM, a.topRadiusM(), glm::normalize(f.sunDirectionEcef), a.sunAngularRadiusRad};
+    const GlobeBlocks b = classifyGlobeBlocks(view, f.width, f.height, box, *maskPyramid_,
+                                              openSeaPart_ ? openSeaMap_.get() : nullptr, &sky);
     auto append = [&](GlobeBlockClass c) {
       const std::vector<float> t = b.triangles(c, f.width, f.height);
       const std::pair<int, int> range{static_cast<int>(vertices.size() / 2), static_cast<int>(t.size() / 2)};

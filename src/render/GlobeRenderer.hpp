@@ -26,6 +26,7 @@
 #include "io/SceneSchema.hpp"
 #include "ocean/OceanFrame.hpp"
 #include "render/Atmosphere.hpp"
+#include "render/GlobeBlocks.hpp"
 #include "render/ImageryTextures.hpp"
 #include "render/LandMaskTexture.hpp"
 #include "render/OceanPatterns.hpp"
@@ -214,7 +215,7 @@ class GlobeRenderer {
   /// the per-pixel classification was a third of the globe pass; a GPU's is not measured yet.
   void setGlobeBlocks(bool on) { blocksOn_ = on; }
   /// The last frame's blocks of each GlobeBlockClass (in its order; all 0 without blocks).
-  [[nodiscard]] const std::array<int, 5>& globeBlockCounts() const { return blockCounts_; }
+  [[nodiscard]] const std::array<int, kGlobeBlockClasses>& globeBlockCounts() const { return blockCounts_; }
   /// Below 20 km the sky is drawn at a lower resolution and read back per pixel where a pixel
   /// is finer than kSkyLowTexelRad / 3 (drawSkyLow: 1280 x 720 and up at the usual fields of
   /// view); false computes it per pixel (the tests' reference).
@@ -297,7 +298,7 @@ class GlobeRenderer {
     std::array<std::pair<int, int>, 3> fills;  ///< land, sea, open sea
   };
   BlockRanges blockRanges_{};
-  std::array<int, 5> blockCounts_{};
+  std::array<int, kGlobeBlockClasses> blockCounts_{};
   bool blocksOn_ = false;  ///< set from gl::driverProfile().software by the constructor
   /// The land mask's pyramid (data::LandMaskPyramid), made on a helper thread from the
   /// constructor on.
