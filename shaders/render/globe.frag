@@ -564,7 +564,7 @@ void shadePixel() {
 }
 #ifdef GLOBE_COMPUTE
 void main() {
-  uint i = gl_GlobalInvocationID.x;
+  uint i = (gl_WorkGroupID.y * GLOBE_PIXELS_ROW + gl_WorkGroupID.x) * GLOBE_PIXELS_GROUP + gl_LocalInvocationID.x;
   if (i >= uCount) return;
   ivec2 pixel = ivec2(uPixels[i] & 0xffffu, uPixels[i] >> 16);
   vNdc = (vec2(pixel) + 0.5) * uPixelNdc - 1.0;

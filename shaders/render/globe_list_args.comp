@@ -4,7 +4,8 @@
 layout(local_size_x = 1) in;
 #include "render/globe_pixels.glsl"
 void main() {
-  uArgs[0] = (uCount + GLOBE_PIXELS_GROUP - 1u) / GLOBE_PIXELS_GROUP;
-  uArgs[1] = 1u;
+  uint groups = (uCount + GLOBE_PIXELS_GROUP - 1u) / GLOBE_PIXELS_GROUP;
+  uArgs[0] = min(groups, GLOBE_PIXELS_ROW);
+  uArgs[1] = (groups + GLOBE_PIXELS_ROW - 1u) / GLOBE_PIXELS_ROW;
   uArgs[2] = 1u;
 }

@@ -46,9 +46,10 @@ enum UniformBlockBinding : unsigned {
   kBlockPatternTable = 0,  ///< ocean/patterns.glsl PatternTable (render/OceanPatterns)
 };
 
-/// Binding points of shader storage blocks that several programs share (GLSL: OG_<NAME>).
+/// Binding points of shader storage blocks that several programs share (GLSL: OG_<NAME>); under 8,
+/// the least GL 4.5 guarantees (render/OceanRenderer's own passes use 3-7).
 enum StorageBinding : unsigned {
-  kGlobePixelsBinding = 8,  ///< render/globe_pixels.glsl GlobePixels (GlobeRenderer::shadeScatteredParts)
+  kGlobePixelsBinding = 2,  ///< render/globe_pixels.glsl GlobePixels (GlobeRenderer::shadeScatteredParts)
 };
 
 /// The contract as "NAME value" #define bodies, in full double precision.

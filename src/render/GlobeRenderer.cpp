@@ -661,7 +661,10 @@ void GlobeRenderer::shadeScatteredParts(const geo::CameraView& view, const Frame
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, scatteredPixels_.id());
   glDispatchComputeIndirect(sizeof(GLuint));  // uArgs
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-  glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  // The target's next users, and the count's next update (listedPixelCount, the next frame's reset).
+  glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                  GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
 bool GlobeRenderer::drawSkyLow(const geo::CameraView& view, const FrameInput& f) {

@@ -334,8 +334,8 @@ class GlobeRenderer {
   gl::Buffer scatteredPixels_;  ///< render/globe_pixels.glsl's block: count, groups, pixels
   std::size_t scatteredPixelsBytes_ = 0;
   gl::Program scatteredList_, scatteredArgs_;
-  bool scatteredListed_ = false;
-  bool ellipsoidScissorOn_ = true;  ///< set from gl::driverProfile().software by the constructor
+  bool scatteredListed_ = false;  ///< set from gl::driverProfile().software by the constructor
+  bool ellipsoidScissorOn_ = true;
   std::array<gl::Program, 3 * kGlobeVariants> globePrograms_;  ///< above 20 km with the aerial table, without, below
   /// Below 20 km: whether the terrain and the grid left any pixel for the globe (an occlusion
   /// query of render/uncovered.frag; the globe's draws are conditional on it).

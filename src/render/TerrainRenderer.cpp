@@ -20,8 +20,14 @@ TerrainRenderer::TerrainRenderer(std::shared_ptr<const data::LatLonGrid> elevati
       vao_(gl::createVertexArray()),
       indices_(gl::createBuffer()) {
   // Sea floor beyond the water volume's reach is never seen (GlobeRenderer::drawOcean's test).
-  params_.unseenFloorDepthM = 2.0 * ocean::waterMaxPathM(ocean::jerlovWater(ocean::kDefaultWater).attenuationPerM,
-                                                         ocean::kWaterEpsilon);
+  const double waterReachM = ocean::waterMaxPathM(ocean::jerlovWater(ocean::kDefaultWater).attenuationPerM,
+                                                  ocean::kWaterEpsilon);
+  params_.unseenFloorDepthM = 2.0 * waterReachM;
+  // The water volume looks the floor's shadow up where the refracted Sun ray to a seen floor
+  // point left the surface (ocean/water_volume.glsl's floorSunVisibility): off the view rays by
+  // the refracted view ray's run (at most the water's reach) and the Sun ray's back up (at most
+  // 1.13 of it, the critical angle's tangent): the shadow maps' crops take that in.
+  floorShadowReachM_ = 2.13 * waterReachM;
   const auto& idx = terrain::tileIndices();
   indexCount_ = static_cast<int>(idx.size());
   glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(idx.size() * sizeof(std::uint32_t)),
@@ -228,9 +234,13 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
                                            half, servedFromM, s);
     // The part of the map over the receivers the cascade serves, on the same texels.
     const double servedToM = cascade == 0 ? static_cast<double>(shadows_.splitM) : 1e9;
-    const LightRect receivers = shadowCropped_ ? shadowReceiverRect(view, lx, ly, servedFromM, servedToM, lowM - kShadowSlabMarginM,
-                                                                    highM + kShadowSlabMarginM)
-                                               : LightRect{mid - half, mid + half};
+    LightRect receivers = shadowCropped_ ? shadowReceiverRect(view, lx, ly, servedFromM, servedToM, lowM - kShadowSlabMarginM,
+                                                              highM + kShadowSlabMarginM)
+                                         : LightRect{mid - half, mid + half};
+    if (!receivers.empty()) {
+      receivers.lo -= floorShadowReachM_;
+      receivers.hi += floorShadowReachM_;
+    }
     const glm::ivec4 crop = shadowCropTexels(receivers, mid, half, texels);
     const double metresPerTexel = 2.0 * half / texels;
     const LightRect drawn{mid - half + glm::dvec2(crop.x, crop.y) * metresPerTexel,

@@ -165,6 +165,7 @@ class TerrainRenderer {
   bool seaHorizonCulling_ = true;
   bool shadowTexelsFitted_ = true;
   bool shadowCropped_ = true;
+  double floorShadowReachM_ = 0.0;  ///< the crops' margin for the floor's shadows (constructor)
   /// terrain.vert/frag variants by bits, built on first use: llvmpipe runs every branch, so
   /// a frame draws with only the code it needs. kLandOnly: without the discards and the coast
   /// test, for tiles all above the sea and away from the poles; kNoNight: no city lights (the

@@ -75,9 +75,10 @@ TEST(OceanWind, GlintIsHigherAndNarrowerOnTheCalmSideOfAFront) {
 }
 
 // A constant wind along one of the patterns' direction bins reads that bin's patterns alone
-// (OceanRenderer::windAlongOneBin, uPatternOneBin): the other's weight is under 1e-3, so the
-// sea is the two bins' sea. Along bin 0 (the default westerly), just past it (float rounding
-// puts bin 0 second: the shader takes the heavier), along bin 3; and the decision itself.
+// (OceanRenderer::windAlongOneBin, PATTERN_ONE_BIN): the other's weight is under 1e-3, so the
+// sea is the two bins' sea. Along bin 0 (the default westerly, towards 90°), just past it
+// (float rounding can put it just below bin 0: the shader takes the nearest bin), along bin 5
+// (towards 225°, a diagonal) and bin 2 (towards 0°); and the decision itself.
 TEST(OceanWind, AWindAlongOneBinReadsOneBinsPatterns) {
   using render::OceanRenderer;
   constexpr double kDeg = 0.017453292519943295;
