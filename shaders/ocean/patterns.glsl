@@ -256,10 +256,17 @@ vec3 patternAveragedFrom(int first, float speedMs) {
   return sum;
 }
 
-// Where oceanSurface finds the per-wind table values: the vertices' (`bands`), or with
+// Where oceanSurface finds the per-wind table values: with PATTERN_CONSTANT_WIND (one wind
+// over the whole sea: render/OceanRenderer) the CPU's, the same for every point
+// (OceanPatterns::setConstantBands); else the vertices' (`bands`), or with
 // PATTERN_BANDS_PER_PIXEL (the deferred sea, which has no vertices) the tables themselves,
 // only the entries the pixel's footprint needs.
-#ifdef PATTERN_BANDS_PER_PIXEL
+#if defined(PATTERN_CONSTANT_WIND)
+uniform vec2 uPatternBandConst[PATTERN_COUNT];               // patternBands(speed).band
+uniform vec3 uPatternAveragedFromConst[PATTERN_COUNT + 1];  // patternBands(speed).averagedFrom
+#define PATTERN_BAND(bands, i, speedMs) uPatternBandConst[i]
+#define PATTERN_AVERAGED_FROM(bands, first, speedMs) uPatternAveragedFromConst[first]
+#elif defined(PATTERN_BANDS_PER_PIXEL)
 #define PATTERN_BAND(bands, i, speedMs) patternBand(i, speedMs)
 #define PATTERN_AVERAGED_FROM(bands, first, speedMs) patternAveragedFrom(first, speedMs)
 #else

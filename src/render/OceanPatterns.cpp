@@ -1,6 +1,7 @@
 #include "render/OceanPatterns.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <span>
@@ -379,6 +380,39 @@ void OceanPatterns::setUniforms(const gl::Program& program, const ocean::OceanFr
   program.set("uPatternFftSize", static_cast<float>(p.fftSize));
   program.set("uPatternTopLod", static_cast<float>(log2Of(p.fftSize)));
   program.set("uPatternFirst", firstPattern_);
+}
+
+void OceanPatterns::setConstantBands(const gl::Program& program, double speedMs) const {
+  // patterns.glsl's patternTable: the two speed columns around the wind, mixed.
+  const double c = std::clamp(speedMs, 0.0, static_cast<double>(ocean::PatternTables::kSpeeds - 1));
+  const int c0 = std::min(static_cast<int>(c), ocean::PatternTables::kSpeeds - 2);
+  const double f = c - c0;
+  auto mix = [f](double a, double b) { return a + (b - a) * f; };
+  const auto& row0 = tables_.pattern[static_cast<std::size_t>(c0)];
+  const auto& row1 = tables_.pattern[static_cast<std::size_t>(c0 + 1)];
+  // patternBands: each band's (slope scale, share along the wind), and the averaged-out
+  // statistics from pattern i on (the tail's slopes first).
+  std::array<float, 2 * ocean::kPatternCount> bands{};
+  std::array<float, 3 * (ocean::kPatternCount + 1)> averaged{};
+  const auto tail0 = tables_.tail[static_cast<std::size_t>(c0)], tail1 = tables_.tail[static_cast<std::size_t>(c0 + 1)];
+  glm::dvec3 sum(mix(tail0.up, tail1.up), mix(tail0.cross, tail1.cross), 0.0);
+  auto store = [&averaged](int i, const glm::dvec3& v) {
+    for (int k = 0; k < 3; ++k) averaged[static_cast<std::size_t>(3 * i + k)] = static_cast<float>(v[k]);
+  };
+  store(ocean::kPatternCount, sum);
+  for (int i = ocean::kPatternCount - 1; i >= 0; --i) {
+    const ocean::PatternTableEntry& a = row0[static_cast<std::size_t>(i)];
+    const ocean::PatternTableEntry& b = row1[static_cast<std::size_t>(i)];
+    const double up = mix(a.slope.up, b.slope.up), cross = mix(a.slope.cross, b.slope.cross);
+    bands[static_cast<std::size_t>(2 * i)] = static_cast<float>(mix(a.slopeScale, b.slopeScale));
+    bands[static_cast<std::size_t>(2 * i + 1)] = static_cast<float>(up / std::max(up + cross, 1e-12));
+    sum += glm::dvec3(up, cross, mix(a.jacobianVariance, b.jacobianVariance));
+    store(i, sum);
+  }
+  if (const GLint at = program.location("uPatternBandConst"); at >= 0)
+    glProgramUniform2fv(program.id(), at, ocean::kPatternCount, bands.data());
+  if (const GLint at = program.location("uPatternAveragedFromConst"); at >= 0)
+    glProgramUniform3fv(program.id(), at, ocean::kPatternCount + 1, averaged.data());
 }
 
 void OceanPatterns::bind() const {

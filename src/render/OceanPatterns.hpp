@@ -66,6 +66,10 @@ class OceanPatterns {
   /// amplitude of the resolved waves, [0, 1].
   void setUniforms(const gl::Program& program, const ocean::OceanFrame* frame, double amplitude) const;
 
+  /// Sets patterns.glsl's PATTERN_CONSTANT_WIND uniforms on `program`: its patternBands at a
+  /// wind of `speedMs` (m/s) over the whole sea, from the tables as the shader reads them.
+  void setConstantBands(const gl::Program& program, double speedMs) const;
+
   /// The defines programs including shaders/ocean/patterns.glsl need.
   [[nodiscard]] static std::vector<std::string> shaderDefines();
 

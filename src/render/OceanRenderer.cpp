@@ -380,6 +380,7 @@ void OceanRenderer::prepare(const gl::Program& p, const geo::CameraView& view, i
   if ((features & kFeatureWaterVolume) != 0) caustics_.bind();
   patterns.bind();
   patterns.setUniforms(p, &frame, amplitudeScale);
+  if (programSet_ == 1) patterns.setConstantBands(p, wind.constantSpeedMs());
   p.set("uLightingTerms", lightingTerms_);
   wind.bind(p);
 }
@@ -401,7 +402,7 @@ void OceanRenderer::drawGridRows(const gl::Program& p, int firstRow, int lastRow
 
 std::vector<std::string> OceanRenderer::patternDefines() const {
   std::vector<std::string> d = defines_;
-  if (programSet_ == 1) d.emplace_back("PATTERN_ONE_BIN");
+  if (programSet_ == 1) d.insert(d.end(), {"PATTERN_ONE_BIN", "PATTERN_CONSTANT_WIND"});
   return d;
 }
 

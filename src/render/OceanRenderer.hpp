@@ -125,7 +125,8 @@ class OceanRenderer {
   /// Whether a wind blowing towards `towardsRad` (radians clockwise from north) lies along one
   /// of the wave patterns' 8 direction bins in a field turned by `fieldRotationRad`
   /// (ocean/patterns.glsl's windBins): the other bin's weight under 1e-3. A constant wind (no
-  /// wind layers) along one reads one bin's patterns instead of two (PATTERN_ONE_BIN): the
+  /// wind layers) along one reads one bin's patterns instead of two (PATTERN_ONE_BIN), and the
+  /// per-wind tables' values from uniforms the CPU sets once (PATTERN_CONSTANT_WIND): the
   /// default westerly, towards 90°, lies along bin 0; a wind layer or a wind between bins, two.
   [[nodiscard]] static bool windAlongOneBin(double towardsRad, double fieldRotationRad);
   /// Whether a wind along one bin may read one bin's patterns (default on); off: two always.

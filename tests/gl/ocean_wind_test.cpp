@@ -75,8 +75,9 @@ TEST(OceanWind, GlintIsHigherAndNarrowerOnTheCalmSideOfAFront) {
 }
 
 // A constant wind along one of the patterns' direction bins reads that bin's patterns alone
-// (OceanRenderer::windAlongOneBin, PATTERN_ONE_BIN): the other's weight is under 1e-3, so the
-// sea is the two bins' sea. Along bin 0 (the default westerly, towards 90°), just past it
+// (OceanRenderer::windAlongOneBin, PATTERN_ONE_BIN) and the per-wind tables' values the CPU
+// computed once (PATTERN_CONSTANT_WIND, OceanPatterns::setConstantBands): the other bin's
+// weight is under 1e-3, so the sea is the two bins' sea. Along bin 0 (the default westerly, towards 90°), just past it
 // (float rounding can put it just below bin 0: the shader takes the nearest bin), along bin 5
 // (towards 225°, a diagonal) and bin 2 (towards 0°); and the decision itself.
 TEST(OceanWind, AWindAlongOneBinReadsOneBinsPatterns) {
