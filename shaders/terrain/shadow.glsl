@@ -4,7 +4,7 @@
 // edge, like the penumbra of relief a few km away).
 const int SHADOW_CASCADES = 2;
 layout(binding = OG_UNIT_SHADOW_MAP) uniform sampler2DArrayShadow uShadowMap;
-uniform mat4 uShadowMatrix[SHADOW_CASCADES];  // camera-relative ECEF -> uv in [0, extent], depth [0,1]
+uniform mat4 uShadowMatrix[SHADOW_CASCADES];  // camera-relative ECEF -> uv of the cascade's texels, depth [0,1]
 uniform float uShadowTexelM[SHADOW_CASCADES]; // texel size, m
 // The part of a cascade's map its lookups may read, (u0, v0, u1, v1) of uv: its first texels
 // (TerrainRenderer::shadowCascadeTexels: fewer where the screen does not resolve them), over

@@ -82,18 +82,37 @@ glm::dvec3 CameraView::rayDirection(double ndcX, double ndcY) const {
   return glm::normalize(forward + (ndcX * t * aspect) * right + (ndcY * t) * up);
 }
 
-std::optional<double> intersectEllipsoid(const glm::dvec3& eye, const glm::dvec3& dir,
-                                         double heightM) {
-  // Scale space so the (raised) ellipsoid is the unit sphere: |o + t d|² = 1.
+namespace {
+// The line eye + t dir against the ellipsoid raised by heightM, in space scaled so that it is
+// the unit sphere: A t² + 2 B t + C = 0, with the constant term C = |o|² - 1 in double (it
+// keeps a metre above the sea).
+struct ScaledCrossing {
+  double A, B, C, disc;
+};
+ScaledCrossing scaledCrossing(const glm::dvec3& eye, const glm::dvec3& dir, double heightM) {
   const double a = kWgs84SemiMajorM + heightM, b = kWgs84SemiMinorM + heightM;
   const glm::dvec3 o{eye.x / a, eye.y / a, eye.z / b};
   const glm::dvec3 d{dir.x / a, dir.y / a, dir.z / b};
   const double A = glm::dot(d, d), B = glm::dot(o, d), C = glm::dot(o, o) - 1.0;
-  const double disc = B * B - A * C;
+  return {A, B, C, B * B - A * C};
+}
+}  // namespace
+
+std::optional<double> intersectEllipsoid(const glm::dvec3& eye, const glm::dvec3& dir,
+                                         double heightM) {
+  const auto [A, B, C, disc] = scaledCrossing(eye, dir, heightM);
   if (disc < 0.0) return std::nullopt;
   if (C < 0.0) return (-B + std::sqrt(disc)) / A;  // inside: the exit point
   if (B >= 0.0) return std::nullopt;               // outside and looking away
   return C / (-B + std::sqrt(disc));               // stable form of the near root
+}
+
+std::optional<std::pair<double, double>> ellipsoidCrossings(const glm::dvec3& eye, const glm::dvec3& dir,
+                                                            double heightM) {
+  const auto [A, B, C, disc] = scaledCrossing(eye, dir, heightM);
+  if (disc < 0.0) return std::nullopt;
+  const double root = std::sqrt(disc);
+  return std::pair{(-B - root) / A, (-B + root) / A};
 }
 
 }  // namespace og::geo

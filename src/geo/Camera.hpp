@@ -3,6 +3,7 @@
 // camera-relative quantities (a float step at Earth radius is 0.5 m).
 #include <glm/glm.hpp>
 #include <optional>
+#include <utility>
 #include <string>
 
 #include "geo/Wgs84.hpp"
@@ -60,5 +61,11 @@ CameraView makeCameraView(const CameraPose& pose, int widthPx, int heightPx);
 /// space with the constant term taken in double, so it stays accurate at 1 m above the sea.
 std::optional<double> intersectEllipsoid(const glm::dvec3& eyeEcef, const glm::dvec3& dir,
                                          double heightM = 0.0);
+
+/// Both distances (near, far; negative behind the eye) where the line from the eye along `dir`
+/// crosses the ellipsoid raised by `heightM`, as intersectEllipsoid computes them, or nullopt
+/// when it misses: the line is inside between them.
+std::optional<std::pair<double, double>> ellipsoidCrossings(const glm::dvec3& eyeEcef, const glm::dvec3& dir,
+                                                            double heightM = 0.0);
 
 }  // namespace og::geo

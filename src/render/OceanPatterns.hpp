@@ -38,8 +38,6 @@ class OceanPatterns {
 
   [[nodiscard]] const ocean::WavePatterns& patterns() const { return *patterns_; }
   [[nodiscard]] const ocean::PatternTables& tables() const { return tables_; }
-  /// The first pattern with waves (ocean::firstPatternWithWaves): the shaders start there.
-  [[nodiscard]] int firstPattern() const { return firstPattern_; }
 
   /// Makes the textures show the sea at simulation time `timeS` (seconds, any value): runs the
   /// FFTs unless the textures already hold that time. Only the first `patternCount` patterns
@@ -101,7 +99,7 @@ class OceanPatterns {
 
   std::shared_ptr<const ocean::WavePatterns> patterns_;
   ocean::PatternTables tables_;
-  int firstPattern_ = 0;
+  int firstPattern_ = 0;  ///< ocean::firstPatternWithWaves: the shaders' loops start there
   std::unique_ptr<GpuFft> gpu_;                   ///< Fft::Gpu
   std::unique_ptr<ocean::PatternSynthesis> cpu_;  ///< Fft::Cpu
   gl::Texture displacement_;

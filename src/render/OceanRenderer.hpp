@@ -308,8 +308,9 @@ class OceanRenderer {
   /// OCEANGLOBE_SEA=deferred, until measured on such a GPU (docs/performance.md, "Tenth session").
   bool deferredWithoutExport_;
   /// The programs that read the wave patterns, each compiled on first use: set 1 with
-  /// PATTERN_ONE_BIN (a constant wind along one of the patterns' direction bins: one bin's
-  /// lookups, windAlongOneBin), set 0 without.
+  /// PATTERN_ONE_BIN and PATTERN_CONSTANT_WIND (a constant wind along one of the patterns'
+  /// direction bins: one bin's lookups, the tables' values as uniforms; windAlongOneBin), set 0
+  /// without.
   struct PatternPrograms {
     std::array<gl::Program, 16> variants;    ///< by feature bits
     gl::Program classify;                    ///< ocean/sea_classify.frag
@@ -321,7 +322,7 @@ class OceanRenderer {
   std::array<PatternPrograms, 2> programSets_;
   std::size_t programSet_ = 0;  ///< this frame's (draw)
   PatternPrograms& programs() { return programSets_.at(programSet_); }
-  /// defines_ with this frame's PATTERN_ONE_BIN.
+  /// defines_ with this frame's set's (PATTERN_ONE_BIN, PATTERN_CONSTANT_WIND).
   [[nodiscard]] std::vector<std::string> patternDefines() const;
   bool oneBinAllowed_ = true;
   gl::Buffer gridVertices_;  ///< the surface pass's vertices (ocean/grid_vertex_buffer.glsl)

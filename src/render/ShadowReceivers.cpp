@@ -2,27 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
-#include <utility>
-
-#include "geo/Wgs84.hpp"
 
 namespace og::render {
-
-namespace {
-// Distances along the ray where it is inside the ellipsoid raised by heightM: both roots of
-// |(eye + t dir) / axes|² = 1, or none. The constant term |eye / axes|² - 1 in double keeps
-// a metre above the sea (its relative size 1e-7).
-std::optional<std::pair<double, double>> insideRaised(const glm::dvec3& eye, const glm::dvec3& dir, double heightM) {
-  const glm::dvec3 axes(geo::kWgs84SemiMajorM + heightM, geo::kWgs84SemiMajorM + heightM, geo::kWgs84SemiMinorM + heightM);
-  const glm::dvec3 o = eye / axes, d = dir / axes;
-  const double a = glm::dot(d, d), b = glm::dot(o, d), c = glm::dot(o, o) - 1.0;
-  const double disc = b * b - a * c;
-  if (disc < 0.0) return std::nullopt;
-  const double root = std::sqrt(disc);
-  return std::pair{(-b - root) / a, (-b + root) / a};
-}
-}  // namespace
 
 LightRect shadowReceiverRect(const geo::CameraView& view, const glm::dvec3& lx, const glm::dvec3& ly,
                              double nearM, double farM, double lowM, double highM) {
@@ -45,11 +26,11 @@ LightRect shadowReceiverRect(const geo::CameraView& view, const glm::dvec3& lx, 
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
       const glm::dvec3 dir = view.rayDirection(-1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n);
-      const auto below = insideRaised(view.positionEcef, dir, highM);
+      const auto below = geo::ellipsoidCrossings(view.positionEcef, dir, highM);
       if (!below || below->second < 0.0) continue;
       const double enter = std::max(below->first, 0.0), leave = below->second;
       // The slab is the inside of the upper surface less the inside of the lower one.
-      const auto under = insideRaised(view.positionEcef, dir, lowM);
+      const auto under = geo::ellipsoidCrossings(view.positionEcef, dir, lowM);
       if (!under || under->second < enter || under->first > leave) {
         addStretch(dir, enter, leave);
         continue;

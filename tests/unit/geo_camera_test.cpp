@@ -88,6 +88,29 @@ TEST(Camera, ReversedFloatDepthResolvesOneMetreAndFortyThousandKm) {
   EXPECT_GT(depth(4.0e7), 0.0f);                // never collapses to the far value
 }
 
+// Both crossings of the line (render/ShadowReceivers' slab): straight down from 100 m the near
+// one at 100 m and the far one through the Earth; looking up, both behind the eye; from inside
+// a raised ellipsoid, one behind and the exit ahead, where intersectEllipsoid puts it.
+TEST(Camera, EllipsoidCrossingsBracketTheInside) {
+  const CameraView down = makeCameraView(pose(12, -34, 100.0, 0, -90), 64, 64);
+  const auto c = ellipsoidCrossings(down.positionEcef, down.forward);
+  ASSERT_TRUE(c);
+  EXPECT_NEAR(c->first, 100.0, 1e-3);
+  EXPECT_GT(c->second, 1.2e7);
+  const auto up = ellipsoidCrossings(down.positionEcef, -down.forward);
+  ASSERT_TRUE(up);
+  EXPECT_LT(up->second, 0.0);
+  const auto inside = ellipsoidCrossings(down.positionEcef, down.forward, 200.0);
+  ASSERT_TRUE(inside);
+  EXPECT_LT(inside->first, 0.0);
+  EXPECT_NEAR(inside->second, *intersectEllipsoid(down.positionEcef, down.forward, 200.0), 1e-3);
+  // From 1000 m, 0.01 rad above level: the whole line passes over the ground (the horizon dips
+  // 0.018 rad there).
+  const CameraView level = makeCameraView(pose(0, 0, 1000, 0, 0), 64, 64);
+  const glm::dvec3 aside = glm::normalize(level.forward + level.enu.up * 0.01);
+  EXPECT_FALSE(ellipsoidCrossings(level.positionEcef, aside));
+}
+
 TEST(Camera, EllipsoidIntersectionIsAccurateNearTheSurface) {
   for (double h : {0.1, 1.0, 2.0, 100.0, 2.0e7}) {
     const CameraView v = makeCameraView(pose(12, -34, h, 0, -90), 64, 64);
