@@ -5,20 +5,23 @@
 // so the grid's ~8-pixel cells shaded their pixels about twice over (docs/performance.md):
 // drawn through this buffer the costly shading runs once per pixel.
 // Layers of an RGBA32UI array texture, floats by their bits, smooth terms as half floats:
-//   0: camera-relative position (ECEF axes, m), pixel footprint (m)
-//   1: undisplaced position in the ocean frame (m), the vertices' mean slope
-//   2: the vertices' slope covariance, Jacobian statistic x
-//   3: Jacobian statistic y, floor depth (m), the floor's depth gradient in the triangle
-//   4: halves: the vertices' pattern shares 0-4, aerial transmittance
-//   5: halves: aerial in-scatter, the water's Sun and sky irradiance (3 + 2 channels)
-//   6: halves: the sky irradiance's third channel, the fine-floor flag; the pixel's class where
-//      the driver cannot export stencil values (SEA_CLASS_IN_SURFACE; 0: no sea)
+//   0: distance to the eye along the pixel's ray (m), pixel footprint (m), undisplaced
+//      position in the ocean frame (m)
+//   1: the vertices' mean slope, their slope covariance's xx and yy
+//   2: the Jacobian statistics; halves: the covariance's xy, the aerial in-scatter
+//   3: halves: the vertices' pattern shares 0-4, the aerial transmittance
+//   4: floor depth (m), the floor's depth gradient in the triangle; halves: the water's Sun
+//      irradiance (red, green)
+//   5: halves: the water's Sun irradiance (blue) and sky irradiance, the fine-floor flag; the
+//      pixel's class where the driver cannot export stencil values (SEA_CLASS_IN_SURFACE; 0:
+//      no sea)
+// The position is not stored: the interpolated point of the grid's triangle at the pixel's
+// centre lies on the pixel's ray, so its distance along the ray gives it back (seaRayDirection).
 // SEA_SURFACE_COMPACT (a frame without the water volume, the class in the stencil: render/
-// OceanRenderer::surfaceCompact): layers 0-4 only, layer 3 holding the Jacobian statistic y and
-// the aerial in-scatter as halves instead of the floor's values; each layer written and read
-// costs llvmpipe about as much as a texture lookup per pixel.
+// OceanRenderer::surfaceCompact): layers 0-3 only; each layer written and read costs llvmpipe
+// about as much as a texture lookup per pixel.
 // Needs (included first): ocean/patterns.glsl (PATTERN_COUNT).
-const int SEA_SURFACE_LAYERS = 7;
+const int SEA_SURFACE_LAYERS = 6;
 #if PATTERN_COUNT != 5
 #error "layer 4 holds five pattern shares"
 #endif
@@ -66,33 +69,38 @@ layout(location = 0) out uvec4 seaSurface0;
 layout(location = 1) out uvec4 seaSurface1;
 layout(location = 2) out uvec4 seaSurface2;
 layout(location = 3) out uvec4 seaSurface3;
-layout(location = 4) out uvec4 seaSurface4;
 #ifndef SEA_SURFACE_COMPACT
+layout(location = 4) out uvec4 seaSurface4;
 layout(location = 5) out uvec4 seaSurface5;
-layout(location = 6) out uvec4 seaSurface6;
 #endif
 
 // Writes the fragment's values: the grid's varyings, its footprint (m), the floor's depth
 // gradient in its triangle (floorDepthSlope) and its class (1..5, kept where SEA_CLASS_IN_SURFACE).
 void writeSeaSurface(float footprintM, vec2 floorSlope, int seaClass) {
-  seaSurface0 = uvec4(floatBitsToUint(vRelative), floatBitsToUint(footprintM));
-  seaSurface1 = uvec4(floatBitsToUint(vOceanXY), floatBitsToUint(vPatternMean));
-  seaSurface2 = uvec4(floatBitsToUint(vPatternCov), floatBitsToUint(vPatternJacobian.x));
-  vec3 t = SEA_AERIAL_T, s = SEA_AERIAL_S, sunE = SEA_WATER_SUN, skyE = SEA_WATER_SKY;
-#ifdef SEA_SURFACE_COMPACT
-  seaSurface3 = uvec4(floatBitsToUint(vPatternJacobian.y), seaHalves(s.r, s.g), seaHalves(s.b, 0.0), 0u);
-#else
-  seaSurface3 = uvec4(floatBitsToUint(vec2(vPatternJacobian.y, SEA_FLOOR_DEPTH)), floatBitsToUint(floorSlope));
-#endif
-  seaSurface4 = uvec4(seaHalves(vPatternShare[0], vPatternShare[1]), seaHalves(vPatternShare[2], vPatternShare[3]),
+  vec3 t = SEA_AERIAL_T, s = SEA_AERIAL_S;
+  seaSurface0 = uvec4(floatBitsToUint(length(vRelative)), floatBitsToUint(footprintM), floatBitsToUint(vOceanXY));
+  seaSurface1 = uvec4(floatBitsToUint(vPatternMean), floatBitsToUint(vPatternCov.xy));
+  seaSurface2 = uvec4(floatBitsToUint(vPatternJacobian), seaHalves(vPatternCov.z, s.r), seaHalves(s.g, s.b));
+  seaSurface3 = uvec4(seaHalves(vPatternShare[0], vPatternShare[1]), seaHalves(vPatternShare[2], vPatternShare[3]),
                       seaHalves(vPatternShare[4], t.r), seaHalves(t.g, t.b));
 #ifndef SEA_SURFACE_COMPACT
-  seaSurface5 = uvec4(seaHalves(s.r, s.g), seaHalves(s.b, sunE.r), seaHalves(sunE.g, sunE.b), seaHalves(skyE.r, skyE.g));
-  seaSurface6 = uvec4(seaHalves(skyE.b, SEA_FLOOR_FINE), uint(seaClass), 0u, 0u);
+  vec3 sunE = SEA_WATER_SUN, skyE = SEA_WATER_SKY;
+  seaSurface4 = uvec4(floatBitsToUint(SEA_FLOOR_DEPTH), floatBitsToUint(floorSlope), seaHalves(sunE.r, sunE.g));
+  seaSurface5 = uvec4(seaHalves(sunE.b, skyE.r), seaHalves(skyE.g, skyE.b), seaHalves(SEA_FLOOR_FINE, 0.0), uint(seaClass));
 #endif
 }
 #elif defined(OCEAN_DEFERRED)
 layout(binding = OG_UNIT_SEA_SURFACE) uniform usampler2DArray uSeaSurface;
+uniform vec3 uRight;  // the camera's basis, ECEF axes (as the grid's: ocean/grid_vertex.glsl)
+uniform vec3 uUp;
+uniform vec3 uForward;
+uniform vec2 uTanHalfFov;
+
+// The unit ray through the pixel's centre, ECEF axes (geo::CameraView::rayDirection).
+vec3 seaRayDirection(ivec2 pixel) {
+  vec2 ndc = (vec2(pixel) + 0.5) / vec2(textureSize(uSeaSurface, 0).xy) * 2.0 - 1.0;
+  return normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp);
+}
 
 // Reads the pixel's values into the globals the forward pass has as varyings (ocean/ocean.frag
 // declares them with SEA_IN empty): returns the footprint (m) and the floor's depth gradient.
@@ -100,35 +108,31 @@ void readSeaSurface(out float footprintM, out vec2 floorSlope) {
   ivec2 p = ivec2(gl_FragCoord.xy);
   uvec4 s0 = texelFetch(uSeaSurface, ivec3(p, 0), 0), s1 = texelFetch(uSeaSurface, ivec3(p, 1), 0);
   uvec4 s2 = texelFetch(uSeaSurface, ivec3(p, 2), 0), s3 = texelFetch(uSeaSurface, ivec3(p, 3), 0);
-  uvec4 s4 = texelFetch(uSeaSurface, ivec3(p, 4), 0);
-#ifdef SEA_SURFACE_COMPACT
-  // Layer 3's in-scatter where the full layout has layer 5's (its other values unread).
-  uvec4 s5 = uvec4(s3.yz, 0u, 0u), s6 = uvec4(0u);
-#else
-  uvec4 s5 = texelFetch(uSeaSurface, ivec3(p, 5), 0), s6 = texelFetch(uSeaSurface, ivec3(p, 6), 0);
-#endif
-  vRelative = uintBitsToFloat(s0.xyz);
-  footprintM = uintBitsToFloat(s0.w);
-  vOceanXY = uintBitsToFloat(s1.xy);
-  vPatternMean = uintBitsToFloat(s1.zw);
-  vPatternCov = uintBitsToFloat(s2.xyz);
-  vPatternJacobian = uintBitsToFloat(uvec2(s2.w, s3.x));
-  floorSlope = uintBitsToFloat(s3.zw);
-  vec2 a = unpackHalf2x16(s4.x), b = unpackHalf2x16(s4.y), c = unpackHalf2x16(s4.z), d = unpackHalf2x16(s4.w);
+  vRelative = uintBitsToFloat(s0.x) * seaRayDirection(p);
+  footprintM = uintBitsToFloat(s0.y);
+  vOceanXY = uintBitsToFloat(s0.zw);
+  vPatternMean = uintBitsToFloat(s1.xy);
+  vec2 covXyS = unpackHalf2x16(s2.z), s2w = unpackHalf2x16(s2.w);
+  vPatternCov = vec3(uintBitsToFloat(s1.zw), covXyS.x);
+  vPatternJacobian = uintBitsToFloat(s2.xy);
+  vec2 a = unpackHalf2x16(s3.x), b = unpackHalf2x16(s3.y), c = unpackHalf2x16(s3.z), d = unpackHalf2x16(s3.w);
   vPatternShare = float[PATTERN_COUNT](a.x, a.y, b.x, b.y, c.x);
-  vec2 e = unpackHalf2x16(s5.x), f = unpackHalf2x16(s5.y), g = unpackHalf2x16(s5.z), h = unpackHalf2x16(s5.w);
-  vec2 i = unpackHalf2x16(s6.x);
 #ifndef OCEAN_SIMPLE_SKY
   vTransmittance = vec3(c.y, d);
-  vInscatter = vec3(e, f.x);
+  vInscatter = vec3(covXyS.y, s2w);
 #endif
 #ifndef OCEAN_NO_WATER_VOLUME
-  vFloorDepthM = uintBitsToFloat(s3.y);
-  vFloorFine = i.y;
+  uvec4 s4 = texelFetch(uSeaSurface, ivec3(p, 4), 0), s5 = texelFetch(uSeaSurface, ivec3(p, 5), 0);
+  vFloorDepthM = uintBitsToFloat(s4.x);
+  floorSlope = uintBitsToFloat(s4.yz);
+  vec2 e = unpackHalf2x16(s4.w), f = unpackHalf2x16(s5.x), g = unpackHalf2x16(s5.y);
+  vFloorFine = unpackHalf2x16(s5.z).x;
 #ifndef OCEAN_SIMPLE_SKY
-  vWaterSunE = vec3(f.y, g);
-  vWaterSkyE = vec3(h, i.x);
+  vWaterSunE = vec3(e, f.x);
+  vWaterSkyE = vec3(f.y, g);
 #endif
+#else
+  floorSlope = vec2(0.0);
 #endif
 }
 #endif

@@ -33,7 +33,7 @@ void SeaSurfaceBuffer::bindForWriting(int width, int height, GLuint depthStencil
     width_ = width, height_ = height, depthStencil_ = 0, drawBuffers_ = 0;
   }
   // Each layer written costs llvmpipe ~0.9 ms a frame at 640x360 (one thread): the compact
-  // layout leaves the last two off.
+  // layout leaves the water volume's two off.
   if (const int n = compact ? kCompactLayers : kLayers; n != drawBuffers_) {
     std::array<GLenum, kLayers> buffers{};
     for (int i = 0; i < kLayers; ++i)
@@ -51,7 +51,7 @@ void SeaSurfaceBuffer::bindForWriting(int width, int height, GLuint depthStencil
 }
 
 void SeaSurfaceBuffer::clearClasses() const {
-  constexpr GLint kClassLayer = kLayers - 1;  // its .y (ocean/sea_class_stencil.frag reads it there)
+  constexpr GLint kClassLayer = kLayers - 1;  // its .w (ocean/sea_class_stencil.frag reads it there)
   const std::array<GLuint, 4> none{};
   glClearNamedFramebufferuiv(fbo_.id(), GL_COLOR, kClassLayer, none.data());
 }

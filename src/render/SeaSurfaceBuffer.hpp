@@ -9,10 +9,10 @@ namespace og::render {
 
 class SeaSurfaceBuffer {
  public:
-  static constexpr int kLayers = 7;  ///< SEA_SURFACE_LAYERS
+  static constexpr int kLayers = 6;  ///< SEA_SURFACE_LAYERS
   /// Layers of the compact layout (SEA_SURFACE_COMPACT: no water volume, the class in the
   /// stencil), the draw buffers beyond them off.
-  static constexpr int kCompactLayers = 5;
+  static constexpr int kCompactLayers = 4;
 
   /// The single-sampled 2D depth-stencil texture attached to the bound draw framebuffer, 0
   /// where it has none (the default framebuffer, a renderbuffer, a multisample texture).
@@ -22,7 +22,7 @@ class SeaSurfaceBuffer {
   /// when the size or the depth-stencil texture changes.
   void bindForWriting(int width, int height, GLuint depthStencil, bool compact = false);
   /// Zeroes the layer that holds each pixel's class where the driver cannot export stencil
-  /// values (layer 6, ocean/sea_surface.glsl's SEA_CLASS_IN_SURFACE; 0: no sea drawn), bound
+  /// values (layer 5, ocean/sea_surface.glsl's SEA_CLASS_IN_SURFACE; 0: no sea drawn), bound
   /// for writing with all kLayers (never the compact layout, which needs the export).
   void clearClasses() const;
   /// Binds the texture to gl::kUnitSeaSurface for the shading passes.
