@@ -7,9 +7,9 @@
 //       u = [x, y] / (1 + z): stereographic coordinates of a unit direction in a local frame
 //       (x, y horizontal, z up); the zenith maps to 0, the horizon to the unit circle.
 //
-//   vec3 skyMapRadiance(vec3 reflectedDirLocal, float sunZenith, float sunAzimuth,
+//   vec3 skyMapRadiance(vec3 reflectedDirLocal, float sunZenith, vec2 sunAzimuthCS,
 //                       vec2 dUdx, vec2 dUdy)
-//   vec3 skyMapRadianceStereo(vec2 u, float sunZenith, float sunAzimuth, vec2 dUdx, vec2 dUdy)
+//   vec3 skyMapRadianceStereo(vec2 u, float sunZenith, vec2 sunAzimuthCS, vec2 dUdx, vec2 dUdy)
 //       Sky radiance arriving from direction reflectedDirLocal (unit, local frame as above),
 //       filtered over the footprint given by the two stereographic-space gradients dUdx, dUdy
 //       (the axes of the filter ellipse, e.g. Bruneton 2010 Fig. 9: 2 sigma_x dU/dzeta_x and
@@ -18,8 +18,8 @@
 //       where the view reads the frame layer, else up to 4 lookups along the ellipse
 //       (uSkyFilterProbes; Atmosphere::chooseSkyFilter). sunZenith: the Sun's zenith angle
 //       at the surface point, radians [0, pi] (beyond 105° the last, dark layer is used);
-//       sunAzimuth: the Sun's azimuth in the same local frame, radians, counter-clockwise from
-//       +x towards +y (atan(sun.y, sun.x)). Directions below the horizon return the light the
+//       sunAzimuthCS: (cos, sin) of the Sun's azimuth in the same local frame, counter-clockwise
+//       from +x towards +y (skymap_common.glsl's sunAzimuthCosSin of its direction there). Directions below the horizon return the light the
 //       waves reflect from there, 0.17 E_sky / pi (atmosphere/skymap_common.glsl). The Sun's
 //       disc is NOT in the maps (add it with the Sun's BRDF term). Layers are blended linearly in the Sun zenith angle.
 //       Units: radiance relative to the solar irradiance at the top of the atmosphere, the
@@ -93,9 +93,9 @@ vec3 skyRipMapFiltered(vec2 tc, vec2 gx, vec2 gy) {
 }
 #endif
 
-vec3 skyMapRadianceStereo(vec2 u, float sunZenith, float sunAzimuth, vec2 dUdx, vec2 dUdy) {
-  // Rotate by -sunAzimuth so the Sun lies along +x, as in the stored maps.
-  float c = cos(sunAzimuth), s = sin(sunAzimuth);
+vec3 skyMapRadianceStereo(vec2 u, float sunZenith, vec2 sunAzimuthCS, vec2 dUdx, vec2 dUdy) {
+  // Rotate by -(the Sun's azimuth) so the Sun lies along +x, as in the stored maps.
+  float c = sunAzimuthCS.x, s = sunAzimuthCS.y;
   mat2 toMap = mat2(c, -s, s, c);
   float scale = 0.5 / SKYMAP_EXTENT;
   vec2 tc = toMap * u * scale + 0.5;
@@ -119,9 +119,9 @@ vec3 skyMapRadianceStereo(vec2 u, float sunZenith, float sunAzimuth, vec2 dUdx, 
 #endif
 }
 
-vec3 skyMapRadiance(vec3 reflectedDirLocal, float sunZenith, float sunAzimuth, vec2 dUdx,
+vec3 skyMapRadiance(vec3 reflectedDirLocal, float sunZenith, vec2 sunAzimuthCS, vec2 dUdx,
                     vec2 dUdy) {
-  return skyMapRadianceStereo(skyMapStereo(reflectedDirLocal), sunZenith, sunAzimuth, dUdx, dUdy);
+  return skyMapRadianceStereo(skyMapStereo(reflectedDirLocal), sunZenith, sunAzimuthCS, dUdx, dUdy);
 }
 
 float skyIrradianceCoord(float sunZenith) {

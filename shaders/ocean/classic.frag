@@ -46,8 +46,7 @@ void main() {
   // The ocean frame stands in for the local frame (the classic model is planar anyway); the sky
   // is point-sampled in the mirror direction, no filtering.
   float sunZenith = acos(clamp(uSunDirOcean.z, -1.0, 1.0));
-  float sunAzimuth = atan2Safe(uSunDirOcean.y, uSunDirOcean.x);
-  vec3 sky = skyMapRadianceStereo(stereographic(r), sunZenith, sunAzimuth, vec2(0.0), vec2(0.0));
+  vec3 sky = skyMapRadianceStereo(stereographic(r), sunZenith, sunAzimuthCosSin(uSunDirOcean), vec2(0.0), vec2(0.0));
   // The terrain's shadows on the sea (the frame's up stands in for the local vertical).
   vec3 eSun = sunIrradiance(sunZenith) * sunVisibility(vRelative, transpose(uEcefToOcean)[2]);
   // Sparkles: the Sun seen in the mirror direction, a narrow Phong lobe.

@@ -22,7 +22,7 @@
 uniform vec3 uSkyZenith;   // radiance at the zenith
 uniform vec3 uSkyHorizon;  // radiance at the horizon
 vec3 skyIrradiance(Number sunZenith) { return vec3(0.1, 0.13, 0.18) * clamp(cos(sunZenith) * 2.0, 0.0, 1.0); }
-vec3 skyMapRadianceStereo(vec2 u, Number sunZenith, Number sunAzimuth, vec2 dUdx, vec2 dUdy) {
+vec3 skyMapRadianceStereo(vec2 u, Number sunZenith, vec2 sunAzimuthCS, vec2 dUdx, vec2 dUdy) {
   Number q = dot(u, u);
   Number z = (1.0 - q) / (1.0 + q);  // inverse stereographic: cos(zenith angle)
   vec3 sky = mix(uSkyHorizon, uSkyZenith, sqrt(clamp(z, 0.0, 1.0))) * clamp(cos(sunZenith) * 4.0, 0.0, 1.0);
@@ -66,7 +66,8 @@ mat3 localFrame(vec3 upE) {
 // The view, the Sun and the surface in the point's local frame, and the light arriving there.
 struct SeaPoint {
   vec3 v, n, l, tx, ty;  // to the eye, normal, to the Sun, tangents along/across the wind
-  Number sunZenith, sunAzimuth;
+  Number sunZenith;
+  vec2 sunAzimuthCS;     // (cos, sin) of the Sun's azimuth (skymap_common.glsl)
   vec3 eSun, eSky;       // Sun and sky irradiance at sea level for this Sun zenith
 };
 
@@ -92,7 +93,7 @@ SeaPoint seaPoint(vec3 vE, vec3 nE, vec3 windE, vec3 upE, vec3 sunE) {
   p.tx = normalize(w - dot(w, p.n) * p.n + vec3(1e-6, 0.0, 0.0));
   p.ty = cross(p.n, p.tx);
   p.sunZenith = acos(clamp(p.l.z, -1.0, 1.0));
-  p.sunAzimuth = atan2Safe(p.l.y, p.l.x);
+  p.sunAzimuthCS = sunAzimuthCosSin(p.l);
   p.eSun = sunIrradiance(p.sunZenith) * gSeaSunVisibility;
   p.eSky = skyIrradiance(p.sunZenith);
   return p;
@@ -148,7 +149,7 @@ vec3 seaRadianceAt(SeaPoint p, vec3 cov, vec3 upE) {
   vec2 u0 = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, zeta0));
   vec2 ua = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, zeta0 + eps * a));
   vec2 ub = stereographic(reflectedBySlope(p.v, p.n, p.tx, p.ty, zeta0 + eps * b));
-  vec3 sky = fbar * skyMapRadianceStereo(u0, p.sunZenith, p.sunAzimuth,
+  vec3 sky = fbar * skyMapRadianceStereo(u0, p.sunZenith, p.sunAzimuthCS,
                                          2.0 * sigmaV * sqrt(visible.y) * (ua - u0) / eps,
                                          2.0 * sigmaB * (ub - u0) / eps);
   return uLightingTerms.x * glint + uLightingTerms.y * sky + uLightingTerms.z * seaRefracted(p, upE, fbar);
@@ -204,7 +205,7 @@ vec3 referencePatchCovariance(vec2 dSlopeDx, vec2 dSlopeDy, Number windAzimuth) 
 vec3 seaRadianceMirror(vec3 vE, vec3 nE, vec3 windE, vec3 patchCov, vec3 upE, vec3 sunE) {
   SeaPoint p = seaPoint(vE, nE, windE, upE, sunE);
   Number f = fresnelSchlick(dot(p.v, p.n));
-  vec3 sky = f * skyMapRadianceStereo(stereographic(reflect(-p.v, p.n)), p.sunZenith, p.sunAzimuth,
+  vec3 sky = f * skyMapRadianceStereo(stereographic(reflect(-p.v, p.n)), p.sunZenith, p.sunAzimuthCS,
                                       vec2(0.0), vec2(0.0));
   return uLightingTerms.x * seaSunGlint(p, patchCov) + uLightingTerms.y * sky +
          uLightingTerms.z * seaRefracted(p, upE, f);
