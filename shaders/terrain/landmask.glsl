@@ -185,11 +185,19 @@ vec4 landFractionFine4(vec2 latLon0, vec2 latLon1, vec2 latLon2, vec2 latLon3) {
 
 // The fine level's weight for a footprint (radians of arc on the ground): 1 up to one fine
 // cell, 0 from three (data::LandMask::fineWeight); 0 without a fine level.
+// LANDMASK_COARSE_ONLY: a frame in which every pixel's footprint spans three fine cells or more
+// (render::LandMaskTexture::fineLevelUnresolved: from ~1500 km up at 720p) — the weight is 0
+// wherever it is asked, and as a constant it compiles the fine level's lookups out, which
+// llvmpipe otherwise runs for every pixel, masked (a loop's first trip: docs/performance.md).
+#ifdef LANDMASK_COARSE_ONLY
+float landMaskFineWeight(float footprintRad) { return 0.0; }
+#else
 float landMaskFineWeight(float footprintRad) {
   if (!landMaskFineOn()) return 0.0;
   float fineCellRad = PI / float(8 * textureSize(uLandMask, 0).y);
   return 1.0 - smoothstep(1.0, 3.0, footprintRad / fineCellRad);
 }
+#endif
 
 // A pixel's footprint on the ground for the mask's coast, radians of arc: its view distance
 // `t` (m) times the angle `pixelRad` a pixel subtends, widened at grazing incidence

@@ -274,6 +274,8 @@ void GlobeRenderer::render(const FrameInput& f) {
   patternsFor(std::max(f.wind.speedMs, wind_->maxLayerSpeedMs()), f.waveSeed);
   const bool grid = view.position.heightM < kOceanGridMaxHeightM;
   aerialTableFrame_ = aerialTableOn_ && !grid && view.position.heightM < kAerialTableMaxHeightM;
+  coarseMaskFrame_ = coarseMaskVariants_ && landMask_->fineLevelUnresolved(view, f.height);
+  terrain_->setCoarseLandMask(coarseMaskFrame_);
 
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glBindFramebuffer(GL_FRAMEBUFFER, hdr_.fbo.id());
@@ -323,9 +325,11 @@ void GlobeRenderer::render(const FrameInput& f) {
 }
 
 const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
-  // Sets of variants: above 20 km with the aerial table, without it, below 20 km.
+  // Sets of variants: above 20 km with the aerial table, without it, below 20 km, and above
+  // 20 km without the table nor the land mask's fine level (a frame from ~1500 km up, where no
+  // pixel resolves it: LANDMASK_COARSE_ONLY).
   const bool tableReader = variant > kClassifyExportLandSea && variant != kBlockFill;  // (classifying: no table)
-  const int set = behind ? 2 : aerialTableFrame_ && tableReader ? 0 : 1;
+  const int set = behind ? 2 : aerialTableFrame_ && tableReader ? 0 : coarseMaskFrame_ ? 3 : 1;
   gl::Program& p = globePrograms_[static_cast<std::size_t>(set * kGlobeVariants + variant)];
   if (p.id() == 0) {
     // Variants 0-5: GLOBE_PART_CLASSIFY (4) with its step; 6: all steps in one draw; 7-9: the
@@ -351,6 +355,7 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
     }
     if (behind) defines.emplace_back("GLOBE_BEHIND");
     if (set == 0) defines.emplace_back("AERIAL_TABLE");
+    if (set == 3) defines.emplace_back("LANDMASK_COARSE_ONLY");
     // Above the ceiling the classifying draws cover blocks of pixels (render/GlobeBlocks).
     const bool blocks = !behind && (variant <= kClassifyExportLandSea || variant == kBlockFill);
     if (variant == kListedPixels)

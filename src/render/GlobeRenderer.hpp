@@ -225,6 +225,11 @@ class GlobeRenderer {
   /// on llvmpipe pay a vector of lanes for a lone pixel. On by default on software renderers
   /// with one sample per pixel and no auxiliary outputs; false: fragments (the tests' reference).
   void setScatteredPartsListed(bool on) { scatteredListed_ = on; }
+  /// Whether frames in which no pixel resolves the land mask's fine level draw with programs
+  /// that leave it out (LANDMASK_COARSE_ONLY; on by default, off for comparisons).
+  void setCoarseMaskVariants(bool on) { coarseMaskVariants_ = on; }
+  /// Whether the last frame drew with them.
+  [[nodiscard]] bool lastFrameCoarseMask() const { return coarseMaskFrame_; }
   /// The pixels the last frame listed (setScatteredPartsListed; reads the count back: for tests).
   [[nodiscard]] std::uint32_t listedPixelCount() const;
   /// The last frame's pixels per sky texel along a side (1: the sky per pixel).
@@ -324,6 +329,9 @@ class GlobeRenderer {
   gl::Texture aerialTable_;  ///< RGBA32F, 3 layers of AERIAL_TABLE_SIZE, bilinear, clamped
   bool aerialTableOn_ = true;
   bool aerialTableFrame_ = false;  ///< this frame's globe reads the table
+  /// This frame's programs leave the land mask's fine level out (LandMaskTexture::fineLevelUnresolved).
+  bool coarseMaskFrame_ = false;
+  bool coarseMaskVariants_ = true;  ///< setCoarseMaskVariants
   void setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view, const FrameInput& f);
   /// Whether this frame lists its scattered parts (setScatteredPartsListed, one sample, no
   /// auxiliary outputs, not counting the parts' samples).
@@ -336,7 +344,8 @@ class GlobeRenderer {
   gl::Program scatteredList_, scatteredArgs_;
   bool scatteredListed_ = false;  ///< set from gl::driverProfile().software by the constructor
   bool ellipsoidScissorOn_ = true;
-  std::array<gl::Program, 3 * kGlobeVariants> globePrograms_;  ///< above 20 km with the aerial table, without, below
+  /// Above 20 km with the aerial table, without, below, above without the mask's fine level.
+  std::array<gl::Program, 4 * kGlobeVariants> globePrograms_;
   /// Below 20 km: whether the terrain and the grid left any pixel for the globe (an occlusion
   /// query of render/uncovered.frag; the globe's draws are conditional on it).
   gl::Program uncovered_;

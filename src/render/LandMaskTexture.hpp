@@ -15,6 +15,7 @@
 #include <glm/vec3.hpp>
 
 #include "data/LandMask.hpp"
+#include "geo/Camera.hpp"
 #include "gl/Objects.hpp"
 
 namespace og::render {
@@ -27,6 +28,16 @@ class LandMaskTexture {
   /// stand-in) to gl::kUnitLandMaskFine.
   void bind() const;
   [[nodiscard]] bool active() const { return active_; }
+  /// Whether the fine level weighs nothing anywhere in `view` (`heightPx` pixels tall): every
+  /// pixel's footprint on the ground (landmask.glsl's coastFootprintRad: at least the nearest
+  /// ground's distance, the eye's height less kHighestGroundM, times the smallest angle a pixel
+  /// subtends, at the screen's corners) spans kFineCellsUnweighted fine cells or more, or there
+  /// is no fine level. Such a frame's programs compile the fine level out (LANDMASK_COARSE_ONLY).
+  [[nodiscard]] bool fineLevelUnresolved(const geo::CameraView& view, int heightPx) const;
+  /// The footprint, in fine cells, from which the fine level's weight is 0 (landMaskFineWeight).
+  static constexpr double kFineCellsUnweighted = 3.0;
+  /// Above the highest ground on Earth (Everest, 8849 m), m.
+  static constexpr double kHighestGroundM = 9000.0;
   [[nodiscard]] std::size_t gpuBytes() const { return bytes_; }
   /// landmask.glsl's landFraction at (latitude, longitude, footprint) radians, evaluated on the
   /// GPU (for tests against data::LandMask::landFraction with a footprint).
@@ -46,6 +57,7 @@ class LandMaskTexture {
   gl::Texture texture_;
   gl::Texture fine_;
   bool active_ = false;
+  double fineCellRad_ = 0.0;  ///< a fine cell's side, radians of arc; 0 without a fine level
   std::size_t bytes_ = 0;
 };
 

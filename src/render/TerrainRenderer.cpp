@@ -54,6 +54,7 @@ const gl::Program& TerrainRenderer::variant(unsigned bits) {
     if ((bits & kNoNight) != 0) defines.emplace_back("TERRAIN_NO_NIGHT");
     if ((bits & kShadowsOff) != 0) defines.emplace_back("SHADOWS_OFF");
     if ((bits & kNoImageryLayers) != 0) defines.emplace_back("IMAGERY_NO_LAYERS");
+    if ((bits & kCoarseMask) != 0) defines.emplace_back("LANDMASK_COARSE_ONLY");
     if ((bits & kCoverage) != 0) defines.insert(defines.end(), {"TERRAIN_COVERAGE", "TERRAIN_DEPTH_ONLY"});
     if ((bits & kAfterCoverage) != 0) defines.emplace_back("TERRAIN_AFTER_COVERAGE");
     p = gl::Program({{GL_VERTEX_SHADER, "terrain/terrain.vert"}, {GL_FRAGMENT_SHADER, "terrain/terrain.frag"}},
@@ -475,7 +476,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
       geo::sunMayBeDownInView(view.enu.up, view.position.heightM, glm::normalize(sunDirectionEcef), highestM);
   const bool imageryLayers = imagery_ != nullptr && imagery_->layerCount() > 0;
   const unsigned frameBits = (shadows_.on ? 0u : kShadowsOff) | (nightInView ? 0u : kNoNight) |
-                             (imageryLayers ? 0u : kNoImageryLayers);
+                             (imageryLayers ? 0u : kNoImageryLayers) | (coarseMask_ ? kCoarseMask : 0u);
   waterBits_ = frameBits;
   waterSunDirection_ = sunDirectionEcef;
   // Tiles all above the sea and away from the poles need none of terrain.frag's discards and

@@ -93,6 +93,10 @@ class TerrainRenderer {
   /// shows in its distances (shadowReceiverRect; the default) or all of it: for tests that
   /// compare the two.
   void setShadowCropped(bool on) { shadowCropped_ = on; }
+  /// Whether the next frames draw with the programs that leave the land mask's fine level out
+  /// (no pixel resolves it: render::LandMaskTexture::fineLevelUnresolved; the globe renderer
+  /// sets it each frame).
+  void setCoarseLandMask(bool on) { coarseMask_ = on; }
 
  private:
   static constexpr int kMaxDetailOctaves = 24;  // MAX_DETAIL_OCTAVES in terrain.frag
@@ -171,7 +175,8 @@ class TerrainRenderer {
   /// test, for tiles all above the sea and away from the poles; kNoNight: no city lights (the
   /// Sun is up everywhere in view, geo::sunMayBeDownInView); kShadowsOff: no shadow maps this
   /// frame; kNoImageryLayers: no user imagery layer loaded (terrain/imagery.glsl's loops
-  /// compiled out).
+  /// compiled out); kCoarseMask: no pixel resolves the land mask's fine level
+  /// (LANDMASK_COARSE_ONLY, setCoarseLandMask).
   /// kCoverage: only the discards, writing the depth of what survives them (its colour writes
   /// masked off); kAfterCoverage: the shading after it, the depth test (equal) before the
   /// shader and no discards (drawCovered).
@@ -181,10 +186,12 @@ class TerrainRenderer {
     kShadowsOff = 4u,
     kNoImageryLayers = 8u,
     kCoverage = 16u,
-    kAfterCoverage = 32u
+    kAfterCoverage = 32u,
+    kCoarseMask = 64u
   };
   const gl::Program& variant(unsigned bits);
-  std::array<gl::Program, 64> variants_;
+  std::array<gl::Program, 128> variants_;
+  bool coarseMask_ = false;  ///< setCoarseLandMask
   unsigned waterBits_ = 0;  ///< drawWaterTiles()' variant bits this frame
   glm::dvec3 waterSunDirection_{1.0, 0.0, 0.0};
   std::vector<const terrain::Tile*> waterTiles_;  ///< left by draw() for drawWaterTiles()

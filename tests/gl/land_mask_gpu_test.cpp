@@ -12,6 +12,8 @@
 #include <glm/vec4.hpp>
 
 #include "data/LandMask.hpp"
+#include "geo/Camera.hpp"
+#include "geo/Wgs84.hpp"
 #include "gl/Context.hpp"
 #include "gl/Probe.hpp"
 #include "gl/Shader.hpp"
@@ -95,6 +97,65 @@ TEST(LandMaskGpu, LatitudeOfANormalHoldsToTensOfMetres) {
   }
   EXPECT_LT(worstLat, 5e-6);  // 32 m, a fifteenth of a 15″ cell
   EXPECT_LT(worstLon, 5e-6);
+}
+
+// A frame is drawn without the fine level's code (LANDMASK_COARSE_ONLY) only where no pixel
+// would weigh it: at every pixel of such a view, the footprint the terrain's coast test takes
+// (coastFootprintRad from the angle between neighbouring pixels' rays, the smallest of the
+// globe's and the terrain's, at the ground's distance along the ray) spans three fine cells or
+// more. Checked over whole views that just pass (a fraction above the threshold, looking
+// straight down and obliquely), and the threshold is neither far above nor below them.
+TEST(LandMaskGpu, FineLevelLeftOutOnlyWhereNoPixelResolvesIt) {
+  const auto context = gl::createHeadlessContext();
+  const data::LandMask& mask = data::defaultLandMask();
+  const render::LandMaskTexture texture(&mask);
+  ASSERT_TRUE(mask.hasFineLevel());
+  const double fineCellRad = mask.cellDeg() / data::LandMask::kFinePerCell * kDeg;
+  const int width = 320, height = 180;
+  auto viewAt = [&](double h, double pitch) {
+    geo::CameraPose pose;
+    pose.position = {36.0, -5.5, h};
+    pose.pitchDeg = pitch;
+    return geo::makeCameraView(pose, width, height);
+  };
+  // The lowest height at which the frame leaves the fine level out, by bisection.
+  auto threshold = [&](double pitch) {
+    double lo = 1e4, hi = 1e8;
+    while (hi - lo > 100.0) {
+      const double mid = 0.5 * (lo + hi);
+      (texture.fineLevelUnresolved(viewAt(mid, pitch), height) ? hi : lo) = mid;
+    }
+    return hi;
+  };
+  for (double pitch : {-90.0, -70.0, -30.0}) {
+    const double h = threshold(pitch);
+    // 45° field, 180 rows: ~540 km (the pixel's angle at the corners, 9 km of ground below the eye).
+    EXPECT_GT(h, 4.0e5) << pitch;
+    EXPECT_LT(h, 7.0e5) << pitch;
+    const geo::CameraView view = viewAt(h * 1.001, pitch);
+    ASSERT_TRUE(texture.fineLevelUnresolved(view, height));
+    double least = 1e9;
+    for (int y = 0; y + 1 < height; ++y)
+      for (int x = 0; x + 1 < width; ++x) {
+        auto ray = [&](int i, int j) {
+          return view.rayDirection((i + 0.5) / width * 2.0 - 1.0, (j + 0.5) / height * 2.0 - 1.0);
+        };
+        const glm::dvec3 dir = ray(x, y);
+        // The highest ground (Everest) lies nearer than the ellipsoid along the ray.
+        const std::optional<double> t = geo::intersectEllipsoid(view.positionEcef, dir,
+                                                                render::LandMaskTexture::kHighestGroundM);
+        if (!t) continue;
+        const double pixelRad = std::max(std::acos(std::min(glm::dot(dir, ray(x + 1, y)), 1.0)),
+                                         std::acos(std::min(glm::dot(dir, ray(x, y + 1)), 1.0)));
+        least = std::min(least, *t * pixelRad / geo::kWgs84SemiMajorM / fineCellRad);
+      }
+    EXPECT_GE(least, render::LandMaskTexture::kFineCellsUnweighted) << pitch;
+    EXPECT_LT(least, 2.0 * render::LandMaskTexture::kFineCellsUnweighted) << pitch << ": not needlessly strict";
+    EXPECT_FALSE(texture.fineLevelUnresolved(viewAt(0.9 * h, pitch), height)) << pitch;
+  }
+  // Without a fine level there is nothing to leave out, at any height.
+  const render::LandMaskTexture coarse(nullptr);
+  EXPECT_TRUE(coarse.fineLevelUnresolved(viewAt(4.0, -10.0), height));
 }
 
 }  // namespace

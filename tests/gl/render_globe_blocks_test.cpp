@@ -184,3 +184,28 @@ TEST(GlobeRender, ScatteredPartsShadedFromAListKeepThePicture) {
     if (change.over > 0) test::savePng(r, std::string("globe_listed_") + v.name);
   }
 }
+
+// From high up no pixel resolves the land mask's fine level (LandMaskTexture::fineLevelUnresolved)
+// and the globe's and the terrain's programs leave its code out (LANDMASK_COARSE_ONLY): the same
+// picture as with it (its weight is 0 at every pixel there), from orbit and from just above the
+// threshold over coasts whose fine cells decide them from lower down. Lower, the frame keeps it.
+TEST(GlobeRender, FineCoastLeftOutFromHighUpKeepsThePicture) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  const std::array<View, 3> high{{{"orbit-20000km", 10, -30, 2.0e7, 0, -90},
+                                  {"gibraltar-700km", 33.0, -5.5, 7.0e5, 0, -60},
+                                  {"norway-1500km", 55.0, 5.0, 1.5e6, 20, -50}}};
+  for (const View& v : high) {
+    const render::FrameInput f = frameOf(v);
+    const test::OffAndOn images = test::renderOffAndOn(r, f, [&r](bool on) { r.setCoarseMaskVariants(on); });
+    EXPECT_TRUE(r.lastFrameCoarseMask()) << v.name;
+    const test::RadianceChange change = test::radianceChange(images.off, images.on, 1e-5);
+    std::printf("%s: %d pixels changed, largest relative change %.2e\n", v.name, change.over, change.worst);
+    EXPECT_EQ(change.over, 0) << v.name << " (largest relative change " << change.worst << ")";
+    if (change.over > 0) test::savePng(r, std::string("globe_coarse_mask_") + v.name);
+  }
+  for (const View& v : kViews) {  // 30-400 km
+    r.render(frameOf(v));
+    EXPECT_FALSE(r.lastFrameCoarseMask()) << v.name;
+  }
+}
