@@ -311,6 +311,16 @@ void GlobeRenderer::render(const FrameInput& f) {
   if (timer_ != nullptr) timer_->mark("tone mapping");
   glDisable(GL_DEPTH_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, ldr_.fbo.id());
+  // Above the ceiling nothing was drawn outside the globe's box (scissorToGlobe): the radiance
+  // there is the clear's 0, black once tone mapped. Only the box is tone mapped (orbit: 40 % of
+  // the screen), the rest cleared to black.
+  const bool toneBoxed = !grid && scissorGlobe_;
+  if (toneBoxed) {
+    const float black[] = {0.0f, 0.0f, 0.0f, 1.0f};
+    glClearNamedFramebufferfv(ldr_.fbo.id(), GL_COLOR, 0, black);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(globeBox_[0], globeBox_[1], globeBox_[2], globeBox_[3]);
+  }
   if (hdr_.samples > 1 && tonemapMs_.id() == 0)  // compiled on first use (start-up)
     tonemapMs_ = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "render/tonemap.frag"}},
                              {"TONEMAP_MULTISAMPLE"});
@@ -319,6 +329,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   glBindTextureUnit(gl::kUnitToneRadiance, hdr_.color.id());
   tonemap.use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_SCISSOR_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (timer_ != nullptr) timer_->endFrame();
   gl::checkErrors("GlobeRenderer::render");
@@ -486,6 +497,7 @@ std::array<int, 4> GlobeRenderer::scissorToGlobe(const geo::CameraView& view, co
   if (!scissorGlobe_) return {0, 0, f.width, f.height};
   const std::array<int, 4> box = globeScissor(view, f.width, f.height, atmosphere_->parameters(),
                                               f.sunDirectionEcef);
+  globeBox_ = box;
   glEnable(GL_SCISSOR_TEST);
   glScissor(box[0], box[1], box[2], box[3]);
   return box;

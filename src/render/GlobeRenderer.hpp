@@ -373,6 +373,7 @@ class GlobeRenderer {
   bool countPartSamples_ = false;
   std::vector<std::pair<std::string, std::uint64_t>> partSamples_;
   bool scissorGlobe_ = true;
+  std::array<int, 4> globeBox_{};  ///< this frame's box above the ceiling (scissorToGlobe): x, y, width, height
   std::unique_ptr<WindTextures> wind_;
   std::unique_ptr<OceanPatterns> patterns_;
   gl::RenderTarget hdr_;

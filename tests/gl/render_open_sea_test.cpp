@@ -231,9 +231,13 @@ TEST(GlobeRender, ScissorToTheGlobeLeavesThePictureUnchanged) {
     r.setGlobeScissor(false);
     r.render(f);
     const io::ImageRgbaF whole = r.radiance();
+    const io::ImageRgba8 wholeShown = r.display();
     r.setGlobeScissor(true);
+    r.render(frames.back());  // the screen full of the globe, left in the display's target
     r.render(f);
     const io::ImageRgbaF scissored = r.radiance();
+    // The tone map too runs only in the box (the rest cleared to black): the same display.
+    EXPECT_TRUE(wholeShown.pixels == r.display().pixels) << "camera at " << f.camera.position.heightM << " m";
     std::size_t differ = 0, sunlit = 0;
     for (std::size_t k = 0; k < whole.pixels.size(); ++k) {
       differ += whole.pixels[k] != scissored.pixels[k] ? 1 : 0;
