@@ -56,6 +56,16 @@ struct CameraView {
 /// straight up are as well defined as any other orientation.
 CameraView makeCameraView(const CameraPose& pose, int widthPx, int heightPx);
 
+/// A lower bound of a pixel's footprint on the ground anywhere in `view` (`heightPx` pixels
+/// tall), radians of arc: the ground's least distance (the eye's height less `highestGroundM`)
+/// times the smallest angle between neighbouring pixels' rays (at the screen's corners), over
+/// the semi-major axis. What the shaders' per-pixel footprints (terrain/landmask.glsl's
+/// coastFootprintRad, the terrain's detail footprint) cannot fall below; 0 when the eye is not
+/// above `highestGroundM`.
+double smallestGroundFootprintRad(const CameraView& view, int heightPx, double highestGroundM);
+/// Above the highest ground on Earth (Everest, 8849 m), m.
+inline constexpr double kHighestGroundM = 9000.0;
+
 /// Exact near intersection of a ray from the eye with the ellipsoid raised by `heightM`,
 /// as a distance in metres, or nullopt when the ray misses. Computed in the ellipsoid's scaled
 /// space with the constant term taken in double, so it stays accurate at 1 m above the sea.

@@ -1,7 +1,6 @@
 #include "render/LandMaskTexture.hpp"
 
 #include <bit>
-#include <cmath>
 #include <cstdint>
 #include <future>
 #include <numbers>
@@ -10,7 +9,6 @@
 #include <glm/vec4.hpp>
 
 #include "core/Error.hpp"
-#include "geo/Wgs84.hpp"
 #include "gl/Probe.hpp"
 #include "gl/Shader.hpp"
 #include "gl/ShaderContract.hpp"
@@ -71,15 +69,9 @@ LandMaskTexture::LandMaskTexture(const data::LandMask* mask) {
 
 bool LandMaskTexture::fineLevelUnresolved(const geo::CameraView& view, int heightPx) const {
   if (fineCellRad_ <= 0.0) return true;
-  const double nearestM = view.position.heightM - kHighestGroundM;
-  if (nearestM <= 0.0 || heightPx <= 0) return false;
-  // A pixel's angle: 2 tan(fov / 2) / height at the centre, times cos² of the ray's angle to the
-  // axis (d atan) at worst, smallest at the corners.
-  const double tanY = std::tan(0.5 * view.verticalFovRad);
-  const double tanCorner2 = tanY * tanY * (1.0 + view.aspect * view.aspect);
-  const double pixelRad = 2.0 * tanY / heightPx / (1.0 + tanCorner2);
   // coastFootprintRad = t pixelRad / (a max(cos, 0.2)) >= t pixelRad / a; 1 % for the floats.
-  return nearestM * pixelRad / geo::kWgs84SemiMajorM >= 1.01 * kFineCellsUnweighted * fineCellRad_;
+  return geo::smallestGroundFootprintRad(view, heightPx, geo::kHighestGroundM) >=
+         1.01 * kFineCellsUnweighted * fineCellRad_;
 }
 
 LandMaskTexture::FineTexels LandMaskTexture::fineTexels(const data::LandMask& mask) {

@@ -29,15 +29,12 @@ class LandMaskTexture {
   void bind() const;
   [[nodiscard]] bool active() const { return active_; }
   /// Whether the fine level weighs nothing anywhere in `view` (`heightPx` pixels tall): every
-  /// pixel's footprint on the ground (landmask.glsl's coastFootprintRad: at least the nearest
-  /// ground's distance, the eye's height less kHighestGroundM, times the smallest angle a pixel
-  /// subtends, at the screen's corners) spans kFineCellsUnweighted fine cells or more, or there
-  /// is no fine level. Such a frame's programs compile the fine level out (LANDMASK_COARSE_ONLY).
+  /// pixel's footprint on the ground (landmask.glsl's coastFootprintRad, at least
+  /// geo::smallestGroundFootprintRad) spans kFineCellsUnweighted fine cells or more, or there is
+  /// no fine level. Such a frame's programs compile the fine level out (LANDMASK_COARSE_ONLY).
   [[nodiscard]] bool fineLevelUnresolved(const geo::CameraView& view, int heightPx) const;
   /// The footprint, in fine cells, from which the fine level's weight is 0 (landMaskFineWeight).
   static constexpr double kFineCellsUnweighted = 3.0;
-  /// Above the highest ground on Earth (Everest, 8849 m), m.
-  static constexpr double kHighestGroundM = 9000.0;
   [[nodiscard]] std::size_t gpuBytes() const { return bytes_; }
   /// landmask.glsl's landFraction at (latitude, longitude, footprint) radians, evaluated on the
   /// GPU (for tests against data::LandMask::landFraction with a footprint).

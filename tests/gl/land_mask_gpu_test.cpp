@@ -143,7 +143,7 @@ TEST(LandMaskGpu, FineLevelLeftOutOnlyWhereNoPixelResolvesIt) {
         const glm::dvec3 dir = ray(x, y);
         // The highest ground (Everest) lies nearer than the ellipsoid along the ray.
         const std::optional<double> t = geo::intersectEllipsoid(view.positionEcef, dir,
-                                                                render::LandMaskTexture::kHighestGroundM);
+                                                                geo::kHighestGroundM);
         if (!t) continue;
         const double pixelRad = std::max(std::acos(std::min(glm::dot(dir, ray(x + 1, y)), 1.0)),
                                          std::acos(std::min(glm::dot(dir, ray(x, y + 1)), 1.0)));
