@@ -314,7 +314,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   // Above the ceiling nothing was drawn outside the globe's box (scissorToGlobe): the radiance
   // there is the clear's 0, black once tone mapped. Only the box is tone mapped (orbit: 40 % of
   // the screen), the rest cleared to black.
-  const bool toneBoxed = !grid && scissorGlobe_;
+  const bool toneBoxed = !grid && scissorGlobe_ && globeBox_ != std::array<int, 4>{0, 0, f.width, f.height};
   if (toneBoxed) {
     const float black[] = {0.0f, 0.0f, 0.0f, 1.0f};
     glClearNamedFramebufferfv(ldr_.fbo.id(), GL_COLOR, 0, black);
