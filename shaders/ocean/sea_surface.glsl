@@ -23,7 +23,7 @@
 // Needs (included first): ocean/patterns.glsl (PATTERN_COUNT).
 const int SEA_SURFACE_LAYERS = 6;
 #if PATTERN_COUNT != 5
-#error "layer 4 holds five pattern shares"
+#error "layer 3 holds five pattern shares"
 #endif
 
 uint seaHalves(float a, float b) { return packHalf2x16(vec2(a, b)); }

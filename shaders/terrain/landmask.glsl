@@ -186,7 +186,7 @@ vec4 landFractionFine4(vec2 latLon0, vec2 latLon1, vec2 latLon2, vec2 latLon3) {
 // The fine level's weight for a footprint (radians of arc on the ground): 1 up to one fine
 // cell, 0 from three (data::LandMask::fineWeight); 0 without a fine level.
 // LANDMASK_COARSE_ONLY: a frame in which every pixel's footprint spans three fine cells or more
-// (render::LandMaskTexture::fineLevelUnresolved: from ~1500 km up at 720p) — the weight is 0
+// (render::LandMaskTexture::fineLevelUnresolved: from ~2100 km up at 1280x720) — the weight is 0
 // wherever it is asked, and as a constant it compiles the fine level's lookups out, which
 // llvmpipe otherwise runs for every pixel, masked (a loop's first trip: docs/performance.md).
 #ifdef LANDMASK_COARSE_ONLY

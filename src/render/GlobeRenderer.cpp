@@ -337,8 +337,8 @@ void GlobeRenderer::render(const FrameInput& f) {
 
 const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
   // Sets of variants: above 20 km with the aerial table, without it, below 20 km, and above
-  // 20 km without the table nor the land mask's fine level (a frame from ~1500 km up, where no
-  // pixel resolves it: LANDMASK_COARSE_ONLY).
+  // 20 km without the table nor the land mask's fine level (a frame from ~2100 km up at 720p,
+  // where no pixel resolves it: LANDMASK_COARSE_ONLY).
   const bool tableReader = variant > kClassifyExportLandSea && variant != kBlockFill;  // (classifying: no table)
   const int set = behind ? 2 : aerialTableFrame_ && tableReader ? 0 : coarseMaskFrame_ ? 3 : 1;
   gl::Program& p = globePrograms_[static_cast<std::size_t>(set * kGlobeVariants + variant)];

@@ -500,7 +500,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   }
   if (!landTiles.empty())  // (the variant is compiled on first use: none over the open sea)
-    drawTiles(view, landTiles, frameBits | kLandOnly, sunDirectionEcef, seaFromGlobe);
+    drawTiles(view, landTiles, (frameBits & ~kCoarseMask) | kLandOnly, sunDirectionEcef, seaFromGlobe);  // (no mask)
   glDisable(GL_STENCIL_TEST);
   drawCovered(view, otherTiles, frameBits, sunDirectionEcef, seaFromGlobe);
   waterView_ = view;
