@@ -19,8 +19,9 @@
 //       (uSkyFilterProbes; Atmosphere::chooseSkyFilter). sunZenith: the Sun's zenith angle
 //       at the surface point, radians [0, pi] (beyond 105° the last, dark layer is used);
 //       sunAzimuthCS: (cos, sin) of the Sun's azimuth in the same local frame, counter-clockwise
-//       from +x towards +y (skymap_common.glsl's sunAzimuthCosSin of its direction there). Directions below the horizon return the light the
-//       waves reflect from there, 0.17 E_sky / pi (atmosphere/skymap_common.glsl). The Sun's
+//       from +x towards +y (common/constants.glsl's sunAzimuthCosSin of its direction there).
+//       Directions below the horizon return the light the waves reflect from there,
+//       0.17 E_sky / pi (atmosphere/skymap_common.glsl). The Sun's
 //       disc is NOT in the maps (add it with the Sun's BRDF term). Layers are blended linearly in the Sun zenith angle.
 //       Units: radiance relative to the solar irradiance at the top of the atmosphere, the
 //       renderer's unit (a white Lambertian plate facing the unattenuated Sun has radiance 1/pi).

@@ -26,15 +26,6 @@ Number skyIrradianceZenith(int entry, int entries) {
   return Number(entry) / Number(entries - 1) * 3.14159265358979;
 }
 
-// The Sun's azimuth in a local frame (x east, y north, z up) as (cos, sin), from its unit
-// direction `sunLocal` there: the maps hold the Sun along +x, and a lookup turns by its azimuth
-// (skyMapRadianceStereo) without the angle's atan2, cos and sin per pixel. (1, 0) with the Sun
-// at the zenith or nadir, where the maps are symmetric about the axis.
-vec2 sunAzimuthCosSin(vec3 sunLocal) {
-  Number r2 = sunLocal.x * sunLocal.x + sunLocal.y * sunLocal.y;
-  return r2 > 1e-24 ? vec2(sunLocal.x, sunLocal.y) / sqrt(r2) : vec2(1.0, 0.0);
-}
-
 // Radiance stored below the horizon: SEA_MEAN_FRESNEL * E_sky / pi, E_sky the sky's irradiance of
 // a horizontal surface at sea level (same units as the maps' radiance).
 vec3 skyMapBelowHorizon(vec3 skyIrradianceHorizontal) {

@@ -67,7 +67,7 @@ mat3 localFrame(vec3 upE) {
 struct SeaPoint {
   vec3 v, n, l, tx, ty;  // to the eye, normal, to the Sun, tangents along/across the wind
   Number sunZenith;
-  vec2 sunAzimuthCS;     // (cos, sin) of the Sun's azimuth (skymap_common.glsl)
+  vec2 sunAzimuthCS;     // (cos, sin) of the Sun's azimuth (common/constants.glsl)
   vec3 eSun, eSky;       // Sun and sky irradiance at sea level for this Sun zenith
 };
 
