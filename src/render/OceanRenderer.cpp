@@ -145,10 +145,10 @@ std::vector<std::string> OceanRenderer::featureDefines(unsigned features) const 
 const gl::Program& OceanRenderer::deferredProgram(unsigned features) {
   gl::Program& p = programs().deferredVariants.at(features);
   if (p.id() != 0) return p;
-  // The coast test is the surface pass's; kSurfaceCompact is not a feature.
-  std::vector<std::string> d = featureDefines(features & ~(kFeatureCoastTest | kSurfaceCompact));
+  // The coast test is the surface pass's. The surface buffer's layers the shading reads are the
+  // same in its compact layout and its full one (ocean/sea_surface.glsl): one program for both.
+  std::vector<std::string> d = featureDefines(features & ~kFeatureCoastTest);
   d.emplace_back("OCEAN_DEFERRED");
-  if ((features & kSurfaceCompact) != 0) d.emplace_back("SEA_SURFACE_COMPACT");
   p = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}}, d);
   return p;
 }
@@ -732,8 +732,6 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   glBindVertexArray(vao_.id());
   std::array<unsigned, kSeaClasses> perClass = classFeatures(features, routedShadows);
   if (!classes) perClass.at(0) = features & ~kFeatureCoastTest;  // one class: all but the coast test
-  if (compact)
-    for (unsigned& f : perClass) f |= kSurfaceCompact;
   for (std::size_t k = 0; k < kSeaClasses && seaVisible; ++k) {
     if (rows.at(2 * k + 1) < rows.at(2 * k)) continue;  // no pixel of this class
     if (timer_ != nullptr) timer_->mark(kClassPass.at(k));

@@ -139,7 +139,7 @@ class OceanRenderer {
   [[nodiscard]] bool lastDrawOneBin() const { return programSet_ == 1; }
   /// Whether the last draw was deferred.
   [[nodiscard]] bool lastDrawDeferred() const { return lastDeferred_; }
-  /// Whether the last deferred draw's surface buffer had the compact layout (kSurfaceCompact).
+  /// Whether the last deferred draw's surface buffer had the compact layout (SEA_SURFACE_COMPACT).
   [[nodiscard]] bool lastSurfaceCompact() const { return lastSurfaceCompact_; }
   /// Grid cell size in pixels (the paper's ~8 px); smaller = finer geometry, slower.
   void setCellPixels(int pixels) { cellPixels_ = pixels; }
@@ -206,7 +206,7 @@ class OceanRenderer {
   static constexpr unsigned kSurfaceClasses = 4;
   /// The defines of the surface pass's programs for `key` (as prepareSurfacePass).
   [[nodiscard]] std::vector<std::string> surfaceDefines(unsigned key) const;
-  /// Whether a surface pass of key `surfaceKey` writes the compact layout (kSurfaceCompact).
+  /// Whether a surface pass of key `surfaceKey` writes the compact layout (SEA_SURFACE_COMPACT).
   static bool surfaceCompact(unsigned surfaceKey);
   /// The surface pass's program for `key` (as prepareSurfacePass), compiled on first use.
   const gl::Program& surfaceProgram(unsigned key);
@@ -296,10 +296,6 @@ class OceanRenderer {
   /// angle varies by no more than that across the sea in view: the sea from a few metres (the
   /// horizon 7 km away at 4 m: 0.06°), or looking down from a few km (sea-8km: 0.70°).
   static constexpr unsigned kFeatureFrameSky = 8;
-  /// Not a feature of the shading: the deferred programs' key bit for the surface buffer's
-  /// compact layout (SEA_SURFACE_COMPACT: the frame's surface has no water volume and the
-  /// driver exports stencil values).
-  static constexpr unsigned kSurfaceCompact = 16;
   const Atmosphere* atmosphere_;
   ValidationMode mode_;
   std::vector<std::string> defines_;        ///< the filtered model's, whatever the features
@@ -314,7 +310,7 @@ class OceanRenderer {
   struct PatternPrograms {
     std::array<gl::Program, 16> variants;    ///< by feature bits
     gl::Program classify;                    ///< ocean/sea_classify.frag
-    std::array<gl::Program, 32> deferredVariants;  ///< ocean.frag OCEAN_DEFERRED, by feature bits and kSurfaceCompact
+    std::array<gl::Program, 16> deferredVariants;  ///< ocean.frag OCEAN_DEFERRED, by feature bits
     std::array<gl::Program, 8> surfaceVariants;    ///< sea_surface.frag: volume, coast, classes bits
     std::array<gl::Program, 8> gridComputeVariants;  ///< grid_vertices.comp, as surfaceVariants
     gl::Program nearLandSplit;  ///< ocean/grid_near_land.comp
