@@ -291,6 +291,7 @@ SkyView skyOf(PixelRays rays) {
 #if GLOBE_PART == GLOBE_PART_CLASSIFY
 #include "render/open_sea_map.glsl"
 uniform int uOpenSeaOn;  // 0: no pixel is classed open sea (GlobeRenderer::setOpenSeaPart)
+uniform int uLandAtFarPlane;  // 1: the land's class keeps the far plane's depth (GLOBE_LAND_SEA)
 
 // How many of a pixel's four samples hit the globe on the sea (-1 unless all four hit): the
 // surface part's own test of each sample (below), so the land and sea parts shade exactly the
@@ -393,6 +394,11 @@ void main() {
     if (elevationAt(centreLatLon) > 0.0) depthZ += uGlobeDepthPushM;
   }
   gl_FragDepth = rays.nHit > 0 ? clamp(uNear / depthZ, 0.0, 1.0) : 0.0;
+#if defined(GLOBE_CLASSIFY_EXPORT) && defined(GLOBE_LAND_SEA)
+  // The land's class keeps the far plane: its part comes after the terrain's tiles with water,
+  // only where none drew (GlobeRenderer::frameLandLast_), and every tile passes in front of it.
+  if (onSea == 0 && uLandAtFarPlane != 0) gl_FragDepth = 0.0;
+#endif
 #endif
 }
 #elif GLOBE_PART == GLOBE_PART_BLOCK_FILL

@@ -293,7 +293,8 @@ void GlobeRenderer::render(const FrameInput& f) {
   // depth-tested against it, so the shoreline is where sea surface and ground meet. Above
   // 20 km its tiles all above the sea come first and zero the stencil where they draw, so the
   // globe's parts leave those pixels alone, and the tiles with water come after the globe,
-  // over it; below, the globe comes last, shading only what the two left empty.
+  // over it, but for the land's part, which comes after them where it can (frameLandLast_);
+  // below, the globe comes last, shading only what the two left empty.
   terrain_->draw(view, f.width, f.height, f.sunDirectionEcef, !grid);
   glBindTextureUnit(gl::kUnitElevation, elevation_.id());
   glBindVertexArray(emptyVao_.id());
@@ -304,8 +305,9 @@ void GlobeRenderer::render(const FrameInput& f) {
     shadeGlobe(view, f, grid);
     glDepthMask(GL_TRUE);
   } else {
-    shadeGlobe(view, f, grid);
+    shadeGlobe(view, f, grid, frameLandLast_ ? GlobeParts::allButLand : GlobeParts::all);
     terrain_->drawWaterTiles();
+    if (frameLandLast_) shadeGlobe(view, f, grid, GlobeParts::land);
   }
 
   if (timer_ != nullptr) timer_->mark("tone mapping");
@@ -422,6 +424,7 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
   const bool blocks = uploadClassifyingBlocks(view, f, box, grid);
   // With blocks the land and the sea are mostly classed on the CPU: their split always pays.
   frameLandSea_ = !grid && landSeaParts_ && (blocks || landSeaSplitPays(view));
+  frameLandLast_ = frameLandSea_ && oneDraw && landAfterTiles_;
   const std::vector<int> steps =
       oneDraw ? std::vector<int>{frameLandSea_ ? kClassifyExportLandSea : kClassifyExport} : classifyingSteps(grid);
   for (std::size_t i = 0; i < steps.size(); ++i) {
@@ -432,6 +435,7 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
     const gl::Program& classify = globeProgram(grid, step);
     setGlobeUniforms(classify, view, f);
     if (!grid) classify.set("uOpenSeaOn", openSeaPart_ ? 1 : 0);
+    if (!grid) classify.set("uLandAtFarPlane", frameLandLast_ ? 1 : 0);
     classify.use();
     if (grid) {
       glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -547,7 +551,7 @@ bool GlobeRenderer::uploadClassifyingBlocks(const geo::CameraView& view, const F
 // The blocks classed on the CPU: their class's stencil count (the parts' numbering: 3 the
 // surface, then the land 4, the sea 5 and the open sea 6 where the frame splits them off; the
 // per-pixel draws' own but where the CPU's open-sea test, as strict, says sea) and the depth
-// (globe.frag's GLOBE_PART_BLOCK_FILL).
+// (globe.frag's GLOBE_PART_BLOCK_FILL; the land's stays the far plane with frameLandLast_).
 void GlobeRenderer::drawBlockFill(const geo::CameraView& view, const FrameInput& f) {
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   glDepthMask(GL_TRUE);
@@ -562,8 +566,10 @@ void GlobeRenderer::drawBlockFill(const geo::CameraView& view, const FrameInput&
     const int stencil = frameLandSea_ ? (k == 0 ? 4 : 5) + (open ? 1 : 0) : 3 + (open ? 1 : 0);
     fill.set("uBlockLand", k == 0 ? 1 : 0);
     glStencilFunc(GL_ALWAYS, stencil, 0xff);
+    glDepthMask(k == 0 && frameLandLast_ ? GL_FALSE : GL_TRUE);  // the land's: the far plane, as cleared
     glDrawArrays(GL_TRIANGLES, first, count);
   }
+  glDepthMask(GL_TRUE);
 }
 
 void GlobeRenderer::bindOpenSeaMap() {
@@ -583,25 +589,29 @@ void GlobeRenderer::bindOpenSeaMap() {
   openSeaTexture_->bind();
 }
 
-void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f, bool grid) {
+void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f, bool grid, GlobeParts which) {
   if (timer_ != nullptr) timer_->mark("globe");
+  const bool landOnly = which == GlobeParts::land;
   glBindVertexArray(emptyVao_.id());
-  glDepthFunc(grid ? GL_GEQUAL : GL_ALWAYS);
+  // The land after the tiles: where none drew, its class's depth is still the far plane (0),
+  // the full-screen triangle's own depth; a tile's fragment fails it before the shader.
+  glDepthFunc(grid ? GL_GEQUAL : landOnly ? GL_EQUAL : GL_ALWAYS);
   if (grid) glBeginConditionalRender(uncoveredQuery_.id(), GL_QUERY_WAIT);
   glEnable(GL_STENCIL_TEST);
   glDepthMask(GL_FALSE);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-  if (aerialTableFrame_) drawAerialTable(view, f);
+  if (aerialTableFrame_ && !landOnly) drawAerialTable(view, f);
   if (!grid) scissorToGlobe(view, f);
   lastSkyLowFactor_ = 1;
   const bool skyLow = grid && drawSkyLow(view, f);
   // Sky, edge, surface, land, sea, open sea: the stencil counts 1-6 (one lower below 20 km).
   const std::vector<int> parts = globeParts(grid);
-  if (countPartSamples_) partSamples_.clear();
+  if (countPartSamples_ && !landOnly) partSamples_.clear();
   const bool listed = listsScatteredParts();
   std::vector<int> listedCounts;
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const int count = static_cast<int>(k) + 1 - firstClassifyingStep(grid);
+    if ((parts[k] == kGlobePart0 + 4) != landOnly && which != GlobeParts::all) continue;
     if (listed && (parts[k] == kGlobePart0 + 2 || parts[k] == kGlobePart0 + 3)) {  // the edge, the surface
       listedCounts.push_back(count);
       continue;
@@ -831,7 +841,7 @@ std::vector<float> GlobeRenderer::viewDistance() const {
   const int w = hdr_.width, h = hdr_.height;
   const double tanY = std::tan(0.5 * lastView_.verticalFovRad), tanX = tanY * lastView_.aspect;
   // Above the grid's ceiling the globe pass's depth over land stands kGlobeDepthPushM behind the
-  // ellipsoid; the terrain keeps no fragment under the sea up there, the deepest land is ~0.4
+  // ellipsoid (or at the far plane where its land part comes last); the terrain keeps no fragment under the sea up there, the deepest land is ~0.4
   // km under it and a tile's chord ~0.5 km, which puts a terrain pixel half the push behind the
   // ellipsoid only at grazing incidence near the limb (a tile's skirt there too): those read
   // the ellipsoid's distance, some kilometres short at a thousand.
@@ -839,11 +849,16 @@ std::vector<float> GlobeRenderer::viewDistance() const {
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       float& z = d[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)];
+      const double ndcX = 2.0 * (x + 0.5) / w - 1.0, ndcY = 1.0 - 2.0 * (y + 0.5) / h;
       if (z <= 0.0f) {
-        z = kSkyDistanceM;
+        // The sky; or, above the ceiling, land the globe's part shaded where no tile drew (its
+        // depth is the far plane: frameLandLast_).
+        const std::optional<double> t =
+            globeDepthPushed ? geo::intersectEllipsoid(lastView_.positionEcef, lastView_.rayDirection(ndcX, ndcY))
+                             : std::nullopt;
+        z = t ? static_cast<float>(*t) : kSkyDistanceM;
         continue;
       }
-      const double ndcX = 2.0 * (x + 0.5) / w - 1.0, ndcY = 1.0 - 2.0 * (y + 0.5) / h;
       const double nx = ndcX * tanX, ny = ndcY * tanY;
       const double axial = lastView_.nearM / static_cast<double>(z);
       z = static_cast<float>(axial * std::sqrt(1.0 + nx * nx + ny * ny));

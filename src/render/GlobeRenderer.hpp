@@ -196,6 +196,10 @@ class GlobeRenderer {
   /// code, those all on the sea to one without the land's (render/globe.frag); false shades
   /// them with the rest of the surface (the tests' reference).
   void setLandSeaParts(bool on) { landSeaParts_ = on; }
+  /// Above 20 km with the land's part split off (and one classifying draw, stencil export), the
+  /// land's part comes after the terrain's tiles with water and shades only the pixels they
+  /// left, instead of all before them (frameLandLast_); false: before (the tests' reference).
+  void setLandAfterTiles(bool on) { landAfterTiles_ = on; }
   /// With `on`, each of the globe's parts counts the samples it shades (an occlusion query read
   /// back at once: for tests and `bench --breakdown`, not for frames that must not wait).
   void setCountPartSamples(bool on) { countPartSamples_ = on; }
@@ -241,7 +245,10 @@ class GlobeRenderer {
   void ensureTargets(int width, int height, int samples, bool auxiliary);
   /// The globe pass's two halves (render/globe.frag): the classifying draws, then the parts.
   void classifyGlobe(const geo::CameraView& view, const FrameInput& f, bool grid);
-  void shadeGlobe(const geo::CameraView& view, const FrameInput& f, bool grid);
+  /// Which of the globe's parts a shadeGlobe() call draws: above 20 km, where the land's class
+  /// is left at the far plane (frameLandLast_), the land comes after the tiles with water.
+  enum class GlobeParts { all, allButLand, land };
+  void shadeGlobe(const geo::CameraView& view, const FrameInput& f, bool grid, GlobeParts which = GlobeParts::all);
   /// Below 20 km no pixel sees pure space, and the depth test already leaves out what the
   /// terrain and the grid cover: step 0 is skipped and the counts start at 0 for the sky.
   static int firstClassifyingStep(bool grid) { return grid ? 1 : 0; }
@@ -282,6 +289,12 @@ class GlobeRenderer {
   /// the blocks (uploadClassifyingBlocks), which class most of those pixels on the CPU.
   [[nodiscard]] bool landSeaSplitPays(const geo::CameraView& view) const;
   bool frameLandSea_ = false;
+  /// Whether this frame's land class (count 4) keeps the far plane's depth (0) and its part
+  /// comes after the terrain's tiles with water, shading only the pixels they left (depth
+  /// equal to 0): above 20 km with frameLandSea_ where one classifying draw writes the count
+  /// (the per-step draws write the depth before the land's step). The tiles draw the land at
+  /// almost all of those pixels, over the globe's part, which ran for nothing before them.
+  bool frameLandLast_ = false;
   /// The open-sea map on its texture unit (made on first use).
   void bindOpenSeaMap();
   /// Enables the scissor test on globeScissor's box (when setGlobeScissor is on); the box (the
@@ -370,6 +383,7 @@ class GlobeRenderer {
   std::unique_ptr<OpenSeaTexture> openSeaTexture_;
   bool openSeaPart_ = true;
   bool landSeaParts_ = true;
+  bool landAfterTiles_ = true;
   bool countPartSamples_ = false;
   std::vector<std::pair<std::string, std::uint64_t>> partSamples_;
   bool scissorGlobe_ = true;

@@ -15,6 +15,7 @@
 #include "data/LandMask.hpp"
 #include "geo/Sun.hpp"
 #include "gl/Context.hpp"
+#include "gl/DriverProfile.hpp"
 #include "render/GlobeRenderer.hpp"
 #include "render/OpenSeaMap.hpp"
 #include "support/GridFixtures.hpp"
@@ -189,6 +190,7 @@ TEST(GlobeRender, LandAndSeaPartsMatchTheSurfacePart) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(islandWorld());
   r.setCountPartSamples(true);
+  r.setLandAfterTiles(false);  // the land's part over all its class (its own test below)
   std::uint64_t seaSamples = 0, landSamples = 0;
   for (const auto& [lat, lon, h] : {std::tuple{10.0, -27.0, 3.0e5}, std::tuple{10.0, -27.0, 3.0e4},
                                     std::tuple{10.0, -30.0, 3.0e6}}) {
@@ -200,6 +202,33 @@ TEST(GlobeRender, LandAndSeaPartsMatchTheSurfacePart) {
   }
   EXPECT_GT(seaSamples, 96u * 96u);  // the parts are in use
   EXPECT_GT(landSamples, 96u * 96u / 4u) << "land";
+}
+
+TEST(GlobeRender, LandAfterTheTilesShadesOnlyWhatTheyLeft) {
+  // Above 20 km the land's part can come after the terrain's tiles with water, over only the
+  // pixels they left (its class keeps the far plane's depth), instead of before them, where the
+  // tiles drew over it: the same picture (views of LandAndSeaPartsMatchTheSurfacePart), with
+  // the land's part shading a fraction of the samples. Where one classifying draw writes the
+  // count (stencil export); elsewhere the land comes first either way.
+  auto ctx = gl::createHeadlessContext();
+  if (!gl::driverProfile().stencilExport) GTEST_SKIP() << "needs GL_ARB_shader_stencil_export";
+  render::GlobeRenderer r(islandWorld());
+  r.setCountPartSamples(true);
+  std::array<std::uint64_t, 2> landSamples{0, 0};  // before, after the tiles
+  for (const auto& [lat, lon, h] : {std::tuple{10.0, -27.0, 3.0e5}, std::tuple{10.0, -27.0, 3.0e4},
+                                    std::tuple{10.0, -30.0, 3.0e6}}) {
+    const auto countLand = [&r](std::uint64_t& total) {
+      for (const auto& [name, samples] : r.partSamples())
+        if (name == "land") total += samples;
+    };
+    expectSplitKeepsThePicture(r, straightDown(lat, lon, h), [&r](bool on) { r.setLandAfterTiles(on); });
+    countLand(landSamples[1]);  // (of the frame rendered last, after)
+    r.setLandAfterTiles(false);
+    r.render(straightDown(lat, lon, h));
+    countLand(landSamples[0]);
+  }
+  EXPECT_GT(landSamples[0], 96u * 96u / 4u);
+  EXPECT_LT(landSamples[1] * 10, landSamples[0]) << "the land's part shaded what the tiles drew over";
 }
 
 TEST(GlobeRender, ScissorToTheGlobeLeavesThePictureUnchanged) {
