@@ -84,3 +84,107 @@ vec3 withAerialPerspective(vec3 surface, vec3 dir, float t, vec3 sunDir) {
   aerialPerspective(dir, t, sunDir, transmittance, inscatter);
   return surface * transmittance + inscatter;
 }
+
+// The terrain's table (TERRAIN_AERIAL_TABLE in terrain/terrain.vert; render/aerial_table.comp
+// with AERIAL_TABLE_TERRAIN, TerrainRenderer::drawAerialTable): for a fixed eye and Sun the path
+// to a point at altitude hP depends only on its length d, hP and nu = cos(view, Sun) (its zenith
+// cosine follows from d and hP on the tables' sphere, as terrain.vert's exact path takes it).
+// Per frame AERIAL_TERRAIN_SIZE entries of the phase-free scattering serve every vertex with
+// three trilinear lookups instead of ten into the 4D tables: llvmpipe shades vertices on one
+// thread, where these were a sixth of sea-2m-horizon's frame. Axes: nu (x, linear in [-1, 1]);
+// d (y: over the distances at which the eye can see a point from 0 to AERIAL_TERRAIN_TOP_M up:
+// aerialTerrainDistance); hP (z: over the altitudes the eye can see at that
+// distance, as z², fine at the lowest: the points straight below and those at the sea's
+// horizon). So every entry is a path the eye can see: an entry of a path shorter than the
+// height it spans, or lower than the horizon, would be another path (its zenith cosine
+// clamped) and spoil the interpolation next to it (the ground straight down from 300 km came
+// out 1 % dark; the far coasts from 2 m mixed paths of 5 and 50 km). In one RGBA32F 3D
+// texture of three blocks along x: (T.rgb, R.r), (R.gb, M.rg), (M.b, -, -, -).
+const ivec3 AERIAL_TERRAIN_SIZE = ivec3(32, 128, 16);
+const float AERIAL_TERRAIN_TOP_M = 9000.0;  // points higher are looked up at this altitude
+// Paths beyond the horizon pass at least this far over the tables' sphere (at its last
+// kilometre: 0 at the horizon): Bruneton's functions take a ray that grazes it, in float, for
+// one that hits the ground.
+const float AERIAL_TERRAIN_CLEARANCE_M = 10.0;
+
+// The range of distances of the table, m: from the nearest point (straight below, at the top
+// altitude if the eye is above it) to the farthest (at the top altitude over the horizon).
+vec2 aerialTerrainDistancesM() {
+  float top = AERIAL_TERRAIN_TOP_M;
+  return vec2(max(uCamAltitude - top, 0.0), aerialHorizonM() + sqrt(top * (2.0 * uAtmosphere.bottomRadius + top)));
+}
+
+// The table's rows: the first AERIAL_TERRAIN_NEAR_ROWS + 1 evenly from the nearest distance to
+// the eye's height (the points straight below, whose lowest altitude falls as the distance
+// grows: a row at the height itself, where that stops at sea level, keeps the kink off the
+// interpolation), the rest as (1 - cos(pi s)) / 2 on to the farthest (fine at both ends).
+const int AERIAL_TERRAIN_NEAR_ROWS = 31;
+float aerialTerrainDistance(float y) {
+  vec2 ds = aerialTerrainDistancesM();
+  float near = float(AERIAL_TERRAIN_NEAR_ROWS) / float(AERIAL_TERRAIN_SIZE.y - 1);
+  if (y <= near) return mix(ds.x, uCamAltitude, y / near);
+  float s = (y - near) / (1.0 - near);
+  return uCamAltitude + (0.5 - 0.5 * cos(PI * s)) * (ds.y - uCamAltitude);
+}
+float aerialTerrainRowOf(float d) {
+  vec2 ds = aerialTerrainDistancesM();
+  float near = float(AERIAL_TERRAIN_NEAR_ROWS) / float(AERIAL_TERRAIN_SIZE.y - 1);
+  if (d <= uCamAltitude) return near * clamp((d - ds.x) / max(uCamAltitude - ds.x, 1e-3), 0.0, 1.0);
+  float s = acos(1.0 - 2.0 * clamp((d - uCamAltitude) / (ds.y - uCamAltitude), 0.0, 1.0)) / PI;
+  return near + s * (1.0 - near);
+}
+
+// The range of altitudes the eye can see at distance d, m: over the sea's horizon beyond it (and
+// straight below within the eye's height), up to the top altitude (or straight above).
+vec2 aerialTerrainAltitudesM(float d) {
+  float R = uAtmosphere.bottomRadius;
+  float beyond = max(d - aerialHorizonM(), 0.0);
+  float overHorizon = beyond * beyond / (sqrt(R * R + beyond * beyond) + R);  // sqrt(R² + b²) - R
+  float lowest = max(uCamAltitude - d, overHorizon + AERIAL_TERRAIN_CLEARANCE_M * min(beyond / 1000.0, 1.0));
+  float highest = min(uCamAltitude + d, AERIAL_TERRAIN_TOP_M);
+  return vec2(min(lowest, highest), highest);
+}
+
+// The phase-free aerial perspective of a path of length d to a point at altitude hP ≥ 0.
+void aerialScatteringToAltitude(float d, float hP, float nu, float muS, out vec3 transmittance, out vec3 rayleigh,
+                                out vec3 mie) {
+  float R = uAtmosphere.bottomRadius;
+  float r = R + uCamAltitude;
+  float rP = R + hP;
+  d = max(d, 1e-3);
+  float mu = clamp((rP * rP - r * r - d * d) / (2.0 * r * d), -1.0, 1.0);
+  aerialScatteringToPoint(uAtmosphere, uAtmTransmittance, uAtmScattering, uAtmSingleMie, r, mu, muS, nu, d,
+                          transmittance, rayleigh, mie);
+}
+
+// The table's entry (y, z) in [0, 1]²: its path's length and end altitude, m.
+vec2 aerialTerrainPath(vec2 yz) {
+  float d = aerialTerrainDistance(yz.x);
+  vec2 hs = aerialTerrainAltitudesM(d);
+  return vec2(d, hs.x + (hs.y - hs.x) * yz.y * yz.y);
+}
+
+#ifdef TERRAIN_AERIAL_TABLE
+layout(binding = OG_UNIT_TERRAIN_AERIAL_TABLE) uniform sampler3D uTerrainAerialTable;
+
+// The light of the path from the eye to a point at altitude hP at distance d along a ray at
+// nu = cos(ray, Sun): transmittance and in-scattered radiance, from this frame's table. Beyond
+// its ranges d and hP are clamped (a point higher than AERIAL_TERRAIN_TOP_M, or where the eye
+// cannot see it; at or under sea level d to the horizon's, as terrain.vert's exact path and
+// aerialToSeaLevel take it).
+void aerialToAltitudeFromTable(float d, float hP, float nu, out vec3 transmittance, out vec3 inscatter) {
+  vec3 size = vec3(AERIAL_TERRAIN_SIZE);
+  vec2 ds = aerialTerrainDistancesM();
+  d = clamp(d, ds.x, hP <= 0.0 ? max(aerialHorizonM(), ds.x) : ds.y);
+  float y = aerialTerrainRowOf(d);
+  vec2 hs = aerialTerrainAltitudesM(d);
+  float z = sqrt(clamp((hP - hs.x) / max(hs.y - hs.x, 1e-3), 0.0, 1.0));
+  // Texel centres of the first block; the others lie size.x texels along (never filtered into).
+  vec3 p = (vec3(0.5 * (nu + 1.0), y, z) * (size - 1.0) + 0.5) / vec3(3.0 * size.x, size.yz);
+  float block = 1.0 / 3.0;
+  vec4 a = texture(uTerrainAerialTable, p), b = texture(uTerrainAerialTable, p + vec3(block, 0.0, 0.0));
+  float c = texture(uTerrainAerialTable, p + vec3(2.0 * block, 0.0, 0.0)).x;
+  transmittance = a.rgb;
+  inscatter = vec3(a.a, b.rg) * rayleighPhase(nu) + vec3(b.ba, c) * miePhase(uAtmosphere.miePhaseG, nu);
+}
+#endif

@@ -6,7 +6,8 @@
 // fully onto the parent's mesh (no pop), and they reach their own positions as the parent's
 // spacing there grows to twice the limit, when the tile itself would split.
 // The aerial perspective is evaluated here, per vertex: it is smooth over a triangle of a few
-// pixels and was over half the terrain pass's cost per pixel (docs/performance.md). Not in the
+// pixels and was over half the terrain pass's cost per pixel (docs/performance.md); up to 500
+// km from this frame's table (TERRAIN_AERIAL_TABLE). Not in the
 // shadow maps' depth-only program (TERRAIN_DEPTH_ONLY).
 #include "common/constants.glsl"
 #include "common/types.glsl"
@@ -39,6 +40,9 @@ out vec3 vInscatter;      // light scattered towards the eye along it (Sun-irrad
 // path's zenith cosine is the one joining the eye's radius to R + hP over distance t; at or
 // below sea level the globe's convention (render/aerial.glsl).
 void aerialToAltitude(vec3 dir, float t, float hP, out vec3 transmittance, out vec3 inscatter) {
+#ifdef TERRAIN_AERIAL_TABLE  // this frame's table (render/aerial.glsl; TerrainRenderer::drawAerialTable)
+  aerialToAltitudeFromTable(t, hP, dot(dir, uSunDir), transmittance, inscatter);
+#else
   if (hP <= 0.0) {
     aerialPerspective(dir, t, uSunDir, transmittance, inscatter);
     return;
@@ -50,6 +54,7 @@ void aerialToAltitude(vec3 dir, float t, float hP, out vec3 transmittance, out v
   float mu = clamp((rP * rP - r * r - d * d) / (2.0 * r * d), -1.0, 1.0);
   inscatter = skyRadianceToPoint(uAtmosphere, uAtmTransmittance, uAtmScattering, uAtmSingleMie, r, mu,
                                  dot(uSunDir, uCamUp), dot(dir, uSunDir), d, transmittance);
+#endif
 }
 #endif
 

@@ -44,6 +44,7 @@ std::vector<std::string> contractDefines() {
           define("OG_UNIT_OPEN_SEA", kUnitOpenSea),
           define("OG_UNIT_SKY_LOW", kUnitSkyLow),
           define("OG_UNIT_AERIAL_TABLE", kUnitAerialTable),
+          define("OG_UNIT_TERRAIN_AERIAL_TABLE", kUnitTerrainAerialTable),
           define("OG_UNIT_CAUSTIC_CURVATURE", kUnitCausticCurvature),
           define("OG_UNIT_SEA_SURFACE", kUnitSeaSurface),
           define("OG_UNIT_TONE_RADIANCE", kUnitToneRadiance),

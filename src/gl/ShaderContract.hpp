@@ -36,6 +36,7 @@ enum TextureUnit : unsigned {
   kUnitSeaSurface = 23,          ///< ocean/sea_surface.glsl uSeaSurface (render/SeaSurfaceBuffer)
   kUnitSkyLow = 24,              ///< render/globe.frag uSkyLow (GlobeRenderer::drawSkyLow)
   kUnitAerialTable = 25,         ///< render/aerial.glsl uAerialTable (GlobeRenderer::drawAerialTable)
+  kUnitTerrainAerialTable = 26,  ///< render/aerial.glsl uTerrainAerialTable (TerrainRenderer::drawAerialTable)
   // Passes of their own, which bind nothing else, reuse unit 0:
   kUnitToneRadiance = 0,         ///< render/tonemap.frag uRadiance (the HDR target)
   kUnitOverlayText = 0,          ///< viewer/text.frag uText (the viewer's text overlay)

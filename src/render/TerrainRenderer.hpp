@@ -97,6 +97,13 @@ class TerrainRenderer {
   /// (no pixel resolves it: render::LandMaskTexture::fineLevelUnresolved; the globe renderer
   /// sets it each frame).
   void setCoarseLandMask(bool on) { coarseMask_ = on; }
+  /// Whether the vertices' aerial perspective comes from a table made each frame (three lookups
+  /// instead of ten into the 4D tables: llvmpipe shades vertices on one thread) up to
+  /// kAerialTableMaxHeightM, or is computed per vertex (the tests' reference).
+  void setAerialTable(bool on) { aerialTableOn_ = on; }
+  /// Farther out the terminator crosses the view and changes faster across the table's entries
+  /// than it resolves (as GlobeRenderer's own table), and the tiles are few: per vertex there.
+  static constexpr double kAerialTableMaxHeightM = 5.0e5;
 
  private:
   static constexpr int kMaxDetailOctaves = 24;  // MAX_DETAIL_OCTAVES in terrain.frag
@@ -176,7 +183,8 @@ class TerrainRenderer {
   /// Sun is up everywhere in view, geo::sunMayBeDownInView); kShadowsOff: no shadow maps this
   /// frame; kNoImageryLayers: no user imagery layer loaded (terrain/imagery.glsl's loops
   /// compiled out); kCoarseMask: no pixel resolves the land mask's fine level
-  /// (LANDMASK_COARSE_ONLY, setCoarseLandMask).
+  /// (LANDMASK_COARSE_ONLY, setCoarseLandMask); kAerialTable: the vertices' aerial perspective
+  /// from this frame's table (TERRAIN_AERIAL_TABLE, drawAerialTable).
   /// kCoverage: only the discards, writing the depth of what survives them (its colour writes
   /// masked off); kAfterCoverage: the shading after it, the depth test (equal) before the
   /// shader and no discards (drawCovered).
@@ -187,10 +195,17 @@ class TerrainRenderer {
     kNoImageryLayers = 8u,
     kCoverage = 16u,
     kAfterCoverage = 32u,
-    kCoarseMask = 64u
+    kCoarseMask = 64u,
+    kAerialTable = 128u
   };
   const gl::Program& variant(unsigned bits);
-  std::array<gl::Program, 128> variants_;
+  std::array<gl::Program, 256> variants_;
+  /// This frame's aerial perspective table to altitudes (render/aerial.glsl's
+  /// AERIAL_TERRAIN_SIZE): made on the first frame that uses it, then recomputed each frame.
+  void drawAerialTable(const geo::CameraView& view, const glm::dvec3& sunDirectionEcef);
+  gl::Texture aerialTable_;
+  gl::Program aerialTableProgram_;
+  bool aerialTableOn_ = true;  ///< setAerialTable
   bool coarseMask_ = false;  ///< setCoarseLandMask
   unsigned waterBits_ = 0;  ///< drawWaterTiles()' variant bits this frame
   glm::dvec3 waterSunDirection_{1.0, 0.0, 0.0};
