@@ -100,7 +100,7 @@ vec3 withAerialPerspective(vec3 surface, vec3 dir, float t, vec3 sunDir) {
 // clamped) and spoil the interpolation next to it (the ground straight down from 300 km came
 // out 1 % dark; the far coasts from 2 m mixed paths of 5 and 50 km). In one RGBA32F 3D
 // texture of three blocks along x: (T.rgb, R.r), (R.gb, M.rg), (M.b, -, -, -).
-const ivec3 AERIAL_TERRAIN_SIZE = ivec3(32, 128, 16);
+const ivec3 AERIAL_TERRAIN_SIZE = ivec3(16, 128, 16);
 const float AERIAL_TERRAIN_TOP_M = 9000.0;  // points higher are looked up at this altitude
 // Paths beyond the horizon pass at least this far over the tables' sphere (at its last
 // kilometre: 0 at the horizon): Bruneton's functions take a ray that grazes it, in float, for

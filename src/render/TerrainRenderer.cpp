@@ -381,7 +381,7 @@ void TerrainRenderer::drawTiles(const geo::CameraView& view, const std::vector<c
 }
 
 void TerrainRenderer::drawAerialTable(const geo::CameraView& view, const glm::dvec3& sunDirectionEcef) {
-  constexpr int kNu = 32, kPath = 128, kAltitudes = 16;  // render/aerial.glsl's AERIAL_TERRAIN_SIZE
+  constexpr int kNu = 16, kPath = 128, kAltitudes = 16;  // render/aerial.glsl's AERIAL_TERRAIN_SIZE
   if (aerialTable_.id() == 0) {
     aerialTable_ = gl::createTexture(GL_TEXTURE_3D);
     glTextureStorage3D(aerialTable_.id(), 1, GL_RGBA32F, 3 * kNu, kPath, kAltitudes);
