@@ -275,6 +275,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   const bool grid = view.position.heightM < kOceanGridMaxHeightM;
   aerialTableFrame_ = aerialTableOn_ && !grid && view.position.heightM < kAerialTableMaxHeightM;
   coarseMaskFrame_ = coarseMaskVariants_ && landMask_->fineLevelUnresolved(view, f.height);
+  terrain_->setSeaCrestM(patterns_->amplitudeBoundM() + 1.0);  // (+ 1 m: the morph's and chords' rounding)
   terrain_->setCoarseLandMask(coarseMaskFrame_);
 
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -789,10 +790,13 @@ void GlobeRenderer::drawOcean(const geo::CameraView& view, const FrameInput& f) 
   lighting.landInView = ts.landTiles > 0 || ts.tiles == 0;
   lighting.landEverywhere = ts.tiles > 0 && ts.landTiles == ts.tiles;
   // The water volume only where a floor within the water's reach is in view (tiles sample the
-  // layer coarsely far away: twice the reach, so a shoal between samples is not missed).
+  // layer coarsely far away: twice the reach, so a shoal between samples is not missed) under
+  // sea the eye can see: from 2 m the horizon is 5 km off, and the shallows of coasts beyond it
+  // are hidden (sea-2m-horizon's far coasts had the volume's passes run for no pixel).
   const double reachM = ocean::waterMaxPathM(ocean::jerlovWater(ocean::kDefaultWater).attenuationPerM,
                                              ocean::kWaterEpsilon);
-  lighting.floorInReach = ts.tiles == 0 || ts.maxHeightM > -2.0 * reachM;
+  lighting.floorInReach = ts.tiles == 0 || ts.seaSeenMaxHeightM > -2.0 * reachM;
+  floorInReachFrame_ = lighting.floorInReach;
   lighting.classes = f.oceanClasses;
   // Waves fade out on the way up so the grid meets the orbit model at the switch.
   const double h = view.position.heightM;

@@ -234,6 +234,9 @@ class GlobeRenderer {
   void setCoarseMaskVariants(bool on) { coarseMaskVariants_ = on; }
   /// Whether the last frame drew with them.
   [[nodiscard]] bool lastFrameCoarseMask() const { return coarseMaskFrame_; }
+  /// Whether the last frame below 20 km drew the sea with its water volume (a floor within the
+  /// water's reach under sea in view: TerrainStats::seaSeenMaxHeightM).
+  [[nodiscard]] bool lastFrameFloorInReach() const { return floorInReachFrame_; }
   /// The pixels the last frame listed (setScatteredPartsListed; reads the count back: for tests).
   [[nodiscard]] std::uint32_t listedPixelCount() const;
   /// The last frame's pixels per sky texel along a side (1: the sky per pixel).
@@ -295,6 +298,7 @@ class GlobeRenderer {
   /// (the per-step draws write the depth before the land's step). The tiles draw the land at
   /// almost all of those pixels, over the globe's part, which ran for nothing before them.
   bool frameLandLast_ = false;
+  bool floorInReachFrame_ = false;  ///< lastFrameFloorInReach
   /// The open-sea map on its texture unit (made on first use).
   void bindOpenSeaMap();
   /// Enables the scissor test on globeScissor's box (when setGlobeScissor is on); the box (the

@@ -380,6 +380,37 @@ void TerrainRenderer::drawTiles(const geo::CameraView& view, const std::vector<c
   }
 }
 
+double TerrainRenderer::seaSeenMaxHeightM(const geo::CameraView& view,
+                                          const std::vector<const terrain::Tile*>& tiles) const {
+  // The sea a pixel or more below its horizon (the mean sea's, from the eye's height): from 2 m
+  // at 720p the sea beyond ~1 km lies within a pixel of it, seen at grazing angles, where the
+  // floor's light would tint at most that one row; the tile under the eye may hold coasts 10 km
+  // away. Over the sea's horizon first (the ellipsoid seaCrestM_ down, no crest higher), then
+  // vertex by vertex (each with its cells around it), in the view's frustum.
+  const double eyeM = std::max(view.position.heightM, 0.1);
+  const double earthM = geo::kWgs84SemiMajorM;
+  const double pixelRad = 2.0 * std::tan(0.5 * view.verticalFovRad) / params_.heightPx;
+  const double horizonDipRad = std::sqrt(2.0 * eyeM / earthM);
+  const auto seen = [&](const glm::dvec3& centre, double radius) {
+    return terrain::aboveHorizon(view.positionEcef, centre, radius, seaCrestM_, seaCrestM_) &&
+           terrain::inFrustum(view, params_.widthPx, params_.heightPx, centre, radius);
+  };
+  const auto belowHorizon = [&](const glm::dvec3& centre, double radius) {
+    const double x = std::max(glm::length(centre - view.positionEcef) - radius, 1.0);
+    return eyeM / x + 0.5 * x / earthM - horizonDipRad >= pixelRad;  // depression below the horizon
+  };
+  double highest = -1e30;
+  for (const terrain::Tile* t : tiles) {
+    if (t->minHeightM > 0.0 || t->maxHeightM <= highest || !seen(t->boundCentreEcef, t->boundRadiusM)) continue;
+    for (int k = 0; k < terrain::kTileGridVertices; ++k) {
+      const double h = t->vertices[static_cast<std::size_t>(k)].heightM;
+      const glm::dvec3 p = t->centreEcef + t->positions[static_cast<std::size_t>(k)];
+      if (h > highest && belowHorizon(p, 1.5 * t->spacingM) && seen(p, 1.5 * t->spacingM)) highest = h;
+    }
+  }
+  return highest;
+}
+
 void TerrainRenderer::drawAerialTable(const geo::CameraView& view, const glm::dvec3& sunDirectionEcef) {
   constexpr int kNu = 16, kPath = 128, kAltitudes = 16;  // render/aerial.glsl's AERIAL_TERRAIN_SIZE
   if (aerialTable_.id() == 0) {
@@ -495,6 +526,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   if (timer_ != nullptr) timer_->mark("terrain");
   stats_.maxHeightM = tiles.empty() ? 0.0 : -1e30;
   for (const terrain::Tile* t : tiles) stats_.maxHeightM = std::max(stats_.maxHeightM, t->maxHeightM);
+  stats_.seaSeenMaxHeightM = seaSightTest_ ? seaSeenMaxHeightM(view, tiles) : stats_.maxHeightM;
   const double highestM = std::max(stats_.maxHeightM, 0.0);  // seen farthest beyond the horizon
   const bool nightInView =
       geo::sunMayBeDownInView(view.enu.up, view.position.heightM, glm::normalize(sunDirectionEcef), highestM);

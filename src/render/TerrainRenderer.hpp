@@ -53,6 +53,10 @@ struct TerrainStats {
   std::size_t tilesPending = 0; ///< being built in the background (selection().wait = false)
   int landTiles = 0;            ///< drawn tiles reaching above the sea (-1 m); 0: open ocean
   double maxHeightM = 0.0;      ///< highest point of the selected tiles, m (0 when none)
+  /// Highest vertex of the selected tiles with water around which the sea's surface can be seen
+  /// over the horizon (its crests and troughs setSeaCrestM from sea level), m; -1e30 when
+  /// none: whether the sea's floor may show through it (render/GlobeRenderer's floorInReach).
+  double seaSeenMaxHeightM = -1e30;
 };
 
 class TerrainRenderer {
@@ -97,6 +101,12 @@ class TerrainRenderer {
   /// (no pixel resolves it: render::LandMaskTexture::fineLevelUnresolved; the globe renderer
   /// sets it each frame).
   void setCoarseLandMask(bool on) { coarseMask_ = on; }
+  /// How far this frame's waves reach above and below sea level, m (TerrainStats's
+  /// seaSeenMaxHeightM; the globe renderer sets it each frame).
+  void setSeaCrestM(double m) { seaCrestM_ = m; }
+  /// Whether TerrainStats::seaSeenMaxHeightM keeps only the vertices around which the sea is
+  /// seen (the default) or takes every selected tile's highest point (the tests' reference).
+  void setSeaSightTest(bool on) { seaSightTest_ = on; }
   /// Whether the vertices' aerial perspective comes from a table made each frame (three lookups
   /// instead of ten into the 4D tables: llvmpipe shades vertices on one thread) up to
   /// kAerialTableMaxHeightM, or is computed per vertex (the tests' reference).
@@ -203,10 +213,14 @@ class TerrainRenderer {
   /// This frame's aerial perspective table to altitudes (render/aerial.glsl's
   /// AERIAL_TERRAIN_SIZE): made on the first frame that uses it, then recomputed each frame.
   void drawAerialTable(const geo::CameraView& view, const glm::dvec3& sunDirectionEcef);
+  /// TerrainStats::seaSeenMaxHeightM of `tiles`.
+  [[nodiscard]] double seaSeenMaxHeightM(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles) const;
   gl::Texture aerialTable_;
   gl::Program aerialTableProgram_;
   bool aerialTableOn_ = true;  ///< setAerialTable
   bool coarseMask_ = false;  ///< setCoarseLandMask
+  double seaCrestM_ = 30.0;  ///< setSeaCrestM
+  bool seaSightTest_ = true;  ///< setSeaSightTest
   unsigned waterBits_ = 0;  ///< drawWaterTiles()' variant bits this frame
   glm::dvec3 waterSunDirection_{1.0, 0.0, 0.0};
   std::vector<const terrain::Tile*> waterTiles_;  ///< left by draw() for drawWaterTiles()

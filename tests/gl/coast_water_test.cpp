@@ -734,3 +734,31 @@ TEST(CoastWater, FjordShoresShowNoCellsOfFloorAtTheSurface) {
   ASSERT_GT(seaPixels, 1500) << "the fjords' sea in view";
   EXPECT_LT(grey, seaPixels / 100) << "cells of floor at the surface along the shores";
 }
+
+// Below 20 km the sea is drawn with its water volume only where a floor within the water's reach
+// lies under sea the eye sees a pixel or more below the horizon, in the view's frustum
+// (TerrainRenderer's seaSeenMaxHeightM). From 2 m in the Strait of Gibraltar looking west
+// (sea-2m-horizon) the coasts in view are 15 km and more away: their shallows lie within a
+// pixel of the horizon, at grazing angles. The volume is left out there, with the picture the
+// same to the last bit as with it; over the Great Bahama Bank it stays.
+TEST(CoastWater, WaterVolumeOnlyWhereAFloorInReachIsSeen) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  render::FrameInput strait = classView({36.0, -5.5, 2.0}, 270.0, 2.0, 20.0, 250.0);
+  strait.width = 320;
+  strait.height = 180;
+  const test::OffAndOn images = test::renderOffAndOn(r, strait, [&r](bool on) { r.terrain().setSeaSightTest(on); });
+  EXPECT_FALSE(r.lastFrameFloorInReach()) << "no floor within reach seen from the strait";
+  EXPECT_GT(r.terrain().stats().maxHeightM, 0.0) << "the strait's coasts are among the tiles";
+  r.terrain().setSeaSightTest(false);
+  r.render(strait);
+  EXPECT_TRUE(r.lastFrameFloorInReach()) << "every tile's highest point: the coasts' shallows";
+  r.terrain().setSeaSightTest(true);
+  ASSERT_EQ(images.off.pixels.size(), images.on.pixels.size());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < images.off.pixels.size(); ++i)
+    worst = std::max(worst, static_cast<double>(std::abs(images.off.pixels[i] - images.on.pixels[i])));
+  EXPECT_EQ(worst, 0.0);
+  r.render(classView({24.2, -78.2, 2.0}, 270.0, -10.0, 20.0, 250.0));
+  EXPECT_TRUE(r.lastFrameFloorInReach()) << "the bank's floor, 2-10 m under the eye";
+}
