@@ -253,24 +253,33 @@ TEST(TerrainRender, ShadowMapsFittedToTheScreenKeepThePicture) {
 // Sun ahead, behind and low, from 2 m to 30 km; the near cascade of the Himalaya from 15 km
 // must come out cropped (else the test would compare a picture with itself). (The floor's
 // shadows, looked up off the view rays, have a margin of their own, which no view here needs.)
+namespace {
+
+// A named 320 x 180 view with its Sun (elevation, azimuth, degrees).
+struct ViewCase {
+  const char* name;
+  test::View view;
+  double sunElevationDeg, sunAzimuthDeg;
+};
+const ViewCase kHimalaya15kmHorizon{"himalaya_15km_horizon", {.latDeg = 27.3, .lonDeg = 86.9, .heightM = 15000.0, .headingDeg = 10.0, .pitchDeg = -2.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0};
+const ViewCase kGibraltar2m{"gibraltar_2m", {.latDeg = 36.0, .lonDeg = -5.5, .heightM = 2.0, .headingDeg = 270.0, .pitchDeg = 2.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0};
+const ViewCase kGibraltar30km{"gibraltar_30km", {.latDeg = 35.6, .lonDeg = -5.6, .heightM = 30000.0, .headingDeg = 0.0, .pitchDeg = -30.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0};
+
+}  // namespace
+
 TEST(TerrainRender, ShadowMapsCroppedToTheReceiversKeepThePicture) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(data::defaultElevation());
-  struct Case {
-    const char* name;
-    test::View view;
-    double sunElevationDeg, sunAzimuthDeg;
-  };
-  const std::vector<Case> cases{
-      {"himalaya_15km_horizon", {.latDeg = 27.3, .lonDeg = 86.9, .heightM = 15000.0, .headingDeg = 10.0, .pitchDeg = -2.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0},
+  const std::vector<ViewCase> cases{
+      kHimalaya15kmHorizon,
       {"himalaya_6km_sun_behind", {.latDeg = 28.0, .lonDeg = 86.5, .heightM = 6000.0, .headingDeg = 70.0, .pitchDeg = -40.0, .fovDeg = 45.0, .width = 320, .height = 180}, 10.0, 250.0},
       {"himalaya_9km_low_sun_ahead", {.latDeg = 27.8, .lonDeg = 87.2, .heightM = 9000.0, .headingDeg = 240.0, .pitchDeg = -10.0, .fovDeg = 45.0, .width = 320, .height = 180}, 5.0, 250.0},
-      {"gibraltar_2m", {.latDeg = 36.0, .lonDeg = -5.5, .heightM = 2.0, .headingDeg = 270.0, .pitchDeg = 2.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0},
-      {"gibraltar_30km", {.latDeg = 35.6, .lonDeg = -5.6, .heightM = 30000.0, .headingDeg = 0.0, .pitchDeg = -30.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0},
+      kGibraltar2m,
+      kGibraltar30km,
       // A coast's sea from 300 m with the Sun low over the land beyond it (Gibraltar's bay).
       {"gibraltar_bay_300m_low_sun", {.latDeg = 36.14, .lonDeg = -5.40, .heightM = 300.0, .headingDeg = 90.0, .pitchDeg = -12.0, .fovDeg = 45.0, .width = 320, .height = 180}, 8.0, 100.0},
   };
-  for (const Case& c : cases) {
+  for (const ViewCase& c : cases) {
     const render::FrameInput f = test::frameOf(c.view, c.sunElevationDeg, c.sunAzimuthDeg);
     // Cropped first: over the maps the last case left (another view's) or fresh ones, so a crop
     // that missed a receiver, or a lookup past the part drawn, reads wrong depths.
@@ -307,19 +316,14 @@ TEST(TerrainRender, ShadowMapsCroppedToTheReceiversKeepThePicture) {
 TEST(TerrainRender, AerialTableKeepsThePerVertexPicture) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(data::defaultElevation());
-  struct Case {
-    const char* name;
-    test::View view;
-    double sunElevationDeg, sunAzimuthDeg;
-  };
-  const std::vector<Case> cases{
-      {"gibraltar_2m", {.latDeg = 36.0, .lonDeg = -5.5, .heightM = 2.0, .headingDeg = 270.0, .pitchDeg = 2.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0},
-      {"himalaya_15km_horizon", {.latDeg = 27.3, .lonDeg = 86.9, .heightM = 15000.0, .headingDeg = 10.0, .pitchDeg = -2.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0},
+  const std::vector<ViewCase> cases{
+      kGibraltar2m,
+      kHimalaya15kmHorizon,
       {"himalaya_9km_sun_2deg", {.latDeg = 27.8, .lonDeg = 87.2, .heightM = 9000.0, .headingDeg = 240.0, .pitchDeg = -10.0, .fovDeg = 45.0, .width = 320, .height = 180}, 2.0, 250.0},
-      {"gibraltar_30km", {.latDeg = 35.6, .lonDeg = -5.6, .heightM = 30000.0, .headingDeg = 0.0, .pitchDeg = -30.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0},
+      kGibraltar30km,
       {"gibraltar_300km_down", {.latDeg = 36.0, .lonDeg = -5.5, .heightM = 3.0e5, .headingDeg = 0.0, .pitchDeg = -90.0, .fovDeg = 30.0, .width = 320, .height = 180}, 45.0, 160.0},
   };
-  for (const Case& c : cases) {
+  for (const ViewCase& c : cases) {
     const render::FrameInput f = test::frameOf(c.view, c.sunElevationDeg, c.sunAzimuthDeg);
     const test::OffAndOn images = test::renderOffAndOn(r, f, [&r](bool on) { r.terrain().setAerialTable(on); });
     const test::RadianceChange change = test::radianceChange(images.off, images.on, 0.02);
