@@ -152,7 +152,7 @@ void aerialScatteringToAltitude(float d, float hP, float nu, float muS, out vec3
   float r = R + uCamAltitude;
   float rP = R + hP;
   d = max(d, 1e-3);
-  float mu = clamp((rP * rP - r * r - d * d) / (2.0 * r * d), -1.0, 1.0);
+  float mu = clamp(((hP - uCamAltitude) * (rP + r) - d * d) / (2.0 * r * d), -1.0, 1.0);  // rP² - r² without cancelling
   aerialScatteringToPoint(uAtmosphere, uAtmTransmittance, uAtmScattering, uAtmSingleMie, r, mu, muS, nu, d,
                           transmittance, rayleigh, mie);
 }
@@ -180,7 +180,7 @@ void aerialToAltitudeFromTable(float d, float hP, float nu, out vec3 transmittan
   vec2 hs = aerialTerrainAltitudesM(d);
   float z = sqrt(clamp((hP - hs.x) / max(hs.y - hs.x, 1e-3), 0.0, 1.0));
   // Texel centres of the first block; the others lie size.x texels along (never filtered into).
-  vec3 p = (vec3(0.5 * (nu + 1.0), y, z) * (size - 1.0) + 0.5) / vec3(3.0 * size.x, size.yz);
+  vec3 p = (vec3(0.5 * clamp(nu, -1.0, 1.0) + 0.5, y, z) * (size - 1.0) + 0.5) / vec3(3.0 * size.x, size.yz);
   float block = 1.0 / 3.0;
   vec4 a = texture(uTerrainAerialTable, p), b = texture(uTerrainAerialTable, p + vec3(block, 0.0, 0.0));
   float c = texture(uTerrainAerialTable, p + vec3(2.0 * block, 0.0, 0.0)).x;

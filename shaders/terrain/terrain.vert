@@ -51,7 +51,7 @@ void aerialToAltitude(vec3 dir, float t, float hP, out vec3 transmittance, out v
   float r = R + uCamAltitude;
   float rP = R + hP;
   float d = max(t, 1e-3);
-  float mu = clamp((rP * rP - r * r - d * d) / (2.0 * r * d), -1.0, 1.0);
+  float mu = clamp(((hP - uCamAltitude) * (rP + r) - d * d) / (2.0 * r * d), -1.0, 1.0);  // rP² - r² without cancelling
   inscatter = skyRadianceToPoint(uAtmosphere, uAtmTransmittance, uAtmScattering, uAtmSingleMie, r, mu,
                                  dot(uSunDir, uCamUp), dot(dir, uSunDir), d, transmittance);
 #endif

@@ -275,6 +275,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   const bool grid = view.position.heightM < kOceanGridMaxHeightM;
   aerialTableFrame_ = aerialTableOn_ && !grid && view.position.heightM < kAerialTableMaxHeightM;
   coarseMaskFrame_ = coarseMaskVariants_ && landMask_->fineLevelUnresolved(view, f.height);
+  floorInReachFrame_ = false;  // (drawOcean's, below the ceiling)
   terrain_->setSeaCrestM(patterns_->amplitudeBoundM() + 1.0);  // (+ 1 m: the morph's and chords' rounding)
   terrain_->setCoarseLandMask(coarseMaskFrame_);
 
@@ -308,7 +309,10 @@ void GlobeRenderer::render(const FrameInput& f) {
   } else {
     shadeGlobe(view, f, grid, frameLandLast_ ? GlobeParts::allButLand : GlobeParts::all);
     terrain_->drawWaterTiles();
-    if (frameLandLast_) shadeGlobe(view, f, grid, GlobeParts::land);
+    if (frameLandLast_) {
+      shadeGlobe(view, f, grid, GlobeParts::land);
+      glDepthFunc(GL_ALWAYS);  // as the other parts leave it
+    }
   }
 
   if (timer_ != nullptr) timer_->mark("tone mapping");
@@ -857,9 +861,9 @@ std::vector<float> GlobeRenderer::viewDistance() const {
       if (z <= 0.0f) {
         // The sky; or, above the ceiling, land the globe's part shaded where no tile drew (its
         // depth is the far plane: frameLandLast_).
+        const glm::dvec3 ray = lastView_.rayDirection(ndcX, ndcY);
         const std::optional<double> t =
-            globeDepthPushed ? geo::intersectEllipsoid(lastView_.positionEcef, lastView_.rayDirection(ndcX, ndcY))
-                             : std::nullopt;
+            globeDepthPushed ? geo::intersectEllipsoid(lastView_.positionEcef, ray) : std::nullopt;
         z = t ? static_cast<float>(*t) : kSkyDistanceM;
         continue;
       }

@@ -234,8 +234,8 @@ class GlobeRenderer {
   void setCoarseMaskVariants(bool on) { coarseMaskVariants_ = on; }
   /// Whether the last frame drew with them.
   [[nodiscard]] bool lastFrameCoarseMask() const { return coarseMaskFrame_; }
-  /// Whether the last frame below 20 km drew the sea with its water volume (a floor within the
-  /// water's reach under sea in view: TerrainStats::seaSeenMaxHeightM).
+  /// Whether the last frame drew the sea with its water volume (a floor within the water's
+  /// reach under sea in view: TerrainStats::seaSeenMaxHeightM; false above 20 km).
   [[nodiscard]] bool lastFrameFloorInReach() const { return floorInReachFrame_; }
   /// The pixels the last frame listed (setScatteredPartsListed; reads the count back: for tests).
   [[nodiscard]] std::uint32_t listedPixelCount() const;

@@ -328,7 +328,8 @@ void TerrainRenderer::drawCovered(const geo::CameraView& view, const std::vector
                                   unsigned frameBits, const glm::dvec3& sunDirectionEcef, bool seaFromGlobe) {
   if (tiles.empty()) return;
   // Above the grid's ceiling the globe's depth, drawn before, already fails the sea floor's
-  // fragments before the shader (llvmpipe tests early when nothing but the depth is on):
+  // fragments before the shader over the sea's classes (llvmpipe tests early when nothing but
+  // the depth is on; the land's class keeps the far plane, where every tile fragment shades):
   // there the first draw would only add its cost (coast-30km's terrain +7 %, orbit's +17 %).
   // Multisampled, llvmpipe shades a fragment before its depth test anyway (docs/performance.md):
   // the first draw would only add its cost there too.
@@ -384,9 +385,13 @@ double TerrainRenderer::seaSeenMaxHeightM(const geo::CameraView& view,
                                           const std::vector<const terrain::Tile*>& tiles) const {
   // The sea a pixel or more below its horizon (the mean sea's, from the eye's height): from 2 m
   // at 720p the sea beyond ~1 km lies within a pixel of it, seen at grazing angles, where the
-  // floor's light would tint at most that one row; the tile under the eye may hold coasts 10 km
-  // away. Over the sea's horizon first (the ellipsoid seaCrestM_ down, no crest higher), then
-  // vertex by vertex (each with its cells around it), in the view's frustum.
+  // floor's light would tint at most that one row; the tile under the eye may hold coasts
+  // 10 km away. The mean surface, not a trough: seen that far, a trough hides behind the crest
+  // before it (a point z under the mean at distance x shows over a crest z' above it δ nearer
+  // only if (eye + z) δ / x > z + z', so for δ of a wavelength and x of a kilometre from metres
+  // up, the points seen stand near the crests, less far below the horizon than the mean). Over
+  // the sea's horizon first (the ellipsoid seaCrestM_ down, no crest higher), then vertex by
+  // vertex, each as the sea's surface over it with its cells around it, in the view's frustum.
   const double eyeM = std::max(view.position.heightM, 0.1);
   const double earthM = geo::kWgs84SemiMajorM;
   const double pixelRad = 2.0 * std::tan(0.5 * view.verticalFovRad) / params_.heightPx;
@@ -397,22 +402,28 @@ double TerrainRenderer::seaSeenMaxHeightM(const geo::CameraView& view,
   };
   const auto belowHorizon = [&](const glm::dvec3& centre, double radius) {
     const double x = std::max(glm::length(centre - view.positionEcef) - radius, 1.0);
-    return eyeM / x + 0.5 * x / earthM - horizonDipRad >= pixelRad;  // depression below the horizon
+    return eyeM / x + 0.5 * x / earthM - horizonDipRad >= pixelRad;  // the mean sea's depression there
   };
   double highest = -1e30;
   for (const terrain::Tile* t : tiles) {
     if (t->minHeightM > 0.0 || t->maxHeightM <= highest || !seen(t->boundCentreEcef, t->boundRadiusM)) continue;
     for (int k = 0; k < terrain::kTileGridVertices; ++k) {
-      const double h = t->vertices[static_cast<std::size_t>(k)].heightM;
-      const glm::dvec3 p = t->centreEcef + t->positions[static_cast<std::size_t>(k)];
-      if (h > highest && belowHorizon(p, 1.5 * t->spacingM) && seen(p, 1.5 * t->spacingM)) highest = h;
+      const terrain::TileVertex& v = t->vertices[static_cast<std::size_t>(k)];
+      const double h = static_cast<double>(v.heightM);
+      if (h <= highest) continue;
+      // The sea's surface over (or beside) the vertex: its point moved to sea level.
+      const double lat = static_cast<double>(v.latitudeRad), lon = static_cast<double>(v.longitudeRad);
+      const glm::dvec3 up(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
+      const glm::dvec3 sea =
+          t->centreEcef + t->positions[static_cast<std::size_t>(k)] - h * up;
+      if (belowHorizon(sea, 1.5 * t->spacingM) && seen(sea, 1.5 * t->spacingM)) highest = v.heightM;
     }
   }
   return highest;
 }
 
 void TerrainRenderer::drawAerialTable(const geo::CameraView& view, const glm::dvec3& sunDirectionEcef) {
-  constexpr int kNu = 16, kPath = 128, kAltitudes = 16;  // render/aerial.glsl's AERIAL_TERRAIN_SIZE
+  constexpr int kNu = 16, kPath = 128, kAltitudes = 16;  // render/aerial.glsl's AERIAL_TERRAIN_SIZE (keep equal)
   if (aerialTable_.id() == 0) {
     aerialTable_ = gl::createTexture(GL_TEXTURE_3D);
     glTextureStorage3D(aerialTable_.id(), 1, GL_RGBA32F, 3 * kNu, kPath, kAltitudes);
@@ -431,6 +442,7 @@ void TerrainRenderer::drawAerialTable(const geo::CameraView& view, const glm::dv
   glBindImageTexture(0, aerialTable_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   glDispatchCompute((kNu + 7) / 8, (kPath + 7) / 8, kAltitudes);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   glBindTextureUnit(gl::kUnitTerrainAerialTable, aerialTable_.id());
 }
 
@@ -526,7 +538,8 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   if (timer_ != nullptr) timer_->mark("terrain");
   stats_.maxHeightM = tiles.empty() ? 0.0 : -1e30;
   for (const terrain::Tile* t : tiles) stats_.maxHeightM = std::max(stats_.maxHeightM, t->maxHeightM);
-  stats_.seaSeenMaxHeightM = seaSightTest_ ? seaSeenMaxHeightM(view, tiles) : stats_.maxHeightM;
+  // (Above the ceiling the globe draws the sea: no water volume to decide.)
+  stats_.seaSeenMaxHeightM = seaFromGlobe ? -1e30 : seaSightTest_ ? seaSeenMaxHeightM(view, tiles) : stats_.maxHeightM;
   const double highestM = std::max(stats_.maxHeightM, 0.0);  // seen farthest beyond the horizon
   const bool nightInView =
       geo::sunMayBeDownInView(view.enu.up, view.position.heightM, glm::normalize(sunDirectionEcef), highestM);

@@ -53,9 +53,11 @@ struct TerrainStats {
   std::size_t tilesPending = 0; ///< being built in the background (selection().wait = false)
   int landTiles = 0;            ///< drawn tiles reaching above the sea (-1 m); 0: open ocean
   double maxHeightM = 0.0;      ///< highest point of the selected tiles, m (0 when none)
-  /// Highest vertex of the selected tiles with water around which the sea's surface can be seen
-  /// over the horizon (its crests and troughs setSeaCrestM from sea level), m; -1e30 when
-  /// none: whether the sea's floor may show through it (render/GlobeRenderer's floorInReach).
+  /// Below the grid's ceiling, the highest vertex of the selected tiles with water over which
+  /// the sea's surface can be seen a pixel or more below the horizon, in the frustum (its
+  /// crests and troughs setSeaCrestM from sea level), m; -1e30 when none or above the ceiling;
+  /// maxHeightM with setSeaSightTest(false): whether the sea's floor may show through it
+  /// (render/GlobeRenderer's floorInReach).
   double seaSeenMaxHeightM = -1e30;
 };
 
@@ -72,7 +74,8 @@ class TerrainRenderer {
             bool seaFromGlobe);
   /// With `seaFromGlobe`, draw() draws only the tiles all above the sea (zeroing the stencil
   /// where they draw: GlobeRenderer's parts then skip those pixels); this draws the rest of
-  /// that frame's tiles, after the globe. Without, draw() drew them all and this does nothing.
+  /// that frame's tiles, after the globe's parts but its land's (GlobeRenderer's
+  /// frameLandLast_). Without, draw() drew them all and this does nothing.
   void drawWaterTiles();
 
   [[nodiscard]] const TerrainStats& stats() const { return stats_; }
@@ -214,7 +217,8 @@ class TerrainRenderer {
   /// AERIAL_TERRAIN_SIZE): made on the first frame that uses it, then recomputed each frame.
   void drawAerialTable(const geo::CameraView& view, const glm::dvec3& sunDirectionEcef);
   /// TerrainStats::seaSeenMaxHeightM of `tiles`.
-  [[nodiscard]] double seaSeenMaxHeightM(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles) const;
+  [[nodiscard]] double seaSeenMaxHeightM(const geo::CameraView& view,
+                                         const std::vector<const terrain::Tile*>& tiles) const;
   gl::Texture aerialTable_;
   gl::Program aerialTableProgram_;
   bool aerialTableOn_ = true;  ///< setAerialTable

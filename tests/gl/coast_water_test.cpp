@@ -737,21 +737,21 @@ TEST(CoastWater, FjordShoresShowNoCellsOfFloorAtTheSurface) {
 
 // Below 20 km the sea is drawn with its water volume only where a floor within the water's reach
 // lies under sea the eye sees a pixel or more below the horizon, in the view's frustum
-// (TerrainRenderer's seaSeenMaxHeightM). From 2 m in the Strait of Gibraltar looking west
-// (sea-2m-horizon) the coasts in view are 15 km and more away: their shallows lie within a
-// pixel of the horizon, at grazing angles. The volume is left out there, with the picture the
-// same to the last bit as with it; over the Great Bahama Bank it stays.
+// (TerrainRenderer's seaSeenMaxHeightM). From 2 m over the deep water east of Gran Canaria,
+// looking at the island 60 km off, its shelf lies beyond the sea's horizon. The volume is left
+// out there, with the picture the same to the last bit as with it; over the Great Bahama Bank
+// it stays.
 TEST(CoastWater, WaterVolumeOnlyWhereAFloorInReachIsSeen) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(data::defaultElevation());
-  render::FrameInput strait = classView({36.0, -5.5, 2.0}, 270.0, 2.0, 20.0, 250.0);
-  strait.width = 320;
-  strait.height = 180;
-  const test::OffAndOn images = test::renderOffAndOn(r, strait, [&r](bool on) { r.terrain().setSeaSightTest(on); });
-  EXPECT_FALSE(r.lastFrameFloorInReach()) << "no floor within reach seen from the strait";
-  EXPECT_GT(r.terrain().stats().maxHeightM, 0.0) << "the strait's coasts are among the tiles";
+  render::FrameInput island = classView({28.0, -15.0, 2.0}, 270.0, 1.0, 20.0, 250.0);
+  island.width = 320;
+  island.height = 180;
+  const test::OffAndOn images = test::renderOffAndOn(r, island, [&r](bool on) { r.terrain().setSeaSightTest(on); });
+  EXPECT_FALSE(r.lastFrameFloorInReach()) << "no floor within reach seen off Gran Canaria";
+  EXPECT_GT(r.terrain().stats().maxHeightM, 1000.0) << "the island is among the tiles";
   r.terrain().setSeaSightTest(false);
-  r.render(strait);
+  r.render(island);
   EXPECT_TRUE(r.lastFrameFloorInReach()) << "every tile's highest point: the coasts' shallows";
   r.terrain().setSeaSightTest(true);
   ASSERT_EQ(images.off.pixels.size(), images.on.pixels.size());
@@ -761,4 +761,15 @@ TEST(CoastWater, WaterVolumeOnlyWhereAFloorInReachIsSeen) {
   EXPECT_EQ(worst, 0.0);
   r.render(classView({24.2, -78.2, 2.0}, 270.0, -10.0, 20.0, 250.0));
   EXPECT_TRUE(r.lastFrameFloorInReach()) << "the bank's floor, 2-10 m under the eye";
+}
+
+// A floor 100 m down (within twice the water's reach) under the eye, 2 m over a flat sea with
+// no land: the water volume stays, though the floor's vertices lie far under the occluder
+// below the sea's horizon (the sea's surface over them is what must be seen).
+TEST(CoastWater, WaterVolumeKeptOverADeepShelfUnderTheEye) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(test::grid("shelf_100m", 20.0, -10.0, 0.05, 201, 201, false,
+                                     [](double, double) { return -100.0; }));
+  r.render(classView({25.0, -5.0, 2.0}, 0.0, -10.0, 30.0, 180.0));
+  EXPECT_TRUE(r.lastFrameFloorInReach());
 }

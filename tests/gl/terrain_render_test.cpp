@@ -330,5 +330,6 @@ TEST(TerrainRender, AerialTableKeepsThePerVertexPicture) {
     std::printf("%s: largest change %.4f, mean %.5f, %d pixels over 2 %%\n", c.name, change.worst, change.mean, change.over);
     EXPECT_LE(change.over, 320 * 180 / 200) << c.name << ": over 0.5 % of the pixels changed by over 2 %";
     EXPECT_LT(change.mean, 0.002) << c.name;
+    EXPECT_GT(change.worst, 0.0) << c.name << ": the table is not in use";
   }
 }
