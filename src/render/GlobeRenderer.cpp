@@ -793,13 +793,14 @@ void GlobeRenderer::drawOcean(const geo::CameraView& view, const FrameInput& f) 
   const TerrainStats& ts = terrain_->stats();
   lighting.landInView = ts.landTiles > 0 || ts.tiles == 0;
   lighting.landEverywhere = ts.tiles > 0 && ts.landTiles == ts.tiles;
-  // The water volume only where a floor within the water's reach is in view (tiles sample the
-  // layer coarsely far away: twice the reach, so a shoal between samples is not missed) under
-  // sea the eye can see: from 2 m the horizon is 5 km off, and the shallows of coasts beyond it
-  // are hidden (sea-2m-horizon's far coasts had the volume's passes run for no pixel).
+  // The water volume only where a floor its light can come back from is under sea the eye
+  // sees (TerrainStats::seaSeenMaxHeightM): the floor's light goes down and back up, at least
+  // twice its depth through the water, so below half the reach d_max (the path that leaves
+  // every channel less than kWaterEpsilon) it returns less than that: the deep colour, within
+  // a level. (The pixels' classes keep the floor down to d_max: conservative per pixel.)
   const double reachM = ocean::waterMaxPathM(ocean::jerlovWater(ocean::kDefaultWater).attenuationPerM,
                                              ocean::kWaterEpsilon);
-  lighting.floorInReach = ts.tiles == 0 || ts.seaSeenMaxHeightM > -2.0 * reachM;
+  lighting.floorInReach = ts.tiles == 0 || ts.seaSeenMaxHeightM > -0.5 * reachM;
   floorInReachFrame_ = lighting.floorInReach;
   lighting.classes = f.oceanClasses;
   // Waves fade out on the way up so the grid meets the orbit model at the switch.

@@ -406,17 +406,20 @@ double TerrainRenderer::seaSeenMaxHeightM(const geo::CameraView& view,
   };
   double highest = -1e30;
   for (const terrain::Tile* t : tiles) {
-    if (t->minHeightM > 0.0 || t->maxHeightM <= highest || !seen(t->boundCentreEcef, t->boundRadiusM)) continue;
+    if (t->minHeightM > 0.0 || t->maxHeightM + 1.5 * t->spacingM <= highest || !seen(t->boundCentreEcef, t->boundRadiusM))
+      continue;
     for (int k = 0; k < terrain::kTileGridVertices; ++k) {
       const terrain::TileVertex& v = t->vertices[static_cast<std::size_t>(k)];
       const double h = static_cast<double>(v.heightM);
-      if (h <= highest) continue;
+      // The floor around the vertex, within its cells, rises at most a 45° slope higher.
+      const double around = h + 1.5 * t->spacingM;
+      if (around <= highest) continue;
       // The sea's surface over (or beside) the vertex: its point moved to sea level.
       const double lat = static_cast<double>(v.latitudeRad), lon = static_cast<double>(v.longitudeRad);
       const glm::dvec3 up(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
       const glm::dvec3 sea =
           t->centreEcef + t->positions[static_cast<std::size_t>(k)] - h * up;
-      if (belowHorizon(sea, 1.5 * t->spacingM) && seen(sea, 1.5 * t->spacingM)) highest = v.heightM;
+      if (belowHorizon(sea, 1.5 * t->spacingM) && seen(sea, 1.5 * t->spacingM)) highest = around;
     }
   }
   return highest;

@@ -53,8 +53,9 @@ struct TerrainStats {
   std::size_t tilesPending = 0; ///< being built in the background (selection().wait = false)
   int landTiles = 0;            ///< drawn tiles reaching above the sea (-1 m); 0: open ocean
   double maxHeightM = 0.0;      ///< highest point of the selected tiles, m (0 when none)
-  /// Below the grid's ceiling, the highest vertex of the selected tiles with water over which
-  /// the sea's surface can be seen a pixel or more below the horizon, in the frustum (its
+  /// Below the grid's ceiling, the highest the floor can be (a vertex's height, risen at a 45°
+  /// slope over 1.5 vertex spacings) around the vertices of the selected tiles with water over
+  /// which the sea's surface can be seen a pixel or more below the horizon, in the frustum (its
   /// crests and troughs setSeaCrestM from sea level), m; -1e30 when none or above the ceiling;
   /// maxHeightM with setSeaSightTest(false): whether the sea's floor may show through it
   /// (render/GlobeRenderer's floorInReach).
