@@ -763,13 +763,14 @@ TEST(CoastWater, WaterVolumeOnlyWhereAFloorInReachIsSeen) {
   EXPECT_TRUE(r.lastFrameFloorInReach()) << "the bank's floor, 2-10 m under the eye";
 }
 
-// A floor 100 m down (within twice the water's reach) under the eye, 2 m over a flat sea with
-// no land: the water volume stays, though the floor's vertices lie far under the occluder
-// below the sea's horizon (the sea's surface over them is what must be seen).
+// A floor 60 m down (within half the water's reach, whence its light comes back) under the eye,
+// 2 m over a flat sea with no land: the water volume stays, though the floor's vertices lie
+// far under the occluder below the sea's horizon (the sea's surface over them is what must be
+// seen).
 TEST(CoastWater, WaterVolumeKeptOverADeepShelfUnderTheEye) {
   auto ctx = gl::createHeadlessContext();
-  render::GlobeRenderer r(test::grid("shelf_100m", 20.0, -10.0, 0.05, 201, 201, false,
-                                     [](double, double) { return -100.0; }));
+  render::GlobeRenderer r(test::grid("shelf_60m", 20.0, -10.0, 0.05, 201, 201, false,
+                                     [](double, double) { return -60.0; }));
   r.render(classView({25.0, -5.0, 2.0}, 0.0, -10.0, 30.0, 180.0));
   EXPECT_TRUE(r.lastFrameFloorInReach());
 }
