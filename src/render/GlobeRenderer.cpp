@@ -850,10 +850,11 @@ std::vector<float> GlobeRenderer::viewDistance() const {
   const int w = hdr_.width, h = hdr_.height;
   const double tanY = std::tan(0.5 * lastView_.verticalFovRad), tanX = tanY * lastView_.aspect;
   // Above the grid's ceiling the globe pass's depth over land stands kGlobeDepthPushM behind the
-  // ellipsoid (or at the far plane where its land part comes last); the terrain keeps no fragment under the sea up there, the deepest land is ~0.4
-  // km under it and a tile's chord ~0.5 km, which puts a terrain pixel half the push behind the
-  // ellipsoid only at grazing incidence near the limb (a tile's skirt there too): those read
-  // the ellipsoid's distance, some kilometres short at a thousand.
+  // ellipsoid (or at the far plane where its land part comes last); the terrain keeps no
+  // fragment under the sea up there, the deepest land is ~0.4 km under it and a tile's chord
+  // ~0.5 km, which puts a terrain pixel half the push behind the ellipsoid only at grazing
+  // incidence near the limb (a tile's skirt there too): those read the ellipsoid's distance,
+  // some kilometres short at a thousand.
   const bool globeDepthPushed = lastView_.position.heightM >= kOceanGridMaxHeightM;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {

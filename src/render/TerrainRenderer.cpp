@@ -406,8 +406,8 @@ double TerrainRenderer::seaSeenMaxHeightM(const geo::CameraView& view,
   };
   double highest = -1e30;
   for (const terrain::Tile* t : tiles) {
-    if (t->minHeightM > 0.0 || t->maxHeightM + 1.5 * t->spacingM <= highest || !seen(t->boundCentreEcef, t->boundRadiusM))
-      continue;
+    const double tileTop = t->maxHeightM + 1.5 * t->spacingM;
+    if (t->minHeightM > 0.0 || tileTop <= highest || !seen(t->boundCentreEcef, t->boundRadiusM)) continue;
     for (int k = 0; k < terrain::kTileGridVertices; ++k) {
       const terrain::TileVertex& v = t->vertices[static_cast<std::size_t>(k)];
       const double h = static_cast<double>(v.heightM);
@@ -417,8 +417,7 @@ double TerrainRenderer::seaSeenMaxHeightM(const geo::CameraView& view,
       // The sea's surface over (or beside) the vertex: its point moved to sea level.
       const double lat = static_cast<double>(v.latitudeRad), lon = static_cast<double>(v.longitudeRad);
       const glm::dvec3 up(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
-      const glm::dvec3 sea =
-          t->centreEcef + t->positions[static_cast<std::size_t>(k)] - h * up;
+      const glm::dvec3 sea = t->centreEcef + t->positions[static_cast<std::size_t>(k)] - h * up;
       if (belowHorizon(sea, 1.5 * t->spacingM) && seen(sea, 1.5 * t->spacingM)) highest = around;
     }
   }
@@ -542,7 +541,9 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   stats_.maxHeightM = tiles.empty() ? 0.0 : -1e30;
   for (const terrain::Tile* t : tiles) stats_.maxHeightM = std::max(stats_.maxHeightM, t->maxHeightM);
   // (Above the ceiling the globe draws the sea: no water volume to decide.)
-  stats_.seaSeenMaxHeightM = seaFromGlobe ? -1e30 : seaSightTest_ ? seaSeenMaxHeightM(view, tiles) : stats_.maxHeightM;
+  stats_.seaSeenMaxHeightM = seaFromGlobe   ? -1e30
+                             : seaSightTest_ ? seaSeenMaxHeightM(view, tiles)
+                                             : stats_.maxHeightM;
   const double highestM = std::max(stats_.maxHeightM, 0.0);  // seen farthest beyond the horizon
   const bool nightInView =
       geo::sunMayBeDownInView(view.enu.up, view.position.heightM, glm::normalize(sunDirectionEcef), highestM);
