@@ -4,7 +4,7 @@
 // the path joins the eye's altitude to altitude 0 (see globe.frag's header).
 //
 // With AERIAL_TABLE the paths to sea level come from this frame's table
-// (render/aerial_table.comp, GlobeRenderer::drawAerialTable): for a fixed eye and Sun they
+// (render/aerial_table.comp, render/AerialTable): for a fixed eye and Sun they
 // depend only on the path's length d and nu = cos(view, Sun), so 64 x 256 entries of the
 // phase-free scattering (ten lookups into the 4D tables each) serve every pixel with three
 // bilinear lookups, the phase functions applied per pixel (Mie's forward peak needs them).
@@ -86,7 +86,7 @@ vec3 withAerialPerspective(vec3 surface, vec3 dir, float t, vec3 sunDir) {
 }
 
 // The terrain's table (TERRAIN_AERIAL_TABLE in terrain/terrain.vert; render/aerial_table.comp
-// with AERIAL_TABLE_TERRAIN, TerrainRenderer::drawAerialTable): for a fixed eye and Sun the path
+// with AERIAL_TABLE_TERRAIN, render/AerialTable): for a fixed eye and Sun the path
 // to a point at altitude hP depends only on its length d, hP and nu = cos(view, Sun) (its zenith
 // cosine follows from d and hP on the tables' sphere, as terrain.vert's exact path takes it).
 // Per frame AERIAL_TERRAIN_SIZE entries of the phase-free scattering serve every vertex with

@@ -1,10 +1,10 @@
 #version 450 core
 // This frame's aerial perspective tables (render/aerial.glsl), phase-free, in RGBA32F:
-//  * to sea level (AERIAL_TABLE, GlobeRenderer::drawAerialTable): per entry of
+//  * to sea level (AERIAL_TABLE, render/AerialTable): per entry of
 //    AERIAL_TABLE_SIZE the path at nu (x) and length d (y) from the eye, into the three layers
 //    of an array: (T.rgb, R.r), (R.gb, M.rg), (M.b, -, -, -);
 //  * with AERIAL_TABLE_TERRAIN, to altitudes (TERRAIN_AERIAL_TABLE,
-//    TerrainRenderer::drawAerialTable): per entry of AERIAL_TERRAIN_SIZE the path at nu (x),
+//    render/AerialTable): per entry of AERIAL_TERRAIN_SIZE the path at nu (x),
 //    its length (y) and end altitude (z), the three parts in three blocks along x.
 #include "render/aerial.glsl"
 

@@ -40,7 +40,7 @@ out vec3 vInscatter;      // light scattered towards the eye along it (Sun-irrad
 // path's zenith cosine is the one joining the eye's radius to R + hP over distance t; at or
 // below sea level the globe's convention (render/aerial.glsl).
 void aerialToAltitude(vec3 dir, float t, float hP, out vec3 transmittance, out vec3 inscatter) {
-#ifdef TERRAIN_AERIAL_TABLE  // this frame's table (render/aerial.glsl; TerrainRenderer::drawAerialTable)
+#ifdef TERRAIN_AERIAL_TABLE  // this frame's table (render/aerial.glsl, render/AerialTable)
   aerialToAltitudeFromTable(t, hP, dot(dir, uSunDir), transmittance, inscatter);
 #else
   if (hP <= 0.0) {

@@ -35,8 +35,8 @@ enum TextureUnit : unsigned {
   kUnitLandMaskFine = 22,        ///< terrain/landmask.glsl uLandMaskFine (render/LandMaskTexture)
   kUnitSeaSurface = 23,          ///< ocean/sea_surface.glsl uSeaSurface (render/SeaSurfaceBuffer)
   kUnitSkyLow = 24,              ///< render/globe.frag uSkyLow (GlobeRenderer::drawSkyLow)
-  kUnitAerialTable = 25,         ///< render/aerial.glsl uAerialTable (GlobeRenderer::drawAerialTable)
-  kUnitTerrainAerialTable = 26,  ///< render/aerial.glsl uTerrainAerialTable (TerrainRenderer::drawAerialTable)
+  kUnitAerialTable = 25,         ///< render/aerial.glsl uAerialTable (render/AerialTable, seaLevel)
+  kUnitTerrainAerialTable = 26,  ///< render/aerial.glsl uTerrainAerialTable (render/AerialTable, terrain)
   // Passes of their own, which bind nothing else, reuse unit 0:
   kUnitToneRadiance = 0,         ///< render/tonemap.frag uRadiance (the HDR target)
   kUnitOverlayText = 0,          ///< viewer/text.frag uText (the viewer's text overlay)

@@ -605,7 +605,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   glEnable(GL_STENCIL_TEST);
   glDepthMask(GL_FALSE);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-  if (aerialTableFrame_ && !landOnly) drawAerialTable(view, f);
+  if (aerialTableFrame_ && !landOnly) aerialTable_.update(*atmosphere_, view, f.sunDirectionEcef);
   if (!grid) scissorToGlobe(view, f);
   lastSkyLowFactor_ = 1;
   const bool skyLow = grid && drawSkyLow(view, f);
@@ -725,29 +725,6 @@ bool GlobeRenderer::drawSkyLow(const geo::CameraView& view, const FrameInput& f)
   return true;
 }
 
-void GlobeRenderer::drawAerialTable(const geo::CameraView& view, const FrameInput& f) {
-  constexpr int kNu = 64, kPath = 256, kLayers = 3;  // render/aerial.glsl's AERIAL_TABLE_SIZE
-  if (aerialTable_.id() == 0) {
-    aerialTable_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(aerialTable_.id(), 1, GL_RGBA32F, kNu, kPath, kLayers);
-    glTextureParameteri(aerialTable_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(aerialTable_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(aerialTable_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(aerialTable_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    aerialTableProgram_ = gl::Program({{GL_COMPUTE_SHADER, "render/aerial_table.comp"}});
-  }
-  const gl::Program& p = aerialTableProgram_;
-  p.set("uCamUp", toFloat(view.enu.up));
-  p.set("uCamAltitude", static_cast<float>(view.position.heightM));
-  p.set("uSunDir", toFloat(glm::normalize(f.sunDirectionEcef)));
-  atmosphere_->bind(p);
-  p.use();
-  glBindImageTexture(0, aerialTable_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glDispatchCompute((kNu + 7) / 8, (kPath + 7) / 8, 1);
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-  glBindTextureUnit(gl::kUnitAerialTable, aerialTable_.id());
-}
-
 void GlobeRenderer::setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view,
                                      const FrameInput& f) {
   // Eye in the ellipsoid's scaled space; C = |o|² - 1 in double (see geo/ellipsoid.glsl).
@@ -860,21 +837,18 @@ std::vector<float> GlobeRenderer::viewDistance() const {
     for (int x = 0; x < w; ++x) {
       float& z = d[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)];
       const double ndcX = 2.0 * (x + 0.5) / w - 1.0, ndcY = 1.0 - 2.0 * (y + 0.5) / h;
+      const glm::dvec3 dir = lastView_.rayDirection(ndcX, ndcY);
+      const std::optional<double> t =
+          globeDepthPushed ? geo::intersectEllipsoid(lastView_.positionEcef, dir) : std::nullopt;
       if (z <= 0.0f) {
         // The sky; or, above the ceiling, land the globe's part shaded where no tile drew (its
         // depth is the far plane: frameLandLast_).
-        const glm::dvec3 ray = lastView_.rayDirection(ndcX, ndcY);
-        const std::optional<double> t =
-            globeDepthPushed ? geo::intersectEllipsoid(lastView_.positionEcef, ray) : std::nullopt;
         z = t ? static_cast<float>(*t) : kSkyDistanceM;
         continue;
       }
       const double nx = ndcX * tanX, ny = ndcY * tanY;
       const double axial = lastView_.nearM / static_cast<double>(z);
       z = static_cast<float>(axial * std::sqrt(1.0 + nx * nx + ny * ny));
-      if (!globeDepthPushed) continue;
-      const glm::dvec3 dir = lastView_.rayDirection(ndcX, ndcY);
-      const std::optional<double> t = geo::intersectEllipsoid(lastView_.positionEcef, dir);
       if (t && axial > *t * glm::dot(dir, lastView_.forward) + 0.5 * kGlobeDepthPushM) z = static_cast<float>(*t);
     }
   return d;

@@ -25,6 +25,7 @@
 #include "io/Image.hpp"
 #include "io/SceneSchema.hpp"
 #include "ocean/OceanFrame.hpp"
+#include "render/AerialTable.hpp"
 #include "render/Atmosphere.hpp"
 #include "render/GlobeBlocks.hpp"
 #include "render/ImageryTextures.hpp"
@@ -186,7 +187,7 @@ class GlobeRenderer {
   /// (render/globe.frag); false shades them with the rest of the surface (the tests' reference).
   void setOpenSeaPart(bool on) { openSeaPart_ = on; }
   /// From 20 km to kAerialTableMaxHeightM the globe's parts read the aerial perspective to sea
-  /// level from a table made per frame (drawAerialTable; default on); off: from the
+  /// level from a table made per frame (render/AerialTable; default on); off: from the
   /// atmosphere's tables per pixel (tests).
   void setAerialTable(bool on) { aerialTableOn_ = on; }
   /// Farther out the terminator and the limb change faster across the table's entries than it
@@ -341,9 +342,7 @@ class GlobeRenderer {
   /// Above 20 km: this frame's aerial perspective to sea level by path length and angle to the
   /// Sun (render/aerial_table.comp), which the globe's parts read (AERIAL_TABLE) instead of the
   /// atmosphere's 4D tables per pixel.
-  void drawAerialTable(const geo::CameraView& view, const FrameInput& f);
-  gl::Program aerialTableProgram_;
-  gl::Texture aerialTable_;  ///< RGBA32F, 3 layers of AERIAL_TABLE_SIZE, bilinear, clamped
+  AerialTable aerialTable_{AerialTable::Kind::seaLevel};
   bool aerialTableOn_ = true;
   bool aerialTableFrame_ = false;  ///< this frame's globe reads the table
   /// This frame's programs leave the land mask's fine level out (LandMaskTexture::fineLevelUnresolved).

@@ -424,30 +424,6 @@ double TerrainRenderer::seaSeenMaxHeightM(const geo::CameraView& view,
   return highest;
 }
 
-void TerrainRenderer::drawAerialTable(const geo::CameraView& view, const glm::dvec3& sunDirectionEcef) {
-  constexpr int kNu = 16, kPath = 128, kAltitudes = 16;  // render/aerial.glsl's AERIAL_TERRAIN_SIZE (keep equal)
-  if (aerialTable_.id() == 0) {
-    aerialTable_ = gl::createTexture(GL_TEXTURE_3D);
-    glTextureStorage3D(aerialTable_.id(), 1, GL_RGBA32F, 3 * kNu, kPath, kAltitudes);
-    glTextureParameteri(aerialTable_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(aerialTable_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    for (const GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
-      glTextureParameteri(aerialTable_.id(), wrap, GL_CLAMP_TO_EDGE);
-    aerialTableProgram_ = gl::Program({{GL_COMPUTE_SHADER, "render/aerial_table.comp"}}, {"AERIAL_TABLE_TERRAIN"});
-  }
-  const gl::Program& p = aerialTableProgram_;
-  p.set("uCamUp", glm::vec3(view.enu.up));
-  p.set("uCamAltitude", static_cast<float>(view.position.heightM));
-  p.set("uSunDir", glm::vec3(glm::normalize(sunDirectionEcef)));
-  if (atmosphere_ != nullptr) atmosphere_->bind(p);
-  p.use();
-  glBindImageTexture(0, aerialTable_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glDispatchCompute((kNu + 7) / 8, (kPath + 7) / 8, kAltitudes);
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glBindTextureUnit(gl::kUnitTerrainAerialTable, aerialTable_.id());
-}
-
 void TerrainRenderer::setFrameUniforms(const gl::Program& p, const geo::CameraView& view,
                                        const glm::dvec3& sunDirectionEcef, bool seaFromGlobe) const {
   p.set("uViewProjection", glm::mat4(view.viewProjection()));
@@ -548,8 +524,9 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   const bool nightInView =
       geo::sunMayBeDownInView(view.enu.up, view.position.heightM, glm::normalize(sunDirectionEcef), highestM);
   const bool imageryLayers = imagery_ != nullptr && imagery_->layerCount() > 0;
-  const bool aerialTable = aerialTableOn_ && !drawn.empty() && view.position.heightM < kAerialTableMaxHeightM;
-  if (aerialTable) drawAerialTable(view, sunDirectionEcef);
+  const bool aerialTable =
+      aerialTableOn_ && atmosphere_ != nullptr && !drawn.empty() && view.position.heightM < kAerialTableMaxHeightM;
+  if (aerialTable) aerialTable_.update(*atmosphere_, view, sunDirectionEcef);
   const unsigned frameBits = (shadows_.on ? 0u : kShadowsOff) | (nightInView ? 0u : kNoNight) |
                              (imageryLayers ? 0u : kNoImageryLayers) | (coarseMask_ ? kCoarseMask : 0u) |
                              (aerialTable ? kAerialTable : 0u);

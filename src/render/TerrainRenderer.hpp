@@ -17,6 +17,7 @@
 #include "gl/Objects.hpp"
 #include "gl/PassTimer.hpp"
 #include "gl/Shader.hpp"
+#include "render/AerialTable.hpp"
 #include "render/Atmosphere.hpp"
 #include "render/ImageryTextures.hpp"
 #include "render/ShadowReceivers.hpp"
@@ -198,7 +199,7 @@ class TerrainRenderer {
   /// frame; kNoImageryLayers: no user imagery layer loaded (terrain/imagery.glsl's loops
   /// compiled out); kCoarseMask: no pixel resolves the land mask's fine level
   /// (LANDMASK_COARSE_ONLY, setCoarseLandMask); kAerialTable: the vertices' aerial perspective
-  /// from this frame's table (TERRAIN_AERIAL_TABLE, drawAerialTable).
+  /// from this frame's table (TERRAIN_AERIAL_TABLE, render/AerialTable).
   /// kCoverage: only the discards, writing the depth of what survives them (its colour writes
   /// masked off); kAfterCoverage: the shading after it, the depth test (equal) before the
   /// shader and no discards (drawCovered).
@@ -214,14 +215,11 @@ class TerrainRenderer {
   };
   const gl::Program& variant(unsigned bits);
   std::array<gl::Program, 256> variants_;
-  /// This frame's aerial perspective table to altitudes (render/aerial.glsl's
-  /// AERIAL_TERRAIN_SIZE): made on the first frame that uses it, then recomputed each frame.
-  void drawAerialTable(const geo::CameraView& view, const glm::dvec3& sunDirectionEcef);
   /// TerrainStats::seaSeenMaxHeightM of `tiles`.
   [[nodiscard]] double seaSeenMaxHeightM(const geo::CameraView& view,
                                          const std::vector<const terrain::Tile*>& tiles) const;
-  gl::Texture aerialTable_;
-  gl::Program aerialTableProgram_;
+  /// This frame's aerial perspective to altitudes (kAerialTable's frames).
+  AerialTable aerialTable_{AerialTable::Kind::terrain};
   bool aerialTableOn_ = true;  ///< setAerialTable
   bool coarseMask_ = false;  ///< setCoarseLandMask
   double seaCrestM_ = 30.0;  ///< setSeaCrestM
