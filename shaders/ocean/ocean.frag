@@ -106,7 +106,8 @@ void main() {
   float nv = dot(n, v);
   if (nv < 0.0) n = normalize(n - 2.0 * nv * v);
   mat3 local = localFrame(up);
-  vec3 windDir = sin(wind.y) * local[0] + cos(wind.y) * local[1];
+  vec2 windSinCos = windAzimuthSinCos(wind);
+  vec3 windDir = windSinCos.x * local[0] + windSinCos.y * local[1];
 #ifdef OCEAN_VALIDATION_REFERENCE
   // Validation reference: a mirror per sample, the Sun's disc integrated over the sample's patch.
   vec3 patchCov = referencePatchCovariance(dSlopeDx, dSlopeDy, wind.y);

@@ -107,9 +107,35 @@ float fieldWindAngle(float azimuth) {
   return frameAngle - atan2Safe(uFieldRotation.y, uFieldRotation.x);
 }
 
+#ifdef PATTERN_CONSTANT_WIND
+// The constant wind's bin, as windBins(fieldWindAngle(azimuth)) finds it, and the field angle's
+// (cos, sin): computed once by the CPU (OceanPatterns::setConstantWind), not per point.
+uniform int uWindBinConst;
+uniform vec4 uWindBinTurnsConst;  // (binTurn, windTurn) of that bin
+uniform vec2 uWindFieldTurnConst;  // (cos, sin) of fieldWindAngle
+#endif
+
+// The bins around a wind blowing towards `azimuth` (radians clockwise from north), and the
+// turn (cos, sin) from the field's axes to the wind's.
+WindBins windBinsOf(float azimuth, out vec2 fieldTurn) {
+#ifdef PATTERN_CONSTANT_WIND
+  WindBins w;
+  w.bin[0] = w.bin[1] = uWindBinConst;
+  w.weight[0] = 1.0;
+  w.weight[1] = 0.0;
+  w.binTurn[0] = w.binTurn[1] = uWindBinTurnsConst.xy;
+  w.windTurn[0] = w.windTurn[1] = uWindBinTurnsConst.zw;
+  fieldTurn = uWindFieldTurnConst;
+  return w;
+#else
+  float thetaField = fieldWindAngle(azimuth);
+  fieldTurn = vec2(cos(thetaField), sin(thetaField));
+  return windBins(thetaField);
+#endif
+}
+
 // v turned counter-clockwise by the angle whose (cos, sin) is cs.
 vec2 turn2(vec2 v, vec2 cs) { return vec2(cs.x * v.x - cs.y * v.y, cs.y * v.x + cs.x * v.y); }
-vec2 rotate2(vec2 v, float angle) { return turn2(v, vec2(cos(angle), sin(angle))); }
 // Quarter turns, exact: q in 0..3, counter-clockwise.
 vec2 quarterTurn(vec2 v, int q) {
   return q == 0 ? v : q == 1 ? vec2(-v.y, v.x) : q == 2 ? -v : vec2(v.y, -v.x);
@@ -143,7 +169,8 @@ vec2 frameVector(vec2 v) { return vec2(dot(v, vec2(uFieldRotation.x, -uFieldRota
 // `wind` = (speed m/s, azimuth rad). Frame axes, m.
 vec3 oceanDisplacement(vec2 xy, float cellFootprintM, vec2 wind) {
   vec2 p = fieldPosition(xy);
-  WindBins wb = windBins(fieldWindAngle(wind.y));
+  vec2 fieldTurn;
+  WindBins wb = windBinsOf(wind.y, fieldTurn);
   vec3 d = vec3(0.0);
   for (int i = uPatternFirst; i < PATTERN_COUNT; ++i) {
     float lod = patternLod(0.5 * cellFootprintM, i);
@@ -278,8 +305,8 @@ uniform vec3 uPatternAveragedFromConst[PATTERN_COUNT + 1];  // patternBands(spee
 // footprint `pixelFootprintM` (m) there, for the grid's vertex shader to interpolate.
 PatternSums oceanVertexPatterns(vec2 xy, float pixelFootprintM, vec2 wind) {
   vec2 p = fieldPosition(xy);
-  float windField = fieldWindAngle(wind.y);
-  WindBins wb = windBins(windField);
+  vec2 fieldTurn;
+  WindBins wb = windBinsOf(wind.y, fieldTurn);
   PatternSums sums;
   sums.mean = vec2(0.0);
   sums.cov = vec3(0.0);
@@ -298,8 +325,8 @@ PatternSums oceanVertexPatterns(vec2 xy, float pixelFootprintM, vec2 wind) {
 // parts add up to 1 however the footprints of pixel and vertex differ.
 SeaSurface oceanSurface(vec2 xy, float footprintM, vec2 wind, PatternSums vertexSums, PatternBands bands) {
   vec2 p = fieldPosition(xy);
-  float windField = fieldWindAngle(wind.y);
-  WindBins wb = windBins(windField);
+  vec2 fieldTurn;  // (cos, sin) of the wind's angle in the field's axes
+  WindBins wb = windBinsOf(wind.y, fieldTurn);
   PatternSums sums = vertexSums;
   // The footprint resolves a prefix of the patterns (largest first; lod grows along the list);
   // the rest it averages out entirely. Of the prefix the vertices took the first patterns,
@@ -319,7 +346,7 @@ SeaSurface oceanSurface(vec2 xy, float footprintM, vec2 wind, PatternSums vertex
   vec3 cov = sums.cov + vec3(averaged.xy, 0.0);
   // Faded-out waves (12-20 km): what the mean normal no longer shows goes into the BRDF.
   float a = uPatternAmplitude;
-  vec2 meanWind = rotate2(sums.mean, -windField);
+  vec2 meanWind = turn2(sums.mean, vec2(fieldTurn.x, -fieldTurn.y));
   cov += (1.0 - a * a) * vec3(meanWind * meanWind, meanWind.x * meanWind.y);
   SeaSurface r;
   r.meanSlope = frameVector(a * sums.mean);

@@ -69,7 +69,8 @@ layout(binding = OG_UNIT_CAUSTIC_CURVATURE) uniform sampler2DArray uCausticCurva
 // depths; longer waves focus far deeper): one lookup per pattern and wind bin.
 float causticCurvature(vec2 xy, float footprintM, vec2 wind) {
   vec2 p = fieldPosition(xy);
-  WindBins wb = windBins(fieldWindAngle(wind.y));
+  vec2 fieldTurn;
+  WindBins wb = windBinsOf(wind.y, fieldTurn);
   float traceH = 0.0;
   for (int j = 0; j < CAUSTIC_PATTERNS; ++j) {
     int i = PATTERN_COUNT - CAUSTIC_PATTERNS + j;

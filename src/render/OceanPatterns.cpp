@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <span>
 #include <limits>
 #include <optional>
@@ -382,7 +383,34 @@ void OceanPatterns::setUniforms(const gl::Program& program, const ocean::OceanFr
   program.set("uPatternFirst", firstPattern_);
 }
 
-void OceanPatterns::setConstantBands(const gl::Program& program, double speedMs) const {
+namespace {
+
+// The wind's and its bin's uniforms of PATTERN_CONSTANT_WIND: what wind.glsl's localWind reads
+// from the one-cell texture (render/WindTextures: the vector's float components; a calm has
+// azimuth 0, as atan2Safe gives it), and patterns.glsl's windBins(fieldWindAngle(azimuth)) with
+// one bin, in double.
+void setConstantWindBin(const gl::Program& program, double speedMs, double towardsRad, double fieldRotationRad) {
+  const double pi = std::numbers::pi;
+  const double u = static_cast<float>(speedMs * std::sin(towardsRad)), v = static_cast<float>(speedMs * std::cos(towardsRad));
+  const double azimuth = u != 0.0 || v != 0.0 ? std::atan2(u, v) : 0.0;
+  program.set("uWindConst", glm::vec4(static_cast<float>(std::hypot(u, v)), static_cast<float>(azimuth),
+                                      static_cast<float>(std::sin(azimuth)), static_cast<float>(std::cos(azimuth))));
+  const double thetaField = 0.5 * pi - azimuth - std::remainder(fieldRotationRad, 2.0 * pi);
+  double b = thetaField / (0.25 * pi);
+  b -= 8.0 * std::floor(b / 8.0);
+  const int bin = static_cast<int>(std::floor(b + 0.5)) & 7;
+  const double binAngle = bin * 0.25 * pi;
+  program.set("uWindBinConst", bin);
+  program.set("uWindBinTurnsConst",
+              glm::vec4(static_cast<float>(std::cos(binAngle)), static_cast<float>(std::sin(binAngle)),
+                        static_cast<float>(std::cos(binAngle - thetaField)), static_cast<float>(std::sin(binAngle - thetaField))));
+  program.set("uWindFieldTurnConst", glm::vec2(static_cast<float>(std::cos(thetaField)), static_cast<float>(std::sin(thetaField))));
+}
+
+}  // namespace
+
+void OceanPatterns::setConstantWind(const gl::Program& program, double speedMs, double towardsRad,
+                                    double fieldRotationRad) const {
   // patterns.glsl's patternTable: the two speed columns around the wind, mixed.
   const double c = std::clamp(speedMs, 0.0, static_cast<double>(ocean::PatternTables::kSpeeds - 1));
   const int c0 = std::min(static_cast<int>(c), ocean::PatternTables::kSpeeds - 2);
@@ -413,6 +441,7 @@ void OceanPatterns::setConstantBands(const gl::Program& program, double speedMs)
     glProgramUniform2fv(program.id(), at, ocean::kPatternCount, bands.data());
   if (const GLint at = program.location("uPatternAveragedFromConst"); at >= 0)
     glProgramUniform3fv(program.id(), at, ocean::kPatternCount + 1, averaged.data());
+  setConstantWindBin(program, speedMs, towardsRad, fieldRotationRad);
 }
 
 void OceanPatterns::bind() const {

@@ -64,9 +64,12 @@ class OceanPatterns {
   /// amplitude of the resolved waves, [0, 1].
   void setUniforms(const gl::Program& program, const ocean::OceanFrame* frame, double amplitude) const;
 
-  /// Sets patterns.glsl's PATTERN_CONSTANT_WIND uniforms on `program`: its patternBands at a
-  /// wind of `speedMs` (m/s) over the whole sea, from the tables as the shader reads them.
-  void setConstantBands(const gl::Program& program, double speedMs) const;
+  /// Sets the PATTERN_CONSTANT_WIND uniforms (ocean/patterns.glsl, ocean/wind.glsl) on
+  /// `program` for one wind over the whole sea, `speedMs` (m/s, >= 0) blowing towards
+  /// `towardsRad` (clockwise from north), the field turned by `fieldRotationRad` from the
+  /// ocean frame: its patternBands from the tables as the shader reads them, the wind as
+  /// wind.glsl's localWind would find it, and its one bin of the patterns (the nearest).
+  void setConstantWind(const gl::Program& program, double speedMs, double towardsRad, double fieldRotationRad) const;
 
   /// The defines programs including shaders/ocean/patterns.glsl need.
   [[nodiscard]] static std::vector<std::string> shaderDefines();

@@ -380,7 +380,8 @@ void OceanRenderer::prepare(const gl::Program& p, const geo::CameraView& view, i
   if ((features & kFeatureWaterVolume) != 0) caustics_.bind();
   patterns.bind();
   patterns.setUniforms(p, &frame, amplitudeScale);
-  if (programSet_ == 1) patterns.setConstantBands(p, wind.constantSpeedMs());
+  if (programSet_ == 1)
+    patterns.setConstantWind(p, wind.constantSpeedMs(), glm::radians(wind.constantTowardsDeg()), frame.fieldRotationRad());
   p.set("uLightingTerms", lightingTerms_);
   wind.bind(p);
 }
