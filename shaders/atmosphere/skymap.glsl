@@ -14,8 +14,8 @@
 //       filtered over the footprint given by the two stereographic-space gradients dUdx, dUdy
 //       (the axes of the filter ellipse, e.g. Bruneton 2010 Fig. 9: 2 sigma_x dU/dzeta_x and
 //       2 sigma_y dU/dzeta_y; pass zeros for a point sample), with textureGrad: hardware
-//       anisotropy on a GPU; on llvmpipe one lookup in the frame layer's rip-map (SKY_RIP_MAP)
-//       where the view reads the frame layer, else up to 4 lookups along the ellipse
+//       anisotropy on a GPU; on llvmpipe two lookups in the frame layer's radial sums
+//       (SKY_RADIAL_SUMS) where the view reads the frame layer, else up to 4 lookups along the ellipse
 //       (uSkyFilterProbes; Atmosphere::chooseSkyFilter). sunZenith: the Sun's zenith angle
 //       at the surface point, radians [0, pi] (beyond 105° the last, dark layer is used);
 //       sunAzimuthCS: (cos, sin) of the Sun's azimuth in the same local frame, counter-clockwise
@@ -71,26 +71,42 @@ vec3 skyMapLayerFiltered(vec2 tc, float layer, vec2 gx, vec2 gy) {
   return sum / float(n);
 }
 
-#ifdef SKY_RIP_MAP
-// The frame layer's radial rip-map (render/SkyRipMap, atmosphere/skymap_rip.comp): layer j
-// blurred along the map's radial direction by 2^j texels of every mip level.
-layout(binding = OG_UNIT_SKY_RIP_MAP) uniform sampler2DArray uSkyRipMap;
+#ifdef SKY_RADIAL_SUMS
+// The frame layer's radial sums (render/SkyRadialSums, atmosphere/skymap_radial.comp): the sky's
+// integral along each radius of the map, polar (x the azimuth over a turn, y |u| over
+// SKY_RADIAL_MAX_RHO), less the radiance below the horizon, uSkyBelowHorizon.
+layout(binding = OG_UNIT_SKY_RADIAL_SUMS) uniform sampler2D uSkyRadialSums;
+uniform vec3 uSkyBelowHorizon;
 
-// The frame layer over the footprint with axes gx, gy (texture space) in one lookup: the layer
-// whose radial blur matches the ellipse's radial extent over its tangential one (nearest power
-// of 2), read with the gradients' radial parts shrunk by that blur, so that the isotropic
-// lookup's level of detail follows what is left (the tangential extent, or radial / 8 for
-// longer ellipses). Reflected footprints stretch radially (atmosphere/skymap_rip.comp).
-vec3 skyRipMapFiltered(vec2 tc, vec2 gx, vec2 gy) {
-  vec2 centred = tc - 0.5;
-  float r = length(centred);
-  vec2 radial = r > 1e-6 ? centred / r : vec2(1.0, 0.0);
-  vec2 along = vec2(dot(gx, radial), dot(gy, radial));                              // radial parts
-  vec2 across = vec2(dot(gx, vec2(-radial.y, radial.x)), dot(gy, vec2(-radial.y, radial.x)));
-  float layers = float(textureSize(uSkyRipMap, 0).z - 1);
-  float j = clamp(round(0.5 * log2(max(dot(along, along), 1e-20) / max(dot(across, across), 1e-20))), 0.0, layers);
-  float shrink = exp2(-j) - 1.0;
-  return textureGrad(uSkyRipMap, vec3(tc, j), gx + shrink * along.x * radial, gy + shrink * along.y * radial).rgb;
+// The frame layer over the footprint with axes gx, gy (texture space) in two lookups: the
+// reflected footprints are stretched along the map's radius (atmosphere/skymap_radial.comp), so
+// the sky is averaged over the footprint's radial extent exactly, as a difference of the sums at
+// its two ends, at the level of detail of its tangential extent (the probes' isotropic width
+// along the ellipse). A stretch shorter than a texel of that level is widened to one: the
+// difference then interpolates the sky linearly, as a bilinear lookup would. A stretch across
+// the zenith adds the sums of its two sides.
+vec3 skyRadialSumsFiltered(vec2 tc, vec2 gx, vec2 gy) {
+  float toU = 2.0 * SKYMAP_EXTENT;  // texture space -> u (skyMapRadianceStereo's scale)
+  vec2 u = (tc - 0.5) * toU;
+  float rho = length(u);
+  vec2 radial = rho > 1e-6 ? u / rho : vec2(1.0, 0.0);
+  vec2 across = vec2(-radial.y, radial.x);
+  float alongU = length(vec2(dot(gx, radial), dot(gy, radial))) * toU;
+  float acrossU = length(vec2(dot(gx, across), dot(gy, across))) * toU;
+  // The level whose texels span the footprint's width along the radius. Texels are square in u
+  // on the horizon's circle; inside it they are narrower around (by rho), so there the sky is
+  // blurred across the radius a little less than the footprint is wide: the level that blurs
+  // around by the full width blurs along the radius by 1/rho of it, which brightened the sea
+  // below the horizon's reflection (from 2 m at sunset: 6.8 % of pixels over 2 levels from the
+  // probes' limit, against 0.3 % so).
+  float perU = float(textureSize(uSkyRadialSums, 0).y) / SKY_RADIAL_MAX_RHO;  // texels per unit of u
+  float lod = max(log2(max(acrossU * perU, 1e-8)), 0.0);
+  float stretch = max(alongU, exp2(lod) / perU);
+  float rho1 = rho - 0.5 * stretch, rho2 = rho + 0.5 * stretch;
+  float phi = atan(radial.y, radial.x) * (1.0 / 6.28318530717959);
+  vec3 c2 = textureLod(uSkyRadialSums, vec2(phi, min(rho2, SKY_RADIAL_MAX_RHO) / SKY_RADIAL_MAX_RHO), lod).rgb;
+  vec3 c1 = textureLod(uSkyRadialSums, vec2(rho1 < 0.0 ? phi + 0.5 : phi, min(abs(rho1), SKY_RADIAL_MAX_RHO) / SKY_RADIAL_MAX_RHO), lod).rgb;
+  return (c2 - sign(rho1) * c1) / stretch + uSkyBelowHorizon;
 }
 #endif
 
@@ -106,8 +122,8 @@ vec3 skyMapRadianceStereo(vec2 u, float sunZenith, vec2 sunAzimuthCS, vec2 dUdx,
   // A view whose Sun zenith angle hardly varies (the sea from a few metres: the horizon is a
   // few km away) reads the two layers around the camera's, blended once per frame: one
   // filtered lookup instead of two.
-#ifdef SKY_RIP_MAP
-  return skyRipMapFiltered(tc, gx, gy);
+#ifdef SKY_RADIAL_SUMS
+  return skyRadialSumsFiltered(tc, gx, gy);
 #else
   return skyMapLayerFiltered(tc, float(layers), gx, gy);
 #endif

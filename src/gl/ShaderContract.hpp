@@ -30,7 +30,7 @@ enum TextureUnit : unsigned {
   kUnitImageryLayers = 17,
   kUnitLandMask = 18,            ///< terrain/landmask.glsl (render/LandMaskTexture)
   kUnitOpenSea = 19,             ///< render/globe.frag uOpenSea (render/OpenSeaMap)
-  kUnitSkyRipMap = 20,           ///< atmosphere/skymap.glsl SKY_RIP_MAP (render/SkyRipMap)
+  kUnitSkyRadialSums = 20,       ///< atmosphere/skymap.glsl SKY_RADIAL_SUMS (render/SkyRadialSums)
   kUnitCausticCurvature = 21,    ///< ocean/water_volume.glsl uCausticCurvature (render/WaterVolume)
   kUnitLandMaskFine = 22,        ///< terrain/landmask.glsl uLandMaskFine (render/LandMaskTexture)
   kUnitSeaSurface = 23,          ///< ocean/sea_surface.glsl uSeaSurface (render/SeaSurfaceBuffer)

@@ -171,20 +171,18 @@ std::filesystem::path Atmosphere::defaultCacheDirectory() {
 SkyFilter Atmosphere::chooseSkyFilter() {
   std::string forced;
   if (const char* e = std::getenv("OCEANGLOBE_SKY_FILTER"); e && *e) forced = e;
-  if (!forced.empty() && forced != "hardware" && forced != "probes" && forced != "rip" && forced != "single" &&
+  if (!forced.empty() && forced != "hardware" && forced != "probes" && forced != "radial" && forced != "single" &&
       forced != "probes9")
-    throw InputError("OCEANGLOBE_SKY_FILTER: '" + forced + "' is not hardware, rip, probes, probes9 or single");
+    throw InputError("OCEANGLOBE_SKY_FILTER: '" + forced + "' is not hardware, radial, probes, probes9 or single");
   const bool software = gl::isSoftwareRenderer();
   if (forced == "single") return {1, false, 1.0f, "forced single lookup (OCEANGLOBE_SKY_FILTER)"};
-  if (forced == "rip")
-    // One lookup in the frame layer's rip-map where a view reads it (render/SkyRipMap), else up
-    // to 4 probes: ~20 % less ocean pass at sea-4m, but the sea_2m_low_sun golden's share of
-    // pixels over 2 levels goes 2 % -> 8.9 % (docs/performance.md), so not the default yet.
-    return {4, true, 1.0f, "forced rip-map, else up to 4 lookups (OCEANGLOBE_SKY_FILTER)"};
-  if (forced == "probes" || (forced.empty() && software))
-    // At most 4 (the paper's 9 less than a level apart at 8 bits: docs/performance.md).
-    return {4, false, 1.0f, forced.empty() ? "CPU rasteriser: up to 4 isotropic lookups (Bruneton 2010 7.3)"
-                                           : "forced up to 4 lookups (OCEANGLOBE_SKY_FILTER)"};
+  if (forced == "radial" || (forced.empty() && software))
+    // Two lookups in the frame layer's radial sums where a view reads that layer
+    // (render/SkyRadialSums), else up to 4 lookups along the ellipse (at most 4: the paper's 9
+    // are less than a level apart at 8 bits, docs/performance.md).
+    return {4, true, 1.0f, forced.empty() ? "CPU rasteriser: radial sums of the frame layer, else up to 4 isotropic lookups (Bruneton 2010 7.3)"
+                                          : "forced radial sums, else up to 4 lookups (OCEANGLOBE_SKY_FILTER)"};
+  if (forced == "probes") return {4, false, 1.0f, "forced up to 4 lookups (OCEANGLOBE_SKY_FILTER)"};
   if (forced == "probes9") return {9, false, 1.0f, "forced up to 9 lookups, the paper's (OCEANGLOBE_SKY_FILTER)"};
   GLfloat most = 1.0f;
   glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &most);
@@ -397,7 +395,10 @@ void Atmosphere::computeSkyMaps() {
 void Atmosphere::bind(const gl::Program& program) const {
   setParameters(program, parameters_);
   program.set("uSkyFilterProbes", skyFilter_.probes);
-  if (rip_.ready()) rip_.bind();
+  if (radial_.ready()) {
+    radial_.bind();
+    radial_.setUniforms(program);
+  }
   glBindTextureUnit(gl::kUnitAtmTransmittance, transmittance_.id());
   glBindTextureUnit(gl::kUnitAtmScattering, scattering_.id());
   glBindTextureUnit(gl::kUnitAtmSingleMie, singleMie_.id());
@@ -424,7 +425,7 @@ void Atmosphere::prepareFrameSkyLayer(double sunZenithRad) const {
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
   gl::checkErrors("Atmosphere::prepareFrameSkyLayer");
-  if (skyFilter_.ripMap) rip_.update(s.skyMapSize, sunZenithRad);
+  if (skyFilter_.radialSums) radial_.update(skyMaps_.id(), s.skyMapLayers, sunZenithRad);
 }
 
 void Atmosphere::bindSkyMaps() const {

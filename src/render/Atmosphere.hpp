@@ -13,7 +13,7 @@
 #include "atmosphere/Reference.hpp"
 #include "gl/Objects.hpp"
 #include "gl/Shader.hpp"
-#include "render/SkyRipMap.hpp"
+#include "render/SkyRadialSums.hpp"
 
 namespace og::render {
 
@@ -28,9 +28,9 @@ struct AtmosphereOptions {
 /// inside the elliptical filter support"). Chosen in one place, Atmosphere::chooseSkyFilter.
 struct SkyFilter {
   int probes = 1;             ///< most textureGrad lookups along the ellipse's major axis (1 or 4)
-  /// The frame layer's rip-map (render/SkyRipMap): one lookup for the views that read the frame
-  /// layer (the sea from below ~1 km), the probes elsewhere. On CPU rasterisers.
-  bool ripMap = false;
+  /// The frame layer's radial sums (render/SkyRadialSums): two lookups for the views that read
+  /// the frame layer (the sea from below ~8 km), the probes elsewhere. On CPU rasterisers.
+  bool radialSums = false;
   float maxAnisotropy = 1.0f; ///< the sky maps' sampler anisotropy (hardware filtering)
   std::string reason;         ///< why, for logs and `info`
 };
@@ -56,15 +56,16 @@ class Atmosphere {
 
   /// The sky filter for the current context: on a GPU the sampler's hardware anisotropy (up to
   /// 16x), which filters the ellipse in one lookup; on a CPU rasteriser (llvmpipe: anisotropic
-  /// filtering there is ~20x slower and blurs wrongly, docs/atmosphere.md) the paper's §7.3
-  /// average of isotropic lookups spread along the ellipse's major axis (as many as its
-  /// elongation, at most 9: SkyFilter::probes). The environment
-  /// variable OCEANGLOBE_SKY_FILTER = hardware | probes | single forces one (for measurements);
-  /// any other value throws og::InputError.
+  /// filtering there is ~20x slower and blurs wrongly, docs/atmosphere.md) the frame layer's
+  /// radial sums where a view reads that layer (two lookups, docs/ocean.md), elsewhere the
+  /// paper's §7.3 average of isotropic lookups spread along the ellipse's major axis (as many as
+  /// its elongation, at most 4: SkyFilter::probes). The environment variable
+  /// OCEANGLOBE_SKY_FILTER = hardware | radial | probes | probes9 | single forces one (for
+  /// measurements); any other value throws og::InputError.
   static SkyFilter chooseSkyFilter();
   [[nodiscard]] const SkyFilter& skyFilter() const { return skyFilter_; }
-  /// The frame layer's rip-map as last prepared (prepareFrameSkyLayer), for tests.
-  [[nodiscard]] const SkyRipMap& skyRipMap() const { return rip_; }
+  /// The frame layer's radial sums as last prepared (prepareFrameSkyLayer), for tests.
+  [[nodiscard]] const SkyRadialSums& skyRadialSums() const { return radial_; }
 
   /// Sets `program`'s uAtmosphere uniforms and the sky filter's uSkyFilterProbes
   /// (skymap.glsl) and binds the tables to units 2-5 (model.glsl).
@@ -74,7 +75,7 @@ class Atmosphere {
   /// Fills the sky maps' frame layer (the array's last) with the maps at Sun zenith angle
   /// `sunZenithRad` (the two layers around it blended, every mip level), for shaders built with
   /// SKY_FRAME_LAYER (skymap.glsl), which read it alone: views whose Sun zenith hardly varies.
-  /// With SkyFilter::ripMap also its radial rip-map (render/SkyRipMap), when the Sun moved.
+  /// With SkyFilter::radialSums also its radial sums (render/SkyRadialSums), when the Sun moved.
   void prepareFrameSkyLayer(double sunZenithRad) const;
 
   [[nodiscard]] const atmosphere::Parameters& parameters() const { return parameters_; }
@@ -117,7 +118,7 @@ class Atmosphere {
   gl::Texture singleMie_;
   gl::Texture skyMaps_;
   mutable gl::Program frameLayer_;  ///< atmosphere/skymap_frame.comp, compiled on first use
-  mutable SkyRipMap rip_;           ///< the frame layer prefiltered radially (SkyFilter::ripMap)
+  mutable SkyRadialSums radial_;    ///< the frame layer summed along its radii (SkyFilter::radialSums)
   gl::Texture skyIrradiance_;
 };
 

@@ -138,7 +138,7 @@ std::vector<std::string> OceanRenderer::featureDefines(unsigned features) const 
   if ((features & kFeatureCoastTest) == 0) d.emplace_back("SEA_NO_COAST_TEST");
   if ((features & kFeatureShadows) == 0) d.emplace_back("SHADOWS_OFF");
   if ((features & kFeatureFrameSky) != 0) d.emplace_back("SKY_FRAME_LAYER");
-  if ((features & kFeatureFrameSky) != 0 && atmosphere_->skyFilter().ripMap) d.emplace_back("SKY_RIP_MAP");
+  if ((features & kFeatureFrameSky) != 0 && atmosphere_->skyFilter().radialSums) d.emplace_back("SKY_RADIAL_SUMS");
   return d;
 }
 

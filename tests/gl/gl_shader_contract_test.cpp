@@ -62,7 +62,7 @@ TEST(ShaderContract, EverySamplerOfTheFrameIsNamedInTheContract) {
                      og::gl::kUnitFresnelRamp, og::gl::kUnitShadowMap,
                      og::gl::kUnitPatternDisplacement, og::gl::kUnitPatternSlopes, og::gl::kUnitImageryDay,
                      og::gl::kUnitImageryNight, og::gl::kUnitImageryLayers, og::gl::kUnitLandMask,
-                     og::gl::kUnitImageryTiles, og::gl::kUnitOpenSea, og::gl::kUnitSkyRipMap,
+                     og::gl::kUnitImageryTiles, og::gl::kUnitOpenSea, og::gl::kUnitSkyRadialSums,
                      og::gl::kUnitCausticCurvature, og::gl::kUnitLandMaskFine, og::gl::kUnitSkyLow,
                      og::gl::kUnitAerialTable, og::gl::kUnitTerrainAerialTable})
     EXPECT_TRUE(units.insert(u).second) << "unit " << u << " named twice";

@@ -1,0 +1,46 @@
+#version 450 core
+// The sky maps' radial sums (render/SkyRadialSums, read by atmosphere/skymap.glsl with
+// SKY_RADIAL_SUMS): the frame layer (the last of uSkyMap, atmosphere/skymap_frame.comp) in polar
+// coordinates of the stereographic map, x the azimuth (uSums' width over a turn, counter-clockwise
+// from the map's +x, where the Sun lies), y the radius rho in [0, SKY_RADIAL_MAX_RHO]. Texel
+// (i, j) holds the sky's integral along the radius from the zenith to its centre,
+//   C(rho, phi) = integral_0^rho (S(r, phi) - B) dr,
+// S the frame layer's radiance, B its value below the horizon (constant there: C is constant
+// beyond the horizon's band, so no radius past the table is ever missed). The mip levels (made
+// by GL from this level) are C of the sky blurred over their texels (a box commutes with the
+// integral), so the average of the sky along any radial stretch at a level of detail is two
+// lookups, (C(rho2) - C(rho1)) / (rho2 - rho1) + B: the sea's reflected footprints are ellipses
+// stretched radially (a slope along the view's azimuth tilts the mirror ray in elevation, one
+// across it turns its azimuth by only ~2 slope x its elevation), so one radial stretch at the
+// level of the footprint's width filters the ellipse, however long, where the paper's §7.3
+// averages up to nine lookups along it (Bruneton, Neyret & Holzschuch 2010).
+// One invocation a column: the integral is a running sum along it (midpoint rule on a grid of
+// half-texel steps, so every texel's centre gets its exact share).
+layout(local_size_x = 64) in;
+#include "atmosphere/skymap_common.glsl"
+layout(binding = OG_UNIT_SKY_MAP) uniform sampler2DArray uSkyMap;
+layout(binding = 0, rgba32f) writeonly uniform image2D uSums;  // level 0
+uniform vec3 uBelowHorizon;  // B: the frame layer's radiance below the horizon
+
+
+void main() {
+  ivec2 size = imageSize(uSums);
+  int column = int(gl_GlobalInvocationID.x);
+  if (column >= size.x) return;
+  float phi = (float(column) + 0.5) / float(size.x) * 6.28318530717959;
+  vec2 dir = vec2(cos(phi), sin(phi));
+  float frameLayer = float(textureSize(uSkyMap, 0).z - 1);
+  float scale = 0.5 / SKYMAP_EXTENT;  // u -> texture coordinates (atmosphere/skymap.glsl)
+  float halfStep = 0.5 * SKY_RADIAL_MAX_RHO / float(size.y);
+  vec3 sum = vec3(0.0);
+  for (int j = 0; j < size.y; ++j) {
+    // The two half-texel stretches before texel j's centre, each by its midpoint.
+    for (int h = 0; h < 2; ++h) {
+      float rho = (2.0 * float(j) + float(h) - 0.5) * halfStep;
+      if (rho < 0.0) continue;  // before texel 0's centre lies one half-texel stretch only
+      vec2 tc = dir * rho * scale + 0.5;
+      sum += (textureLod(uSkyMap, vec3(tc, frameLayer), 0.0).rgb - uBelowHorizon) * halfStep;
+    }
+    imageStore(uSums, ivec2(column, j), vec4(sum, 0.0));
+  }
+}
