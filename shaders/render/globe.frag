@@ -461,21 +461,24 @@ void main() {
 // The sky below the ceiling (no ray of the pixel on the globe): the lower-resolution pass's sky;
 // only pixels near the Sun's disc trace their four rays, for its coverage and the transmittance
 // towards it (a loop of a trip there: a GPU skips it elsewhere; llvmpipe runs its body once,
-// masked, whatever the condition). What the general part below computes for such pixels,
-// without its per-sample bookkeeping (loops over the samples), which cost llvmpipe a sixth of
-// the globe pass at 1280x720.
+// masked, whatever the condition, so the loop is compiled in only for a second draw over the
+// Sun's box, GLOBE_SKY_SUN_DISC: GlobeRenderer::drawSunDisc). What the general part below
+// computes for such pixels, without its per-sample bookkeeping (loops over the samples), which
+// cost llvmpipe a sixth of the globe pass at 1280x720.
 void main() {
   vec3 centreDir = normalize(uForward + vNdc.x * uTanHalfFov.x * uRight + vNdc.y * uTanHalfFov.y * uUp);
   vec3 radiance = 4.0 * textureLod(uSkyLow, gl_FragCoord.xy * uSkyLowScale, 0.0).rgb;
   // A pixel spans at most this angle (its diagonal at the centre of the frame), rad.
   float pixelRad = length(uPixelNdc * uTanHalfFov);
   float cosNear = cos(uAtmosphere.sunAngularRadius + pixelRad);
+#ifdef GLOBE_SKY_SUN_DISC  // drawn again over the Sun's box only (GlobeRenderer::drawSunDisc)
   for (int k = 0; k < (dot(centreDir, uSunDir) > cosNear ? 1 : 0); ++k) {
     SkyView sky = skyOf(traceRays());
     float r = uAtmosphere.bottomRadius + uCamAltitude;
     vec3 transmittance = transmittanceToTop(uAtmosphere, uAtmTransmittance, r, sky.mu);
     radiance += sky.sunDisc * transmittance * sunDiscRadiance(uAtmosphere);
   }
+#endif
   fragRadiance = vec4(radiance * 0.25, 0.0);
   fragAux = vec4(0.0);
 }

@@ -365,8 +365,9 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
       defines.insert(defines.end(), {"GLOBE_PART 2", "GLOBE_COMPUTE"});
     } else if (variant == kSkyLowPass) {
       defines.emplace_back("GLOBE_PART 8");
-    } else if (variant == kSkyLowPart) {
+    } else if (variant == kSkyLowPart || variant == kSkyLowSunPart) {
       defines.insert(defines.end(), {"GLOBE_PART 1", "GLOBE_SKY_LOW"});
+      if (variant == kSkyLowSunPart) defines.emplace_back("GLOBE_SKY_SUN_DISC");
     } else {
       static constexpr std::array<int, 6> kPart{1, 2, 3, 7, 6, 5};
       defines.push_back("GLOBE_PART " + std::to_string(kPart.at(static_cast<std::size_t>(variant - kGlobePart0 - 1))));
@@ -633,17 +634,54 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
     const auto draw = [] { glDrawArrays(GL_TRIANGLES, 0, 3); };
     if (!countPartSamples_) {
       draw();
-      continue;
+    } else {
+      static constexpr std::array<const char*, 6> kNames{"sky", "edge", "surface", "land", "sea", "open sea"};
+      partSamples_.emplace_back(kNames.at(static_cast<std::size_t>(parts[k] - kGlobePart0 - 1)),
+                                gl::queryResult(GL_SAMPLES_PASSED, draw));
     }
-    static constexpr std::array<const char*, 6> kNames{"sky", "edge", "surface", "land", "sea", "open sea"};
-    partSamples_.emplace_back(kNames.at(static_cast<std::size_t>(parts[k] - kGlobePart0 - 1)),
-                              gl::queryResult(GL_SAMPLES_PASSED, draw));
+    if (readsSkyLow) drawSunDisc(view, f);  // over the sky just drawn without it
   }
   if (!listedCounts.empty()) shadeScatteredParts(view, f, grid, listedCounts);
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_SCISSOR_TEST);
   glDepthMask(grid ? GL_FALSE : GL_TRUE);  // as the caller had it
   if (grid) glEndConditionalRender();
+}
+
+std::optional<std::array<int, 4>> sunDiscScissor(const geo::CameraView& view, int width, int height,
+                                                 const glm::dvec3& sunDirectionEcef, double sunRadiusRad) {
+  // globe.frag's sky part adds the disc where a pixel's centre ray lies within the disc's
+  // radius plus a pixel's diagonal at the frame's centre (its largest): that cone, widened by
+  // half, plus two pixels of margin.
+  const double tanY = std::tan(0.5 * view.verticalFovRad), tanX = tanY * view.aspect;
+  const double pixelRad = std::hypot(2.0 * tanX / width, 2.0 * tanY / height);
+  const double coneRad = 1.5 * (sunRadiusRad + pixelRad);
+  const glm::dvec3 sun = glm::normalize(sunDirectionEcef);
+  if (glm::dot(sun, view.forward) < -std::sin(coneRad)) return std::array<int, 4>{0, 0, 0, 0};  // behind
+  glm::dvec4 box(1e30, 1e30, -1e30, -1e30);
+  if (!addCone(view, width, height, sun, coneRad, box)) return std::nullopt;  // reaches behind the eye
+  const int x0 = std::clamp(static_cast<int>(std::floor(box.x)) - 2, 0, width);
+  const int y0 = std::clamp(static_cast<int>(std::floor(box.y)) - 2, 0, height);
+  const int x1 = std::clamp(static_cast<int>(std::ceil(box.z)) + 2, x0, width);
+  const int y1 = std::clamp(static_cast<int>(std::ceil(box.w)) + 2, y0, height);
+  return std::array<int, 4>{x0, y0, x1 - x0, y1 - y0};
+}
+
+void GlobeRenderer::drawSunDisc(const geo::CameraView& view, const FrameInput& f) {
+  const std::optional<std::array<int, 4>> box =
+      sunDiscBoxOn_ ? sunDiscScissor(view, f.width, f.height, f.sunDirectionEcef, atmosphere_->parameters().sunAngularRadiusRad)
+                    : std::nullopt;
+  if (box && ((*box)[2] == 0 || (*box)[3] == 0)) return;
+  const gl::Program& p = globeProgram(true, kSkyLowSunPart);
+  setGlobeUniforms(p, view, f);
+  p.set("uSkyLowScale", skyLowScale_);
+  p.use();
+  if (box) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor((*box)[0], (*box)[1], (*box)[2], (*box)[3]);
+  }
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_SCISSOR_TEST);  // (below the ceiling nothing else scissors)
 }
 
 std::uint32_t GlobeRenderer::listedPixelCount() const {

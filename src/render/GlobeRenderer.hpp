@@ -100,6 +100,12 @@ std::array<int, 4> globeScissor(const geo::CameraView& view, int width, int heig
 /// pixels over the screen against the ellipsoid, widened by that step and two
 /// pixels; empty (width 0) when none meets it.
 std::array<int, 4> ellipsoidScissor(const geo::CameraView& view, int width, int height);
+/// The box (x, y, width, height, pixels, lower-left origin) holding every pixel whose centre ray
+/// lies within the Sun's disc (angular radius `sunRadiusRad`) plus a pixel's largest angle:
+/// where render/globe.frag's sky part below the grid's ceiling adds the disc. Empty (width 0)
+/// when the Sun is behind the eye; none when the cone around it reaches behind the eye.
+std::optional<std::array<int, 4>> sunDiscScissor(const geo::CameraView& view, int width, int height,
+                                                 const glm::dvec3& sunDirectionEcef, double sunRadiusRad);
 inline constexpr int kHitScanPx = 8;
 
 class GlobeRenderer {
@@ -225,6 +231,9 @@ class GlobeRenderer {
   /// is finer than kSkyLowTexelRad / 3 (drawSkyLow: 1280 x 720 and up at the usual fields of
   /// view); false computes it per pixel (the tests' reference).
   void setSkyLow(bool on) { skyLowOn_ = on; }
+  /// Below 20 km the sky part leaves the Sun's disc out and draws it again only over
+  /// sunDiscScissor's box (drawSunDisc); false: over the whole screen (the tests' reference).
+  void setSunDiscBox(bool on) { sunDiscBoxOn_ = on; }
   /// The globe's edge and surface parts (the limb, the horizon, the coasts: scattered pixels)
   /// listed and shaded by a compute shader (shadeScatteredParts) instead of by fragments, which
   /// on llvmpipe pay a vector of lanes for a lone pixel. On by default on software renderers
@@ -274,10 +283,11 @@ class GlobeRenderer {
   /// first use; 14 the sky at a lower resolution below the ceiling (GLOBE_PART_SKY_LOW) and 15
   /// the sky part that reads it (GLOBE_SKY_LOW); 16 the depth of blocks classed on the CPU
   /// (GLOBE_PART_BLOCK_FILL); 17 the edge part as a compute shader over listed pixels
-  /// (GLOBE_COMPUTE). `variant` in [0, kGlobeVariants). Above the ceiling the
-  /// classifying variants draw the triangles of blocksVao_ (render/blocks.vert).
-  static constexpr int kGlobeVariants = 18;
-  static constexpr int kSkyLowPass = 14, kSkyLowPart = 15, kBlockFill = 16, kListedPixels = 17;
+  /// (GLOBE_COMPUTE); 18 the sky part with the Sun's disc (GLOBE_SKY_SUN_DISC: 15 leaves it
+  /// out), drawn over the Sun's box only (drawSunDisc). `variant` in [0, kGlobeVariants). Above
+  /// the ceiling the classifying variants draw the triangles of blocksVao_ (render/blocks.vert).
+  static constexpr int kGlobeVariants = 19;
+  static constexpr int kSkyLowPass = 14, kSkyLowPart = 15, kBlockFill = 16, kListedPixels = 17, kSkyLowSunPart = 18;
   static constexpr int kClassifyExport = 6, kClassifyExportLandSea = 7;
   /// Part k (1 sky ... 6 open sea) is variant kGlobePart0 + k.
   static constexpr int kGlobePart0 = 7;
@@ -285,6 +295,10 @@ class GlobeRenderer {
   /// land's, the sea's and the open sea's only above 20 km, where they are on.
   [[nodiscard]] std::vector<int> classifyingSteps(bool grid) const;
   [[nodiscard]] std::vector<int> globeParts(bool grid) const;
+  /// Below the ceiling, the sky part's pixels near the Sun's disc again with the disc
+  /// (kSkyLowSunPart) over the sky just drawn without it: scissored to sunDiscScissor's box, or
+  /// over the whole screen where that has none or setSunDiscBox(false).
+  void drawSunDisc(const geo::CameraView& view, const FrameInput& f);
   /// Whether this frame splits the land and the sea off the surface part (landSeaParts_ and
   /// the split pays): their classifying step costs four elevation lookups a pixel, which a
   /// view mostly of the open deep sea (the limb over the Atlantic) does not win back. From an
@@ -338,6 +352,7 @@ class GlobeRenderer {
   gl::RenderTarget skyLow_;  ///< drawSkyLow's texels (RGBA16F, bilinear)
   glm::vec2 skyLowScale_{0.0f};  ///< globe.frag's uSkyLowScale for this frame
   bool skyLowOn_ = true;
+  bool sunDiscBoxOn_ = true;  ///< setSunDiscBox
   int lastSkyLowFactor_ = 1;
   /// Above 20 km: this frame's aerial perspective to sea level by path length and angle to the
   /// Sun (render/aerial_table.comp), which the globe's parts read (AERIAL_TABLE) instead of the

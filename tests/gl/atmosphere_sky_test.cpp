@@ -116,6 +116,43 @@ TEST_F(AtmosphereSky, SkyAtLowResolutionBelowTheCeilingMatchesThePerPixelSky) {
   renderer_->setSkyLow(true);
 }
 
+TEST_F(AtmosphereSky, SunDiscDrawnOverItsBoxKeepsThePicture) {
+  // Below 20 km the low-resolution sky's part leaves the Sun's disc out and draws it again only
+  // over the box around it (GlobeRenderer::drawSunDisc, render::sunDiscScissor): llvmpipe ran
+  // the disc's rays for every sky pixel. Against the disc drawn over the whole sky: the Sun in
+  // the middle of a narrow view, at its right edge (the box clamped to the screen), half out of
+  // it, and behind the eye; bit-identical.
+  struct View { double heading, pitch; };
+  for (const View v : {View{270.0, 3.0}, View{267.0, 3.0}, View{265.5, 3.0}, View{90.0, 3.0}}) {
+    renderer_->setSunDiscBox(false);
+    const Shot reference = shoot(20, -40, 2.0, v.heading, v.pitch, 8, 3.0, 270, 160, 90);
+    renderer_->setSunDiscBox(true);
+    const Shot boxed = shoot(20, -40, 2.0, v.heading, v.pitch, 8, 3.0, 270, 160, 90);
+    EXPECT_GE(renderer_->lastSkyLowFactor(), 3) << "the low-resolution sky is in use";
+    double differs = 0.0, brightest = 0.0;
+    for (int y = 0; y < 90; ++y)
+      for (int x = 0; x < 160; ++x) {
+        differs = std::max(differs, double(glm::length(glm::vec3(reference.at(x, y)) - glm::vec3(boxed.at(x, y)))));
+        brightest = std::max(brightest, double(reference.at(x, y).r));
+      }
+    EXPECT_EQ(differs, 0.0) << "heading " << v.heading;
+    // The disc is there when in view (its radiance is hundreds of times the sky's).
+    if (v.heading > 180.0) EXPECT_GT(brightest, 1.0) << "heading " << v.heading;
+    else EXPECT_LT(brightest, 1.0);
+  }
+  // The box: the disc plus a pixel's angle, widened by half, and two pixels; empty behind.
+  geo::CameraPose pose;
+  pose.position = {20.0, -40.0, 2.0};
+  pose.headingDeg = 270.0;
+  pose.verticalFovDeg = 8.0;
+  const geo::CameraView view = geo::makeCameraView(pose, 160, 90);
+  const auto box = render::sunDiscScissor(view, 160, 90, view.forward, 0.004675);
+  ASSERT_TRUE(box.has_value());
+  EXPECT_GT((*box)[2], 4);
+  EXPECT_LT((*box)[2], 24);  // a cone 1.2° wide in a view 8° tall: 13 pixels and the margins
+  EXPECT_EQ((*render::sunDiscScissor(view, 160, 90, -view.forward, 0.004675))[2], 0);
+}
+
 TEST_F(AtmosphereSky, AerialTableMatchesThePerPixelAerialPerspective) {
   // From 20 km to 500 km up the globe reads the aerial perspective to sea level from a table of
   // path length and angle to the Sun made per frame (GlobeRenderer::drawAerialTable): the limb
