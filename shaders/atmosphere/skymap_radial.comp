@@ -14,14 +14,14 @@
 // across it turns its azimuth by only ~2 slope x its elevation), so one radial stretch at the
 // level of the footprint's width filters the ellipse, however long, where the paper's §7.3
 // averages up to nine lookups along it (Bruneton, Neyret & Holzschuch 2010).
-// One invocation a column: the integral is a running sum along it (midpoint rule on a grid of
-// half-texel steps, so every texel's centre gets its exact share).
+// One invocation a column: the integral is a running sum along it, each stretch between two
+// texels' centres by its midpoint (the texels' common edge; from the zenith to the first
+// centre, half a texel by its own midpoint).
 layout(local_size_x = 64) in;
 #include "atmosphere/skymap_common.glsl"
 layout(binding = OG_UNIT_SKY_MAP) uniform sampler2DArray uSkyMap;
 layout(binding = 0, rgba32f) writeonly uniform image2D uSums;  // level 0
 uniform vec3 uBelowHorizon;  // B: the frame layer's radiance below the horizon
-
 
 void main() {
   ivec2 size = imageSize(uSums);
@@ -31,16 +31,12 @@ void main() {
   vec2 dir = vec2(cos(phi), sin(phi));
   float frameLayer = float(textureSize(uSkyMap, 0).z - 1);
   float scale = 0.5 / SKYMAP_EXTENT;  // u -> texture coordinates (atmosphere/skymap.glsl)
-  float halfStep = 0.5 * SKY_RADIAL_MAX_RHO / float(size.y);
+  float step = SKY_RADIAL_MAX_RHO / float(size.y);
   vec3 sum = vec3(0.0);
   for (int j = 0; j < size.y; ++j) {
-    // The two half-texel stretches before texel j's centre, each by its midpoint.
-    for (int h = 0; h < 2; ++h) {
-      float rho = (2.0 * float(j) + float(h) - 0.5) * halfStep;
-      if (rho < 0.0) continue;  // before texel 0's centre lies one half-texel stretch only
-      vec2 tc = dir * rho * scale + 0.5;
-      sum += (textureLod(uSkyMap, vec3(tc, frameLayer), 0.0).rgb - uBelowHorizon) * halfStep;
-    }
+    float rho = j == 0 ? 0.25 * step : float(j) * step;  // the stretch's midpoint
+    vec2 tc = dir * rho * scale + 0.5;
+    sum += (textureLod(uSkyMap, vec3(tc, frameLayer), 0.0).rgb - uBelowHorizon) * (j == 0 ? 0.5 * step : step);
     imageStore(uSums, ivec2(column, j), vec4(sum, 0.0));
   }
 }
