@@ -85,6 +85,15 @@ uniform vec3 uSkyBelowHorizon;
 // along the ellipse). A stretch shorter than a texel of that level is widened to one: the
 // difference then interpolates the sky linearly, as a bilinear lookup would. A stretch across
 // the zenith adds the sums of its two sides.
+// The sums at radius rho (>= 0) and azimuth phi (turns) at level lod: texel 0's centre lies
+// half a texel of the level from the zenith, and the table clamps to it there; nearer, the sum
+// falls linearly to 0 (the sky is smooth at the zenith), from half a texel of the coarser of
+// the two levels read.
+vec3 skyRadialSumAt(float phi, float rho, float lod, float perU) {
+  float h = 0.5 * exp2(ceil(lod)) / perU;
+  vec3 c = textureLod(uSkyRadialSums, vec2(phi, min(max(rho, h), SKY_RADIAL_MAX_RHO) / SKY_RADIAL_MAX_RHO), lod).rgb;
+  return c * min(rho / h, 1.0);
+}
 vec3 skyRadialSumsFiltered(vec2 tc, vec2 gx, vec2 gy) {
   float toU = 2.0 * SKYMAP_EXTENT;  // texture space -> u (skyMapRadianceStereo's scale)
   vec2 u = (tc - 0.5) * toU;
@@ -99,13 +108,16 @@ vec3 skyRadialSumsFiltered(vec2 tc, vec2 gx, vec2 gy) {
   // around by the full width blurs along the radius by 1/rho of it, which brightened the sea
   // below the horizon's reflection (from 2 m at sunset: 6.8 % of pixels over 2 levels from the
   // probes' limit, against 0.3 % so).
-  float perU = float(textureSize(uSkyRadialSums, 0).y) / SKY_RADIAL_MAX_RHO;  // texels per unit of u
-  float lod = max(log2(max(acrossU * perU, 1e-8)), 0.0);
+  // At most the level whose texels are a quarter of the radius's table: coarser ones hold a
+  // texel or two along it, whose differences vanish.
+  float rows = float(textureSize(uSkyRadialSums, 0).y);
+  float perU = rows / SKY_RADIAL_MAX_RHO;  // texels per unit of u
+  float lod = clamp(log2(max(acrossU * perU, 1e-8)), 0.0, log2(rows) - 2.0);
   float stretch = max(alongU, exp2(lod) / perU);
   float rho1 = rho - 0.5 * stretch, rho2 = rho + 0.5 * stretch;
   float phi = atan(radial.y, radial.x) * (1.0 / 6.28318530717959);
-  vec3 c2 = textureLod(uSkyRadialSums, vec2(phi, min(rho2, SKY_RADIAL_MAX_RHO) / SKY_RADIAL_MAX_RHO), lod).rgb;
-  vec3 c1 = textureLod(uSkyRadialSums, vec2(rho1 < 0.0 ? phi + 0.5 : phi, min(abs(rho1), SKY_RADIAL_MAX_RHO) / SKY_RADIAL_MAX_RHO), lod).rgb;
+  vec3 c2 = skyRadialSumAt(phi, rho2, lod, perU);
+  vec3 c1 = skyRadialSumAt(rho1 < 0.0 ? phi + 0.5 : phi, abs(rho1), lod, perU);
   return (c2 - sign(rho1) * c1) / stretch + uSkyBelowHorizon;
 }
 #endif

@@ -13,8 +13,9 @@
 // seas at grazing angles reflect facets that see the sea, not the horizon's bright sky.
 const Number SKYMAP_EXTENT = 1.1;
 const Number SKYMAP_HORIZON_BAND = 1.02;  // |u|² of the band's outer edge
-// The radial sums' reach in |u| (atmosphere/skymap_radial.comp): past the map's corners
-// (SKYMAP_EXTENT sqrt 2), where clamping to the edge holds the value below the horizon.
+// The radial sums' reach in |u| (atmosphere/skymap_radial.comp): past the horizon's band by more
+// than half a texel of the coarsest level read (skymap.glsl: 32 texels along it, 0.4 in u), so
+// the sums stand still at the table's edge and clamping there loses nothing.
 const Number SKY_RADIAL_MAX_RHO = 1.6;
 const Number SEA_MEAN_FRESNEL = 0.17;     // Bruneton's demo / Proland: avgFresnel
 // Layer k of L holds the Sun at zenith angle k / (L - 1) * SKYMAP_MAX_ZENITH (radians, 105°;

@@ -285,7 +285,7 @@ vec3 patternAveragedFrom(int first, float speedMs) {
 
 // Where oceanSurface finds the per-wind table values: with PATTERN_CONSTANT_WIND (one wind
 // over the whole sea: render/OceanRenderer) the CPU's, the same for every point
-// (OceanPatterns::setConstantBands); else the vertices' (`bands`), or with
+// (OceanPatterns::setConstantWind); else the vertices' (`bands`), or with
 // PATTERN_BANDS_PER_PIXEL (the deferred sea, which has no vertices) the tables themselves,
 // only the entries the pixel's footprint needs.
 #if defined(PATTERN_CONSTANT_WIND)

@@ -9,7 +9,8 @@ layout(binding = OG_UNIT_WIND) uniform sampler2D uWind;
 
 // localWind: the local wind (speed m/s, azimuth radians clockwise from north, the direction it
 // blows towards) at geodetic (latitude, longitude) in radians; windAzimuthSinCos: (sin, cos) of
-// a wind's azimuth.
+// the azimuth of a wind localWind gave (with PATTERN_CONSTANT_WIND the constant one's, whatever
+// is passed).
 #ifdef PATTERN_CONSTANT_WIND
 // One constant wind (render/OceanRenderer's programs for it): the texture's one cell as the CPU
 // computed it (OceanPatterns::setConstantWind), without a lookup, a length, an atan and the

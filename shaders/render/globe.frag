@@ -466,12 +466,13 @@ void main() {
 // computes for such pixels, without its per-sample bookkeeping (loops over the samples), which
 // cost llvmpipe a sixth of the globe pass at 1280x720.
 void main() {
-  vec3 centreDir = normalize(uForward + vNdc.x * uTanHalfFov.x * uRight + vNdc.y * uTanHalfFov.y * uUp);
   vec3 radiance = 4.0 * textureLod(uSkyLow, gl_FragCoord.xy * uSkyLowScale, 0.0).rgb;
-  // A pixel spans at most this angle (its diagonal at the centre of the frame), rad.
+#ifdef GLOBE_SKY_SUN_DISC  // drawn again over the Sun's box only (GlobeRenderer::drawSunDisc)
+  vec3 centreDir = normalize(uForward + vNdc.x * uTanHalfFov.x * uRight + vNdc.y * uTanHalfFov.y * uUp);
+  // A pixel spans at most this angle (its diagonal at the centre of the frame), rad
+  // (render::sunDiscScissor's cone).
   float pixelRad = length(uPixelNdc * uTanHalfFov);
   float cosNear = cos(uAtmosphere.sunAngularRadius + pixelRad);
-#ifdef GLOBE_SKY_SUN_DISC  // drawn again over the Sun's box only (GlobeRenderer::drawSunDisc)
   for (int k = 0; k < (dot(centreDir, uSunDir) > cosNear ? 1 : 0); ++k) {
     SkyView sky = skyOf(traceRays());
     float r = uAtmosphere.bottomRadius + uCamAltitude;

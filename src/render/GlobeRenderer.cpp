@@ -50,6 +50,16 @@ bool addCone(const geo::CameraView& view, int width, int height, const glm::dvec
   }
   return true;
 }
+
+/// `box` (pixels: x0, y0, x1, y1) with two pixels of margin, clamped to the screen (clamped in
+/// double first: a cone's rim just in front of the eye projects arbitrarily far), as a scissor
+/// rectangle (x, y, width, height).
+std::array<int, 4> scissorOf(const glm::dvec4& box, int width, int height) {
+  auto clamped = [](double v, int lo, int hi) { return static_cast<int>(std::clamp(v, double(lo), double(hi))); };
+  const int x0 = clamped(std::floor(box.x) - 2.0, 0, width), y0 = clamped(std::floor(box.y) - 2.0, 0, height);
+  const int x1 = clamped(std::ceil(box.z) + 2.0, x0, width), y1 = clamped(std::ceil(box.w) + 2.0, y0, height);
+  return {x0, y0, x1 - x0, y1 - y0};
+}
 }  // namespace
 
 std::array<int, 4> globeScissor(const geo::CameraView& view, int width, int height,
@@ -74,11 +84,7 @@ std::array<int, 4> globeScissor(const geo::CameraView& view, int width, int heig
       !addCone(view, width, height, sun, 2.0 * atmosphere.sunAngularRadiusRad, box))
     return screen;
   // Two pixels of margin, clamped to the screen (an empty box draws nothing: no globe in view).
-  const int x0 = std::clamp(static_cast<int>(std::floor(box.x)) - 2, 0, width);
-  const int y0 = std::clamp(static_cast<int>(std::floor(box.y)) - 2, 0, height);
-  const int x1 = std::clamp(static_cast<int>(std::ceil(box.z)) + 2, x0, width);
-  const int y1 = std::clamp(static_cast<int>(std::ceil(box.w)) + 2, y0, height);
-  return {x0, y0, x1 - x0, y1 - y0};
+  return scissorOf(box, width, height);
 }
 
 std::array<int, 4> ellipsoidScissor(const geo::CameraView& view, int width, int height) {
@@ -639,7 +645,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
       partSamples_.emplace_back(kNames.at(static_cast<std::size_t>(parts[k] - kGlobePart0 - 1)),
                                 gl::queryResult(GL_SAMPLES_PASSED, draw));
     }
-    if (readsSkyLow) drawSunDisc(view, f);  // over the sky just drawn without it
+    if (readsSkyLow) drawSunDisc(view, f, grid);  // over the sky just drawn without it
   }
   if (!listedCounts.empty()) shadeScatteredParts(view, f, grid, listedCounts);
   glDisable(GL_STENCIL_TEST);
@@ -652,7 +658,7 @@ std::optional<std::array<int, 4>> sunDiscScissor(const geo::CameraView& view, in
                                                  const glm::dvec3& sunDirectionEcef, double sunRadiusRad) {
   // globe.frag's sky part adds the disc where a pixel's centre ray lies within the disc's
   // radius plus a pixel's diagonal at the frame's centre (its largest): that cone, widened by
-  // half, plus two pixels of margin.
+  // half, plus two pixels of margin (scissorOf).
   const double tanY = std::tan(0.5 * view.verticalFovRad), tanX = tanY * view.aspect;
   const double pixelRad = std::hypot(2.0 * tanX / width, 2.0 * tanY / height);
   const double coneRad = 1.5 * (sunRadiusRad + pixelRad);
@@ -660,19 +666,15 @@ std::optional<std::array<int, 4>> sunDiscScissor(const geo::CameraView& view, in
   if (glm::dot(sun, view.forward) < -std::sin(coneRad)) return std::array<int, 4>{0, 0, 0, 0};  // behind
   glm::dvec4 box(1e30, 1e30, -1e30, -1e30);
   if (!addCone(view, width, height, sun, coneRad, box)) return std::nullopt;  // reaches behind the eye
-  const int x0 = std::clamp(static_cast<int>(std::floor(box.x)) - 2, 0, width);
-  const int y0 = std::clamp(static_cast<int>(std::floor(box.y)) - 2, 0, height);
-  const int x1 = std::clamp(static_cast<int>(std::ceil(box.z)) + 2, x0, width);
-  const int y1 = std::clamp(static_cast<int>(std::ceil(box.w)) + 2, y0, height);
-  return std::array<int, 4>{x0, y0, x1 - x0, y1 - y0};
+  return scissorOf(box, width, height);
 }
 
-void GlobeRenderer::drawSunDisc(const geo::CameraView& view, const FrameInput& f) {
+void GlobeRenderer::drawSunDisc(const geo::CameraView& view, const FrameInput& f, bool grid) {
   const std::optional<std::array<int, 4>> box =
       sunDiscBoxOn_ ? sunDiscScissor(view, f.width, f.height, f.sunDirectionEcef, atmosphere_->parameters().sunAngularRadiusRad)
                     : std::nullopt;
   if (box && ((*box)[2] == 0 || (*box)[3] == 0)) return;
-  const gl::Program& p = globeProgram(true, kSkyLowSunPart);
+  const gl::Program& p = globeProgram(grid, kSkyLowSunPart);
   setGlobeUniforms(p, view, f);
   p.set("uSkyLowScale", skyLowScale_);
   p.use();

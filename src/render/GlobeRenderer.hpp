@@ -298,7 +298,7 @@ class GlobeRenderer {
   /// Below the ceiling, the sky part's pixels near the Sun's disc again with the disc
   /// (kSkyLowSunPart) over the sky just drawn without it: scissored to sunDiscScissor's box, or
   /// over the whole screen where that has none or setSunDiscBox(false).
-  void drawSunDisc(const geo::CameraView& view, const FrameInput& f);
+  void drawSunDisc(const geo::CameraView& view, const FrameInput& f, bool grid);
   /// Whether this frame splits the land and the sea off the surface part (landSeaParts_ and
   /// the split pays): their classifying step costs four elevation lookups a pixel, which a
   /// view mostly of the open deep sea (the limb over the Atlantic) does not win back. From an

@@ -130,7 +130,8 @@ class OceanRenderer {
   /// the whole sea (a wind 0.2° off a bin, weight 7e-3, already moves the glitter by 2 % on
   /// average: the threshold is not loose). A constant wind (no
   /// wind layers) along one reads one bin's patterns instead of two (PATTERN_ONE_BIN), and the
-  /// per-wind tables' values from uniforms the CPU sets once (PATTERN_CONSTANT_WIND): the
+  /// wind, its bin and the per-wind tables' values from uniforms the CPU sets once
+  /// (PATTERN_CONSTANT_WIND, OceanPatterns::setConstantWind): the
   /// default westerly, towards 90°, lies along bin 0; a wind layer or a wind between bins, two.
   [[nodiscard]] static bool windAlongOneBin(double towardsRad, double fieldRotationRad);
   /// Whether a wind along one bin may read one bin's patterns (default on); off: two always.
@@ -305,7 +306,8 @@ class OceanRenderer {
   bool deferredWithoutExport_;
   /// The programs that read the wave patterns, each compiled on first use: set 1 with
   /// PATTERN_ONE_BIN and PATTERN_CONSTANT_WIND (a constant wind along one of the patterns'
-  /// direction bins: one bin's lookups, the tables' values as uniforms; windAlongOneBin), set 0
+  /// direction bins: one bin's lookups, the wind, its bin and the tables' values as uniforms;
+  /// windAlongOneBin), set 0
   /// without.
   struct PatternPrograms {
     std::array<gl::Program, 16> variants;    ///< by feature bits

@@ -17,6 +17,7 @@ void SkyRadialSums::update(GLuint skyMapsId, int skyMapLayers, double frameKey) 
     glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   }
   if (fill_.id() == 0) fill_ = gl::Program({{GL_COMPUTE_SHADER, "atmosphere/skymap_radial.comp"}});
+  glBindTextureUnit(gl::kUnitSkyMap, skyMapsId);
   // The frame layer's corner texel lies far below the horizon (|u| = 1.1 sqrt 2): the constant
   // the maps hold there (atmosphere/skymap_common.glsl's skyMapBelowHorizon).
   glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);

@@ -21,8 +21,8 @@ class SkyRadialSums {
   static constexpr int kAzimuths = 512;
   static constexpr int kRadii = 128;
 
-  /// Refills the sums from the frame layer of the sky maps bound at gl::kUnitSkyMap
-  /// (`skyMapsId`, its last layer), every mip level. Skipped when `frameKey` (what the frame
+  /// Refills the sums from the frame layer of the sky maps `skyMapsId` (its last layer, index
+  /// `skyMapLayers`; bound to gl::kUnitSkyMap), every mip level. Skipped when `frameKey` (what the frame
   /// layer was made from: the Sun's zenith angle) did not change. Reads one texel of the frame
   /// layer back (its radiance below the horizon): on CPU rasterisers, where this is used, that
   /// waits only for work the frame needs anyway.

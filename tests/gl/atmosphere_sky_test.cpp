@@ -123,7 +123,8 @@ TEST_F(AtmosphereSky, SunDiscDrawnOverItsBoxKeepsThePicture) {
   // the middle of a narrow view, at its right edge (the box clamped to the screen), half out of
   // it, and behind the eye; bit-identical.
   struct View { double heading, pitch; };
-  for (const View v : {View{270.0, 3.0}, View{267.0, 3.0}, View{265.5, 3.0}, View{90.0, 3.0}}) {
+  // (The view is 8° tall, 14.2° wide: the Sun 6.8° and 7.1° right of its centre at the edge.)
+  for (const View v : {View{270.0, 3.0}, View{263.2, 3.0}, View{262.9, 3.0}, View{90.0, 3.0}}) {
     renderer_->setSunDiscBox(false);
     const Shot reference = shoot(20, -40, 2.0, v.heading, v.pitch, 8, 3.0, 270, 160, 90);
     renderer_->setSunDiscBox(true);
@@ -151,6 +152,14 @@ TEST_F(AtmosphereSky, SunDiscDrawnOverItsBoxKeepsThePicture) {
   EXPECT_GT((*box)[2], 4);
   EXPECT_LT((*box)[2], 24);  // a cone 1.2° wide in a view 8° tall: 13 pixels and the margins
   EXPECT_EQ((*render::sunDiscScissor(view, 160, 90, -view.forward, 0.004675))[2], 0);
+  // Half out of the view, the box reaches its edge (clamped there).
+  pose.headingDeg = 262.9;
+  pose.pitchDeg = 3.0;
+  const geo::CameraView edge = geo::makeCameraView(pose, 160, 90);
+  const auto clamped = render::sunDiscScissor(edge, 160, 90, geo::sunDirectionFromHorizontal(pose.position, 3.0, 270.0), 0.004675);
+  ASSERT_TRUE(clamped.has_value());
+  EXPECT_EQ((*clamped)[0] + (*clamped)[2], 160);
+  EXPECT_GT((*clamped)[2], 2);
 }
 
 TEST_F(AtmosphereSky, AerialTableMatchesThePerPixelAerialPerspective) {

@@ -177,7 +177,7 @@ TEST_F(OceanLighting, SkyFilterKeepsTheReflectedSunsetGlowNarrow) {
 // with the Sun 20° high to the side, a 4 m view 20° down into a low Sun, 8 m/s (docs/ocean.md,
 // "The sky filter"); one isotropic lookup, which smears the glow sideways, is further. The bounds
 // fail with the sums' level of detail taken around the turn (6.8 % of a sunset's pixels over 2
-// levels) or a stretch across the zenith subtracted.
+// levels); the zenith is the next test's.
 TEST_F(OceanLighting, SkyRadialSumsFilterLikeTheNineLookups) {
   const int w = 160, h = 90;
   struct Shot { double heightM, heading, pitch, fov, sunElevation, sunAzimuth; };
@@ -222,4 +222,29 @@ TEST_F(OceanLighting, SkyRadialSumsFilterLikeTheNineLookups) {
     singleSum += singleMean;
   }
   EXPECT_LT(radialSum, 0.3 * singleSum);
+}
+
+// Looking straight down the reflected sky lies around the zenith, where the sums' first texel
+// is half a texel out and the table clamps to it: nearer, the sum falls linearly to 0
+// (skymap.glsl's skyRadialSumAt). From 300 m over a light wind, against the 9 lookups, in
+// radiance (the sky's reflection is ~2 % of it there, the rest the light from below). Fails
+// with the table clamped there, and with a stretch across the zenith subtracted (0.061 worst).
+TEST_F(OceanLighting, SkyRadialSumsHoldAtTheZenith) {
+  auto render = [&](const char* filter) {
+    const ScopedEnv env("OCEANGLOBE_SKY_FILTER", filter);
+    auto atm = std::make_shared<const render::Atmosphere>(atmosphere::earth());
+    render::GlobeRenderer r(data::defaultElevation(), atm);
+    return shootWith(r, 300.0, 0.0, -90.0, 60.0, 40.0, 180.0, 2.0, 96, 96);
+  };
+  const io::ImageRgbaF nine = render("probes9"), radial = render("radial");
+  double sum = 0.0, worst = 0.0;
+  for (int y = 0; y < 96; ++y)
+    for (int x = 0; x < 96; ++x) {
+      const double d = std::abs(luminance(radial, x, y) - luminance(nine, x, y)) / std::max(luminance(nine, x, y), 1e-9);
+      sum += d;
+      worst = std::max(worst, d);
+    }
+  std::printf("straight down against 9 lookups: mean %.4f, worst %.4f relative\n", sum / (96 * 96), worst);
+  EXPECT_LT(sum / (96 * 96), 0.004);  // measured 0.0024; 0.0070 with the table clamped at the zenith
+  EXPECT_LT(worst, 0.018);            // measured 0.0091; 0.030 so
 }
