@@ -72,29 +72,30 @@ vec3 skyMapLayerFiltered(vec2 tc, float layer, vec2 gx, vec2 gy) {
 }
 
 #ifdef SKY_RADIAL_SUMS
-// The frame layer's radial sums (render/SkyRadialSums, atmosphere/skymap_radial.comp): the sky's
+// The sky maps' radial sums (render/SkyRadialSums, atmosphere/skymap_radial.comp): each layer's
 // integral along each radius of the map, polar (x the azimuth over a turn, y |u| over
-// SKY_RADIAL_MAX_RHO), less the radiance below the horizon, uSkyBelowHorizon.
+// SKY_RADIAL_MAX_RHO), less the layer's radiance below the horizon: the frame layer's
+// (uSkyRadialSums, uSkyBelowHorizon) and the Sun layers' (uSkyRadialSumsLayers,
+// uSkyBelowHorizonLayers[layer]).
 layout(binding = OG_UNIT_SKY_RADIAL_SUMS) uniform sampler2D uSkyRadialSums;
+layout(binding = OG_UNIT_SKY_RADIAL_SUMS_LAYERS) uniform sampler2DArray uSkyRadialSumsLayers;
 uniform vec3 uSkyBelowHorizon;
+uniform vec3 uSkyBelowHorizonLayers[SKY_RADIAL_MAX_LAYERS];
 
-// The frame layer over the footprint with axes gx, gy (texture space) in two lookups: the
-// reflected footprints are stretched along the map's radius (atmosphere/skymap_radial.comp), so
-// the sky is averaged over the footprint's radial extent exactly, as a difference of the sums at
-// its two ends, at the level of detail of its tangential extent (the probes' isotropic width
-// along the ellipse). A stretch shorter than a texel of that level is widened to one: the
-// difference then interpolates the sky linearly, as a bilinear lookup would. A stretch across
-// the zenith adds the sums of its two sides.
-// The sums at radius rho (>= 0) and azimuth phi (turns) at level lod: texel 0's centre lies
-// half a texel of the level from the zenith, and the table clamps to it there; nearer, the sum
-// falls linearly to 0 (the sky is smooth at the zenith), from half a texel of the coarser of
-// the two levels read.
-vec3 skyRadialSumAt(float phi, float rho, float lod, float perU) {
-  float h = 0.5 * exp2(ceil(lod)) / perU;
-  vec3 c = textureLod(uSkyRadialSums, vec2(phi, min(max(rho, h), SKY_RADIAL_MAX_RHO) / SKY_RADIAL_MAX_RHO), lod).rgb;
-  return c * min(rho / h, 1.0);
-}
-vec3 skyRadialSumsFiltered(vec2 tc, vec2 gx, vec2 gy) {
+// The footprint with axes gx, gy (texture space) as a stretch along the map's radius: the
+// reflected footprints are stretched along it (atmosphere/skymap_radial.comp), so the sky is
+// averaged over the footprint's radial extent exactly, as a difference of the sums at its two
+// ends, at the level of detail of its tangential extent (the probes' isotropic width along the
+// ellipse). A stretch shorter than a texel of that level is widened to one: the difference then
+// interpolates the sky linearly, as a bilinear lookup would. A stretch across the zenith adds
+// the sums of its two sides.
+struct SkyStretch {
+  float phi;         // azimuth, turns
+  float rho1, rho2;  // its ends (rho1 < 0: across the zenith)
+  float lod, perU;   // the level read, texels per unit of u along the radius
+  float length;      // rho2 - rho1
+};
+SkyStretch skyRadialStretch(vec2 tc, vec2 gx, vec2 gy) {
   float toU = 2.0 * SKYMAP_EXTENT;  // texture space -> u (skyMapRadianceStereo's scale)
   vec2 u = (tc - 0.5) * toU;
   float rho = length(u);
@@ -107,18 +108,47 @@ vec3 skyRadialSumsFiltered(vec2 tc, vec2 gx, vec2 gy) {
   // blurred across the radius a little less than the footprint is wide: the level that blurs
   // around by the full width blurs along the radius by 1/rho of it, which brightened the sea
   // below the horizon's reflection (from 2 m at sunset: 6.8 % of pixels over 2 levels from the
-  // probes' limit, against 0.3 % so).
-  // At most the level whose texels are a quarter of the radius's table: coarser ones hold a
-  // texel or two along it, whose differences vanish.
+  // probes' limit, against 0.3 % so). At most the level whose texels are a quarter of the
+  // radius's table: coarser ones hold a texel or two along it, whose differences vanish.
+#ifdef SKY_FRAME_LAYER
   float rows = float(textureSize(uSkyRadialSums, 0).y);
-  float perU = rows / SKY_RADIAL_MAX_RHO;  // texels per unit of u
-  float lod = clamp(log2(max(acrossU * perU, 1e-8)), 0.0, log2(rows) - 2.0);
-  float stretch = max(alongU, exp2(lod) / perU);
-  float rho1 = rho - 0.5 * stretch, rho2 = rho + 0.5 * stretch;
-  float phi = atan(radial.y, radial.x) * (1.0 / 6.28318530717959);
-  vec3 c2 = skyRadialSumAt(phi, rho2, lod, perU);
-  vec3 c1 = skyRadialSumAt(rho1 < 0.0 ? phi + 0.5 : phi, abs(rho1), lod, perU);
-  return (c2 - sign(rho1) * c1) / stretch + uSkyBelowHorizon;
+#else
+  float rows = float(textureSize(uSkyRadialSumsLayers, 0).y);
+#endif
+  SkyStretch st;
+  st.perU = rows / SKY_RADIAL_MAX_RHO;
+  st.lod = clamp(log2(max(acrossU * st.perU, 1e-8)), 0.0, log2(rows) - 2.0);
+  st.length = max(alongU, exp2(st.lod) / st.perU);
+  st.rho1 = rho - 0.5 * st.length;
+  st.rho2 = rho + 0.5 * st.length;
+  st.phi = atan(radial.y, radial.x) * (1.0 / 6.28318530717959);
+  return st;
+}
+// The sums at radius rho (>= 0) and azimuth phi (turns) at level lod, of the frame layer
+// (SKY_FRAME_LAYER) or of Sun layer `layer`: texel 0's centre lies half a texel of the level
+// from the zenith, and the table clamps to it there; nearer, the sum falls linearly to 0 (the
+// sky is smooth at the zenith), from half a texel of the coarser of the two levels read.
+vec3 skyRadialSumAt(float phi, float rho, float layer, float lod, float perU) {
+  float h = 0.5 * exp2(ceil(lod)) / perU;
+  vec2 tc = vec2(phi, min(max(rho, h), SKY_RADIAL_MAX_RHO) / SKY_RADIAL_MAX_RHO);
+#ifdef SKY_FRAME_LAYER
+  vec3 c = textureLod(uSkyRadialSums, tc, lod).rgb;
+#else
+  vec3 c = textureLod(uSkyRadialSumsLayers, vec3(tc, layer), lod).rgb;
+#endif
+  return c * min(rho / h, 1.0);
+}
+// The sky of the frame layer (SKY_FRAME_LAYER) or of Sun layer `layer` averaged over the
+// stretch: two lookups.
+vec3 skyRadialAverage(SkyStretch st, float layer) {
+  vec3 c2 = skyRadialSumAt(st.phi, st.rho2, layer, st.lod, st.perU);
+  vec3 c1 = skyRadialSumAt(st.rho1 < 0.0 ? st.phi + 0.5 : st.phi, abs(st.rho1), layer, st.lod, st.perU);
+#ifdef SKY_FRAME_LAYER
+  vec3 below = uSkyBelowHorizon;
+#else
+  vec3 below = uSkyBelowHorizonLayers[int(layer)];
+#endif
+  return (c2 - sign(st.rho1) * c1) / st.length + below;
 }
 #endif
 
@@ -135,15 +165,21 @@ vec3 skyMapRadianceStereo(vec2 u, float sunZenith, vec2 sunAzimuthCS, vec2 dUdx,
   // few km away) reads the two layers around the camera's, blended once per frame: one
   // filtered lookup instead of two.
 #ifdef SKY_RADIAL_SUMS
-  return skyRadialSumsFiltered(tc, gx, gy);
+  return skyRadialAverage(skyRadialStretch(tc, gx, gy), float(layers));
 #else
   return skyMapLayerFiltered(tc, float(layers), gx, gy);
 #endif
 #else
   float f = clamp(sunZenith / SKYMAP_MAX_ZENITH, 0.0, 1.0) * float(layers - 1);
   float l0 = min(floor(f), float(layers - 2));
+#ifdef SKY_RADIAL_SUMS  // one stretch, two lookups a layer
+  SkyStretch st = skyRadialStretch(tc, gx, gy);
+  vec3 a = skyRadialAverage(st, l0);
+  vec3 b = skyRadialAverage(st, l0 + 1.0);
+#else
   vec3 a = skyMapLayerFiltered(tc, l0, gx, gy);
   vec3 b = skyMapLayerFiltered(tc, l0 + 1.0, gx, gy);
+#endif
   return mix(a, b, f - l0);
 #endif
 }

@@ -28,6 +28,7 @@ std::vector<std::string> contractDefines() {
           define("OG_UNIT_SKY_MAP", kUnitSkyMap),
           define("OG_UNIT_SKY_IRRADIANCE", kUnitSkyIrradiance),
           define("OG_UNIT_SKY_RADIAL_SUMS", kUnitSkyRadialSums),
+          define("OG_UNIT_SKY_RADIAL_SUMS_LAYERS", kUnitSkyRadialSumsLayers),
           define("OG_UNIT_BUMP_MAP", kUnitBumpMap),
           define("OG_UNIT_FRESNEL_RAMP", kUnitFresnelRamp),
           define("OG_BLOCK_PATTERN_TABLE", kBlockPatternTable),

@@ -30,13 +30,14 @@ enum TextureUnit : unsigned {
   kUnitImageryLayers = 17,
   kUnitLandMask = 18,            ///< terrain/landmask.glsl (render/LandMaskTexture)
   kUnitOpenSea = 19,             ///< render/globe.frag uOpenSea (render/OpenSeaMap)
-  kUnitSkyRadialSums = 20,       ///< atmosphere/skymap.glsl SKY_RADIAL_SUMS (render/SkyRadialSums)
+  kUnitSkyRadialSums = 20,       ///< atmosphere/skymap.glsl SKY_RADIAL_SUMS, the frame layer's (render/SkyRadialSums)
   kUnitCausticCurvature = 21,    ///< ocean/water_volume.glsl uCausticCurvature (render/WaterVolume)
   kUnitLandMaskFine = 22,        ///< terrain/landmask.glsl uLandMaskFine (render/LandMaskTexture)
   kUnitSeaSurface = 23,          ///< ocean/sea_surface.glsl uSeaSurface (render/SeaSurfaceBuffer)
   kUnitSkyLow = 24,              ///< render/globe.frag uSkyLow (GlobeRenderer::drawSkyLow)
   kUnitAerialTable = 25,         ///< render/aerial.glsl uAerialTable (render/AerialTable, seaLevel)
   kUnitTerrainAerialTable = 26,  ///< render/aerial.glsl uTerrainAerialTable (render/AerialTable, terrain)
+  kUnitSkyRadialSumsLayers = 27, ///< atmosphere/skymap.glsl SKY_RADIAL_SUMS, the Sun layers' (render/SkyRadialSums)
   // Passes of their own, which bind nothing else, reuse unit 0:
   kUnitToneRadiance = 0,         ///< render/tonemap.frag uRadiance (the HDR target)
   kUnitOverlayText = 0,          ///< viewer/text.frag uText (the viewer's text overlay)

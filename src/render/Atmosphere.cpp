@@ -425,7 +425,11 @@ void Atmosphere::prepareFrameSkyLayer(double sunZenithRad) const {
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
   gl::checkErrors("Atmosphere::prepareFrameSkyLayer");
-  if (skyFilter_.radialSums) radial_.update(skyMaps_.id(), s.skyMapLayers, sunZenithRad);
+  if (skyFilter_.radialSums) radial_.updateFrameLayer(skyMaps_.id(), s.skyMapLayers, sunZenithRad);
+}
+
+void Atmosphere::prepareSunLayerSums() const {
+  if (skyFilter_.radialSums) radial_.ensureSunLayers(skyMaps_.id(), parameters_.tables.skyMapLayers);
 }
 
 void Atmosphere::bindSkyMaps() const {

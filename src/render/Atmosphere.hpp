@@ -28,8 +28,9 @@ struct AtmosphereOptions {
 /// inside the elliptical filter support"). Chosen in one place, Atmosphere::chooseSkyFilter.
 struct SkyFilter {
   int probes = 1;             ///< most textureGrad lookups along the ellipse's major axis (1 or 4)
-  /// The frame layer's radial sums (render/SkyRadialSums): two lookups for the views that read
-  /// the frame layer (the sea from below ~8 km), the probes elsewhere. On CPU rasterisers.
+  /// The sky maps' radial sums (render/SkyRadialSums): two lookups a layer for the grid's sea
+  /// (the frame layer's from below ~8 km, two Sun layers' higher), the probes for the globe's.
+  /// On CPU rasterisers.
   bool radialSums = false;
   float maxAnisotropy = 1.0f; ///< the sky maps' sampler anisotropy (hardware filtering)
   std::string reason;         ///< why, for logs and `info`
@@ -64,7 +65,7 @@ class Atmosphere {
   /// measurements); any other value throws og::InputError.
   static SkyFilter chooseSkyFilter();
   [[nodiscard]] const SkyFilter& skyFilter() const { return skyFilter_; }
-  /// The frame layer's radial sums as last prepared (prepareFrameSkyLayer), for tests.
+  /// The layers' radial sums as last prepared (prepareFrameSkyLayer, prepareSunLayerSums), for tests.
   [[nodiscard]] const SkyRadialSums& skyRadialSums() const { return radial_; }
 
   /// Sets `program`'s uAtmosphere uniforms and the sky filter's uSkyFilterProbes
@@ -77,6 +78,9 @@ class Atmosphere {
   /// SKY_FRAME_LAYER (skymap.glsl), which read it alone: views whose Sun zenith hardly varies.
   /// With SkyFilter::radialSums also its radial sums (render/SkyRadialSums), when the Sun moved.
   void prepareFrameSkyLayer(double sunZenithRad) const;
+  /// With SkyFilter::radialSums, the Sun layers' radial sums, made once (render/SkyRadialSums):
+  /// for the sea's views that blend two layers (skymap.glsl without SKY_FRAME_LAYER).
+  void prepareSunLayerSums() const;
 
   [[nodiscard]] const atmosphere::Parameters& parameters() const { return parameters_; }
   [[nodiscard]] const Timing& timing() const { return timing_; }
@@ -118,7 +122,7 @@ class Atmosphere {
   gl::Texture singleMie_;
   gl::Texture skyMaps_;
   mutable gl::Program frameLayer_;  ///< atmosphere/skymap_frame.comp, compiled on first use
-  mutable SkyRadialSums radial_;    ///< the frame layer summed along its radii (SkyFilter::radialSums)
+  mutable SkyRadialSums radial_;    ///< the layers summed along their radii (SkyFilter::radialSums)
   gl::Texture skyIrradiance_;
 };
 

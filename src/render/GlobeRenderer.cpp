@@ -381,6 +381,8 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
     if (behind) defines.emplace_back("GLOBE_BEHIND");
     if (set == 0) defines.emplace_back("AERIAL_TABLE");
     if (set == 3) defines.emplace_back("LANDMASK_COARSE_ONLY");
+    // The sea's sky filter as the grid's (the 20 km switch): the Sun layers' radial sums.
+    if (atmosphere_->skyFilter().radialSums) defines.emplace_back("SKY_RADIAL_SUMS");
     // Above the ceiling the classifying draws cover blocks of pixels (render/GlobeBlocks).
     const bool blocks = !behind && (variant <= kClassifyExportLandSea || variant == kBlockFill);
     if (variant == kListedPixels)
@@ -794,6 +796,7 @@ void GlobeRenderer::setGlobeUniforms(const gl::Program& globe, const geo::Camera
   globe.set("uElevationWraps", elevationWraps_);
   glBindTextureUnit(gl::kUnitElevation, elevation_.id());
   imagery_->bind(globe);
+  atmosphere_->prepareSunLayerSums();  // (once; before bind, which sets their uniforms)
   atmosphere_->bind(globe);
   atmosphere_->bindSkyMaps();
 }

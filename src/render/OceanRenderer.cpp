@@ -138,7 +138,7 @@ std::vector<std::string> OceanRenderer::featureDefines(unsigned features) const 
   if ((features & kFeatureCoastTest) == 0) d.emplace_back("SEA_NO_COAST_TEST");
   if ((features & kFeatureShadows) == 0) d.emplace_back("SHADOWS_OFF");
   if ((features & kFeatureFrameSky) != 0) d.emplace_back("SKY_FRAME_LAYER");
-  if ((features & kFeatureFrameSky) != 0 && atmosphere_->skyFilter().radialSums) d.emplace_back("SKY_RADIAL_SUMS");
+  if (atmosphere_ != nullptr && atmosphere_->skyFilter().radialSums) d.emplace_back("SKY_RADIAL_SUMS");
   return d;
 }
 
@@ -328,6 +328,8 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
       features |= kFeatureFrameSky;
       const double cosSun = glm::dot(glm::normalize(lighting.sunDirectionEcef), view.enu.up);
       atmosphere_->prepareFrameSkyLayer(std::acos(std::clamp(cosSun, -1.0, 1.0)));
+    } else if (atmosphere_ != nullptr) {
+      atmosphere_->prepareSunLayerSums();  // (once: the Sun layers' radial sums, where used)
     }
     if ((features & kFeatureWaterVolume) != 0) {
       if (timer_ != nullptr) timer_->mark("ocean caustics");

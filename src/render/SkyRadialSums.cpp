@@ -1,49 +1,93 @@
 #include "render/SkyRadialSums.hpp"
 
-#include <array>
+#include <vector>
 
 #include "gl/ShaderContract.hpp"
 
 namespace og::render {
+namespace {
 
-void SkyRadialSums::update(GLuint skyMapsId, int skyMapLayers, double frameKey) {
-  if (texture_.id() != 0 && frameKey == frameKey_) return;
-  if (texture_.id() == 0) {
-    texture_ = gl::createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(texture_.id(), gl::fullMipLevels(kAzimuths), GL_RGBA32F, kAzimuths, kRadii);
-    glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);  // around the turn
-    glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  }
-  if (fill_.id() == 0) fill_ = gl::Program({{GL_COMPUTE_SHADER, "atmosphere/skymap_radial.comp"}});
+gl::Texture sumsTexture(GLenum target, int layers) {
+  gl::Texture t = gl::createTexture(target);
+  const int levels = gl::fullMipLevels(SkyRadialSums::kAzimuths);
+  if (target == GL_TEXTURE_2D)
+    glTextureStorage2D(t.id(), levels, GL_RGBA32F, SkyRadialSums::kAzimuths, SkyRadialSums::kRadii);
+  else
+    glTextureStorage3D(t.id(), levels, GL_RGBA32F, SkyRadialSums::kAzimuths, SkyRadialSums::kRadii, layers);
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);  // around the turn
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+}  // namespace
+
+void SkyRadialSums::fill(GLuint skyMapsId, int first, int count, bool frame) {
+  gl::Program& program = frame ? fillFrame_ : fillLayers_;
+  if (program.id() == 0)
+    program = gl::Program({{GL_COMPUTE_SHADER, "atmosphere/skymap_radial.comp"}},
+                          frame ? std::vector<std::string>{"SKY_RADIAL_FRAME"} : std::vector<std::string>{});
   glBindTextureUnit(gl::kUnitSkyMap, skyMapsId);
-  // The frame layer's corner texel lies far below the horizon (|u| = 1.1 sqrt 2): the constant
-  // the maps hold there (atmosphere/skymap_common.glsl's skyMapBelowHorizon).
+  // Each layer's corner texel lies far below the horizon (|u| = 1.1 sqrt 2): the constant the
+  // maps hold there (atmosphere/skymap_common.glsl's skyMapBelowHorizon). The compute reads it
+  // itself; the lookups get it as a uniform.
   glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
-  std::array<float, 4> corner{};
-  glGetTextureSubImage(skyMapsId, 0, 0, 0, skyMapLayers, 1, 1, 1, GL_RGBA, GL_FLOAT,
-                       static_cast<GLsizei>(sizeof(corner)), corner.data());
-  belowHorizon_ = glm::vec3(corner[0], corner[1], corner[2]);
-  fill_.set("uBelowHorizon", belowHorizon_);
-  fill_.use();
-  glBindImageTexture(0, texture_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glDispatchCompute(static_cast<GLuint>((kAzimuths + 63) / 64), 1, 1);
+  std::vector<float> corners(static_cast<std::size_t>(4 * count));
+  glGetTextureSubImage(skyMapsId, 0, 0, 0, first, 1, 1, count, GL_RGBA, GL_FLOAT,
+                       static_cast<GLsizei>(corners.size() * sizeof(float)), corners.data());
+  for (int k = 0; k < count; ++k)
+    belowHorizon_.at(static_cast<std::size_t>(first + k)) =
+        glm::vec3(corners[static_cast<std::size_t>(4 * k)], corners[static_cast<std::size_t>(4 * k + 1)],
+                  corners[static_cast<std::size_t>(4 * k + 2)]);
+  program.set("uFirstLayer", first);
+  program.use();
+  glBindImageTexture(0, frame ? frame_.id() : layers_.id(), 0, frame ? GL_FALSE : GL_TRUE, 0, GL_WRITE_ONLY,
+                     GL_RGBA32F);
+  glDispatchCompute(static_cast<GLuint>((kAzimuths + 63) / 64), 1, static_cast<GLuint>(count));
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-  glGenerateTextureMipmap(texture_.id());
-  gl::checkErrors("SkyRadialSums::update");
+  glGenerateTextureMipmap(frame ? frame_.id() : layers_.id());
+}
+
+void SkyRadialSums::updateFrameLayer(GLuint skyMapsId, int skyMapLayers, double frameKey) {
+  if (frame_.id() != 0 && frameKey == frameKey_) return;
+  if (frame_.id() == 0) frame_ = sumsTexture(GL_TEXTURE_2D, 1);
+  skyMapLayers_ = skyMapLayers;
+  belowHorizon_.resize(static_cast<std::size_t>(skyMapLayers + 1), glm::vec3(0.0f));
+  fill(skyMapsId, skyMapLayers, 1, true);
+  gl::checkErrors("SkyRadialSums::updateFrameLayer");
   frameKey_ = frameKey;
 }
 
-void SkyRadialSums::bind() const { glBindTextureUnit(gl::kUnitSkyRadialSums, texture_.id()); }
+void SkyRadialSums::ensureSunLayers(GLuint skyMapsId, int skyMapLayers) {
+  if (layers_.id() != 0) return;
+  layers_ = sumsTexture(GL_TEXTURE_2D_ARRAY, skyMapLayers);
+  skyMapLayers_ = skyMapLayers;
+  belowHorizon_.resize(static_cast<std::size_t>(skyMapLayers + 1), glm::vec3(0.0f));
+  fill(skyMapsId, 0, skyMapLayers, false);
+  gl::checkErrors("SkyRadialSums::ensureSunLayers");
+}
 
-void SkyRadialSums::setUniforms(const gl::Program& program) const { program.set("uSkyBelowHorizon", belowHorizon_); }
+void SkyRadialSums::bind() const {
+  if (frame_.id() != 0) glBindTextureUnit(gl::kUnitSkyRadialSums, frame_.id());
+  if (layers_.id() != 0) glBindTextureUnit(gl::kUnitSkyRadialSumsLayers, layers_.id());
+}
 
-std::vector<float> SkyRadialSums::read() const {
+void SkyRadialSums::setUniforms(const gl::Program& program) const {
+  if (belowHorizon_.empty()) return;
+  if (const GLint at = program.location("uSkyBelowHorizonLayers"); at >= 0)
+    glProgramUniform3fv(program.id(), at, static_cast<GLsizei>(belowHorizon_.size() - 1), &belowHorizon_[0].x);
+  program.set("uSkyBelowHorizon", belowHorizon_.back());
+}
+
+glm::vec3 SkyRadialSums::belowHorizon(int layer) const { return belowHorizon_.at(static_cast<std::size_t>(layer)); }
+
+std::vector<float> SkyRadialSums::read(int layer) const {
   std::vector<float> texels(static_cast<std::size_t>(4 * kAzimuths * kRadii));
-  glGetTextureImage(texture_.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(float)),
-                    texels.data());
+  const bool frame = layer == skyMapLayers_;
+  glGetTextureSubImage(frame ? frame_.id() : layers_.id(), 0, 0, 0, frame ? 0 : layer, kAzimuths, kRadii, 1, GL_RGBA,
+                       GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(float)), texels.data());
   return texels;
 }
 

@@ -1,9 +1,9 @@
 #pragma once
-// The sky maps' radial sums: the frame layer of the sky maps (Atmosphere::prepareFrameSkyLayer)
-// integrated along the map's radii, so that the sea's reflected sky is filtered over its
-// footprint ellipse, stretched radially, in two lookups on a CPU rasteriser however long it is
-// (shaders/atmosphere/skymap_radial.comp, skymap.glsl's SKY_RADIAL_SUMS; docs/ocean.md, "The sky
-// filter").
+// The sky maps' radial sums: each layer of the sky maps (one per Sun zenith angle, and the frame
+// layer, Atmosphere::prepareFrameSkyLayer) integrated along the map's radii, so that the sea's
+// reflected sky is filtered over its footprint ellipse, stretched radially, in two lookups a
+// layer on a CPU rasteriser however long it is (shaders/atmosphere/skymap_radial.comp,
+// skymap.glsl's SKY_RADIAL_SUMS; docs/ocean.md, "The sky filter").
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -21,26 +21,40 @@ class SkyRadialSums {
   static constexpr int kAzimuths = 512;
   static constexpr int kRadii = 128;
 
-  /// Refills the sums from the frame layer of the sky maps `skyMapsId` (its last layer, index
-  /// `skyMapLayers`; bound to gl::kUnitSkyMap), every mip level. Skipped when `frameKey` (what the frame
-  /// layer was made from: the Sun's zenith angle) did not change. Reads one texel of the frame
-  /// layer back (its radiance below the horizon): on CPU rasterisers, where this is used, that
-  /// waits only for work the frame needs anyway.
-  void update(GLuint skyMapsId, int skyMapLayers, double frameKey);
-  /// Binds the sums to gl::kUnitSkyRadialSums.
+  /// Refills the frame layer's sums from the sky maps `skyMapsId` (its last layer, index
+  /// `skyMapLayers`; bound to gl::kUnitSkyMap), every mip level. Skipped when `frameKey` (what
+  /// the frame layer was made from: the Sun's zenith angle) did not change. Reads one texel of
+  /// the frame layer back (its radiance below the horizon): on CPU rasterisers, where this is
+  /// used, that waits only for work the frame needs anyway.
+  void updateFrameLayer(GLuint skyMapsId, int skyMapLayers, double frameKey);
+  /// Fills the Sun layers' sums (0 ... skyMapLayers - 1) once, for views whose sea spans
+  /// several Sun zenith angles (~70 ms on llvmpipe, the first time only).
+  void ensureSunLayers(GLuint skyMapsId, int skyMapLayers);
+  /// Binds the sums made so far to gl::kUnitSkyRadialSums (the frame layer's, a 2D texture:
+  /// llvmpipe makes a lone layer's mip levels ~30 times slower through a view of an array) and
+  /// gl::kUnitSkyRadialSumsLayers (the Sun layers', an array).
   void bind() const;
-  /// Sets skymap.glsl's uniform of the sums on `program` (the radiance below the horizon).
+  /// Sets skymap.glsl's uniforms of the sums on `program` (each layer's radiance below the
+  /// horizon).
   void setUniforms(const gl::Program& program) const;
-  [[nodiscard]] bool ready() const { return texture_.id() != 0; }
-  /// Level 0 (rgba per texel, rows of azimuths from the zenith outwards), for tests.
-  [[nodiscard]] std::vector<float> read() const;
-  /// The frame layer's radiance below the horizon that the sums leave out, as last read.
-  [[nodiscard]] glm::vec3 belowHorizon() const { return belowHorizon_; }
+  [[nodiscard]] bool ready() const { return frame_.id() != 0 || layers_.id() != 0; }
+  /// Level 0 of layer `layer` (0 ... skyMapLayers; skyMapLayers: the frame layer's), rgba per
+  /// texel, rows of azimuths from the zenith outwards, for tests.
+  [[nodiscard]] std::vector<float> read(int layer) const;
+  /// Layer `layer`'s radiance below the horizon that the sums leave out, as last read.
+  [[nodiscard]] glm::vec3 belowHorizon(int layer) const;
 
  private:
-  gl::Texture texture_;
-  gl::Program fill_;  ///< atmosphere/skymap_radial.comp, compiled on first use
-  glm::vec3 belowHorizon_{0.0f};
+  /// Sums layers first ... first + count - 1 of the maps into `target` (the frame's texture or
+  /// the layers' array at the same indices).
+  void fill(GLuint skyMapsId, int first, int count, bool frame);
+
+  gl::Texture frame_;      ///< GL_TEXTURE_2D: the frame layer's sums
+  gl::Texture layers_;     ///< GL_TEXTURE_2D_ARRAY: the Sun layers'
+  gl::Program fillFrame_;  ///< atmosphere/skymap_radial.comp (SKY_RADIAL_FRAME), on first use
+  gl::Program fillLayers_; ///< atmosphere/skymap_radial.comp, on first use
+  int skyMapLayers_ = 0;
+  std::vector<glm::vec3> belowHorizon_;  ///< the Sun layers', then the frame layer's
   double frameKey_ = 0.0;
 };
 

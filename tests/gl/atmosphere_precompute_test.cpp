@@ -127,56 +127,63 @@ TEST(AtmospherePrecompute, FrameSkyLayerBlendsTheLayersAroundTheSun) {
   EXPECT_GT(largest, 0.0);
 }
 
-// The frame layer's radial sums (render/SkyRadialSums, on CPU rasterisers): each column integrates
-// the frame layer along one radius of the map, less its radiance below the horizon (its corner
-// texel), so the difference of two rows over their spacing is the frame layer between them, and
-// past the horizon's band the sums stand still. Checked against the frame layer's own texels on
-// radii towards the Sun, away from it and across (a turned or mirrored table fails).
-TEST(AtmospherePrecompute, SkyRadialSumsIntegrateTheFrameLayerAlongItsRadii) {
+// The sky maps' radial sums (render/SkyRadialSums, on CPU rasterisers): each column integrates a
+// layer along one radius of the map, less its radiance below the horizon (its corner texel), so
+// the difference of two rows over their spacing is the layer between them, and past the
+// horizon's band the sums stand still. Checked against the layer's own texels on radii towards
+// the Sun, away from it and across (a turned or mirrored table fails), for the frame layer (made
+// each frame) and two Sun layers (made once).
+TEST(AtmospherePrecompute, SkyRadialSumsIntegrateTheLayersAlongTheirRadii) {
   auto ctx = gl::createHeadlessContext();
   const test::ScopedEnv env("OCEANGLOBE_SKY_FILTER", "radial");
   const atmosphere::Parameters p = smallEarth(2);
   render::Atmosphere gpu(p, noCache());
+  const int layers = p.tables.skyMapLayers;
   gpu.prepareFrameSkyLayer(0.6 * render::Atmosphere::kSkyMapMaxZenithRad);
-  const std::vector<float> frame = gpu.readSkyMap(p.tables.skyMapLayers);
+  gpu.prepareSunLayerSums();
   const render::SkyRadialSums& sums = gpu.skyRadialSums();
-  const std::vector<float> table = sums.read();
   constexpr int kAz = render::SkyRadialSums::kAzimuths, kRho = render::SkyRadialSums::kRadii;
-  ASSERT_EQ(table.size(), static_cast<std::size_t>(4 * kAz * kRho));
   const int n = p.tables.skyMapSize;
-  const glm::vec3 below = sums.belowHorizon();
-  EXPECT_NEAR(below.g, frame[1], 1e-6);  // the corner texel
-  EXPECT_GT(below.g, 0.0f);
   const double maxRho = 1.6, step = maxRho / kRho, extent = 1.1;
-  auto sum = [&](int column, int row) { return static_cast<double>(table[4 * static_cast<std::size_t>(row * kAz + column) + 1]); };
-  auto skyAt = [&](double rho, double phi) {  // the frame layer bilinear (clamped to its edge), green
-    const double x = std::clamp((0.5 + 0.5 * rho * std::cos(phi) / extent) * n - 0.5, 0.0, n - 1.0);
-    const double y = std::clamp((0.5 + 0.5 * rho * std::sin(phi) / extent) * n - 0.5, 0.0, n - 1.0);
-    const int x0 = std::min(static_cast<int>(x), n - 2), y0 = std::min(static_cast<int>(y), n - 2);
-    auto at = [&](int i, int j) { return static_cast<double>(frame[4 * static_cast<std::size_t>(j * n + i) + 1]); };
-    const double fx = x - x0, fy = y - y0;
-    return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) + fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
-  };
-  double worst = 0.0, largest = 0.0, beyond = 0.0, sunward = 0.0, away = 0.0;
-  for (const int column : {0, kAz / 4, kAz / 2}) {  // towards the Sun (+x), across, away
-    const double phi = (column + 0.5) / kAz * 2.0 * std::numbers::pi;
-    for (int row = 0; row + 1 < kRho; ++row) {
-      const double rho = (row + 1.0) * step;  // between the two rows' centres
-      const double slope = (sum(column, row + 1) - sum(column, row)) / step + static_cast<double>(below.g);
-      if (rho > 1.01 + 1.5 * 2.0 * extent / n) beyond = std::max(beyond, std::abs(sum(column, row + 1) - sum(column, row)) / step);
-      if (rho < 0.95) {
-        worst = std::max(worst, std::abs(slope - skyAt(rho, phi)));
-        largest = std::max(largest, skyAt(rho, phi));
+  for (const int layer : {layers, 0, layers / 2}) {  // the frame layer, the Sun at the zenith, at 52°
+    const std::vector<float> map = gpu.readSkyMap(layer);
+    const std::vector<float> table = sums.read(layer);
+    ASSERT_EQ(table.size(), static_cast<std::size_t>(4 * kAz * kRho));
+    const glm::vec3 below = sums.belowHorizon(layer);
+    EXPECT_NEAR(below.g, map[1], 1e-6) << "layer " << layer;  // the corner texel
+    EXPECT_GT(below.g, 0.0f);
+    auto sum = [&](int column, int row) { return static_cast<double>(table[4 * static_cast<std::size_t>(row * kAz + column) + 1]); };
+    auto skyAt = [&](double rho, double phi) {  // the layer bilinear (clamped to its edge), green
+      const double x = std::clamp((0.5 + 0.5 * rho * std::cos(phi) / extent) * n - 0.5, 0.0, n - 1.0);
+      const double y = std::clamp((0.5 + 0.5 * rho * std::sin(phi) / extent) * n - 0.5, 0.0, n - 1.0);
+      const int x0 = std::min(static_cast<int>(x), n - 2), y0 = std::min(static_cast<int>(y), n - 2);
+      auto at = [&](int i, int j) { return static_cast<double>(map[4 * static_cast<std::size_t>(j * n + i) + 1]); };
+      const double fx = x - x0, fy = y - y0;
+      return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) + fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
+    };
+    double worst = 0.0, largest = 0.0, beyond = 0.0, sunward = 0.0, away = 0.0;
+    for (const int column : {0, kAz / 4, kAz / 2}) {  // towards the Sun (+x), across, away
+      const double phi = (column + 0.5) / kAz * 2.0 * std::numbers::pi;
+      for (int row = 0; row + 1 < kRho; ++row) {
+        const double rho = (row + 1.0) * step;  // between the two rows' centres
+        const double slope = (sum(column, row + 1) - sum(column, row)) / step + static_cast<double>(below.g);
+        if (rho > 1.01 + 1.5 * 2.0 * extent / n) beyond = std::max(beyond, std::abs(sum(column, row + 1) - sum(column, row)) / step);
+        if (rho < 0.95) {
+          worst = std::max(worst, std::abs(slope - skyAt(rho, phi)));
+          largest = std::max(largest, skyAt(rho, phi));
+        }
       }
+      if (column == 0) sunward = sum(column, static_cast<int>(0.9 / step)) - sum(column, static_cast<int>(0.5 / step));
+      if (column == kAz / 2) away = sum(column, static_cast<int>(0.9 / step)) - sum(column, static_cast<int>(0.5 / step));
     }
-    if (column == 0) sunward = sum(column, static_cast<int>(0.9 / step)) - sum(column, static_cast<int>(0.5 / step));
-    if (column == kAz / 2) away = sum(column, static_cast<int>(0.9 / step)) - sum(column, static_cast<int>(0.5 / step));
+    std::printf("layer %d: radial sums against the map: worst %.3g of %.3g; past the horizon %.3g; "
+                "sunward %.4g, away %.4g\n", layer, worst, largest, beyond, sunward, away);
+    EXPECT_LT(worst, 1e-3 * largest) << "layer " << layer;  // the same bilinear samples (midpoints), summed in float
+    EXPECT_LT(beyond, 1e-3 * largest) << "layer " << layer;  // the value below the horizon taken out
+    if (layer != 0) {
+      EXPECT_GT(sunward, 1.2 * away) << "layer " << layer;  // the Sun's side is brighter: not turned
+    }
   }
-  std::printf("radial sums against the frame layer: worst %.3g of %.3g; past the horizon %.3g; "
-              "sunward %.4g, away %.4g\n", worst, largest, beyond, sunward, away);
-  EXPECT_LT(worst, 1e-3 * largest);  // the same bilinear samples (midpoints), summed in float
-  EXPECT_LT(beyond, 1e-3 * largest);  // the value below the horizon taken out
-  EXPECT_GT(sunward, 1.2 * away);     // the Sun's side is brighter: the table is not turned
 }
 
 TEST(AtmospherePrecompute, CacheIsHitAndCorruptCacheIsRebuilt) {
