@@ -1,5 +1,7 @@
 #include "render/Atmosphere.hpp"
 
+#include <glm/gtc/packing.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <chrono>
@@ -389,6 +391,15 @@ void Atmosphere::computeSkyMaps() {
   bindImage(6, skyIrradiance_, GL_WRITE_ONLY);
   dispatch(irr, s.skyIrradianceEntries, 1, 1);
   for (GLuint unit : {0u, 2u, 5u, 6u}) glBindTextureUnit(unit, 0);
+  // Each Sun layer's value below the horizon, its corner texel (cold start only: a cached start
+  // reads it from the file).
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+  std::vector<float> corners(static_cast<std::size_t>(4 * s.skyMapLayers));
+  glGetTextureSubImage(skyMaps_.id(), 0, 0, 0, 0, 1, 1, s.skyMapLayers, GL_RGBA, GL_FLOAT,
+                       static_cast<GLsizei>(corners.size() * sizeof(float)), corners.data());
+  skyBelowHorizon_.clear();
+  for (std::size_t k = 0; k < static_cast<std::size_t>(s.skyMapLayers); ++k)
+    skyBelowHorizon_.emplace_back(corners[4 * k], corners[4 * k + 1], corners[4 * k + 2]);
   gl::checkErrors("Atmosphere::computeSkyMaps");
 }
 
@@ -425,11 +436,15 @@ void Atmosphere::prepareFrameSkyLayer(double sunZenithRad) const {
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
   gl::checkErrors("Atmosphere::prepareFrameSkyLayer");
-  if (skyFilter_.radialSums) radial_.updateFrameLayer(skyMaps_.id(), s.skyMapLayers, sunZenithRad);
+  if (skyFilter_.radialSums) {
+    const glm::vec3 below = glm::mix(skyBelowHorizon_.at(static_cast<std::size_t>(layer0)),
+                                     skyBelowHorizon_.at(static_cast<std::size_t>(layer0 + 1)), static_cast<float>(f - layer0));
+    radial_.updateFrameLayer(skyMaps_.id(), s.skyMapLayers, sunZenithRad, below);
+  }
 }
 
 void Atmosphere::prepareSunLayerSums() const {
-  if (skyFilter_.radialSums) radial_.ensureSunLayers(skyMaps_.id(), parameters_.tables.skyMapLayers);
+  if (skyFilter_.radialSums) radial_.ensureSunLayers(skyMaps_.id(), skyBelowHorizon_);
 }
 
 void Atmosphere::bindSkyMaps() const {
@@ -499,6 +514,14 @@ bool Atmosphere::loadSkyMaps(const std::filesystem::path& file) {
   const auto payload = readPayload(file, skyMapKey(), halfBytes + irradianceFloats * 4, halfBytes, "sky-map cache");
   if (!payload) return false;
   glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
+  // Each Sun layer's value below the horizon: its corner texel of level 0.
+  skyBelowHorizon_.clear();
+  const auto texels0 = static_cast<std::size_t>(s.skyMapSize) * static_cast<std::size_t>(s.skyMapSize);
+  for (std::size_t k = 0; k < static_cast<std::size_t>(s.skyMapLayers); ++k) {
+    std::uint16_t h[3];
+    std::memcpy(h, payload->data() + 8 * texels0 * k, sizeof h);
+    skyBelowHorizon_.emplace_back(glm::unpackHalf1x16(h[0]), glm::unpackHalf1x16(h[1]), glm::unpackHalf1x16(h[2]));
+  }
   std::size_t at = 0;
   for (int level = 0; level < skyMapLevels(); ++level) {
     const int side = std::max(1, s.skyMapSize >> level);

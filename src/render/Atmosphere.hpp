@@ -123,6 +123,8 @@ class Atmosphere {
   gl::Texture skyMaps_;
   mutable gl::Program frameLayer_;  ///< atmosphere/skymap_frame.comp, compiled on first use
   mutable SkyRadialSums radial_;    ///< the layers summed along their radii (SkyFilter::radialSums)
+  /// Each Sun layer's radiance below the horizon (its corner texel), for the sums' lookups.
+  std::vector<glm::vec3> skyBelowHorizon_;
   gl::Texture skyIrradiance_;
 };
 

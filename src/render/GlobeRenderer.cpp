@@ -381,8 +381,10 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
     if (behind) defines.emplace_back("GLOBE_BEHIND");
     if (set == 0) defines.emplace_back("AERIAL_TABLE");
     if (set == 3) defines.emplace_back("LANDMASK_COARSE_ONLY");
-    // The sea's sky filter as the grid's (the 20 km switch): the Sun layers' radial sums.
-    if (atmosphere_->skyFilter().radialSums) defines.emplace_back("SKY_RADIAL_SUMS");
+    // Above the ceiling the sea's sky filter as the grid's (the 20 km switch): the Sun layers'
+    // radial sums. Below it the globe shades only the horizon's sea samples, with the probes:
+    // the sums of every Sun layer would cost a first frame at sea level ~60 ms.
+    if (atmosphere_->skyFilter().radialSums && !behind) defines.emplace_back("SKY_RADIAL_SUMS");
     // Above the ceiling the classifying draws cover blocks of pixels (render/GlobeBlocks).
     const bool blocks = !behind && (variant <= kClassifyExportLandSea || variant == kBlockFill);
     if (variant == kListedPixels)
@@ -796,7 +798,8 @@ void GlobeRenderer::setGlobeUniforms(const gl::Program& globe, const geo::Camera
   globe.set("uElevationWraps", elevationWraps_);
   glBindTextureUnit(gl::kUnitElevation, elevation_.id());
   imagery_->bind(globe);
-  atmosphere_->prepareSunLayerSums();  // (once; before bind, which sets their uniforms)
+  // The sea's sky above the ceiling (once, before bind sets their uniforms).
+  if (view.position.heightM >= kOceanGridMaxHeightM) atmosphere_->prepareSunLayerSums();
   atmosphere_->bind(globe);
   atmosphere_->bindSkyMaps();
 }

@@ -1,5 +1,6 @@
 #include "render/SkyRadialSums.hpp"
 
+#include <algorithm>
 #include <vector>
 
 #include "gl/ShaderContract.hpp"
@@ -29,43 +30,50 @@ void SkyRadialSums::fill(GLuint skyMapsId, int first, int count, bool frame) {
     program = gl::Program({{GL_COMPUTE_SHADER, "atmosphere/skymap_radial.comp"}},
                           frame ? std::vector<std::string>{"SKY_RADIAL_FRAME"} : std::vector<std::string>{});
   glBindTextureUnit(gl::kUnitSkyMap, skyMapsId);
-  // Each layer's corner texel lies far below the horizon (|u| = 1.1 sqrt 2): the constant the
-  // maps hold there (atmosphere/skymap_common.glsl's skyMapBelowHorizon). The compute reads it
-  // itself; the lookups get it as a uniform.
-  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
-  std::vector<float> corners(static_cast<std::size_t>(4 * count));
-  glGetTextureSubImage(skyMapsId, 0, 0, 0, first, 1, 1, count, GL_RGBA, GL_FLOAT,
-                       static_cast<GLsizei>(corners.size() * sizeof(float)), corners.data());
-  for (int k = 0; k < count; ++k)
-    belowHorizon_.at(static_cast<std::size_t>(first + k)) =
-        glm::vec3(corners[static_cast<std::size_t>(4 * k)], corners[static_cast<std::size_t>(4 * k + 1)],
-                  corners[static_cast<std::size_t>(4 * k + 2)]);
   program.set("uFirstLayer", first);
   program.use();
   glBindImageTexture(0, frame ? frame_.id() : layers_.id(), 0, frame ? GL_FALSE : GL_TRUE, 0, GL_WRITE_ONLY,
                      GL_RGBA32F);
   glDispatchCompute(static_cast<GLuint>((kAzimuths + 63) / 64), 1, static_cast<GLuint>(count));
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-  glGenerateTextureMipmap(frame ? frame_.id() : layers_.id());
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  if (frame) {
+    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glGenerateTextureMipmap(frame_.id());
+    return;
+  }
+  // The layers' mip levels by a compute of their own (skymap_radial_mip.comp).
+  if (mips_.id() == 0) mips_ = gl::Program({{GL_COMPUTE_SHADER, "atmosphere/skymap_radial_mip.comp"}});
+  mips_.use();
+  for (int level = 1; level < gl::fullMipLevels(kAzimuths); ++level) {
+    glBindImageTexture(0, layers_.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, layers_.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    const auto w = static_cast<GLuint>(std::max(kAzimuths >> level, 1)), h = static_cast<GLuint>(std::max(kRadii >> level, 1));
+    glDispatchCompute((w + 7) / 8, (h + 7) / 8, static_cast<GLuint>(count));
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  }
+  for (GLuint unit : {0u, 1u}) glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
 }
 
-void SkyRadialSums::updateFrameLayer(GLuint skyMapsId, int skyMapLayers, double frameKey) {
+void SkyRadialSums::updateFrameLayer(GLuint skyMapsId, int skyMapLayers, double frameKey,
+                                     const glm::vec3& belowHorizon) {
   if (frame_.id() != 0 && frameKey == frameKey_) return;
   if (frame_.id() == 0) frame_ = sumsTexture(GL_TEXTURE_2D, 1);
   skyMapLayers_ = skyMapLayers;
   belowHorizon_.resize(static_cast<std::size_t>(skyMapLayers + 1), glm::vec3(0.0f));
+  belowHorizon_.back() = belowHorizon;
   fill(skyMapsId, skyMapLayers, 1, true);
   gl::checkErrors("SkyRadialSums::updateFrameLayer");
   frameKey_ = frameKey;
 }
 
-void SkyRadialSums::ensureSunLayers(GLuint skyMapsId, int skyMapLayers) {
+void SkyRadialSums::ensureSunLayers(GLuint skyMapsId, const std::vector<glm::vec3>& belowHorizon) {
   if (layers_.id() != 0) return;
-  layers_ = sumsTexture(GL_TEXTURE_2D_ARRAY, skyMapLayers);
-  skyMapLayers_ = skyMapLayers;
-  belowHorizon_.resize(static_cast<std::size_t>(skyMapLayers + 1), glm::vec3(0.0f));
-  fill(skyMapsId, 0, skyMapLayers, false);
+  const auto layers = static_cast<int>(belowHorizon.size());
+  layers_ = sumsTexture(GL_TEXTURE_2D_ARRAY, layers);
+  skyMapLayers_ = layers;
+  belowHorizon_.resize(static_cast<std::size_t>(layers + 1), glm::vec3(0.0f));
+  std::copy(belowHorizon.begin(), belowHorizon.end(), belowHorizon_.begin());
+  fill(skyMapsId, 0, layers, false);
   gl::checkErrors("SkyRadialSums::ensureSunLayers");
 }
 

@@ -23,13 +23,14 @@ class SkyRadialSums {
 
   /// Refills the frame layer's sums from the sky maps `skyMapsId` (its last layer, index
   /// `skyMapLayers`; bound to gl::kUnitSkyMap), every mip level. Skipped when `frameKey` (what
-  /// the frame layer was made from: the Sun's zenith angle) did not change. Reads one texel of
-  /// the frame layer back (its radiance below the horizon): on CPU rasterisers, where this is
-  /// used, that waits only for work the frame needs anyway.
-  void updateFrameLayer(GLuint skyMapsId, int skyMapLayers, double frameKey);
-  /// Fills the Sun layers' sums (0 ... skyMapLayers - 1) once, for views whose sea spans
-  /// several Sun zenith angles (~70 ms on llvmpipe, the first time only).
-  void ensureSunLayers(GLuint skyMapsId, int skyMapLayers);
+  /// the frame layer was made from: the Sun's zenith angle) did not change. `belowHorizon`: the
+  /// frame layer's radiance below the horizon (the two Sun layers' blended as the layer is;
+  /// the compute reads the texel itself: no read-back, which would wait for the queue).
+  void updateFrameLayer(GLuint skyMapsId, int skyMapLayers, double frameKey, const glm::vec3& belowHorizon);
+  /// Fills the Sun layers' sums (one per entry of `belowHorizon`, each layer's radiance below
+  /// the horizon) once, for views whose sea spans several Sun zenith angles (~20 ms on
+  /// llvmpipe, the first time only).
+  void ensureSunLayers(GLuint skyMapsId, const std::vector<glm::vec3>& belowHorizon);
   /// Binds the sums made so far to gl::kUnitSkyRadialSums (the frame layer's, a 2D texture:
   /// llvmpipe makes a lone layer's mip levels ~30 times slower through a view of an array) and
   /// gl::kUnitSkyRadialSumsLayers (the Sun layers', an array).
@@ -45,14 +46,15 @@ class SkyRadialSums {
   [[nodiscard]] glm::vec3 belowHorizon(int layer) const;
 
  private:
-  /// Sums layers first ... first + count - 1 of the maps into `target` (the frame's texture or
-  /// the layers' array at the same indices).
+  /// Sums layers first ... first + count - 1 of the maps into the frame's texture (`frame`) or
+  /// the layers' array at the same indices, and makes their mip levels.
   void fill(GLuint skyMapsId, int first, int count, bool frame);
 
   gl::Texture frame_;      ///< GL_TEXTURE_2D: the frame layer's sums
   gl::Texture layers_;     ///< GL_TEXTURE_2D_ARRAY: the Sun layers'
   gl::Program fillFrame_;  ///< atmosphere/skymap_radial.comp (SKY_RADIAL_FRAME), on first use
   gl::Program fillLayers_; ///< atmosphere/skymap_radial.comp, on first use
+  gl::Program mips_;       ///< atmosphere/skymap_radial_mip.comp, on first use
   int skyMapLayers_ = 0;
   std::vector<glm::vec3> belowHorizon_;  ///< the Sun layers', then the frame layer's
   double frameKey_ = 0.0;
