@@ -14,8 +14,8 @@
 //       filtered over the footprint given by the two stereographic-space gradients dUdx, dUdy
 //       (the axes of the filter ellipse, e.g. Bruneton 2010 Fig. 9: 2 sigma_x dU/dzeta_x and
 //       2 sigma_y dU/dzeta_y; pass zeros for a point sample), with textureGrad: hardware
-//       anisotropy on a GPU; on llvmpipe two lookups in the frame layer's radial sums
-//       (SKY_RADIAL_SUMS) where the view reads the frame layer, else up to 4 lookups along the ellipse
+//       anisotropy on a GPU; on llvmpipe two lookups a layer in the layers' radial sums
+//       (SKY_RADIAL_SUMS), else up to 4 lookups along the ellipse
 //       (uSkyFilterProbes; Atmosphere::chooseSkyFilter). sunZenith: the Sun's zenith angle
 //       at the surface point, radians [0, pi] (beyond 105° the last, dark layer is used);
 //       sunAzimuthCS: (cos, sin) of the Sun's azimuth in the same local frame, counter-clockwise
@@ -80,6 +80,7 @@ vec3 skyMapLayerFiltered(vec2 tc, float layer, vec2 gx, vec2 gy) {
 layout(binding = OG_UNIT_SKY_RADIAL_SUMS) uniform sampler2D uSkyRadialSums;
 layout(binding = OG_UNIT_SKY_RADIAL_SUMS_LAYERS) uniform sampler2DArray uSkyRadialSumsLayers;
 uniform vec3 uSkyBelowHorizon;
+const int SKY_RADIAL_MAX_LAYERS = 256;  // atmosphere::TableSizes' most Sun layers
 uniform vec3 uSkyBelowHorizonLayers[SKY_RADIAL_MAX_LAYERS];
 
 // The footprint with axes gx, gy (texture space) as a stretch along the map's radius: the

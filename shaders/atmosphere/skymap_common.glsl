@@ -17,8 +17,6 @@ const Number SKYMAP_HORIZON_BAND = 1.02;  // |u|² of the band's outer edge
 // than half a texel of the coarsest level read (skymap.glsl: 32 texels along it, 0.4 in u), so
 // the sums stand still at the table's edge and clamping there loses nothing.
 const Number SKY_RADIAL_MAX_RHO = 1.6;
-// Layers of the sums at most: atmosphere::TableSizes' 256 Sun layers and the frame layer.
-#define SKY_RADIAL_MAX_LAYERS 257
 const Number SEA_MEAN_FRESNEL = 0.17;     // Bruneton's demo / Proland: avgFresnel
 // Layer k of L holds the Sun at zenith angle k / (L - 1) * SKYMAP_MAX_ZENITH (radians, 105°;
 // render::Atmosphere::kSkyMapMaxZenithRad on the CPU, which blends the frame layer).

@@ -8,8 +8,8 @@
 //   C(rho, phi) = integral_0^rho (S(r, phi) - B) dr,
 // S the layer's radiance, B its value below the horizon (its corner texel; constant there: C
 // is constant beyond the horizon's band, so no radius past the table is ever missed). The mip
-// levels (made by GL from this level) are C of the sky blurred over their texels (a box
-// commutes with the integral), so the average of the sky along any radial stretch at a level
+// levels (GL's for the frame layer, skymap_radial_mip.comp's for the Sun layers) are C of the
+// sky blurred over their texels (a box commutes with the integral), so the average of the sky along any radial stretch at a level
 // of detail is two lookups, (C(rho2) - C(rho1)) / (rho2 - rho1) + B: the sea's reflected
 // footprints are ellipses stretched radially (a slope along the view's azimuth tilts the mirror
 // ray in elevation, one across it turns its azimuth by only ~2 slope x its elevation), so one

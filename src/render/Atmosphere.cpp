@@ -179,10 +179,10 @@ SkyFilter Atmosphere::chooseSkyFilter() {
   const bool software = gl::isSoftwareRenderer();
   if (forced == "single") return {1, false, 1.0f, "forced single lookup (OCEANGLOBE_SKY_FILTER)"};
   if (forced == "radial" || (forced.empty() && software))
-    // Two lookups in the frame layer's radial sums where a view reads that layer
-    // (render/SkyRadialSums), else up to 4 lookups along the ellipse (at most 4: the paper's 9
+    // Two lookups a layer in the layers' radial sums (render/SkyRadialSums); for the globe's
+    // horizon pixels below 20 km up to 4 lookups along the ellipse (at most 4: the paper's 9
     // are less than a level apart at 8 bits, docs/performance.md).
-    return {4, true, 1.0f, forced.empty() ? "CPU rasteriser: radial sums of the frame layer, else up to 4 isotropic lookups (Bruneton 2010 7.3)"
+    return {4, true, 1.0f, forced.empty() ? "CPU rasteriser: radial sums of the sky maps' layers (the globe's horizon below 20 km: up to 4 isotropic lookups, Bruneton 2010 7.3)"
                                           : "forced radial sums, else up to 4 lookups (OCEANGLOBE_SKY_FILTER)"};
   if (forced == "probes") return {4, false, 1.0f, "forced up to 4 lookups (OCEANGLOBE_SKY_FILTER)"};
   if (forced == "probes9") return {9, false, 1.0f, "forced up to 9 lookups, the paper's (OCEANGLOBE_SKY_FILTER)"};
@@ -437,8 +437,10 @@ void Atmosphere::prepareFrameSkyLayer(double sunZenithRad) const {
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
   gl::checkErrors("Atmosphere::prepareFrameSkyLayer");
   if (skyFilter_.radialSums) {
-    const glm::vec3 below = glm::mix(skyBelowHorizon_.at(static_cast<std::size_t>(layer0)),
-                                     skyBelowHorizon_.at(static_cast<std::size_t>(layer0 + 1)), static_cast<float>(f - layer0));
+    // As skymap_frame.comp blends the texel, into a half float (the compute subtracts the texel).
+    glm::vec3 below = glm::mix(skyBelowHorizon_.at(static_cast<std::size_t>(layer0)),
+                               skyBelowHorizon_.at(static_cast<std::size_t>(layer0 + 1)), static_cast<float>(f - layer0));
+    for (int c = 0; c < 3; ++c) below[c] = glm::unpackHalf1x16(glm::packHalf1x16(below[c]));
     radial_.updateFrameLayer(skyMaps_.id(), s.skyMapLayers, sunZenithRad, below);
   }
 }

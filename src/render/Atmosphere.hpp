@@ -28,9 +28,9 @@ struct AtmosphereOptions {
 /// inside the elliptical filter support"). Chosen in one place, Atmosphere::chooseSkyFilter.
 struct SkyFilter {
   int probes = 1;             ///< most textureGrad lookups along the ellipse's major axis (1 or 4)
-  /// The sky maps' radial sums (render/SkyRadialSums): two lookups a layer for the grid's sea
-  /// (the frame layer's from below ~8 km, two Sun layers' higher), the probes for the globe's.
-  /// On CPU rasterisers.
+  /// The sky maps' radial sums (render/SkyRadialSums): two lookups a layer for the sea (the
+  /// frame layer's where a view reads it, else two Sun layers'); the probes only for the globe's
+  /// horizon pixels below 20 km. On CPU rasterisers.
   bool radialSums = false;
   float maxAnisotropy = 1.0f; ///< the sky maps' sampler anisotropy (hardware filtering)
   std::string reason;         ///< why, for logs and `info`
@@ -57,10 +57,10 @@ class Atmosphere {
 
   /// The sky filter for the current context: on a GPU the sampler's hardware anisotropy (up to
   /// 16x), which filters the ellipse in one lookup; on a CPU rasteriser (llvmpipe: anisotropic
-  /// filtering there is ~20x slower and blurs wrongly, docs/atmosphere.md) the frame layer's
-  /// radial sums where a view reads that layer (two lookups, docs/ocean.md), elsewhere the
-  /// paper's §7.3 average of isotropic lookups spread along the ellipse's major axis (as many as
-  /// its elongation, at most 4: SkyFilter::probes). The environment variable
+  /// filtering there is ~20x slower and blurs wrongly, docs/atmosphere.md) the layers' radial
+  /// sums (two lookups a layer, docs/ocean.md), and for the globe's horizon pixels below 20 km
+  /// the paper's §7.3 average of isotropic lookups spread along the ellipse's major axis (as many
+  /// as its elongation, at most 4: SkyFilter::probes). The environment variable
   /// OCEANGLOBE_SKY_FILTER = hardware | radial | probes | probes9 | single forces one (for
   /// measurements); any other value throws og::InputError.
   static SkyFilter chooseSkyFilter();

@@ -186,6 +186,33 @@ TEST(AtmospherePrecompute, SkyRadialSumsIntegrateTheLayersAlongTheirRadii) {
   }
 }
 
+// Each Sun layer's value below the horizon, which the radial sums' lookups add back, comes from
+// the sky maps' cache on a cached start (no read-back): it must be the layer's corner texel, as
+// on a cold start; the frame layer's, their blend at a fractional weight rounded to a half float
+// as the layer's texels are.
+TEST(AtmospherePrecompute, SkyRadialSumsBelowHorizonFromTheCache) {
+  auto ctx = gl::createHeadlessContext();
+  const test::ScopedEnv env("OCEANGLOBE_SKY_FILTER", "radial");
+  const atmosphere::Parameters p = smallEarth(2);
+  render::AtmosphereOptions o;
+  o.cacheDirectory = freshDir("atmosphere-cache-radial-test");
+  { render::Atmosphere cold(p, o); }
+  render::Atmosphere cached(p, o);
+  ASSERT_TRUE(cached.timing().fromCache);
+  cached.prepareSunLayerSums();
+  const int layers = p.tables.skyMapLayers;
+  for (const int k : {0, layers / 2, layers - 1}) {
+    const std::vector<float> map = cached.readSkyMap(k);
+    const glm::vec3 below = cached.skyRadialSums().belowHorizon(k);
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(below[c], map[static_cast<std::size_t>(c)]) << "layer " << k << " channel " << c;
+  }
+  cached.prepareFrameSkyLayer(0.63 * render::Atmosphere::kSkyMapMaxZenithRad);  // a fractional weight
+  const std::vector<float> frame = cached.readSkyMap(layers);
+  const glm::vec3 below = cached.skyRadialSums().belowHorizon(layers);
+  for (int c = 0; c < 3; ++c)  // within a half float's step (the GPU's blend may round the other way)
+    EXPECT_NEAR(below[c], frame[static_cast<std::size_t>(c)], 1e-3f * frame[static_cast<std::size_t>(c)]) << "frame channel " << c;
+}
+
 TEST(AtmospherePrecompute, CacheIsHitAndCorruptCacheIsRebuilt) {
   auto ctx = gl::createHeadlessContext();
   atmosphere::Parameters p = smallEarth(2);
