@@ -284,6 +284,9 @@ void GlobeRenderer::render(const FrameInput& f) {
   floorInReachFrame_ = false;  // (drawOcean's, below the ceiling)
   terrain_->setSeaCrestM(patterns_->amplitudeBoundM() + 1.0);  // (+ 1 m: the morph's and chords' rounding)
   terrain_->setCoarseLandMask(coarseMaskFrame_);
+  // Above the ceiling the globe's sea reads the Sun layers' radial sums: made once, before any of
+  // its programs is bound (Atmosphere::bind sets their uniforms).
+  if (!grid) atmosphere_->prepareSunLayerSums();
 
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glBindFramebuffer(GL_FRAMEBUFFER, hdr_.fbo.id());
@@ -798,8 +801,6 @@ void GlobeRenderer::setGlobeUniforms(const gl::Program& globe, const geo::Camera
   globe.set("uElevationWraps", elevationWraps_);
   glBindTextureUnit(gl::kUnitElevation, elevation_.id());
   imagery_->bind(globe);
-  // The sea's sky above the ceiling (once, before bind sets their uniforms).
-  if (view.position.heightM >= kOceanGridMaxHeightM) atmosphere_->prepareSunLayerSums();
   atmosphere_->bind(globe);
   atmosphere_->bindSkyMaps();
 }
