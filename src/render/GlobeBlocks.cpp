@@ -140,15 +140,19 @@ GlobeBlocks classifyGlobeBlocks(const geo::CameraView& view, int width, int heig
                                 const data::LandMaskPyramid& mask, const OpenSeaMap* openSea,
                                 const GlobeSkyOutline* sky) {
   GlobeBlocks b;
-  b.rect = rect;
-  b.columns = (rect[2] + kGlobeBlockPx - 1) / kGlobeBlockPx;
-  b.rows = (rect[3] + kGlobeBlockPx - 1) / kGlobeBlockPx;
+  // The lattice on multiples of kGlobeBlockPx from the frame's corner, rect widened down to it:
+  // llvmpipe rasterises and shades blocks of 4 x 4 pixels at multiples of 4, and a block off
+  // that lattice touches nine of them instead of four (orbit's per-pixel draw: +15 %).
+  const int x0 = rect[0] / kGlobeBlockPx * kGlobeBlockPx, y0 = rect[1] / kGlobeBlockPx * kGlobeBlockPx;
+  b.rect = {x0, y0, rect[2] + rect[0] - x0, rect[3] + rect[1] - y0};
+  b.columns = (b.rect[2] + kGlobeBlockPx - 1) / kGlobeBlockPx;
+  b.rows = (b.rect[3] + kGlobeBlockPx - 1) / kGlobeBlockPx;
   // The corners, shared between neighbouring blocks.
   const int cornerColumns = b.columns + 1;
   std::vector<CornerHit> corners(static_cast<std::size_t>(cornerColumns) * static_cast<std::size_t>(b.rows + 1));
   for (int j = 0; j <= b.rows; ++j)
     for (int i = 0; i <= b.columns; ++i) {
-      const int x = rect[0] + std::min(i * kGlobeBlockPx, rect[2]), y = rect[1] + std::min(j * kGlobeBlockPx, rect[3]);
+      const int x = x0 + std::min(i * kGlobeBlockPx, b.rect[2]), y = y0 + std::min(j * kGlobeBlockPx, b.rect[3]);
       corners[static_cast<std::size_t>(j) * static_cast<std::size_t>(cornerColumns) + static_cast<std::size_t>(i)] =
           cornerHit(view, 2.0 * x / width - 1.0, 2.0 * y / height - 1.0);
     }

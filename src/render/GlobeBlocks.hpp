@@ -41,7 +41,9 @@ struct GlobeSkyOutline {
 };
 
 struct GlobeBlocks {
-  std::array<int, 4> rect{0, 0, 0, 0};  ///< pixels covered: x, y (lower-left origin), width, height
+  /// Pixels covered: x, y (lower-left origin), width, height; the rect asked for, its lower-left
+  /// corner moved down to multiples of kGlobeBlockPx.
+  std::array<int, 4> rect{0, 0, 0, 0};
   int columns = 0, rows = 0;            ///< blocks across rect (the last ones may be partial)
   std::vector<GlobeBlockClass> classes;  ///< row-major from rect's lower-left block
 
