@@ -24,6 +24,8 @@ uniform vec3 uTileOffset;      // tile centre - eye, m
 // The parent's screen-space error over the limit at 1 m: (parent spacing) x (pixels per
 // radian) / (limit in pixels); 0 for tiles that do not morph (forced levels, no parent drawn).
 uniform float uMorphScale;
+uniform float uFloorClipM;     // m; 0: none (see main)
+uniform float uFloorClipFarM;  // m
 
 out vec3 vRelative;
 out vec3 vNormal;
@@ -66,6 +68,19 @@ void main() {
   vNormal = aNormal;
   vInfo = vec4(aInfo.x + m * dot(aMorph, up), aInfo.yzw);
   gl_Position = uViewProjection * vec4(vRelative, 1.0);
+#if !defined(TERRAIN_SHADOW_CASTER) && !defined(TERRAIN_LAND_ONLY)
+  // Below the grid's ceiling terrain.frag discards the floor deeper than a metre but where the
+  // land mask holds land at the view ray's sea crossing, ρ a / (a - h) across the eye's
+  // vertical for a point ρ across it, h high, the eye a high. Within uFloorClipM = L of the
+  // eye the mask holds none at the level the test reads out to uFloorClipFarM from the eye
+  // (TerrainRenderer::floorClip): the clipper cuts off the floor whose crossing lies there,
+  // before any fragment (enabled only then). Its distance is a ρ - L (a - h), (a - h) times the
+  // crossing's beyond L: ρ and the distance are convex, so between vertices their
+  // interpolation is never below a kept fragment's own.
+  float across = length(vRelative - dot(vRelative, uCamUp) * uCamUp);
+  gl_ClipDistance[0] = max(max(vInfo.x + 1.0, length(vRelative) - uFloorClipFarM),
+                           uCamAltitude * across - uFloorClipM * (uCamAltitude - vInfo.x));
+#endif
 #ifdef TERRAIN_SHADOW_CASTER
   // Ground below sea level casts no shadow (terrain/shadow_depth.frag): the clipper cuts it
   // off where the interpolated height crosses 0, as a discard would per fragment, so the

@@ -147,6 +147,44 @@ std::uint64_t LandMask::block(int column, int row) const {
   return blocks_[index];
 }
 
+bool LandMask::waterAround(double latitudeDeg, double longitudeDeg, double radiusM, bool fine) const {
+  if (fine && !hasFineLevel()) return false;
+  // Degrees per metre along a meridian over the smallest radius of curvature anywhere (the
+  // meridian's at the equator, a (1 - e²) = 6335 km), along a parallel over its cosine at the
+  // circle's farthest latitude.
+  constexpr double kMinCurvatureRadiusM = 6.335e6;
+  const double dLatDeg = radiusM / kMinCurvatureRadiusM * (180.0 / std::numbers::pi);
+  const double farthestLatDeg = std::abs(latitudeDeg) + dLatDeg;
+  if (farthestLatDeg >= 89.0) return false;
+  const double dLonDeg = dLatDeg / std::cos(farthestLatDeg * std::numbers::pi / 180.0);
+  const int per = fine ? kFinePerCell : 1;
+  const double cellDeg = cellDeg_ / per;
+  const int columns = width_ * per, rows = height_ * per;
+  // The B-spline reads cells up to 1.5 cells from a point: 2 cells of margin.
+  const int c0 = static_cast<int>(std::floor((longitudeDeg - dLonDeg - westDeg_) / cellDeg)) - 2;
+  const int c1 = static_cast<int>(std::floor((longitudeDeg + dLonDeg - westDeg_) / cellDeg)) + 2;
+  const int r0 = std::max(static_cast<int>(std::floor((latitudeDeg - dLatDeg - southDeg_) / cellDeg)) - 2, 0);
+  const int r1 = std::min(static_cast<int>(std::floor((latitudeDeg + dLatDeg - southDeg_) / cellDeg)) + 2, rows - 1);
+  if (c1 - c0 >= columns || (!global() && (c0 < 0 || c1 >= columns))) return false;
+  // A 2′ cell at a time: its own class where it is not refined, else its block's bits in range.
+  const auto floorDiv = [per](int v) { return v >= 0 ? v / per : -((-v + per - 1) / per); };
+  for (int cr = r0 / per; cr <= r1 / per; ++cr)
+    for (int cc = floorDiv(c0); cc <= floorDiv(c1); ++cc) {
+      const int column = ((cc % width_) + width_) % width_;
+      if (!fine || !refined(column, cr)) {
+        if (cell(column, cr)) return false;
+        continue;
+      }
+      const int i0 = std::max(c0 - cc * per, 0), i1 = std::min(c1 - cc * per, per - 1);
+      const int j0 = std::max(r0 - cr * per, 0), j1 = std::min(r1 - cr * per, per - 1);
+      const auto rowBits = static_cast<std::uint64_t>(((1u << (i1 + 1)) - 1u) & ~((1u << i0) - 1u));
+      std::uint64_t used = 0;
+      for (int j = j0; j <= j1; ++j) used |= rowBits << (8 * j);
+      if ((block(column, cr) & used) != 0) return false;
+    }
+  return true;
+}
+
 float LandMask::fineFraction(double latitudeDeg, double longitudeDeg) const {
   // landFraction's B-spline on the fine cells (a global mask: longitude wraps, rows clamp).
   const int n = kFinePerCell, cols = width_ * n, rows = height_ * n;

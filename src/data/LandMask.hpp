@@ -52,6 +52,14 @@ class LandMask {
   /// three, smooth between; 0 without a fine level.
   [[nodiscard]] double fineWeight(double footprintDeg) const;
 
+  /// Whether the mask holds no land within `radiusM` (metres on the ground, any direction) of a
+  /// point, so that landFraction is 0 there: every cell of the box around that circle and the
+  /// B-spline's reach (the 3 × 3 cells about a point's nearest centre) is water — the 2′
+  /// level's land bits (`fine` false) or the fine cells (`fine` true; a cell that is not
+  /// refined as its own class; needs hasFineLevel()). False within a degree of a pole, and
+  /// on a regional mask where the box leaves it.
+  [[nodiscard]] bool waterAround(double latitudeDeg, double longitudeDeg, double radiusM, bool fine) const;
+
   /// A layer height (m) made to agree with the mask: on land at least, on water at most,
   /// kCoastRampM × (fraction − 0.5), so the zero contour is the mask's coast and heights stay
   /// continuous across it. On water that bound is scaled by 1 − `keepDepth` (0-1, the layer's

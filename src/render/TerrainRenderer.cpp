@@ -352,6 +352,10 @@ void TerrainRenderer::drawTiles(const geo::CameraView& view, const std::vector<c
                                 GLenum depthFunc) {
   const gl::Program& p = variant(bits);
   setFrameUniforms(p, view, sunDirectionEcef, seaFromGlobe);
+  p.set("uFloorClipM", static_cast<float>(floorClip_.clipM));
+  p.set("uFloorClipFarM", static_cast<float>(floorClip_.farM));
+  const bool clipFloor = floorClip_.clipM > 0.0 && (bits & kLandOnly) == 0;
+  if (clipFloor) glEnable(GL_CLIP_DISTANCE0);
   glBindTextureUnit(gl::kUnitShadowMap, shadowMap_.id());
   p.use();
   glBindVertexArray(vao_.id());
@@ -379,6 +383,30 @@ void TerrainRenderer::drawTiles(const geo::CameraView& view, const std::vector<c
     glDrawElements(GL_TRIANGLES, indexCount_ - gridIndices, GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(static_cast<std::uintptr_t>(gridIndices) * sizeof(std::uint32_t)));
   }
+  if (clipFloor) glDisable(GL_CLIP_DISTANCE0);
+}
+
+TerrainRenderer::FloorClip TerrainRenderer::floorClip(const geo::CameraView& view, int heightPx) const {
+  if (!floorClipOn_) return {};
+  const data::LandMask* mask = cache_.heights().landMask();
+  if (mask == nullptr) return {1e9, 1e9};  // terrain.frag discards all of that floor
+  // terrain.frag's coast test blends the levels by its footprint, t pixelRad / (0.2 a) at most
+  // (terrain/landmask.glsl's coastFootprintRad) for a fragment t away: up to one fine cell, out
+  // to farM, the fine level alone decides. The pixel's angle is largest at the frame's centre
+  // (10 % of margin for the shader's screen derivatives).
+  const bool fine = mask->hasFineLevel() && !coarseMask_;
+  const double pixelRad = 1.1 * 2.0 * std::tan(0.5 * view.verticalFovRad) / heightPx;
+  const double fineCellRad = mask->cellDeg() / data::LandMask::kFinePerCell * std::numbers::pi / 180.0;
+  const double lat = view.position.latitudeDeg, lon = view.position.longitudeDeg;
+  double r = 0.0;
+  for (double step = 0.5 * kMaxFloorClipM; step >= 16.0; step *= 0.5)
+    if (mask->waterAround(lat, lon, r + step, fine)) r += step;
+  // Farther out the coarse level must hold no land either.
+  const double farM = !fine || mask->waterAround(lat, lon, r, false) ? 1e9 : fineCellRad * 0.2 * geo::kWgs84SemiMajorM / pixelRad;
+  // The shader's sea crossing: its offset from the point taken in the point's tangent plane and
+  // turned into an angle over the equatorial radius (up to 0.7 % off), the distance across
+  // the eye's vertical (not along the ground: 2e-5 off at 65 km).
+  return r > 0.0 ? FloorClip{std::max(0.97 * r - 20.0, 0.0), farM} : FloorClip{};
 }
 
 double TerrainRenderer::seaSeenMaxHeightM(const geo::CameraView& view,
@@ -532,6 +560,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
                              (aerialTable ? kAerialTable : 0u);
   waterBits_ = frameBits;
   waterSunDirection_ = sunDirectionEcef;
+  floorClip_ = seaFromGlobe ? FloorClip{} : floorClip(view, height);
   // Tiles all above the sea and away from the poles need none of terrain.frag's discards and
   // coast test (their skirts may hang under the sea, where the grid's surface hides them but
   // for a pixel at the horizon): drawn without them (kLandOnly), since llvmpipe runs the test's

@@ -112,6 +112,23 @@ class TerrainRenderer {
   /// Whether TerrainStats::seaSeenMaxHeightM keeps only the vertices around which the sea is
   /// seen (the default) or takes every selected tile's highest point (the tests' reference).
   void setSeaSightTest(bool on) { seaSightTest_ = on; }
+  /// Below the grid's ceiling, whether the floor deeper than a metre that terrain.frag would
+  /// discard is clipped before its fragments where the land mask holds no land around the eye
+  /// (floorClip; the default), or every fragment of it is tested (the tests' reference).
+  void setFloorClip(bool on) { floorClipOn_ = on; }
+  /// The floor a frame clips (setFloorClip, terrain.vert): deeper than a metre, its view ray
+  /// crossing sea level within clipM (m) across the eye's vertical, and no farther than farM
+  /// from the eye. The land mask holds no land within clipM of the eye's foot (less a margin)
+  /// at the level that decides terrain.frag's coast test there: the fine one where the pixels'
+  /// footprints resolve it, out to farM, and both beyond (farM 1e9). 1e9 for both where no
+  /// mask decides the coast (every such fragment is discarded); 0 (none) above the ceiling and
+  /// when off.
+  struct FloorClip {
+    double clipM = 0.0, farM = 0.0;
+  };
+  [[nodiscard]] FloorClip floorClip(const geo::CameraView& view, int heightPx) const;
+  /// The farthest floorClip looks for land.
+  static constexpr double kMaxFloorClipM = 65536.0;
   /// Whether the vertices' aerial perspective comes from a table made each frame (three lookups
   /// instead of ten into the 4D tables: llvmpipe shades vertices on one thread) up to
   /// kAerialTableMaxHeightM, or is computed per vertex (the tests' reference).
@@ -224,6 +241,8 @@ class TerrainRenderer {
   bool coarseMask_ = false;  ///< setCoarseLandMask
   double seaCrestM_ = 30.0;  ///< setSeaCrestM
   bool seaSightTest_ = true;  ///< setSeaSightTest
+  bool floorClipOn_ = true;   ///< setFloorClip
+  FloorClip floorClip_;       ///< this frame's (none above the ceiling)
   unsigned waterBits_ = 0;  ///< drawWaterTiles()' variant bits this frame
   glm::dvec3 waterSunDirection_{1.0, 0.0, 0.0};
   std::vector<const terrain::Tile*> waterTiles_;  ///< left by draw() for drawWaterTiles()

@@ -92,6 +92,8 @@ class Heightfield {
   /// True when the land mask decides the coast (a global layer coarser than it): land is then
   /// never below sea level (layerHeightM), nor water above it.
   [[nodiscard]] bool coastFromMask() const { return mask_ != nullptr; }
+  /// The land mask that decides the coast, or nullptr (coastFromMask).
+  [[nodiscard]] const data::LandMask* landMask() const { return mask_; }
   [[nodiscard]] const DetailOctaves& octaves() const { return octaves_; }
   [[nodiscard]] const data::LatLonGrid& layer() const { return *layer_; }
   [[nodiscard]] const std::shared_ptr<const data::LatLonGrid>& sharedLayer() const { return layer_; }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "data/Elevation.hpp"
+#include "geo/Camera.hpp"
 #include "geo/Sun.hpp"
 #include "gl/Context.hpp"
 #include "render/GlobeRenderer.hpp"
@@ -332,4 +333,38 @@ TEST(TerrainRender, AerialTableKeepsThePerVertexPicture) {
     EXPECT_LT(change.mean, 0.002) << c.name;
     EXPECT_GT(change.worst, 0.0) << c.name << ": the table is not in use";
   }
+}
+
+// Below the grid's ceiling the floor deeper than a metre whose view rays cross sea level where
+// the land mask holds no land is clipped before its fragments (TerrainRenderer::floorClip,
+// terrain.vert) instead of discarded by terrain.frag's coast test: the same picture. From 2 m
+// in the Strait of Gibraltar (the bench's sea-2m-horizon: land 3 km off), from 2 m and 150 m
+// off Tarifa's beach looking at it (the mesh dips under the sea where the mask holds land, so
+// the shader keeps some floor), and over the Great Bahama Bank (no land for kilometres).
+TEST(TerrainRender, FloorClippedAroundTheEyeKeepsThePicture) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  const std::vector<ViewCase> cases{
+      kGibraltar2m,
+      {"tarifa_2m_beach", {.latDeg = 35.995, .lonDeg = -5.595, .heightM = 2.0, .headingDeg = 300.0, .pitchDeg = -3.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0},
+      {"tarifa_150m_beach", {.latDeg = 35.99, .lonDeg = -5.59, .heightM = 150.0, .headingDeg = 300.0, .pitchDeg = -25.0, .fovDeg = 45.0, .width = 320, .height = 180}, 40.0, 200.0},
+      {"bahamas_2m", {.latDeg = 24.2, .lonDeg = -78.2, .heightM = 2.0, .headingDeg = 270.0, .pitchDeg = -10.0, .fovDeg = 45.0, .width = 320, .height = 180}, 30.0, 120.0},
+  };
+  double clipped = 0.0;
+  for (const ViewCase& c : cases) {
+    const render::FrameInput f = test::frameOf(c.view, c.sunElevationDeg, c.sunAzimuthDeg);
+    const geo::CameraView view = geo::makeCameraView(f.camera, f.width, f.height);
+    const double clipM = r.terrain().floorClip(view, f.height).clipM;
+    clipped = std::max(clipped, clipM);
+    const test::OffAndOn images = test::renderOffAndOn(r, f, [&r](bool on) { r.terrain().setFloorClip(on); });
+    const test::RadianceChange change = test::radianceChange(images.off, images.on, 0.02);
+    std::printf("%s: floor clipped within %.0f m; largest change %.4f, %d pixels over 2 %%\n", c.name, clipM,
+                change.worst, change.over);
+    EXPECT_LE(change.over, 2) << c.name;
+    EXPECT_LT(change.mean, 1e-4) << c.name;
+    if (change.over > 2) test::savePng(r, std::string("floor_clip_") + c.name);
+  }
+  EXPECT_GT(clipped, 2000.0) << "the clip is in use";
+  r.terrain().setFloorClip(false);
+  EXPECT_EQ(r.terrain().floorClip(geo::makeCameraView(test::frameOf(kGibraltar2m.view, 20.0, 250.0).camera, 320, 180), 180).clipM, 0.0);
 }

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <numbers>
 #include <optional>
 #include <random>
 #include <string>
@@ -253,6 +255,47 @@ TEST(LandMask, BadBitPngIsAnInputErrorNamingTheFile) {
 
 // The pyramid's answer for a rectangle holds what a scan of its cells finds (a refined cell is
 // both), at every size, across the antimeridian and at the poles' clamped rows.
+TEST(LandMask, WaterAroundHasNoLandFractionWithinItsRadius) {
+  // Where waterAround holds, the fraction is 0 at every point within the radius, at either
+  // level and any footprint (terrain.frag's coast test there discards, so terrain.vert may clip
+  // the floor); the largest radius that holds reaches land just beyond it. Around the Strait of
+  // Gibraltar (coasts 2-15 km apart, fine cells), off Tarifa's beach, the open Atlantic.
+  const LandMask& mask = og::data::defaultLandMask();
+  struct Place {
+    double lat, lon;
+  };
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int tested = 0;
+  for (const Place p : {Place{36.0, -5.5}, Place{35.995, -5.595}, Place{35.95, -5.45}, Place{20.0, -40.0}}) {
+    for (const bool fine : {true, false}) {
+      double r = 0.0;
+      for (double step = 32768.0; step >= 16.0; step *= 0.5)
+        if (mask.waterAround(p.lat, p.lon, r + step, fine)) r += step;
+      if (r == 0.0) continue;
+      ++tested;
+      for (int k = 0; k < 4000; ++k) {
+        // A point within r (m) on the ellipsoid's tightest curvature (the test's own margin).
+        const double s = r * std::sqrt(unit(rng)) / 6.4e6, az = 2.0 * std::numbers::pi * unit(rng);
+        const double lat = p.lat + s * std::cos(az) * 180.0 / std::numbers::pi;
+        const double lon = p.lon + s * std::sin(az) * 180.0 / std::numbers::pi / std::cos(lat * std::numbers::pi / 180.0);
+        ASSERT_EQ(fine ? mask.fineFraction(lat, lon) : mask.landFraction(lat, lon), 0.0f)
+            << p.lat << ", " << p.lon << (fine ? " fine" : " coarse") << " within " << r << " m";
+      }
+      // Short of the search's end, land lies within twice the radius and the cells' reach.
+      const double cellM = mask.cellDeg() / (fine ? LandMask::kFinePerCell : 1) * 111000.0;
+      if (r < 60000.0) {
+        EXPECT_FALSE(mask.waterAround(p.lat, p.lon, 2.0 * r + 4.0 * cellM + 32.0, fine)) << p.lat << ", " << p.lon;
+      }
+      std::printf("%.3f, %.3f %s: water within %.0f m\n", p.lat, p.lon, fine ? "fine" : "coarse", r);
+    }
+  }
+  EXPECT_GE(tested, 5);
+  EXPECT_TRUE(mask.waterAround(20.0, -40.0, 30000.0, true));  // the open Atlantic
+  EXPECT_FALSE(mask.waterAround(36.0, -5.5, 5000.0, true));    // Spain 3 km north
+  EXPECT_FALSE(mask.waterAround(89.5, 0.0, 10.0, false));      // no certificate at the pole
+}
+
 TEST(LandMaskPyramid, RectanglesHoldWhatTheirCellsHold) {
   const og::data::LandMask& mask = og::data::defaultLandMask();
   const og::data::LandMaskPyramid pyramid(mask);
