@@ -77,9 +77,12 @@ void main() {
   // before any fragment (enabled only then). Its distance is a ρ - L (a - h), (a - h) times the
   // crossing's beyond L: ρ and the distance are convex, so between vertices their
   // interpolation is never below a kept fragment's own.
-  float across = length(vRelative - dot(vRelative, uCamUp) * uCamUp);
-  gl_ClipDistance[0] = max(max(vInfo.x + 1.0, length(vRelative) - uFloorClipFarM),
-                           uCamAltitude * across - uFloorClipM * (uCamAltitude - vInfo.x));
+  // Precise: the coverage and the shading programs of a tile (TerrainRenderer::drawCovered)
+  // must clip alike for their depths to match.
+  precise float across = length(vRelative - dot(vRelative, uCamUp) * uCamUp);
+  precise float floorClip = max(max(vInfo.x + 1.0, length(vRelative) - uFloorClipFarM),
+                                uCamAltitude * across - uFloorClipM * (uCamAltitude - vInfo.x));
+  gl_ClipDistance[0] = floorClip;
 #endif
 #ifdef TERRAIN_SHADOW_CASTER
   // Ground below sea level casts no shadow (terrain/shadow_depth.frag): the clipper cuts it

@@ -354,7 +354,11 @@ void TerrainRenderer::drawTiles(const geo::CameraView& view, const std::vector<c
   setFrameUniforms(p, view, sunDirectionEcef, seaFromGlobe);
   p.set("uFloorClipM", static_cast<float>(floorClip_.clipM));
   p.set("uFloorClipFarM", static_cast<float>(floorClip_.farM));
-  const bool clipFloor = floorClip_.clipM > 0.0 && (bits & kLandOnly) == 0;
+  // Single-sampled only: with samples the clip would cut each sample where the discard cuts
+  // the pixel (an edge anti-aliased along the -1 m contour: another picture).
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  const bool clipFloor = floorClip_.clipM > 0.0 && (bits & kLandOnly) == 0 && samples <= 1;
   if (clipFloor) glEnable(GL_CLIP_DISTANCE0);
   glBindTextureUnit(gl::kUnitShadowMap, shadowMap_.id());
   p.use();
@@ -387,13 +391,13 @@ void TerrainRenderer::drawTiles(const geo::CameraView& view, const std::vector<c
 }
 
 TerrainRenderer::FloorClip TerrainRenderer::floorClip(const geo::CameraView& view, int heightPx) const {
-  if (!floorClipOn_) return {};
+  if (!floorClipOn_ || view.position.heightM <= 0.0) return {};  // (the eye at or under the sea: its crossing test differs)
   const data::LandMask* mask = cache_.heights().landMask();
   if (mask == nullptr) return {1e9, 1e9};  // terrain.frag discards all of that floor
   // terrain.frag's coast test blends the levels by its footprint, t pixelRad / (0.2 a) at most
-  // (terrain/landmask.glsl's coastFootprintRad) for a fragment t away: up to one fine cell, out
-  // to farM, the fine level alone decides. The pixel's angle is largest at the frame's centre
-  // (10 % of margin for the shader's screen derivatives).
+  // (terrain/landmask.glsl's coastFootprintRad) for a fragment t away: up to one fine cell the
+  // fine level alone decides. The pixel's angle is largest at the frame's centre (10 % of
+  // margin for the shader's screen derivatives).
   const bool fine = mask->hasFineLevel() && !coarseMask_;
   const double pixelRad = 1.1 * 2.0 * std::tan(0.5 * view.verticalFovRad) / heightPx;
   const double fineCellRad = mask->cellDeg() / data::LandMask::kFinePerCell * std::numbers::pi / 180.0;
@@ -401,12 +405,17 @@ TerrainRenderer::FloorClip TerrainRenderer::floorClip(const geo::CameraView& vie
   double r = 0.0;
   for (double step = 0.5 * kMaxFloorClipM; step >= 16.0; step *= 0.5)
     if (mask->waterAround(lat, lon, r + step, fine)) r += step;
-  // Farther out the coarse level must hold no land either.
-  const double farM = !fine || mask->waterAround(lat, lon, r, false) ? 1e9 : fineCellRad * 0.2 * geo::kWgs84SemiMajorM / pixelRad;
-  // The shader's sea crossing: its offset from the point taken in the point's tangent plane and
-  // turned into an angle over the equatorial radius (up to 0.7 % off), the distance across
-  // the eye's vertical (not along the ground: 2e-5 off at 65 km).
-  return r > 0.0 ? FloorClip{std::max(0.97 * r - 20.0, 0.0), farM} : FloorClip{};
+  // Farther than the fine level's reach the coarse level must hold no land either; and no
+  // farther than kFloorClipFarM in any case, which bounds the shader's error in its crossing:
+  // from the floor point it steps towards the eye (at most its distance) in latitude and
+  // longitude over the equatorial radius (up to 0.7 % off the meridian's) and along neither a
+  // great circle (off it by the step² tan(latitude) / 2R), and measures across the eye's
+  // vertical, not along the ground (2e-5 off at 65 km).
+  const double fineReachM = fineCellRad * 0.2 * geo::kWgs84SemiMajorM / pixelRad;
+  const double farM = std::min(!fine || mask->waterAround(lat, lon, r, false) ? kFloorClipFarM : fineReachM, kFloorClipFarM);
+  const double tanLat = std::tan(std::min(std::abs(lat) + 1.0, 89.0) * std::numbers::pi / 180.0);
+  const double marginM = 0.01 * farM + farM * farM * tanLat / (2.0 * 6.3e6) + 20.0;
+  return r > marginM ? FloorClip{r - marginM, farM} : FloorClip{};
 }
 
 double TerrainRenderer::seaSeenMaxHeightM(const geo::CameraView& view,

@@ -116,19 +116,22 @@ class TerrainRenderer {
   /// discard is clipped before its fragments where the land mask holds no land around the eye
   /// (floorClip; the default), or every fragment of it is tested (the tests' reference).
   void setFloorClip(bool on) { floorClipOn_ = on; }
-  /// The floor a frame clips (setFloorClip, terrain.vert): deeper than a metre, its view ray
-  /// crossing sea level within clipM (m) across the eye's vertical, and no farther than farM
-  /// from the eye. The land mask holds no land within clipM of the eye's foot (less a margin)
-  /// at the level that decides terrain.frag's coast test there: the fine one where the pixels'
-  /// footprints resolve it, out to farM, and both beyond (farM 1e9). 1e9 for both where no
-  /// mask decides the coast (every such fragment is discarded); 0 (none) above the ceiling and
-  /// when off.
+  /// The floor a frame clips (setFloorClip, terrain.vert; single-sampled frames): deeper than
+  /// a metre, its view ray crossing sea level within clipM (m) across the eye's vertical, and
+  /// no farther than farM from the eye. The land mask holds no land within clipM of the eye's
+  /// foot (plus a margin for the shader's crossing) at the level that decides terrain.frag's
+  /// coast test there: the fine one out to where the pixels' footprints stop resolving it,
+  /// both levels beyond, out to kFloorClipFarM. 1e9 for both where no mask decides the coast
+  /// (every such fragment is discarded); 0 (none) above the ceiling, with the eye at or
+  /// under the sea, and when off.
   struct FloorClip {
     double clipM = 0.0, farM = 0.0;
   };
   [[nodiscard]] FloorClip floorClip(const geo::CameraView& view, int heightPx) const;
   /// The farthest floorClip looks for land.
   static constexpr double kMaxFloorClipM = 65536.0;
+  /// The farthest from the eye floorClip clips (FloorClip::farM at most).
+  static constexpr double kFloorClipFarM = 60000.0;
   /// Whether the vertices' aerial perspective comes from a table made each frame (three lookups
   /// instead of ten into the 4D tables: llvmpipe shades vertices on one thread) up to
   /// kAerialTableMaxHeightM, or is computed per vertex (the tests' reference).

@@ -253,8 +253,6 @@ TEST(LandMask, BadBitPngIsAnInputErrorNamingTheFile) {
   EXPECT_DOUBLE_EQ(grid.northDeg, 90.0);
 }
 
-// The pyramid's answer for a rectangle holds what a scan of its cells finds (a refined cell is
-// both), at every size, across the antimeridian and at the poles' clamped rows.
 TEST(LandMask, WaterAroundHasNoLandFractionWithinItsRadius) {
   // Where waterAround holds, the fraction is 0 at every point within the radius, at either
   // level and any footprint (terrain.frag's coast test there discards, so terrain.vert may clip
@@ -296,6 +294,8 @@ TEST(LandMask, WaterAroundHasNoLandFractionWithinItsRadius) {
   EXPECT_FALSE(mask.waterAround(89.5, 0.0, 10.0, false));      // no certificate at the pole
 }
 
+// The pyramid's answer for a rectangle holds what a scan of its cells finds (a refined cell is
+// both), at every size, across the antimeridian and at the poles' clamped rows.
 TEST(LandMaskPyramid, RectanglesHoldWhatTheirCellsHold) {
   const og::data::LandMask& mask = og::data::defaultLandMask();
   const og::data::LandMaskPyramid pyramid(mask);
