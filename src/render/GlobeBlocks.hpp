@@ -53,7 +53,8 @@ struct GlobeBlocks {
 };
 
 /// Classes the blocks of kGlobeBlockPx² pixels of `rect` (x, y, width, height; lower-left
-/// origin) in a frame of width × height pixels seen by `view`. A block is land or sea when all
+/// origin, within the frame) in a frame of width × height pixels seen by `view`, on a lattice
+/// of multiples of kGlobeBlockPx from the frame's corner (GlobeBlocks::rect). A block is land or sea when all
 /// its corners hit the ellipsoid at a cosine of incidence of at least kMinCosIncidence and the
 /// mask's cells within reach of its footprint (its corners' latitude-longitude box, widened by
 /// a quarter and by the B-spline's reach of a cell) are all that class, none refined; open
