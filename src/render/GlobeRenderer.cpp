@@ -622,6 +622,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   if (aerialTableFrame_ && !landOnly) aerialTable_.update(*atmosphere_, view, f.sunDirectionEcef);
   if (!grid) scissorToGlobe(view, f);
   lastSkyLowFactor_ = 1;
+  if (grid && timer_ != nullptr) timer_->mark("globe sky");  // (its low-resolution draw)
   const bool skyLow = grid && drawSkyLow(view, f);
   // Sky, edge, surface, land, sea, open sea: the stencil counts 1-6 (one lower below 20 km).
   const std::vector<int> parts = globeParts(grid);
@@ -635,6 +636,10 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
       listedCounts.push_back(count);
       continue;
     }
+    // The breakdown's passes: each part apart from the classifying draws ("globe").
+    static constexpr std::array<const char*, 6> kPassNames{"globe sky",  "globe edge", "globe surface",
+                                                           "globe land", "globe sea",  "globe open sea"};
+    if (timer_ != nullptr) timer_->mark(kPassNames.at(static_cast<std::size_t>(parts[k] - kGlobePart0 - 1)));
     glStencilFunc(GL_EQUAL, count, 0xff);
     const bool readsSkyLow = skyLow && parts[k] == kGlobePart0 + 1;
     const gl::Program& globe = globeProgram(grid, readsSkyLow ? kSkyLowPart : parts[k]);
@@ -654,7 +659,10 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
     }
     if (readsSkyLow) drawSunDisc(view, f, grid);  // over the sky just drawn without it
   }
-  if (!listedCounts.empty()) shadeScatteredParts(view, f, grid, listedCounts);
+  if (!listedCounts.empty()) {
+    if (timer_ != nullptr) timer_->mark("globe edge and surface (listed)");
+    shadeScatteredParts(view, f, grid, listedCounts);
+  }
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_SCISSOR_TEST);
   glDepthMask(grid ? GL_FALSE : GL_TRUE);  // as the caller had it

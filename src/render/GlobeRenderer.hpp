@@ -164,8 +164,11 @@ class GlobeRenderer {
   /// Blocks until the GPU has finished the last frame (for timing).
   static void finish();
 
-  /// Times the passes of every following frame on `timer` (nullptr: none): "globe",
-  /// "terrain shadows", "terrain", "ocean waves" (the FFTs), "ocean", "tone mapping".
+  /// Times the passes of every following frame on `timer` (nullptr: none): "globe" (its
+  /// classifying draws and set-up), its parts ("globe sky", "globe land", "globe sea", "globe
+  /// open sea", "globe edge", "globe surface", or the last two as "globe edge and surface
+  /// (listed)"), "terrain shadows", "terrain", "ocean waves" (the FFTs), "ocean" and the sea's
+  /// steps, "tone mapping".
   void setPassTimer(gl::PassTimer* timer) {
     timer_ = timer;
     terrain_->setPassTimer(timer);
