@@ -166,23 +166,40 @@ bool LandMask::waterAround(double latitudeDeg, double longitudeDeg, double radiu
   const int r0 = std::max(static_cast<int>(std::floor((latitudeDeg - dLatDeg - southDeg_) / cellDeg)) - 2, 0);
   const int r1 = std::min(static_cast<int>(std::floor((latitudeDeg + dLatDeg - southDeg_) / cellDeg)) + 2, rows - 1);
   if (c1 - c0 >= columns || (!global() && (c0 < 0 || c1 >= columns))) return false;
-  // A 2′ cell at a time: its own class where it is not refined, else its block's bits in range.
-  const auto floorDiv = [per](int v) { return v >= 0 ? v / per : -((-v + per - 1) / per); };
-  for (int cr = r0 / per; cr <= r1 / per; ++cr)
-    for (int cc = floorDiv(c0); cc <= floorDiv(c1); ++cc) {
-      const int column = ((cc % width_) + width_) % width_;
-      if (!fine || !refined(column, cr)) {
-        if (cell(column, cr)) return false;
+  if (fine) return fineClasses(c0, c1, r0, r1) == kFineWater;
+  for (int r = r0; r <= r1; ++r)
+    for (int c = c0; c <= c1; ++c)
+      if (cell(((c % width_) + width_) % width_, r)) return false;
+  return true;
+}
+
+std::uint8_t LandMask::fineClasses(int fc0, int fc1, int fr0, int fr1) const {
+  constexpr int n = kFinePerCell;
+  const auto cellOf = [](int fine) { return fine >= 0 ? fine / n : -((-fine + n - 1) / n); };
+  const bool wraps = global();
+  std::uint8_t c = 0;
+  for (int cy = fr0 / n; cy <= fr1 / n && c != (kFineWater | kFineLand); ++cy)
+    for (int cx = cellOf(fc0); cx <= cellOf(fc1) && c != (kFineWater | kFineLand); ++cx) {
+      const int column = wraps ? ((cx % width_) + width_) % width_ : cx;
+      if (column < 0 || column >= width_) {
+        c |= kFineWater;
         continue;
       }
-      const int i0 = std::max(c0 - cc * per, 0), i1 = std::min(c1 - cc * per, per - 1);
-      const int j0 = std::max(r0 - cr * per, 0), j1 = std::min(r1 - cr * per, per - 1);
+      if (!refined(column, cy)) {
+        c |= cell(column, cy) ? kFineLand : kFineWater;
+        continue;
+      }
+      // The fine cells of this cell within the range: bit 8 j + i = fine cell (i, j).
+      const std::uint64_t block = this->block(column, cy);
+      const int i0 = std::max(fc0 - cx * n, 0), i1 = std::min(fc1 - cx * n, n - 1);
+      const int j0 = std::max(fr0 - cy * n, 0), j1 = std::min(fr1 - cy * n, n - 1);
       const auto rowBits = static_cast<std::uint64_t>(((1u << (i1 + 1)) - 1u) & ~((1u << i0) - 1u));
       std::uint64_t used = 0;
       for (int j = j0; j <= j1; ++j) used |= rowBits << (8 * j);
-      if ((block(column, cr) & used) != 0) return false;
+      c |= (block & used) != 0 ? kFineLand : 0;
+      c |= (~block & used) != 0 ? kFineWater : 0;
     }
-  return true;
+  return c;
 }
 
 float LandMask::fineFraction(double latitudeDeg, double longitudeDeg) const {

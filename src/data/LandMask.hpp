@@ -59,6 +59,11 @@ class LandMask {
   /// refined as its own class; needs hasFineLevel()). False within a degree of a pole, and
   /// on a regional mask where the box leaves it.
   [[nodiscard]] bool waterAround(double latitudeDeg, double longitudeDeg, double radiusM, bool fine) const;
+  /// The classes among fine cells fc0 ... fc1 × fr0 ... fr1 (fine cells from the west and south
+  /// edges; rows within the mask; columns wrap on a global mask and count as water outside a
+  /// regional one): bit 0 water, bit 1 land (LandMaskPyramid::Content's values), both as soon as
+  /// both are found. A cell that is not refined holds its own class. Needs hasFineLevel().
+  [[nodiscard]] std::uint8_t fineClasses(int fc0, int fc1, int fr0, int fr1) const;
 
   /// A layer height (m) made to agree with the mask: on land at least, on water at most,
   /// kCoastRampM × (fraction − 0.5), so the zero contour is the mask's coast and heights stay
@@ -91,6 +96,8 @@ class LandMask {
 
   /// Fine cells per cell along each axis (15″ in a 2′ cell).
   static constexpr int kFinePerCell = 8;
+  /// fineClasses' bits.
+  static constexpr std::uint8_t kFineWater = 1, kFineLand = 2;
   /// Adds the fine level to a global mask: `refinedBits` packed as packedBits() (1 = the
   /// cell's fine cells are not all one class), `blocks` one 64-bit word per refined cell in
   /// row-major order (rows south to north, then columns west to east); bit 8 j + i of a word =

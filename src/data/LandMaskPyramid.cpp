@@ -7,6 +7,7 @@ namespace {
 constexpr std::uint8_t kWater = static_cast<std::uint8_t>(LandMaskPyramid::Content::Water);
 constexpr std::uint8_t kLand = static_cast<std::uint8_t>(LandMaskPyramid::Content::Land);
 constexpr std::uint8_t kBoth = static_cast<std::uint8_t>(LandMaskPyramid::Content::Both);
+static_assert(kWater == LandMask::kFineWater && kLand == LandMask::kFineLand, "LandMask::fineClasses' bits");
 }  // namespace
 
 LandMaskPyramid::LandMaskPyramid(const LandMask& mask)
@@ -97,32 +98,8 @@ LandMaskPyramid::Content LandMaskPyramid::fineCells(int fc0, int fc1, int fr0, i
   constexpr int n = LandMask::kFinePerCell;
   const auto cellOf = [](int fine) { return fine >= 0 ? fine / n : -((-fine + n - 1) / n); };
   if (!mask_.hasFineLevel()) return cells(cellOf(fc0), cellOf(fc1), cellOf(fr0), cellOf(fr1));
-  const int width = mask_.width(), rows = mask_.height() * n;
-  fr0 = std::clamp(fr0, 0, rows - 1);
-  fr1 = std::clamp(fr1, 0, rows - 1);
-  std::uint8_t c = 0;
-  for (int cy = fr0 / n; cy <= fr1 / n && c != kBoth; ++cy)
-    for (int cx = cellOf(fc0); cx <= cellOf(fc1) && c != kBoth; ++cx) {
-      const int column = global_ ? ((cx % width) + width) % width : cx;
-      if (column < 0 || column >= width) {
-        c |= kWater;
-        continue;
-      }
-      if (!mask_.refined(column, cy)) {
-        c |= mask_.cell(column, cy) ? kLand : kWater;
-        continue;
-      }
-      // The fine cells of this cell within the range: bit 8 j + i = fine cell (i, j).
-      const std::uint64_t block = mask_.block(column, cy);
-      const int i0 = std::max(fc0 - cx * n, 0), i1 = std::min(fc1 - cx * n, n - 1);
-      const int j0 = std::max(fr0 - cy * n, 0), j1 = std::min(fr1 - cy * n, n - 1);
-      const auto rowBits = static_cast<std::uint64_t>(((1u << (i1 + 1)) - 1u) & ~((1u << i0) - 1u));
-      std::uint64_t used = 0;
-      for (int j = j0; j <= j1; ++j) used |= rowBits << (8 * j);
-      c |= (block & used) != 0 ? kLand : 0;
-      c |= (~block & used) != 0 ? kWater : 0;
-    }
-  return static_cast<Content>(c);
+  const int rows = mask_.height() * n;
+  return static_cast<Content>(mask_.fineClasses(fc0, fc1, std::clamp(fr0, 0, rows - 1), std::clamp(fr1, 0, rows - 1)));
 }
 
 }  // namespace og::data

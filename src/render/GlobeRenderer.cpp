@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <numbers>
+#include <string_view>
 #include <memory>
 #include <cstdint>
 #include <future>
@@ -636,10 +637,12 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
       listedCounts.push_back(count);
       continue;
     }
-    // The breakdown's passes: each part apart from the classifying draws ("globe").
+    // The part's pass in the breakdown, apart from the classifying draws ("globe"); without
+    // "globe ", its name in partSamples_.
     static constexpr std::array<const char*, 6> kPassNames{"globe sky",  "globe edge", "globe surface",
                                                            "globe land", "globe sea",  "globe open sea"};
-    if (timer_ != nullptr) timer_->mark(kPassNames.at(static_cast<std::size_t>(parts[k] - kGlobePart0 - 1)));
+    const char* pass = kPassNames.at(static_cast<std::size_t>(parts[k] - kGlobePart0 - 1));
+    if (timer_ != nullptr) timer_->mark(pass);
     glStencilFunc(GL_EQUAL, count, 0xff);
     const bool readsSkyLow = skyLow && parts[k] == kGlobePart0 + 1;
     const gl::Program& globe = globeProgram(grid, readsSkyLow ? kSkyLowPart : parts[k]);
@@ -653,8 +656,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
     if (!countPartSamples_) {
       draw();
     } else {
-      static constexpr std::array<const char*, 6> kNames{"sky", "edge", "surface", "land", "sea", "open sea"};
-      partSamples_.emplace_back(kNames.at(static_cast<std::size_t>(parts[k] - kGlobePart0 - 1)),
+      partSamples_.emplace_back(std::string(pass).substr(std::string_view("globe ").size()),
                                 gl::queryResult(GL_SAMPLES_PASSED, draw));
     }
     if (readsSkyLow) drawSunDisc(view, f, grid);  // over the sky just drawn without it

@@ -395,9 +395,7 @@ void setConstantWindBin(const gl::Program& program, double speedMs, double towar
   const double azimuth = u != 0.0 || v != 0.0 ? std::atan2(u, v) : 0.0;
   program.set("uWindConst", glm::vec4(static_cast<float>(std::hypot(u, v)), static_cast<float>(azimuth),
                                       static_cast<float>(std::sin(azimuth)), static_cast<float>(std::cos(azimuth))));
-  const double thetaField = 0.5 * pi - azimuth - std::remainder(fieldRotationRad, 2.0 * pi);
-  double b = thetaField / (0.25 * pi);
-  b -= 8.0 * std::floor(b / 8.0);
+  const auto [thetaField, b] = OceanPatterns::fieldWind(azimuth, fieldRotationRad);
   const int bin = static_cast<int>(std::floor(b + 0.5)) & 7;
   const double binAngle = bin * 0.25 * pi;
   program.set("uWindBinConst", bin);
@@ -408,6 +406,13 @@ void setConstantWindBin(const gl::Program& program, double speedMs, double towar
 }
 
 }  // namespace
+
+OceanPatterns::FieldWind OceanPatterns::fieldWind(double towardsRad, double fieldRotationRad) {
+  const double pi = std::numbers::pi;
+  double b = (0.5 * pi - towardsRad - std::remainder(fieldRotationRad, 2.0 * pi)) / (0.25 * pi);
+  b -= 8.0 * std::floor(b / 8.0);
+  return {b * 0.25 * pi, b};
+}
 
 void OceanPatterns::setConstantWind(const gl::Program& program, double speedMs, double towardsRad,
                                     double fieldRotationRad) const {

@@ -71,6 +71,15 @@ class OceanPatterns {
   /// wind.glsl's localWind would find it, and its one bin of the patterns (the nearest).
   void setConstantWind(const gl::Program& program, double speedMs, double towardsRad, double fieldRotationRad) const;
 
+  /// patterns.glsl's fieldWindAngle and windBins in double, for a wind blowing towards
+  /// `towardsRad` (clockwise from north) over a field turned by `fieldRotationRad` from the
+  /// ocean frame: its angle in the field's axes (radians, [0, 2 pi)) and its place among the
+  /// patterns' 8 direction bins of 45° ([0, 8): bin floor(bin), a fraction past it).
+  struct FieldWind {
+    double angleRad = 0.0, bin = 0.0;
+  };
+  [[nodiscard]] static FieldWind fieldWind(double towardsRad, double fieldRotationRad);
+
   /// The defines programs including shaders/ocean/patterns.glsl need.
   [[nodiscard]] static std::vector<std::string> shaderDefines();
 

@@ -410,10 +410,9 @@ std::vector<std::string> OceanRenderer::patternDefines() const {
 }
 
 bool OceanRenderer::windAlongOneBin(double towardsRad, double fieldRotationRad) {
-  // ocean/patterns.glsl's windBins in double: the wind's angle in the field's axes in bins of
-  // 45°, the second bin's weight sin(pi/2 f) for the fraction f past the first.
-  const double thetaField = 0.5 * std::numbers::pi - towardsRad - fieldRotationRad;
-  const double b = thetaField / (0.25 * std::numbers::pi);
+  // ocean/patterns.glsl's windBins: the second bin's weight sin(pi/2 f) for the fraction f past
+  // the first.
+  const double b = OceanPatterns::fieldWind(towardsRad, fieldRotationRad).bin;
   const double f = b - std::floor(b);
   return std::sin(0.5 * std::numbers::pi * std::min(f, 1.0 - f)) < 1e-3;
 }

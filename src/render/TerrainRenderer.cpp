@@ -354,11 +354,7 @@ void TerrainRenderer::drawTiles(const geo::CameraView& view, const std::vector<c
   setFrameUniforms(p, view, sunDirectionEcef, seaFromGlobe);
   p.set("uFloorClipM", static_cast<float>(floorClip_.clipM));
   p.set("uFloorClipFarM", static_cast<float>(floorClip_.farM));
-  // Single-sampled only: with samples the clip would cut each sample where the discard cuts
-  // the pixel (an edge anti-aliased along the -1 m contour: another picture).
-  GLint samples = 0;
-  glGetIntegerv(GL_SAMPLES, &samples);
-  const bool clipFloor = floorClip_.clipM > 0.0 && (bits & kLandOnly) == 0 && samples <= 1;
+  const bool clipFloor = floorClip_.clipM > 0.0 && (bits & kLandOnly) == 0;
   if (clipFloor) glEnable(GL_CLIP_DISTANCE0);
   glBindTextureUnit(gl::kUnitShadowMap, shadowMap_.id());
   p.use();
@@ -569,7 +565,11 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
                              (aerialTable ? kAerialTable : 0u);
   waterBits_ = frameBits;
   waterSunDirection_ = sunDirectionEcef;
-  floorClip_ = seaFromGlobe ? FloorClip{} : floorClip(view, height);
+  // Single-sampled only: with samples the clip would cut each sample where the discard cuts
+  // the pixel (an edge anti-aliased along the -1 m contour: another picture).
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  floorClip_ = seaFromGlobe || samples > 1 ? FloorClip{} : floorClip(view, height);
   // Tiles all above the sea and away from the poles need none of terrain.frag's discards and
   // coast test (their skirts may hang under the sea, where the grid's surface hides them but
   // for a pixel at the horizon): drawn without them (kLandOnly), since llvmpipe runs the test's
