@@ -51,7 +51,9 @@ enum UniformBlockBinding : unsigned {
 /// Binding points of shader storage blocks that several programs share (GLSL: OG_<NAME>); under 8,
 /// the least GL 4.5 guarantees (render/OceanRenderer's own passes use 3-7).
 enum StorageBinding : unsigned {
-  kGlobePixelsBinding = 2,  ///< render/globe_pixels.glsl GlobePixels (GlobeRenderer::shadeScatteredParts)
+  kTerrainAerialBinding = 0,  ///< terrain/tile_vertex.glsl TileAerial (TerrainRenderer::computeTileAerial)
+  kTileVerticesBinding = 1,   ///< terrain/tile_aerial.comp TileVertices (a tile's vertex buffer)
+  kGlobePixelsBinding = 2,    ///< render/globe_pixels.glsl GlobePixels (GlobeRenderer::shadeScatteredParts)
 };
 
 /// The contract as "NAME value" #define bodies, in full double precision.

@@ -56,6 +56,7 @@ const gl::Program& TerrainRenderer::variant(unsigned bits) {
     if ((bits & kNoImageryLayers) != 0) defines.emplace_back("IMAGERY_NO_LAYERS");
     if ((bits & kCoarseMask) != 0) defines.emplace_back("LANDMASK_COARSE_ONLY");
     if ((bits & kAerialTable) != 0) defines.emplace_back("TERRAIN_AERIAL_TABLE");
+    if ((bits & kAerialBuffer) != 0) defines.emplace_back("TERRAIN_AERIAL_BUFFER");
     if ((bits & kCoverage) != 0) defines.insert(defines.end(), {"TERRAIN_COVERAGE", "TERRAIN_DEPTH_ONLY"});
     if ((bits & kAfterCoverage) != 0) defines.emplace_back("TERRAIN_AFTER_COVERAGE");
     p = gl::Program({{GL_VERTEX_SHADER, "terrain/terrain.vert"}, {GL_FRAGMENT_SHADER, "terrain/terrain.frag"}},
@@ -95,7 +96,7 @@ float TerrainRenderer::morphScale(const terrain::Tile& t, const geo::CameraView&
   return static_cast<float>(2.0 * spacingPx / params_.maxSpacingPx);
 }
 
-void TerrainRenderer::bindTile(const terrain::Tile& t) {
+const gl::Buffer& TerrainRenderer::tileBuffer(const terrain::Tile& t) {
   auto [it, fresh] = gpu_.try_emplace(t.key.packed());
   if (fresh) {
     it->second.vertices = gl::createBuffer();
@@ -103,7 +104,43 @@ void TerrainRenderer::bindTile(const terrain::Tile& t) {
                          static_cast<GLsizeiptr>(t.vertices.size() * sizeof(terrain::TileVertex)),
                          t.vertices.data(), 0);
   }
-  glVertexArrayVertexBuffer(vao_.id(), 0, it->second.vertices.id(), 0, sizeof(terrain::TileVertex));
+  return it->second.vertices;
+}
+
+void TerrainRenderer::bindTile(const terrain::Tile& t) {
+  glVertexArrayVertexBuffer(vao_.id(), 0, tileBuffer(t).id(), 0, sizeof(terrain::TileVertex));
+}
+
+void TerrainRenderer::computeTileAerial(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
+                                        const glm::dvec3& sunDirectionEcef) {
+  static_assert(sizeof(terrain::TileVertex) == 13 * sizeof(float), "terrain/tile_aerial.comp reads 13 floats a vertex");
+  gl::Program& p = tileAerialProgram_;
+  if (p.id() == 0) p = gl::Program({{GL_COMPUTE_SHADER, "terrain/tile_aerial.comp"}});
+  const std::size_t bytes = tiles.size() * terrain::kTileVertices * 2 * sizeof(glm::vec4);
+  if (bytes > tileAerialBytes_) {
+    tileAerialBytes_ = std::max(bytes, 2 * tileAerialBytes_);
+    tileAerial_ = gl::createBuffer();
+    glNamedBufferStorage(tileAerial_.id(), static_cast<GLsizeiptr>(tileAerialBytes_), nullptr, 0);
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTerrainAerialBinding, tileAerial_.id());
+  p.set("uSunDir", glm::vec3(glm::normalize(sunDirectionEcef)));
+  p.set("uCamUp", glm::vec3(view.enu.up));
+  p.set("uCamAltitude", static_cast<float>(view.position.heightM));
+  p.set("uVertexCount", terrain::kTileVertices);
+  atmosphere_->bind(p);
+  p.use();
+  tileFirstVertex_.clear();
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    const terrain::Tile& t = *tiles[k];
+    const int first = static_cast<int>(k) * terrain::kTileVertices;
+    tileFirstVertex_[&t] = first;
+    p.set("uTileOffset", glm::vec3(t.centreEcef - view.positionEcef));
+    p.set("uMorphScale", morphScale(t, view));
+    p.set("uFirstVertex", first);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTileVerticesBinding, tileBuffer(t).id());
+    glDispatchCompute((terrain::kTileVertices + 63) / 64, 1, 1);
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 namespace {
@@ -357,6 +394,8 @@ void TerrainRenderer::drawTiles(const geo::CameraView& view, const std::vector<c
   const bool clipFloor = floorClip_.clipM > 0.0 && (bits & kLandOnly) == 0;
   if (clipFloor) glEnable(GL_CLIP_DISTANCE0);
   glBindTextureUnit(gl::kUnitShadowMap, shadowMap_.id());
+  const bool aerialBuffer = (bits & kAerialBuffer) != 0 && (bits & kCoverage) == 0;
+  if (aerialBuffer) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTerrainAerialBinding, tileAerial_.id());
   p.use();
   glBindVertexArray(vao_.id());
   glEnable(GL_DEPTH_TEST);
@@ -375,6 +414,7 @@ void TerrainRenderer::drawTiles(const geo::CameraView& view, const std::vector<c
     p.set("uDetailFirst", t->normalOctaves);
     // Only tiles with water at a vertex look the coast up per pixel (terrain.frag).
     p.set("uTileHasWater", t->minHeightM <= 0.0 ? 1 : 0);
+    if (aerialBuffer) p.set("uFirstVertex", tileFirstVertex_.at(t));
     if (imagery_ != nullptr) imagery_->bindTile(p, t->key);
     bindTile(*t);
     glEnable(GL_CULL_FACE);
@@ -560,9 +600,13 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   const bool aerialTable =
       aerialTableOn_ && atmosphere_ != nullptr && !drawn.empty() && view.position.heightM < kAerialTableMaxHeightM;
   if (aerialTable) aerialTable_.update(*atmosphere_, view, sunDirectionEcef);
+  // The exact path per vertex is ten lookups into the 4D tables: on every core instead (the
+  // table's three lookups cost the compute's dispatches and reads more than they save).
+  const bool aerialBuffer = tileAerialBufferOn_ && atmosphere_ != nullptr && !drawn.empty() && !aerialTable;
   const unsigned frameBits = (shadows_.on ? 0u : kShadowsOff) | (nightInView ? 0u : kNoNight) |
                              (imageryLayers ? 0u : kNoImageryLayers) | (coarseMask_ ? kCoarseMask : 0u) |
-                             (aerialTable ? kAerialTable : 0u);
+                             (aerialTable ? kAerialTable : 0u) | (aerialBuffer ? kAerialBuffer : 0u);
+  if (aerialBuffer) computeTileAerial(view, drawn, sunDirectionEcef);
   waterBits_ = frameBits;
   waterSunDirection_ = sunDirectionEcef;
   // Single-sampled only: with samples the clip would cut each sample where the discard cuts
@@ -598,6 +642,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   stats_.tiles = static_cast<int>(tiles.size());
   stats_.drawnTiles = static_cast<int>(drawn.size());
   stats_.landTiles = static_cast<int>(casters.size());
+  stats_.aerialBufferTiles = aerialBuffer ? static_cast<int>(drawn.size()) : 0;
   stats_.finestLevel = sel.finestLevel;
   stats_.tilesPending = sel.pending;
   stats_.cpuBytes = cache_.bytes();

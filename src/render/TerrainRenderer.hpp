@@ -53,6 +53,8 @@ struct TerrainStats {
   std::size_t gpuBytes = 0;     ///< vertex buffers, bytes
   std::size_t tilesPending = 0; ///< being built in the background (selection().wait = false)
   int landTiles = 0;            ///< drawn tiles reaching above the sea (-1 m); 0: open ocean
+  /// Drawn tiles whose vertices' aerial perspective the compute pass made (setTileAerialBuffer).
+  int aerialBufferTiles = 0;
   double maxHeightM = 0.0;      ///< highest point of the selected tiles, m (0 when none)
   /// Below the grid's ceiling, the highest the floor can be (a vertex's height, risen at a 45°
   /// slope over 1.5 vertex spacings) around the vertices of the selected tiles with water over
@@ -139,6 +141,12 @@ class TerrainRenderer {
   /// Farther out the terminator crosses the view and changes faster across the table's entries
   /// than it resolves (as GlobeRenderer's own table), and the tiles are few: per vertex there.
   static constexpr double kAerialTableMaxHeightM = 5.0e5;
+  /// Whether, where no table serves (above kAerialTableMaxHeightM), the vertices' aerial
+  /// perspective is computed for all the frame's tiles by a compute pass
+  /// (terrain/tile_aerial.comp, on every core) and read by the vertex shader from its buffer
+  /// (default on), or computed by the vertex shader itself (on llvmpipe's one vertex thread:
+  /// orbit's 23 tiles took ~5 ms of it).
+  void setTileAerialBuffer(bool on) { tileAerialBufferOn_ = on; }
 
  private:
   static constexpr int kMaxDetailOctaves = 24;  // MAX_DETAIL_OCTAVES in terrain.frag
@@ -219,7 +227,8 @@ class TerrainRenderer {
   /// frame; kNoImageryLayers: no user imagery layer loaded (terrain/imagery.glsl's loops
   /// compiled out); kCoarseMask: no pixel resolves the land mask's fine level
   /// (LANDMASK_COARSE_ONLY, setCoarseLandMask); kAerialTable: the vertices' aerial perspective
-  /// from this frame's table (TERRAIN_AERIAL_TABLE, render/AerialTable).
+  /// from this frame's table (TERRAIN_AERIAL_TABLE, render/AerialTable); kAerialBuffer: from
+  /// the tile aerial buffer (TERRAIN_AERIAL_BUFFER, computeTileAerial).
   /// kCoverage: only the discards, writing the depth of what survives them (its colour writes
   /// masked off); kAfterCoverage: the shading after it, the depth test (equal) before the
   /// shader and no discards (drawCovered).
@@ -231,16 +240,28 @@ class TerrainRenderer {
     kCoverage = 16u,
     kAfterCoverage = 32u,
     kCoarseMask = 64u,
-    kAerialTable = 128u
+    kAerialTable = 128u,
+    kAerialBuffer = 256u
   };
   const gl::Program& variant(unsigned bits);
-  std::array<gl::Program, 256> variants_;
+  std::array<gl::Program, 512> variants_;
+  /// Fills the tile aerial buffer for `tiles` (kAerialBuffer's frames): each tile's vertices'
+  /// transmittance and in-scatter at its slot (tileFirstVertex_).
+  void computeTileAerial(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
+                         const glm::dvec3& sunDirectionEcef);
+  /// A tile's vertex buffer, uploaded on first use.
+  const gl::Buffer& tileBuffer(const terrain::Tile& tile);
   /// TerrainStats::seaSeenMaxHeightM of `tiles`.
   [[nodiscard]] double seaSeenMaxHeightM(const geo::CameraView& view,
                                          const std::vector<const terrain::Tile*>& tiles) const;
   /// This frame's aerial perspective to altitudes (kAerialTable's frames).
   AerialTable aerialTable_{AerialTable::Kind::terrain};
   bool aerialTableOn_ = true;  ///< setAerialTable
+  bool tileAerialBufferOn_ = true;  ///< setTileAerialBuffer
+  gl::Program tileAerialProgram_;     ///< terrain/tile_aerial.comp
+  gl::Buffer tileAerial_;             ///< two vec4s a vertex of the frame's tiles
+  std::size_t tileAerialBytes_ = 0;
+  std::unordered_map<const terrain::Tile*, int> tileFirstVertex_;  ///< this frame's slots in tileAerial_
   bool coarseMask_ = false;  ///< setCoarseLandMask
   double seaCrestM_ = 30.0;  ///< setSeaCrestM
   bool seaSightTest_ = true;  ///< setSeaSightTest

@@ -335,6 +335,38 @@ TEST(TerrainRender, AerialTableKeepsThePerVertexPicture) {
   }
 }
 
+// Above 500 km (no table) the vertices' aerial perspective is the exact path's, computed for
+// every vertex of the frame's tiles by a compute pass (terrain/tile_aerial.comp) instead of
+// the vertex shader: the same code on the same inputs, so the same picture. From orbit over
+// the Atlantic (land tiles and tiles with water, drawn after the globe), at 2000 km over the
+// terminator (night and day) and at 800 km over the Alps.
+TEST(TerrainRender, TileAerialBufferKeepsThePerVertexPicture) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  const std::vector<ViewCase> cases{
+      {"orbit_20000km", {.latDeg = 10.0, .lonDeg = -30.0, .heightM = 2.0e7, .headingDeg = 0.0, .pitchDeg = -90.0, .fovDeg = 45.0, .width = 320, .height = 180}, 40.0, 120.0},
+      {"terminator_2000km", {.latDeg = 30.0, .lonDeg = 10.0, .heightM = 2.0e6, .headingDeg = 90.0, .pitchDeg = -60.0, .fovDeg = 45.0, .width = 320, .height = 180}, 2.0, 270.0},
+      {"alps_800km", {.latDeg = 46.0, .lonDeg = 8.0, .heightM = 8.0e5, .headingDeg = 0.0, .pitchDeg = -90.0, .fovDeg = 30.0, .width = 320, .height = 180}, 30.0, 180.0},
+  };
+  for (const ViewCase& c : cases) {
+    const render::FrameInput f = test::frameOf(c.view, c.sunElevationDeg, c.sunAzimuthDeg);
+    r.terrain().setTileAerialBuffer(true);
+    r.render(f);
+    const io::ImageRgbaF on = r.radiance();
+    const render::TerrainStats stats = r.terrain().stats();
+    EXPECT_GT(stats.aerialBufferTiles, 0) << c.name << ": the compute pass made no tile's aerial perspective";
+    EXPECT_EQ(stats.aerialBufferTiles, stats.drawnTiles) << c.name;
+    r.terrain().setTileAerialBuffer(false);
+    r.render(f);
+    EXPECT_EQ(r.terrain().stats().aerialBufferTiles, 0) << c.name;
+    const test::RadianceChange change = test::radianceChange(r.radiance(), on, 1e-4);
+    std::printf("%s: %d tiles, largest change %.2e\n", c.name, stats.drawnTiles, change.worst);
+    if (change.worst > 1e-4) test::savePng(r, std::string("tile_aerial_buffer_") + c.name);
+    EXPECT_LT(change.worst, 1e-4) << c.name;
+  }
+  r.terrain().setTileAerialBuffer(true);
+}
+
 // Below the grid's ceiling the floor deeper than a metre whose view rays cross sea level where
 // the land mask holds no land is clipped before its fragments (TerrainRenderer::floorClip,
 // terrain.vert) instead of discarded by terrain.frag's coast test: the same picture. From 2 m

@@ -1,0 +1,31 @@
+#version 450 core
+// The aerial perspective of every vertex of a terrain tile (terrain/tile_vertex.glsl), into
+// the frame's tile aerial buffer at uFirstVertex: what terrain/terrain.vert computed per vertex,
+// on every core instead of the draw's one thread (render/TerrainRenderer::computeTileAerial).
+#define TERRAIN_AERIAL_STORE
+#include "common/constants.glsl"
+#include "common/types.glsl"
+#include "atmosphere/model.glsl"
+#include "render/aerial.glsl"
+#include "terrain/tile_vertex.glsl"
+layout(local_size_x = 64) in;
+
+// The tile's vertices as uploaded: terrain::TileVertex, 13 floats each (position, normal,
+// height, latitude, longitude, detail amplitude, morph).
+layout(std430, binding = OG_TILE_VERTICES_BINDING) readonly buffer TileVertices { float tileVertices[]; };
+uniform int uVertexCount;
+
+vec3 tileVertexVec3(int at) { return vec3(tileVertices[at], tileVertices[at + 1], tileVertices[at + 2]); }
+
+void main() {
+  int i = int(gl_GlobalInvocationID.x);
+  if (i >= uVertexCount) return;
+  int at = 13 * i;
+  vec4 info = vec4(tileVertices[at + 6], tileVertices[at + 7], tileVertices[at + 8], tileVertices[at + 9]);
+  float heightM;
+  vec3 relative = morphedTileVertex(tileVertexVec3(at), info, tileVertexVec3(at + 10), heightM);
+  vec3 transmittance, inscatter;
+  tileVertexAerial(relative, heightM, transmittance, inscatter);
+  tileAerial[2 * (uFirstVertex + i)] = vec4(transmittance, 0.0);
+  tileAerial[2 * (uFirstVertex + i) + 1] = vec4(inscatter, 0.0);
+}
