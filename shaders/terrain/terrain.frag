@@ -161,10 +161,12 @@ void main() {
   // Tilt by the finer detail: its height gradient per metre along the surface, tangential.
   vec3 dUp = normalOffsetFromEye(vRelative - heightM * up + uCamAltitude * uCamUp);
   float footprint = max(length(dFdx(dUp)), length(dFdy(dUp)));
+#ifndef TERRAIN_NO_DETAIL  // (no pixel resolves an octave the vertex normals leave out: TerrainRenderer's variants)
   if (vInfo.w > 0.0) {
     vec3 g = pixelDetailGradient(dUp, footprint) * (vInfo.w / WGS84_A);
     n = normalize(n - (g - dot(g, n) * n));
   }
+#endif
   float slope = 1.0 - clamp(dot(n, up), 0.0, 1.0);
   float hP = max(heightM, 0.0);
   vec3 skyIrr;

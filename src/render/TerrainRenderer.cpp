@@ -52,6 +52,7 @@ const gl::Program& TerrainRenderer::variant(unsigned bits) {
     std::vector<std::string> defines;
     if ((bits & kLandOnly) != 0) defines.emplace_back("TERRAIN_LAND_ONLY");
     if ((bits & kNoNight) != 0) defines.emplace_back("TERRAIN_NO_NIGHT");
+    if ((bits & kNoDetail) != 0) defines.emplace_back("TERRAIN_NO_DETAIL");
     if ((bits & kShadowsOff) != 0) defines.emplace_back("SHADOWS_OFF");
     if ((bits & kNoImageryLayers) != 0) defines.emplace_back("IMAGERY_NO_LAYERS");
     if ((bits & kCoarseMask) != 0) defines.emplace_back("LANDMASK_COARSE_ONLY");
@@ -520,6 +521,33 @@ void SunShadows::apply(const gl::Program& p) const {
   p.set("uShadowSplitM", splitM);
 }
 
+bool TerrainRenderer::detailUnresolved(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles) const {
+  const terrain::DetailOctaves& o = cache_.heights().octaves();
+  // The smallest angle a pixel spans (rad): at the frame's corners, cos² of their angle off axis.
+  const double tanHalf = std::tan(0.5 * view.verticalFovRad);
+  const double aspect = static_cast<double>(params_.widthPx) / params_.heightPx;
+  const double cornerTan2 = tanHalf * tanHalf * (1.0 + aspect * aspect);
+  const double pixelRad = 2.0 * tanHalf / params_.heightPx / (1.0 + cornerTan2);
+  // terrain.frag's footprint: the geodetic normal's change across a pixel, at least the ground
+  // it spans over the largest radius of curvature, a² / b.
+  const double a = geo::kWgs84SemiMajorM, b = geo::kWgs84SemiMinorM;
+  for (const terrain::Tile* t : tiles) {
+    // No point of the tile is nearer than its bounding sphere, nor than the eye's height over
+    // the tile's highest point (the ellipsoid's nearest point to the eye lies along its normal).
+    const double nearestM = std::max({glm::length(t->boundCentreEcef - view.positionEcef) - t->boundRadiusM,
+                                      view.position.heightM - t->maxHeightM, 0.0});
+    const double footprint = nearestM * pixelRad * b / (a * a);
+    const double cells = footprint * (a / o.longestM) * std::exp2(t->normalOctaves);  // uDetailScale0 2^first
+    if (t->normalOctaves < o.normalCount && cells < kDetailUnresolvedCells) return false;
+  }
+  return true;
+}
+
+bool TerrainRenderer::skipDetail(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles) const {
+  return detailSkip_ == DetailSkip::always ||
+         (detailSkip_ == DetailSkip::whereUnresolved && detailUnresolved(view, tiles));
+}
+
 void TerrainRenderer::setDetailUniforms(const gl::Program& p, const geo::CameraView& view) const {
   // Each octave's lattice coordinate at the eye, split in double into a cell and a position
   // in it: the shader continues from there with small camera-relative offsets.
@@ -605,7 +633,9 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   const bool aerialBuffer = tileAerialBufferOn_ && atmosphere_ != nullptr && !drawn.empty() && !aerialTable;
   const unsigned frameBits = (shadows_.on ? 0u : kShadowsOff) | (nightInView ? 0u : kNoNight) |
                              (imageryLayers ? 0u : kNoImageryLayers) | (coarseMask_ ? kCoarseMask : 0u) |
-                             (aerialTable ? kAerialTable : 0u) | (aerialBuffer ? kAerialBuffer : 0u);
+                             (aerialTable ? kAerialTable : 0u) | (aerialBuffer ? kAerialBuffer : 0u) |
+                             (skipDetail(view, drawn) ? kNoDetail : 0u);
+  stats_.pixelDetail = !drawn.empty() && (frameBits & kNoDetail) == 0;
   if (aerialBuffer) computeTileAerial(view, drawn, sunDirectionEcef);
   waterBits_ = frameBits;
   waterSunDirection_ = sunDirectionEcef;

@@ -55,6 +55,9 @@ struct TerrainStats {
   int landTiles = 0;            ///< drawn tiles reaching above the sea (-1 m); 0: open ocean
   /// Drawn tiles whose vertices' aerial perspective the compute pass made (setTileAerialBuffer).
   int aerialBufferTiles = 0;
+  /// Whether the last frame's tiles were shaded with the detail octaves per pixel (false where
+  /// no pixel resolves one: detailUnresolved).
+  bool pixelDetail = false;
   double maxHeightM = 0.0;      ///< highest point of the selected tiles, m (0 when none)
   /// Below the grid's ceiling, the highest the floor can be (a vertex's height, risen at a 45°
   /// slope over 1.5 vertex spacings) around the vertices of the selected tiles with water over
@@ -147,6 +150,11 @@ class TerrainRenderer {
   /// (default on), or computed by the vertex shader itself (on llvmpipe's one vertex thread:
   /// orbit's 23 tiles took ~5 ms of it).
   void setTileAerialBuffer(bool on) { tileAerialBufferOn_ = on; }
+  /// When the tiles are shaded without the detail octaves' code (TERRAIN_NO_DETAIL; llvmpipe runs
+  /// the octaves' loop's first trip for every pixel): where no pixel resolves one
+  /// (detailUnresolved; the default), never, or always (for tests: what the detail adds).
+  enum class DetailSkip { never, whereUnresolved, always };
+  void setDetailSkip(DetailSkip skip) { detailSkip_ = skip; }
 
  private:
   static constexpr int kMaxDetailOctaves = 24;  // MAX_DETAIL_OCTAVES in terrain.frag
@@ -228,7 +236,9 @@ class TerrainRenderer {
   /// compiled out); kCoarseMask: no pixel resolves the land mask's fine level
   /// (LANDMASK_COARSE_ONLY, setCoarseLandMask); kAerialTable: the vertices' aerial perspective
   /// from this frame's table (TERRAIN_AERIAL_TABLE, render/AerialTable); kAerialBuffer: from
-  /// the tile aerial buffer (TERRAIN_AERIAL_BUFFER, computeTileAerial).
+  /// the tile aerial buffer (TERRAIN_AERIAL_BUFFER, computeTileAerial); kNoDetail: no pixel of
+  /// these tiles resolves a detail octave their vertex normals leave out (TERRAIN_NO_DETAIL,
+  /// detailUnresolved).
   /// kCoverage: only the discards, writing the depth of what survives them (its colour writes
   /// masked off); kAfterCoverage: the shading after it, the depth test (equal) before the
   /// shader and no discards (drawCovered).
@@ -241,14 +251,24 @@ class TerrainRenderer {
     kAfterCoverage = 32u,
     kCoarseMask = 64u,
     kAerialTable = 128u,
-    kAerialBuffer = 256u
+    kAerialBuffer = 256u,
+    kNoDetail = 512u
   };
   const gl::Program& variant(unsigned bits);
-  std::array<gl::Program, 512> variants_;
+  std::array<gl::Program, 1024> variants_;
   /// Fills the tile aerial buffer for `tiles` (kAerialBuffer's frames): each tile's vertices'
   /// transmittance and in-scatter at its slot (tileFirstVertex_).
   void computeTileAerial(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
                          const glm::dvec3& sunDirectionEcef);
+  /// Whether no pixel of `tiles` resolves the first detail octave its vertex normals leave out
+  /// (terrain.frag's pixelDetailGradient adds nothing): each tile's nearest point is far enough
+  /// that a pixel's footprint there, at its smallest (the frame's corners, the surface seen
+  /// square on, the ellipsoid's largest radius of curvature), spans kDetailUnresolvedCells of
+  /// that octave's lattice cells or more, where the octave's weight is 0 from 0.5.
+  [[nodiscard]] bool detailUnresolved(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles) const;
+  static constexpr double kDetailUnresolvedCells = 0.55;
+  /// Whether this frame's tiles are shaded without the detail (setDetailSkip).
+  [[nodiscard]] bool skipDetail(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles) const;
   /// A tile's vertex buffer, uploaded on first use.
   const gl::Buffer& tileBuffer(const terrain::Tile& tile);
   /// TerrainStats::seaSeenMaxHeightM of `tiles`.
@@ -258,6 +278,7 @@ class TerrainRenderer {
   AerialTable aerialTable_{AerialTable::Kind::terrain};
   bool aerialTableOn_ = true;  ///< setAerialTable
   bool tileAerialBufferOn_ = true;  ///< setTileAerialBuffer
+  DetailSkip detailSkip_ = DetailSkip::whereUnresolved;  ///< setDetailSkip
   gl::Program tileAerialProgram_;     ///< terrain/tile_aerial.comp
   gl::Buffer tileAerial_;             ///< two vec4s a vertex of the frame's tiles
   std::size_t tileAerialBytes_ = 0;

@@ -367,6 +367,41 @@ TEST(TerrainRender, TileAerialBufferKeepsThePerVertexPicture) {
   r.terrain().setTileAerialBuffer(true);
 }
 
+// Where no pixel of the frame's tiles resolves a detail octave their vertex normals leave out
+// (TerrainRenderer::detailUnresolved), terrain.frag is compiled without the octaves' loop: the
+// same picture. From orbit and from 4000 km straight down on the Alps (the first height of a
+// sweep at which it applies; the detail adds nothing there, nor from 2500 km) it applies; from
+// 1300 km it must not, where the detail changes a third of the pixels by over 0.1 %.
+TEST(TerrainRender, UnresolvedDetailLeftOutKeepsThePicture) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  using Skip = render::TerrainRenderer::DetailSkip;
+  const auto alps = [](const char* name, double heightM) {
+    return ViewCase{name, {.latDeg = 46.0, .lonDeg = 8.0, .heightM = heightM, .headingDeg = 0.0, .pitchDeg = -90.0, .fovDeg = 45.0, .width = 320, .height = 180}, 30.0, 180.0};
+  };
+  const ViewCase orbit{"orbit_20000km", {.latDeg = 10.0, .lonDeg = -30.0, .heightM = 2.0e7, .headingDeg = 0.0, .pitchDeg = -90.0, .fovDeg = 45.0, .width = 320, .height = 180}, 40.0, 120.0};
+  for (const ViewCase& c : {orbit, alps("alps_4000km", 4.0e6), alps("alps_1300km", 1.3e6)}) {
+    const render::FrameInput f = test::frameOf(c.view, c.sunElevationDeg, c.sunAzimuthDeg);
+    r.terrain().setDetailSkip(Skip::never);
+    r.render(f);
+    const io::ImageRgbaF never = r.radiance();
+    r.terrain().setDetailSkip(Skip::always);
+    r.render(f);
+    const test::RadianceChange detail = test::radianceChange(never, r.radiance(), 1e-3);
+    r.terrain().setDetailSkip(Skip::whereUnresolved);
+    r.render(f);
+    const bool resolved = std::string(c.name) == "alps_1300km";
+    EXPECT_EQ(r.terrain().stats().pixelDetail, resolved) << c.name;
+    const test::RadianceChange change = test::radianceChange(never, r.radiance(), 1e-4);
+    std::printf("%s: detail per pixel %d, its share: %d pixels over 0.1 %%; largest change %.2e\n", c.name,
+                resolved ? 1 : 0, detail.over, change.worst);
+    EXPECT_LT(change.worst, 1e-4) << c.name;
+    if (resolved) {
+      EXPECT_GT(detail.over, 320 * 180 / 4) << c.name << ": the detail should show here";
+    }
+  }
+}
+
 // Below the grid's ceiling the floor deeper than a metre whose view rays cross sea level where
 // the land mask holds no land is clipped before its fragments (TerrainRenderer::floorClip,
 // terrain.vert) instead of discarded by terrain.frag's coast test: the same picture. From 2 m
