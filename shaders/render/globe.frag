@@ -224,24 +224,34 @@ struct PixelRays {
 // coast as the pixel's footprint resolves it: the same test as surfaceRadiance's elevationAt
 // (render/elevation.glsl) with the sample's footprint, the land mask's fine blocks fetched
 // once for the four (terrain/landmask.glsl's landFraction4).
+// GLOBE_MASK_COAST (GlobeRenderer: the land mask decides this renderer's coast): the fraction
+// alone, without the layer's heights. constrainByLandFraction's height is at most 0 on the sea
+// side (f < 0.5) and above 0 on the land side but at f = 0.5 exactly over a height at or below
+// 0, which this calls land, as terrain.frag's coast test does.
 bvec4 samplesSea(PixelRays rays) {
   vec2 latLon[4];
-  vec4 height, keep;
+  vec4 height = vec4(0.0), keep = vec4(0.0);
   float footprint = 0.0;
   for (int i = 0; i < 4; ++i) {
     float t = max(rays.ts[i], 0.0);
     vec3 n = ellipsoidNormal(rays.dirs[i], t);
     latLon[i] = latLonOfNormal(n);
+#ifndef GLOBE_MASK_COAST
     vec2 heightKeep = elevationLayerAt(latLon[i]);
     height[i] = heightKeep.x;
     keep[i] = heightKeep.y;
+#endif
     footprint += 0.25 * groundFootprintRad(rays.dirs[i], t, n);
   }
   vec4 f = landFraction4(latLon[0], latLon[1], latLon[2], latLon[3], footprint);
   bvec4 sea;
   for (int i = 0; i < 4; ++i)
+#ifdef GLOBE_MASK_COAST
+    sea[i] = rays.ts[i] >= 0.0 && f[i] < 0.5;
+#else
     sea[i] = rays.ts[i] >= 0.0 &&
              (landMaskOn() ? constrainByLandFraction(height[i], keep[i], f[i]) : height[i]) <= 0.0;
+#endif
   return sea;
 }
 
@@ -391,7 +401,11 @@ void main() {
     // pixel's own footprint and the fine level cost a fifth of the globe pass on llvmpipe
     // (run masked wherever any pixel needs them); the 15″ islets and bays it leaves out are
     // drawn by the globe's samples instead of the terrain.
+#ifdef GLOBE_MASK_COAST  // (land at the mask's fraction alone, as samplesSea)
+    if (landFraction(centreLatLon) >= 0.5) depthZ += uGlobeDepthPushM;
+#else
     if (elevationAt(centreLatLon) > 0.0) depthZ += uGlobeDepthPushM;
+#endif
   }
   gl_FragDepth = rays.nHit > 0 ? clamp(uNear / depthZ, 0.0, 1.0) : 0.0;
 #if defined(GLOBE_CLASSIFY_EXPORT) && defined(GLOBE_LAND_SEA)
