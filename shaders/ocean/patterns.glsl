@@ -356,13 +356,21 @@ SeaSurface oceanSurface(vec2 xy, float footprintM, vec2 wind, PatternSums vertex
   return r;
 }
 
-// The whole sea's statistics at a wind (what a footprint covering everything sees).
+// The whole sea's statistics at a wind (what a footprint covering everything sees). With
+// PATTERN_CONSTANT_WIND the constant wind's, as the CPU computed them from the same tables
+// (OceanPatterns::setConstantWind), whatever is passed.
+#ifdef PATTERN_CONSTANT_WIND
+uniform vec3 uSeaTotalsConst;  // (slope variance up, cross, the Jacobian's variance)
+vec2 seaSlopeVarianceTotal(float speedMs) { return uSeaTotalsConst.xy; }
+float seaJacobianVarianceTotal(float speedMs) { return uSeaTotalsConst.z; }
+#else
 vec2 seaSlopeVarianceTotal(float speedMs) {
   vec2 v = patternTable(PATTERN_COUNT, speedMs).xy;
   for (int i = 0; i < PATTERN_COUNT; ++i) v += patternTable(i, speedMs).zw;
   return v;
 }
 float seaJacobianVarianceTotal(float speedMs) { return patternTable(PATTERN_COUNT, speedMs).z; }
+#endif
 
 // Whitecap coverage of a footprint whose Jacobian is Normal(mean, variance): Dupuy 2012 Eq. 6,
 // W = 1/2 erfc((mu - epsilon) / (sqrt(2) sigma)).

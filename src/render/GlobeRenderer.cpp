@@ -282,6 +282,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   const bool grid = view.position.heightM < kOceanGridMaxHeightM;
   aerialTableFrame_ = aerialTableOn_ && !grid && view.position.heightM < kAerialTableMaxHeightM;
   coarseMaskFrame_ = coarseMaskVariants_ && landMask_->fineLevelUnresolved(view, f.height);
+  constantWindFrame_ = constantWindVariants_ && !wind_->hasLayers();
   floorInReachFrame_ = false;  // (drawOcean's, below the ceiling)
   terrain_->setSeaCrestM(patterns_->amplitudeBoundM() + 1.0);  // (+ 1 m: the morph's and chords' rounding)
   terrain_->setCoarseLandMask(coarseMaskFrame_);
@@ -358,7 +359,8 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
   // where no pixel resolves it: LANDMASK_COARSE_ONLY).
   const bool tableReader = variant > kClassifyExportLandSea && variant != kBlockFill;  // (classifying: no table)
   const int set = behind ? 2 : aerialTableFrame_ && tableReader ? 0 : coarseMaskFrame_ ? 3 : 1;
-  gl::Program& p = globePrograms_[static_cast<std::size_t>(set * kGlobeVariants + variant)];
+  const int windSet = constantWindFrame_ ? 4 : 0;
+  gl::Program& p = globePrograms_[static_cast<std::size_t>((windSet + set) * kGlobeVariants + variant)];
   if (p.id() == 0) {
     // Variants 0-5: GLOBE_PART_CLASSIFY (4) with its step; 6: all steps in one draw; 7-9: the
     // parts 1-3, 10: the land (GLOBE_PART_LAND, 7), 11: the sea (GLOBE_PART_SEA, 6), 12: the
@@ -386,6 +388,7 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
     if (set == 0) defines.emplace_back("AERIAL_TABLE");
     if (set == 3) defines.emplace_back("LANDMASK_COARSE_ONLY");
     if (landMask_->active()) defines.emplace_back("GLOBE_MASK_COAST");  // (fixed for the renderer's life)
+    if (constantWindFrame_) defines.emplace_back("PATTERN_CONSTANT_WIND");
     // Above the ceiling the sea's sky filter as the grid's (the 20 km switch): the Sun layers'
     // radial sums. Below it the globe shades only the horizon's sea samples, with the probes:
     // the sums of every Sun layer would cost a first frame at sea level ~60 ms.
@@ -805,6 +808,8 @@ void GlobeRenderer::setGlobeUniforms(const gl::Program& globe, const geo::Camera
   wind_->bind(globe);
   patterns_->bind();
   patterns_->setUniforms(globe, nullptr, 0.0);
+  if (constantWindFrame_)  // (the patterns' bins are not the globe's: any field rotation)
+    patterns_->setConstantWind(globe, wind_->constantSpeedMs(), glm::radians(wind_->constantTowardsDeg()), 0.0);
   globe.set("uSeaColor", OceanLighting{}.seaColor);
   setWaterOptics(globe, ocean::jerlovWater(ocean::kDefaultWater));
   globe.set("uElevationMap", elevationMap_);

@@ -247,6 +247,11 @@ class GlobeRenderer {
   void setCoarseMaskVariants(bool on) { coarseMaskVariants_ = on; }
   /// Whether the last frame drew with them.
   [[nodiscard]] bool lastFrameCoarseMask() const { return coarseMaskFrame_; }
+  /// Whether frames with the constant wind (no wind layers) draw the globe's sea with its
+  /// values as uniforms (PATTERN_CONSTANT_WIND; on by default, off for comparisons).
+  void setConstantWindVariants(bool on) { constantWindVariants_ = on; }
+  /// Whether the last frame drew with them.
+  [[nodiscard]] bool lastFrameConstantWind() const { return constantWindFrame_; }
   /// Whether the last frame drew the sea with its water volume (a floor within the water's
   /// reach under sea in view: TerrainStats::seaSeenMaxHeightM; false above 20 km).
   [[nodiscard]] bool lastFrameFloorInReach() const { return floorInReachFrame_; }
@@ -365,6 +370,10 @@ class GlobeRenderer {
   bool aerialTableFrame_ = false;  ///< this frame's globe reads the table
   /// This frame's programs leave the land mask's fine level out (LandMaskTexture::fineLevelUnresolved).
   bool coarseMaskFrame_ = false;
+  /// This frame's wind is the constant one (no wind layers): the globe's sea reads its values
+  /// from uniforms (PATTERN_CONSTANT_WIND) instead of the wind texture and the tables per pixel.
+  bool constantWindFrame_ = false;
+  bool constantWindVariants_ = true;  ///< setConstantWindVariants
   bool coarseMaskVariants_ = true;  ///< setCoarseMaskVariants
   void setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view, const FrameInput& f);
   /// Whether this frame lists its scattered parts (setScatteredPartsListed, one sample, no
@@ -379,7 +388,8 @@ class GlobeRenderer {
   bool scatteredListed_ = false;  ///< set from gl::driverProfile().software by the constructor
   bool ellipsoidScissorOn_ = true;
   /// Above 20 km with the aerial table, without, below, above without the mask's fine level.
-  std::array<gl::Program, 4 * kGlobeVariants> globePrograms_;
+  /// By set (globeProgram), and again with the constant wind's uniforms (PATTERN_CONSTANT_WIND).
+  std::array<gl::Program, 8 * kGlobeVariants> globePrograms_;
   /// Below 20 km: whether the terrain and the grid left any pixel for the globe (an occlusion
   /// query of render/uncovered.frag; the globe's draws are conditional on it).
   gl::Program uncovered_;

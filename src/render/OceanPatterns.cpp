@@ -442,6 +442,10 @@ void OceanPatterns::setConstantWind(const gl::Program& program, double speedMs, 
     sum += glm::dvec3(up, cross, mix(a.jacobianVariance, b.jacobianVariance));
     store(i, sum);
   }
+  // patterns.glsl's seaSlopeVarianceTotal (the tail and every band) and seaJacobianVarianceTotal.
+  program.set("uSeaTotalsConst", glm::vec3(static_cast<float>(sum.x), static_cast<float>(sum.y),
+                                           static_cast<float>(mix(tables_.jacobianVariance[static_cast<std::size_t>(c0)],
+                                                                  tables_.jacobianVariance[static_cast<std::size_t>(c0 + 1)]))));
   if (const GLint at = program.location("uPatternBandConst"); at >= 0)
     glProgramUniform2fv(program.id(), at, ocean::kPatternCount, bands.data());
   if (const GLint at = program.location("uPatternAveragedFromConst"); at >= 0)

@@ -49,6 +49,7 @@ TEST(OceanWind, GlintIsHigherAndNarrowerOnTheCalmSideOfAFront) {
   f.height = 81;
   f.sunDirectionEcef = geo::sunDirectionFromHorizontal({0.0, -30.0, 0.0}, 90.0, 0.0);  // glint at nadir
   r.render(f);
+  EXPECT_FALSE(r.lastFrameConstantWind()) << "a wind layer's sea reads the wind per pixel";
   const io::ImageRgbaF img = r.radiance();
   // Luminance along the middle row, west (calm) half and east (windy) half from the centre.
   auto lum = [&](int x) {

@@ -191,6 +191,29 @@ TEST(GlobeRender, ScatteredPartsShadedFromAListKeepThePicture) {
   }
 }
 
+// With the constant wind (no wind layers) the globe's sea reads the wind, its direction's sine
+// and cosine and the whole sea's slope and Jacobian variances from uniforms the CPU computed
+// from the same tables (PATTERN_CONSTANT_WIND) instead of the one-cell wind texture and the
+// tables per pixel: the same picture within float rounding, from orbit, the limb, and over the
+// coasts (the water column's sea part) at 30 to 400 km. A wind layer keeps the per-pixel path.
+TEST(GlobeRender, ConstantWindUniformsKeepThePicture) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  std::vector<View> views{{"orbit-20000km", 10, -30, 2.0e7, 0, -90}, {"limb-400km", 0, -30, 4.0e5, 90, -10}};
+  views.insert(views.end(), kViews.begin(), kViews.end());
+  for (const View& v : views) {
+    render::FrameInput f = frameOf(v);
+    f.wind.speedMs = 11.0;
+    f.wind.towardsDeg = 60.0;
+    const test::OffAndOn images = test::renderOffAndOn(r, f, [&r](bool on) { r.setConstantWindVariants(on); });
+    EXPECT_TRUE(r.lastFrameConstantWind()) << v.name;
+    const test::RadianceChange change = test::radianceChange(images.off, images.on, 1e-4);
+    std::printf("%s: %d pixels changed by over 1e-4, largest relative change %.2e\n", v.name, change.over, change.worst);
+    EXPECT_EQ(change.over, 0) << v.name << " (largest relative change " << change.worst << ")";
+    if (change.over > 0) test::savePng(r, std::string("globe_constant_wind_") + v.name);
+  }
+}
+
 // From high up no pixel resolves the land mask's fine level (LandMaskTexture::fineLevelUnresolved)
 // and the globe's and the terrain's programs leave its code out (LANDMASK_COARSE_ONLY): the same
 // picture as with it (its weight is 0 at every pixel there), from orbit and from just above the
