@@ -34,7 +34,7 @@ out vec3 vInscatter;      // light scattered towards the eye along it (Sun-irrad
 #endif
 
 void main() {
-  float heightM;
+  precise float heightM;
   vRelative = morphedTileVertex(aPosition, aInfo, aMorph, heightM);
   vNormal = aNormal;
   vInfo = vec4(heightM, aInfo.yzw);

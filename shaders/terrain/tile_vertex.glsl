@@ -15,8 +15,9 @@ uniform float uMorphScale;
 // spacing there grows to twice the limit, when the tile itself would split.
 // position: m from the tile centre; info: height m, latitude rad, longitude rad, detail
 // amplitude m; morph: the parent mesh's point minus the vertex, m (terrain::TileVertex).
-// Returns the camera-relative position (m, ECEF axes); heightM: the morphed height, m.
-vec3 morphedTileVertex(vec3 position, vec4 info, vec3 morph, out float heightM) {
+// Returns the camera-relative position (m, ECEF axes); heightM: the morphed height, m (precise:
+// terrain.vert's clip distance from it must come out alike in every program of a tile).
+vec3 morphedTileVertex(vec3 position, vec4 info, vec3 morph, out precise float heightM) {
   vec3 relative = uTileOffset + position;
   float m = uMorphScale > 0.0 ? clamp(2.0 - uMorphScale / max(length(relative), 1e-3), 0.0, 1.0) : 0.0;
   vec3 up = vec3(cos(info.y) * cos(info.z), cos(info.y) * sin(info.z), sin(info.y));

@@ -356,10 +356,13 @@ void GlobeRenderer::render(const FrameInput& f) {
 const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
   // Sets of variants: above 20 km with the aerial table, without it, below 20 km, and above
   // 20 km without the table nor the land mask's fine level (a frame from ~2100 km up at 720p,
-  // where no pixel resolves it: LANDMASK_COARSE_ONLY).
+  // where no pixel resolves it: LANDMASK_COARSE_ONLY); the variants that shade the sea again
+  // with the constant wind's uniforms (PATTERN_CONSTANT_WIND), the others whatever the wind.
   const bool tableReader = variant > kClassifyExportLandSea && variant != kBlockFill;  // (classifying: no table)
   const int set = behind ? 2 : aerialTableFrame_ && tableReader ? 0 : coarseMaskFrame_ ? 3 : 1;
-  const int windSet = constantWindFrame_ ? 4 : 0;
+  const bool shadesSea = variant == kGlobePart0 + 2 || variant == kGlobePart0 + 3 || variant == kGlobePart0 + 5 ||
+                         variant == kGlobePart0 + 6 || variant == kListedPixels;  // edge, surface, sea, open sea
+  const int windSet = constantWindFrame_ && shadesSea ? 4 : 0;
   gl::Program& p = globePrograms_[static_cast<std::size_t>((windSet + set) * kGlobeVariants + variant)];
   if (p.id() == 0) {
     // Variants 0-5: GLOBE_PART_CLASSIFY (4) with its step; 6: all steps in one draw; 7-9: the
@@ -388,7 +391,7 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
     if (set == 0) defines.emplace_back("AERIAL_TABLE");
     if (set == 3) defines.emplace_back("LANDMASK_COARSE_ONLY");
     if (landMask_->active()) defines.emplace_back("GLOBE_MASK_COAST");  // (fixed for the renderer's life)
-    if (constantWindFrame_) defines.emplace_back("PATTERN_CONSTANT_WIND");
+    if (windSet != 0) defines.emplace_back("PATTERN_CONSTANT_WIND");
     // Above the ceiling the sea's sky filter as the grid's (the 20 km switch): the Sun layers'
     // radial sums. Below it the globe shades only the horizon's sea samples, with the probes:
     // the sums of every Sun layer would cost a first frame at sea level ~60 ms.
@@ -808,7 +811,7 @@ void GlobeRenderer::setGlobeUniforms(const gl::Program& globe, const geo::Camera
   wind_->bind(globe);
   patterns_->bind();
   patterns_->setUniforms(globe, nullptr, 0.0);
-  if (constantWindFrame_)  // (the patterns' bins are not the globe's: any field rotation)
+  if (constantWindFrame_)  // (the patterns' bins are not the globe's: any field rotation; unread by programs without)
     patterns_->setConstantWind(globe, wind_->constantSpeedMs(), glm::radians(wind_->constantTowardsDeg()), 0.0);
   globe.set("uSeaColor", OceanLighting{}.seaColor);
   setWaterOptics(globe, ocean::jerlovWater(ocean::kDefaultWater));

@@ -67,8 +67,10 @@ class OceanPatterns {
   /// Sets the PATTERN_CONSTANT_WIND uniforms (ocean/patterns.glsl, ocean/wind.glsl) on
   /// `program` for one wind over the whole sea, `speedMs` (m/s, >= 0) blowing towards
   /// `towardsRad` (clockwise from north), the field turned by `fieldRotationRad` from the
-  /// ocean frame: its patternBands from the tables as the shader reads them, the wind as
-  /// wind.glsl's localWind would find it, and its one bin of the patterns (the nearest).
+  /// ocean frame: its patternBands from the tables as the shader reads them, the whole sea's
+  /// slope and Jacobian variances (seaSlopeVarianceTotal, seaJacobianVarianceTotal: the
+  /// globe's sea), the wind as wind.glsl's localWind would find it, and its one bin of the
+  /// patterns (the nearest).
   void setConstantWind(const gl::Program& program, double speedMs, double towardsRad, double fieldRotationRad) const;
 
   /// patterns.glsl's fieldWindAngle and windBins in double, for a wind blowing towards

@@ -1,6 +1,7 @@
 #include "render/TerrainRenderer.hpp"
 
 #include <algorithm>
+#include <numbers>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -89,6 +90,12 @@ void TerrainRenderer::ensureShadowMap() {
     throw InternalError("terrain shadow map framebuffer incomplete");
 }
 
+void TerrainRenderer::setTileUniforms(const gl::Program& p, const terrain::Tile& t, const geo::CameraView& view) const {
+  // Camera-relative tile origin in double, then float: never float world coordinates.
+  p.set("uTileOffset", glm::vec3(t.centreEcef - view.positionEcef));
+  p.set("uMorphScale", morphScale(t, view));
+}
+
 float TerrainRenderer::morphScale(const terrain::Tile& t, const geo::CameraView& view) const {
   // Tiles at forced levels never had a parent drawn.
   if (t.key.level <= params_.minLevel) return 0.0f;
@@ -135,8 +142,7 @@ void TerrainRenderer::computeTileAerial(const geo::CameraView& view, const std::
     const terrain::Tile& t = *tiles[k];
     const int first = static_cast<int>(k) * terrain::kTileVertices;
     tileFirstVertex_[&t] = first;
-    p.set("uTileOffset", glm::vec3(t.centreEcef - view.positionEcef));
-    p.set("uMorphScale", morphScale(t, view));
+    setTileUniforms(p, t, view);
     p.set("uFirstVertex", first);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTileVerticesBinding, tileBuffer(t).id());
     glDispatchCompute((terrain::kTileVertices + 63) / 64, 1, 1);
@@ -347,8 +353,7 @@ void TerrainRenderer::drawShadowCascade(const geo::CameraView& view, int cascade
   glViewport(0, 0, texels, texels);
   shadowProgram_.set("uViewProjection", lightClip);
   for (const terrain::Tile* t : casting) {
-    shadowProgram_.set("uTileOffset", glm::vec3(t->centreEcef - view.positionEcef));
-    shadowProgram_.set("uMorphScale", morphScale(*t, view));
+    setTileUniforms(shadowProgram_, *t, view);
     bindTile(*t);
     glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
   }
@@ -409,9 +414,7 @@ void TerrainRenderer::drawTiles(const geo::CameraView& view, const std::vector<c
   glFrontFace(GL_CCW);
   glCullFace(GL_BACK);
   for (const terrain::Tile* t : tiles) {
-    // Camera-relative tile origin in double, then float: never float world coordinates.
-    p.set("uTileOffset", glm::vec3(t->centreEcef - view.positionEcef));
-    p.set("uMorphScale", morphScale(*t, view));
+    setTileUniforms(p, *t, view);
     p.set("uDetailFirst", t->normalOctaves);
     // Only tiles with water at a vertex look the coast up per pixel (terrain.frag).
     p.set("uTileHasWater", t->minHeightM <= 0.0 ? 1 : 0);
@@ -523,20 +526,26 @@ void SunShadows::apply(const gl::Program& p) const {
 
 bool TerrainRenderer::detailUnresolved(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles) const {
   const terrain::DetailOctaves& o = cache_.heights().octaves();
-  // The smallest angle a pixel spans (rad): at the frame's corners, cos² of their angle off axis.
+  // A pixel's angle (rad) at the frame's centre; at an angle off the axis, cos² of it times that,
+  // at least the frame's corners'.
   const double tanHalf = std::tan(0.5 * view.verticalFovRad);
   const double aspect = static_cast<double>(params_.widthPx) / params_.heightPx;
-  const double cornerTan2 = tanHalf * tanHalf * (1.0 + aspect * aspect);
-  const double pixelRad = 2.0 * tanHalf / params_.heightPx / (1.0 + cornerTan2);
+  const double centrePixelRad = 2.0 * tanHalf / params_.heightPx;
+  const double cornerRad = std::atan(tanHalf * std::sqrt(1.0 + aspect * aspect));
   // terrain.frag's footprint: the geodetic normal's change across a pixel, at least the ground
   // it spans over the largest radius of curvature, a² / b.
   const double a = geo::kWgs84SemiMajorM, b = geo::kWgs84SemiMinorM;
   for (const terrain::Tile* t : tiles) {
     // No point of the tile is nearer than its bounding sphere, nor than the eye's height over
-    // the tile's highest point (the ellipsoid's nearest point to the eye lies along its normal).
-    const double nearestM = std::max({glm::length(t->boundCentreEcef - view.positionEcef) - t->boundRadiusM,
-                                      view.position.heightM - t->maxHeightM, 0.0});
-    const double footprint = nearestM * pixelRad * b / (a * a);
+    // the tile's highest point (the ellipsoid's nearest point to the eye lies along its normal);
+    // none lies farther off the axis than the sphere's edge.
+    const glm::dvec3 toTile = t->boundCentreEcef - view.positionEcef;
+    const double distanceM = glm::length(toTile);
+    const double nearestM = std::max({distanceM - t->boundRadiusM, view.position.heightM - t->maxHeightM, 0.0});
+    const double offAxisRad = std::acos(std::clamp(glm::dot(toTile, view.forward) / std::max(distanceM, 1e-9), -1.0, 1.0)) +
+                              (distanceM > t->boundRadiusM ? std::asin(t->boundRadiusM / distanceM) : std::numbers::pi);
+    const double cosOff = std::cos(std::min(offAxisRad, cornerRad));
+    const double footprint = nearestM * centrePixelRad * cosOff * cosOff * b / (a * a);
     const double cells = footprint * (a / o.longestM) * std::exp2(t->normalOctaves);  // uDetailScale0 2^first
     if (t->normalOctaves < o.normalCount && cells < kDetailUnresolvedCells) return false;
   }

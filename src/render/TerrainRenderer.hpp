@@ -214,6 +214,8 @@ class TerrainRenderer {
                                                              const std::vector<const terrain::Tile*>& tiles) const;
   /// Streams the imagery tiles the land tiles to draw want (ImageryTextures::prepareTiles).
   void prepareImagery(const std::vector<const terrain::Tile*>& tiles);
+  /// terrain/tile_vertex.glsl's uniforms for a tile: uTileOffset, uMorphScale.
+  void setTileUniforms(const gl::Program& p, const terrain::Tile& tile, const geo::CameraView& view) const;
   /// terrain.vert's uMorphScale for a tile.
   [[nodiscard]] float morphScale(const terrain::Tile& tile, const geo::CameraView& view) const;
   struct GpuTile {
@@ -262,11 +264,14 @@ class TerrainRenderer {
                          const glm::dvec3& sunDirectionEcef);
   /// Whether no pixel of `tiles` resolves the first detail octave its vertex normals leave out
   /// (terrain.frag's pixelDetailGradient adds nothing): each tile's nearest point is far enough
-  /// that a pixel's footprint there, at its smallest (the frame's corners, the surface seen
-  /// square on, the ellipsoid's largest radius of curvature), spans kDetailUnresolvedCells of
-  /// that octave's lattice cells or more, where the octave's weight is 0 from 0.5.
+  /// that a pixel's footprint there, at its smallest (the pixel farthest off the axis the tile
+  /// can reach, the surface seen square on, the ellipsoid's largest radius of curvature), spans
+  /// kDetailUnresolvedCells of that octave's lattice cells or more, where the octave's weight
+  /// is 0 from 0.5. The shader's footprint is its foot point's move across the pixel, the
+  /// larger of the screen's two axes: a facet seen square on but sloping shortens it along its
+  /// slope by the slope's cosine, and the larger of two axes at 45° to it keeps at least 1/√2.
   [[nodiscard]] bool detailUnresolved(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles) const;
-  static constexpr double kDetailUnresolvedCells = 0.55;
+  static constexpr double kDetailUnresolvedCells = 0.71;
   /// Whether this frame's tiles are shaded without the detail (setDetailSkip).
   [[nodiscard]] bool skipDetail(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles) const;
   /// A tile's vertex buffer, uploaded on first use.
