@@ -247,6 +247,14 @@ class GlobeRenderer {
   void setCoarseMaskVariants(bool on) { coarseMaskVariants_ = on; }
   /// Whether the last frame drew with them.
   [[nodiscard]] bool lastFrameCoarseMask() const { return coarseMaskFrame_; }
+  /// Whether, where the land mask decides the coast, the globe's samples are classed by its
+  /// fraction alone (GLOBE_MASK_COAST; on by default), or also read the layer's heights, which
+  /// change the class only at a fraction of exactly 0.5 (off: for comparisons; the programs
+  /// are made again).
+  void setMaskCoastVariants(bool on) {
+    if (on != maskCoastVariants_) globePrograms_ = {};
+    maskCoastVariants_ = on;
+  }
   /// Whether frames with the constant wind (no wind layers) draw the globe's sea with its
   /// values as uniforms (PATTERN_CONSTANT_WIND; on by default, off for comparisons).
   void setConstantWindVariants(bool on) { constantWindVariants_ = on; }
@@ -374,6 +382,7 @@ class GlobeRenderer {
   /// from uniforms (PATTERN_CONSTANT_WIND) instead of the wind texture and the tables per pixel.
   bool constantWindFrame_ = false;
   bool constantWindVariants_ = true;  ///< setConstantWindVariants
+  bool maskCoastVariants_ = true;     ///< setMaskCoastVariants
   bool coarseMaskVariants_ = true;  ///< setCoarseMaskVariants
   void setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view, const FrameInput& f);
   /// Whether this frame lists its scattered parts (setScatteredPartsListed, one sample, no

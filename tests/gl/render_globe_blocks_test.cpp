@@ -214,6 +214,27 @@ TEST(GlobeRender, ConstantWindUniformsKeepThePicture) {
   }
 }
 
+// Where the land mask decides the coast the globe's four samples a pixel are classed by its
+// fraction alone (GLOBE_MASK_COAST), without the layer's heights: constrainByLandFraction's
+// height is above 0 exactly where the fraction is 0.5 or more but at 0.5 itself, so only
+// samples within rounding of the contour may change (8 coast pixels at coast-30km, 1280 x 720).
+// From orbit, the limb and the coasts at 30-400 km (land and sea parts, the coasts' samples).
+TEST(GlobeRender, SamplesByTheMaskAloneKeepThePicture) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  std::vector<View> views{{"orbit-20000km", 10, -30, 2.0e7, 0, -90}};
+  views.insert(views.end(), kViews.begin(), kViews.end());
+  for (const View& v : views) {
+    const render::FrameInput f = frameOf(v);
+    const test::OffAndOn images = test::renderOffAndOn(r, f, [&r](bool on) { r.setMaskCoastVariants(on); });
+    const test::RadianceChange change = test::radianceChange(images.off, images.on, 0.02);
+    std::printf("%s: %d pixels changed by over 2 %%, largest relative change %.2e\n", v.name, change.over, change.worst);
+    EXPECT_LE(change.over, kWidth * kHeight / 2000) << v.name << " (largest relative change " << change.worst << ")";
+    EXPECT_LT(change.mean, 1e-4) << v.name;
+    if (change.over > kWidth * kHeight / 2000) test::savePng(r, std::string("globe_mask_coast_") + v.name);
+  }
+}
+
 // From high up no pixel resolves the land mask's fine level (LandMaskTexture::fineLevelUnresolved)
 // and the globe's and the terrain's programs leave its code out (LANDMASK_COARSE_ONLY): the same
 // picture as with it (its weight is 0 at every pixel there), from orbit and from just above the
