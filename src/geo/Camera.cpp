@@ -77,15 +77,17 @@ glm::dmat4 CameraView::projection() const {
 
 glm::dmat4 CameraView::viewProjection() const { return projection() * glm::dmat4(viewRotation()); }
 
+double smallestPixelAngleRad(const CameraView& view, int heightPx, double offAxisRad) {
+  const double tanY = std::tan(0.5 * view.verticalFovRad);
+  const double tanCorner2 = tanY * tanY * (1.0 + view.aspect * view.aspect);
+  const double tanOff = std::tan(std::clamp(offAxisRad, 0.0, 0.5 * std::numbers::pi));
+  return 2.0 * tanY / heightPx / (1.0 + std::min(tanOff * tanOff, tanCorner2));  // cos² = 1 / (1 + tan²)
+}
+
 double smallestGroundFootprintRad(const CameraView& view, int heightPx, double highestGroundM) {
   const double nearestM = view.position.heightM - highestGroundM;
   if (nearestM <= 0.0 || heightPx <= 0) return 0.0;
-  // A pixel's angle: 2 tan(fov / 2) / height at the centre, times cos² of the ray's angle to
-  // the axis (d atan) at worst, smallest at the corners.
-  const double tanY = std::tan(0.5 * view.verticalFovRad);
-  const double tanCorner2 = tanY * tanY * (1.0 + view.aspect * view.aspect);
-  const double pixelRad = 2.0 * tanY / heightPx / (1.0 + tanCorner2);
-  return nearestM * pixelRad / kWgs84SemiMajorM;
+  return nearestM * smallestPixelAngleRad(view, heightPx) / kWgs84SemiMajorM;
 }
 
 glm::dvec3 CameraView::rayDirection(double ndcX, double ndcY) const {

@@ -2,6 +2,7 @@
 // The geodetic camera. State is kept in double precision; the GPU only receives directions and
 // camera-relative quantities (a float step at Earth radius is 0.5 m).
 #include <glm/glm.hpp>
+#include <numbers>
 #include <optional>
 #include <utility>
 #include <string>
@@ -56,6 +57,10 @@ struct CameraView {
 /// straight up are as well defined as any other orientation.
 CameraView makeCameraView(const CameraPose& pose, int widthPx, int heightPx);
 
+/// The smallest angle between neighbouring pixels' rays (rad) in `view` (`heightPx` pixels
+/// tall) within `offAxisRad` of its axis: 2 tan(fov / 2) / height at the centre, times cos² of
+/// the ray's angle to the axis (d atan) at worst; no smaller than at the screen's corners.
+double smallestPixelAngleRad(const CameraView& view, int heightPx, double offAxisRad = std::numbers::pi);
 /// A lower bound of a pixel's footprint on the ground anywhere in `view` (`heightPx` pixels
 /// tall), radians of arc: the ground's least distance (the eye's height less `highestGroundM`)
 /// times the smallest angle between neighbouring pixels' rays (at the screen's corners), over

@@ -390,7 +390,7 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
     if (behind) defines.emplace_back("GLOBE_BEHIND");
     if (set == 0) defines.emplace_back("AERIAL_TABLE");
     if (set == 3) defines.emplace_back("LANDMASK_COARSE_ONLY");
-    if (maskCoastVariants_ && landMask_->active()) defines.emplace_back("GLOBE_MASK_COAST");  // (fixed for the renderer's life)
+    if (maskCoastVariants_ && landMask_->active()) defines.emplace_back("GLOBE_MASK_COAST");  // (setMaskCoastVariants remakes the programs)
     if (windSet != 0) defines.emplace_back("PATTERN_CONSTANT_WIND");
     // Above the ceiling the sea's sky filter as the grid's (the 20 km switch): the Sun layers'
     // radial sums. Below it the globe shades only the horizon's sea samples, with the probes:

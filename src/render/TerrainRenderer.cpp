@@ -131,11 +131,8 @@ void TerrainRenderer::computeTileAerial(const geo::CameraView& view, const std::
     glNamedBufferStorage(tileAerial_.id(), static_cast<GLsizeiptr>(tileAerialBytes_), nullptr, 0);
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTerrainAerialBinding, tileAerial_.id());
-  p.set("uSunDir", glm::vec3(glm::normalize(sunDirectionEcef)));
-  p.set("uCamUp", glm::vec3(view.enu.up));
-  p.set("uCamAltitude", static_cast<float>(view.position.heightM));
+  setAerialUniforms(p, view, sunDirectionEcef);
   p.set("uVertexCount", terrain::kTileVertices);
-  atmosphere_->bind(p);
   p.use();
   tileFirstVertex_.clear();
   for (std::size_t k = 0; k < tiles.size(); ++k) {
@@ -501,16 +498,21 @@ double TerrainRenderer::seaSeenMaxHeightM(const geo::CameraView& view,
   return highest;
 }
 
-void TerrainRenderer::setFrameUniforms(const gl::Program& p, const geo::CameraView& view,
-                                       const glm::dvec3& sunDirectionEcef, bool seaFromGlobe) const {
-  p.set("uViewProjection", glm::mat4(view.viewProjection()));
+void TerrainRenderer::setAerialUniforms(const gl::Program& p, const geo::CameraView& view,
+                                        const glm::dvec3& sunDirectionEcef) const {
   p.set("uSunDir", glm::vec3(glm::normalize(sunDirectionEcef)));
   p.set("uCamUp", glm::vec3(view.enu.up));
   p.set("uCamAltitude", static_cast<float>(view.position.heightM));
+  if (atmosphere_ != nullptr) atmosphere_->bind(p);
+}
+
+void TerrainRenderer::setFrameUniforms(const gl::Program& p, const geo::CameraView& view,
+                                       const glm::dvec3& sunDirectionEcef, bool seaFromGlobe) const {
+  p.set("uViewProjection", glm::mat4(view.viewProjection()));
+  setAerialUniforms(p, view, sunDirectionEcef);
   p.set("uSeaFromGlobe", seaFromGlobe ? 1 : 0);
   setDetailUniforms(p, view);
   shadows_.apply(p);
-  if (atmosphere_ != nullptr) atmosphere_->bind(p);
   if (imagery_ != nullptr) imagery_->bind(p);
   p.set("uImageryEnabled", imagery_ != nullptr && imagery_->enabled() ? 1 : 0);
 }
@@ -526,12 +528,6 @@ void SunShadows::apply(const gl::Program& p) const {
 
 bool TerrainRenderer::detailUnresolved(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles) const {
   const terrain::DetailOctaves& o = cache_.heights().octaves();
-  // A pixel's angle (rad) at the frame's centre; at an angle off the axis, cos² of it times that,
-  // at least the frame's corners'.
-  const double tanHalf = std::tan(0.5 * view.verticalFovRad);
-  const double aspect = static_cast<double>(params_.widthPx) / params_.heightPx;
-  const double centrePixelRad = 2.0 * tanHalf / params_.heightPx;
-  const double cornerRad = std::atan(tanHalf * std::sqrt(1.0 + aspect * aspect));
   // terrain.frag's footprint: the geodetic normal's change across a pixel, at least the ground
   // it spans over the largest radius of curvature, a² / b.
   const double a = geo::kWgs84SemiMajorM, b = geo::kWgs84SemiMinorM;
@@ -544,8 +540,7 @@ bool TerrainRenderer::detailUnresolved(const geo::CameraView& view, const std::v
     const double nearestM = std::max({distanceM - t->boundRadiusM, view.position.heightM - t->maxHeightM, 0.0});
     const double offAxisRad = std::acos(std::clamp(glm::dot(toTile, view.forward) / std::max(distanceM, 1e-9), -1.0, 1.0)) +
                               (distanceM > t->boundRadiusM ? std::asin(t->boundRadiusM / distanceM) : std::numbers::pi);
-    const double cosOff = std::cos(std::min(offAxisRad, cornerRad));
-    const double footprint = nearestM * centrePixelRad * cosOff * cosOff * b / (a * a);
+    const double footprint = nearestM * geo::smallestPixelAngleRad(view, params_.heightPx, offAxisRad) * b / (a * a);
     const double cells = footprint * (a / o.longestM) * std::exp2(t->normalOctaves);  // uDetailScale0 2^first
     if (t->normalOctaves < o.normalCount && cells < kDetailUnresolvedCells) return false;
   }

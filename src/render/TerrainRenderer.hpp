@@ -178,6 +178,9 @@ class TerrainRenderer {
   /// whose tiles are land, unchanged); otherwise variant(frameBits) alone.
   void drawCovered(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
                    unsigned frameBits, const glm::dvec3& sunDirectionEcef, bool seaFromGlobe);
+  /// What the vertices' aerial perspective reads (terrain/tile_vertex.glsl): the Sun, the eye's
+  /// vertical and height, the atmosphere's tables.
+  void setAerialUniforms(const gl::Program& p, const geo::CameraView& view, const glm::dvec3& sunDirectionEcef) const;
   /// Everything terrain.frag/vert read that is the same for every tile of a frame.
   void setFrameUniforms(const gl::Program& p, const geo::CameraView& view,
                         const glm::dvec3& sunDirectionEcef, bool seaFromGlobe) const;
