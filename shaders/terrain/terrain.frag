@@ -14,10 +14,24 @@
 #include "terrain/detail.glsl"
 #include "terrain/shadow.glsl"
 #include "terrain/landmask.glsl"
+#ifdef TERRAIN_COARSE
+#include "terrain/tile_aerial.glsl"
+#include "terrain/tile_grid.glsl"
+#endif
 
 in vec3 vRelative;
 in vec3 vNormal;
 in vec4 vInfo;  // height m, latitude rad, longitude rad, detail amplitude m
+#ifdef TERRAIN_COARSE
+// Drawn from a coarser mesh (render/TerrainRenderer::tileStride): the fragment's place in the
+// full grid, and 1 on a skirt's lowered edge (terrain.vert). Its normal, height, detail
+// amplitude and aerial perspective (from the tile aerial buffer, which the coarser meshes
+// need) are the full grid's there, as drawn from it; latitude and longitude are linear in the
+// grid, so the coarser mesh interpolates them alike. Only its place on screen moves: less than
+// TerrainRenderer::kStrideDeviationPx.
+in vec3 vGridPlace;
+uniform float uSkirtDepthM;  // the tile's skirts' depth, m (terrain::Tile::skirtDepthM)
+#endif
 #ifndef TERRAIN_COVERAGE
 in vec3 vTransmittance;  // aerial perspective, per vertex (terrain/terrain.vert)
 in vec3 vInscatter;
@@ -100,7 +114,19 @@ void main() {
 #ifdef TERRAIN_DISCARDS  // (not for tiles all above the sea, away from the poles: TerrainRenderer)
   if (any(isnan(vInfo)) || any(isnan(vRelative)) || any(isnan(vNormal))) discard;
 #endif
-  float heightM = vInfo.x;
+  // The mesh's height here (where vRelative lies), and the grid's (the same but on a coarser mesh).
+  float meshHeightM = vInfo.x;
+#ifdef TERRAIN_COARSE
+  TileGridTriangle gridTriangle = tileGridTriangle(vGridPlace.xy);
+  TileGridSample grid = tileGridSample(gridTriangle);
+  vec3 vertexNormal = grid.normalHeight.xyz;
+  float heightM = grid.normalHeight.w - vGridPlace.z * uSkirtDepthM;
+  float detailAmplitudeM = grid.detailAmplitudeM;
+#else
+  vec3 vertexNormal = vNormal;
+  float heightM = meshHeightM;
+  float detailAmplitudeM = vInfo.w;
+#endif
   // From high up the globe pass's sea covers the bathymetry: leave it to it rather than to a
   // depth test a few kilometres deep at thousands of kilometres (which llvmpipe's multisample
   // depth interpolation does not resolve).
@@ -135,21 +161,24 @@ void main() {
   if (below && !maskCoast) discard;
   vec2 maskLatLon = vec2(lat, lon);
   if (!globeSea && below) {
-    vec3 toSea = vRelative * (heightM / (uCamAltitude - heightM));
+    vec3 toSea = vRelative * (meshHeightM / (uCamAltitude - meshHeightM));
     vec3 east = vec3(-sin(lon), cos(lon), 0.0);
     vec3 north = vec3(-sin(lat) * cos(lon), -sin(lat) * sin(lon), cos(lat));
     maskLatLon += vec2(dot(toSea, north), dot(toSea, east) / max(cos(lat), 1e-3)) / WGS84_A;
   }
   if (maskTest && landFraction(maskLatLon, maskFootprintRad) < 0.5) discard;
 #endif
-  if (maskTest) heightM = max(heightM, 0.0);
+  if (maskTest) {
+    heightM = max(heightM, 0.0);
+    meshHeightM = max(meshHeightM, 0.0);
+  }
 #endif
 #ifdef TERRAIN_COVERAGE  // the depth only (TerrainRenderer masks the colour writes)
   fragRadiance = vec4(0.0);
   fragAux = vec4(0.0);
 #else
   // Triangles that collapse at a pole give no normal (zero or NaN): the vertical stands in.
-  vec3 n = dot(vNormal, vNormal) > 1e-20 ? normalize(vNormal) : up;
+  vec3 n = dot(vertexNormal, vertexNormal) > 1e-20 ? normalize(vertexNormal) : up;
   float t = length(vRelative);
   vec3 dir = vRelative / t;
   // Seen from below (a skirt or a back face at a grazing angle): light it like its surroundings.
@@ -159,11 +188,11 @@ void main() {
   }
   vec3 nGeometric = n;
   // Tilt by the finer detail: its height gradient per metre along the surface, tangential.
-  vec3 dUp = normalOffsetFromEye(vRelative - heightM * up + uCamAltitude * uCamUp);
+  vec3 dUp = normalOffsetFromEye(vRelative - meshHeightM * up + uCamAltitude * uCamUp);
   float footprint = max(length(dFdx(dUp)), length(dFdy(dUp)));
 #ifndef TERRAIN_NO_DETAIL  // (no pixel resolves an octave the vertex normals leave out: TerrainRenderer's variants)
-  if (vInfo.w > 0.0) {
-    vec3 g = pixelDetailGradient(dUp, footprint) * (vInfo.w / WGS84_A);
+  if (detailAmplitudeM > 0.0) {
+    vec3 g = pixelDetailGradient(dUp, footprint) * (detailAmplitudeM / WGS84_A);
     n = normalize(n - (g - dot(g, n) * n));
   }
 #endif
@@ -183,7 +212,13 @@ void main() {
 #ifndef TERRAIN_NO_NIGHT  // (no point in view has the Sun down: TerrainRenderer's variants)
   if (heightM >= 0.0) surface += nightLightsRadiance(vec2(lat, lon), footprint, dot(up, uSunDir));
 #endif
-  fragRadiance = vec4(surface * vTransmittance + vInscatter, 1.0);
+#if defined(TERRAIN_COARSE) && defined(TERRAIN_AERIAL_BUFFER)
+  vec3 transmittance, inscatter;
+  tileGridAerial(gridTriangle, transmittance, inscatter);
+#else
+  vec3 transmittance = vTransmittance, inscatter = vInscatter;
+#endif
+  fragRadiance = vec4(surface * transmittance + inscatter, 1.0);
   fragAux = vec4(0.0);
 #endif
 }

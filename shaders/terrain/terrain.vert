@@ -12,6 +12,9 @@
 #include "atmosphere/model.glsl"
 #include "render/aerial.glsl"
 #include "terrain/tile_vertex.glsl"
+#ifdef TERRAIN_COARSE
+#include "terrain/tile_grid.glsl"
+#endif
 
 layout(location = 0) in vec3 aPosition;  // m, relative to the tile centre, ECEF axes
 layout(location = 1) in vec3 aNormal;
@@ -28,6 +31,11 @@ out vec4 vInfo;
 // The same in every program (TERRAIN_DEPTH_ONLY too): the terrain's second draw of a tile
 // tests its depth for equality with the first's (TerrainRenderer::drawCovered).
 invariant gl_Position;
+#ifdef TERRAIN_COARSE
+// A coarser mesh's vertex (every 2nd of the grid): its place in the full grid, and 1 on a
+// skirt's lowered edge (terrain/tile_grid.glsl), from which terrain.frag reads the full grid.
+out vec3 vGridPlace;
+#endif
 #ifndef TERRAIN_DEPTH_ONLY
 out vec3 vTransmittance;  // of the eye-to-vertex path
 out vec3 vInscatter;      // light scattered towards the eye along it (Sun-irradiance units)
@@ -60,6 +68,9 @@ void main() {
   // off where the interpolated height crosses 0, as a discard would per fragment, so the
   // maps' fragments need no shader (llvmpipe then writes their depth without running one).
   gl_ClipDistance[0] = vInfo.x;
+#endif
+#ifdef TERRAIN_COARSE
+  vGridPlace = tileGridPlace(gl_VertexID);
 #endif
 #if defined(TERRAIN_AERIAL_BUFFER) && !defined(TERRAIN_DEPTH_ONLY)
   vTransmittance = tileAerial[2 * (uFirstVertex + gl_VertexID)].rgb;

@@ -8,14 +8,10 @@
 #include "atmosphere/model.glsl"
 #include "render/aerial.glsl"
 #include "terrain/tile_vertex.glsl"
+#include "terrain/tile_grid.glsl"
 layout(local_size_x = 64) in;
 
-// The tile's vertices as uploaded: terrain::TileVertex, 13 floats each (position, normal,
-// height, latitude, longitude, detail amplitude, morph).
-layout(std430, binding = OG_TILE_VERTICES_BINDING) readonly buffer TileVertices { float tileVertices[]; };
 uniform int uVertexCount;
-
-vec3 tileVertexVec3(int at) { return vec3(tileVertices[at], tileVertices[at + 1], tileVertices[at + 2]); }
 
 void main() {
   int i = int(gl_GlobalInvocationID.x);

@@ -56,14 +56,5 @@ void tileVertexAerial(vec3 relative, float heightM, out vec3 transmittance, out 
   aerialToAltitude(relative / t, t, max(heightM, 0.0), transmittance, inscatter);
 }
 
-// The tile aerial buffer (TERRAIN_AERIAL_BUFFER): per vertex of the frame's tiles, at
-// uFirstVertex + its index, the transmittance and the in-scatter as two vec4s.
-#if defined(TERRAIN_AERIAL_BUFFER) || defined(TERRAIN_AERIAL_STORE)
-#ifdef TERRAIN_AERIAL_STORE
-layout(std430, binding = OG_TERRAIN_AERIAL_BINDING) writeonly buffer TileAerial { vec4 tileAerial[]; };
-#else
-layout(std430, binding = OG_TERRAIN_AERIAL_BINDING) readonly buffer TileAerial { vec4 tileAerial[]; };
-#endif
-uniform int uFirstVertex;  // the tile's first vertex in the buffer
-#endif
+#include "terrain/tile_aerial.glsl"
 #endif

@@ -34,6 +34,7 @@ std::vector<std::string> contractDefines() {
           define("OG_BLOCK_PATTERN_TABLE", kBlockPatternTable),
           define("OG_TERRAIN_AERIAL_BINDING", kTerrainAerialBinding),
           define("OG_TILE_VERTICES_BINDING", kTileVerticesBinding),
+          define("OG_TILE_QUADS", kTerrainTileQuads),
           define("OG_GLOBE_PIXELS_BINDING", kGlobePixelsBinding),
           define("OG_UNIT_SHADOW_MAP", kUnitShadowMap),
           define("OG_UNIT_PATTERN_DISPLACEMENT", kUnitPatternDisplacement),

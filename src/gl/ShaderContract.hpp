@@ -53,9 +53,13 @@ enum UniformBlockBinding : unsigned {
 /// test probes bind 0 for their run: the terrain binds its buffer again at each draw).
 enum StorageBinding : unsigned {
   kTerrainAerialBinding = 0,  ///< terrain/tile_vertex.glsl TileAerial (TerrainRenderer::computeTileAerial)
-  kTileVerticesBinding = 1,   ///< terrain/tile_aerial.comp TileVertices (a tile's vertex buffer)
+  kTileVerticesBinding = 1,   ///< terrain/tile_grid.glsl TileVertices (a tile's vertex buffer: tile_aerial.comp, TERRAIN_COARSE)
   kGlobePixelsBinding = 2,    ///< render/globe_pixels.glsl GlobePixels (GlobeRenderer::shadeScatteredParts)
 };
+
+/// Quads along a terrain tile's edge (terrain::kTileQuads, asserted by render/TerrainRenderer;
+/// GLSL: OG_TILE_QUADS): terrain/tile_grid.glsl finds a vertex's place in the grid from it.
+inline constexpr unsigned kTerrainTileQuads = 32;
 
 /// The contract as "NAME value" #define bodies, in full double precision.
 std::vector<std::string> contractDefines();

@@ -29,8 +29,15 @@ TerrainRenderer::TerrainRenderer(std::shared_ptr<const data::LatLonGrid> elevati
   // the refracted view ray's run (at most the water's reach) and the Sun ray's back up (at most
   // 1.13 of it, the critical angle's tangent): the shadow maps' crops take that in.
   floorShadowReachM_ = 2.13 * waterReachM;
-  const auto& idx = terrain::tileIndices();
-  indexCount_ = static_cast<int>(idx.size());
+  // Every stride's mesh, one after another.
+  static_assert(terrain::kTileQuads == static_cast<int>(gl::kTerrainTileQuads), "terrain/tile_grid.glsl's grid");
+  std::vector<std::uint32_t> idx;
+  for (std::size_t k = 0; k < strideIndices_.size(); ++k) {
+    const auto& strided = terrain::tileIndices(terrain::kTileStrides[k]);
+    const int grid = terrain::tileGridIndexCount(terrain::kTileStrides[k]);
+    strideIndices_[k] = {static_cast<int>(idx.size()), grid, static_cast<int>(strided.size()) - grid};
+    idx.insert(idx.end(), strided.begin(), strided.end());
+  }
   glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(idx.size() * sizeof(std::uint32_t)),
                        idx.data(), 0);
   const GLuint vao = vao_.id();
@@ -54,6 +61,7 @@ const gl::Program& TerrainRenderer::variant(unsigned bits) {
     if ((bits & kLandOnly) != 0) defines.emplace_back("TERRAIN_LAND_ONLY");
     if ((bits & kNoNight) != 0) defines.emplace_back("TERRAIN_NO_NIGHT");
     if ((bits & kNoDetail) != 0) defines.emplace_back("TERRAIN_NO_DETAIL");
+    if ((bits & kCoarse) != 0) defines.emplace_back("TERRAIN_COARSE");
     if ((bits & kShadowsOff) != 0) defines.emplace_back("SHADOWS_OFF");
     if ((bits & kNoImageryLayers) != 0) defines.emplace_back("IMAGERY_NO_LAYERS");
     if ((bits & kCoarseMask) != 0) defines.emplace_back("LANDMASK_COARSE_ONLY");
@@ -352,7 +360,7 @@ void TerrainRenderer::drawShadowCascade(const geo::CameraView& view, int cascade
   for (const terrain::Tile* t : casting) {
     setTileUniforms(shadowProgram_, *t, view);
     bindTile(*t);
-    glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+    glDrawElements(GL_TRIANGLES, strideIndices_[0].grid + strideIndices_[0].skirts, GL_UNSIGNED_INT, nullptr);
   }
 }
 
@@ -390,6 +398,21 @@ void TerrainRenderer::drawCovered(const geo::CameraView& view, const std::vector
 void TerrainRenderer::drawTiles(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
                                 unsigned bits, const glm::dvec3& sunDirectionEcef, bool seaFromGlobe,
                                 GLenum depthFunc) {
+  // Each tile with its own variant's bits (tileBits), the tiles of a variant together.
+  std::vector<std::pair<unsigned, std::vector<const terrain::Tile*>>> groups;
+  for (const terrain::Tile* t : tiles) {
+    const unsigned tileVariant = bits | tileBits(*t, view);
+    auto group = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == tileVariant; });
+    if (group == groups.end()) group = groups.insert(groups.end(), {tileVariant, {}});
+    group->second.push_back(t);
+  }
+  for (const auto& [groupBits, group] : groups)
+    drawTileGroup(view, group, groupBits, sunDirectionEcef, seaFromGlobe, depthFunc);
+}
+
+void TerrainRenderer::drawTileGroup(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
+                                    unsigned bits, const glm::dvec3& sunDirectionEcef, bool seaFromGlobe,
+                                    GLenum depthFunc) {
   const gl::Program& p = variant(bits);
   setFrameUniforms(p, view, sunDirectionEcef, seaFromGlobe);
   p.set("uFloorClipM", static_cast<float>(floorClip_.clipM));
@@ -407,9 +430,9 @@ void TerrainRenderer::drawTiles(const geo::CameraView& view, const std::vector<c
   // A heightfield seen from above hides its back faces behind front ones: cull them (the
   // skirts, seen from either side, are drawn without culling). Fragments are not free even
   // when hidden: llvmpipe shades them before the depth test when multisampling.
-  const GLsizei gridIndices = 6 * terrain::kTileQuads * terrain::kTileQuads;
   glFrontFace(GL_CCW);
   glCullFace(GL_BACK);
+  auto offset = [](int first) { return reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * sizeof(std::uint32_t)); };
   for (const terrain::Tile* t : tiles) {
     setTileUniforms(p, *t, view);
     p.set("uDetailFirst", t->normalOctaves);
@@ -418,13 +441,48 @@ void TerrainRenderer::drawTiles(const geo::CameraView& view, const std::vector<c
     if (aerialBuffer) p.set("uFirstVertex", tileFirstVertex_.at(t));
     if (imagery_ != nullptr) imagery_->bindTile(p, t->key);
     bindTile(*t);
+    int stride = 0;  // index into kTileStrides
+    if ((bits & kCoarse) != 0) {  // the full grid's vertices, read by the fragments (terrain/tile_grid.glsl)
+      while (terrain::kTileStrides[stride] != tileStride(*t, view)) ++stride;
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTileVerticesBinding, tileBuffer(*t).id());
+      p.set("uSkirtDepthM", static_cast<float>(t->skirtDepthM));
+    }
+    if ((bits & kCoverage) == 0) {  // (counted once: drawCovered draws a tile twice)
+      stats_.coarseTiles += stride > 0 ? 1 : 0;
+    }
+    const StrideIndices& mesh = strideIndices_[static_cast<std::size_t>(stride)];
     glEnable(GL_CULL_FACE);
-    glDrawElements(GL_TRIANGLES, gridIndices, GL_UNSIGNED_INT, nullptr);
+    glDrawElements(GL_TRIANGLES, mesh.grid, GL_UNSIGNED_INT, offset(mesh.first));
     glDisable(GL_CULL_FACE);
-    glDrawElements(GL_TRIANGLES, indexCount_ - gridIndices, GL_UNSIGNED_INT,
-                   reinterpret_cast<const void*>(static_cast<std::uintptr_t>(gridIndices) * sizeof(std::uint32_t)));
+    glDrawElements(GL_TRIANGLES, mesh.skirts, GL_UNSIGNED_INT, offset(mesh.first + mesh.grid));
   }
   if (clipFloor) glDisable(GL_CLIP_DISTANCE0);
+}
+
+int TerrainRenderer::tileStride(const terrain::Tile& t, const geo::CameraView& view) const {
+  if (!coarseThisFrame_) return 1;
+  const glm::dvec3 toCentre = t.boundCentreEcef - view.positionEcef;
+  const double centreM = glm::length(toCentre);
+  // terrain/tile_vertex.glsl's morph weight is 0 within half the morph scale of the eye.
+  const double morph = morphScale(t, view);
+  if (morph > 0.0 && centreM + t.boundRadiusM > 0.5 * morph) return 1;
+  // A vertical offset moves a point on screen by its part across the view ray: at most the
+  // sine of the largest angle between a vertical on the tile and a ray to a point of it.
+  const double facing = std::acos(std::clamp(-glm::dot(t.middleUp, toCentre) / centreM, -1.0, 1.0));
+  const double spread = t.upConeRad + std::asin(std::min(t.boundRadiusM / centreM, 1.0));
+  const double across = facing + spread >= 0.5 * std::numbers::pi ? 1.0 : std::sin(facing + spread);
+  const double pixelsPerM =
+      params_.heightPx / (2.0 * std::tan(0.5 * view.verticalFovRad)) / std::max(centreM - t.boundRadiusM, 1.0);
+  for (std::size_t k = std::size(terrain::kTileStrides) - 1; k >= 1; --k) {
+    const terrain::Tile::StrideDeviation& d = t.strideDeviation[k - 1];
+    const double shiftM = d.verticalM * across + d.horizontalM;
+    if (shiftM * pixelsPerM <= kStrideDeviationPx && d.verticalM <= t.skirtDepthM) return terrain::kTileStrides[k];
+  }
+  return 1;
+}
+
+unsigned TerrainRenderer::tileBits(const terrain::Tile& t, const geo::CameraView& view) const {
+  return tileStride(t, view) > 1 ? kCoarse : 0u;
 }
 
 TerrainRenderer::FloorClip TerrainRenderer::floorClip(const geo::CameraView& view, int heightPx) const {
@@ -641,7 +699,9 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
                              (skipDetail(view, drawn) ? kNoDetail : 0u);
   stats_.pixelDetail = !drawn.empty() && (frameBits & kNoDetail) == 0;
   if (aerialBuffer) computeTileAerial(view, drawn, sunDirectionEcef);
+  coarseThisFrame_ = coarseStridesOn_ && aerialBuffer && !shadows_.on;
   waterBits_ = frameBits;
+  stats_.coarseTiles = 0;
   waterSunDirection_ = sunDirectionEcef;
   // Single-sampled only: with samples the clip would cut each sample where the discard cuts
   // the pixel (an edge anti-aliased along the -1 m contour: another picture).

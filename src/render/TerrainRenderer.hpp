@@ -58,6 +58,8 @@ struct TerrainStats {
   /// Whether the last frame's tiles were shaded with the detail octaves per pixel (false where
   /// no pixel resolves one: detailUnresolved).
   bool pixelDetail = false;
+  /// Drawn tiles drawn from the coarser mesh (every 2nd vertex: tileStride) in the last frame.
+  int coarseTiles = 0;
   double maxHeightM = 0.0;      ///< highest point of the selected tiles, m (0 when none)
   /// Below the grid's ceiling, the highest the floor can be (a vertex's height, risen at a 45°
   /// slope over 1.5 vertex spacings) around the vertices of the selected tiles with water over
@@ -155,6 +157,16 @@ class TerrainRenderer {
   /// (detailUnresolved; the default), never, or always (for tests: what the detail adds).
   enum class DetailSkip { never, whereUnresolved, always };
   void setDetailSkip(DetailSkip skip) { detailSkip_ = skip; }
+  /// Whether tiles are drawn from a coarser mesh (every 2nd vertex) where it lies within
+  /// kStrideDeviationPx of the full grid (tileStride; the default), or always from the full
+  /// grid (the tests' reference). Where drawn so, the fragments still take their normal,
+  /// height, detail amplitude and aerial perspective from the full grid (TERRAIN_COARSE), so
+  /// only the picture's place moves, by under kStrideDeviationPx. Why: llvmpipe shades a
+  /// triangle's fragments in blocks of 4 x 4 pixels, and orbit's tiles are quads of 7-10
+  /// pixels (docs/performance.md, twenty-first session).
+  void setCoarseStrides(bool on) { coarseStridesOn_ = on; }
+  /// The farthest on screen a coarser mesh may lie from the full grid, pixels.
+  static constexpr double kStrideDeviationPx = 0.5;
 
  private:
   static constexpr int kMaxDetailOctaves = 24;  // MAX_DETAIL_OCTAVES in terrain.frag
@@ -168,10 +180,14 @@ class TerrainRenderer {
   static constexpr double kShadowSlabMarginM = 100.0;
   static constexpr int kShadowCascades = SunShadows::kCascades;
   void setDetailUniforms(const gl::Program& p, const geo::CameraView& view) const;
-  /// Draws `tiles` with variant(bits) and the frame's uniforms (setFrameUniforms), the depth
-  /// test `depthFunc` (GL_GREATER, writing the depth, or GL_EQUAL, not writing it).
+  /// Draws `tiles` with variant(bits) and each tile's own bits on top (tileBits), the frame's
+  /// uniforms (setFrameUniforms), the depth test `depthFunc` (GL_GREATER, writing the depth, or
+  /// GL_EQUAL, not writing it).
   void drawTiles(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles, unsigned bits,
                  const glm::dvec3& sunDirectionEcef, bool seaFromGlobe, GLenum depthFunc = GL_GREATER);
+  /// drawTiles' tiles of one variant (`bits`, each tile's own included).
+  void drawTileGroup(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles, unsigned bits,
+                     const glm::dvec3& sunDirectionEcef, bool seaFromGlobe, GLenum depthFunc);
   /// Tiles whose fragments may be discarded (under the sea, the coast test): below the grid's
   /// ceiling and single-sampled, their depth by the kCoverage program, then their shading by
   /// variant(frameBits | kAfterCoverage) (sea-2m-horizon's terrain pass -18 %; mountain-15km,
@@ -257,10 +273,25 @@ class TerrainRenderer {
     kCoarseMask = 64u,
     kAerialTable = 128u,
     kAerialBuffer = 256u,
-    kNoDetail = 512u
+    kNoDetail = 512u,
+    kCoarse = 1024u
   };
   const gl::Program& variant(unsigned bits);
-  std::array<gl::Program, 1024> variants_;
+  std::array<gl::Program, 2048> variants_;
+  /// The stride (terrain::kTileStrides) of the mesh `tile` is drawn from: the coarsest that lies
+  /// within kStrideDeviationPx of the full grid at the tile's nearest point and within its
+  /// skirts' depth (which then still close the cracks at its edges), where no vertex of it
+  /// morphs (a morphing vertex leaves the full grid: terrain/tile_vertex.glsl), in frames with
+  /// the tile aerial buffer (the fragments read the full grid's aerial perspective from it)
+  /// and no shadow map (whose depths are the full grid's); 1 (the full grid) elsewhere.
+  [[nodiscard]] int tileStride(const terrain::Tile& tile, const geo::CameraView& view) const;
+  /// Variant bits of one tile on top of a draw's: kCoarse (tileStride).
+  [[nodiscard]] unsigned tileBits(const terrain::Tile& tile, const geo::CameraView& view) const;
+  /// The first index and the grid's and the skirts' counts of each stride's mesh in indices_.
+  struct StrideIndices {
+    int first = 0, grid = 0, skirts = 0;
+  };
+  std::array<StrideIndices, std::size(terrain::kTileStrides)> strideIndices_{};
   /// Fills the tile aerial buffer for `tiles` (kAerialBuffer's frames): each tile's vertices'
   /// transmittance and in-scatter at its slot (tileFirstVertex_).
   void computeTileAerial(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
@@ -287,6 +318,8 @@ class TerrainRenderer {
   bool aerialTableOn_ = true;  ///< setAerialTable
   bool tileAerialBufferOn_ = true;  ///< setTileAerialBuffer
   DetailSkip detailSkip_ = DetailSkip::whereUnresolved;  ///< setDetailSkip
+  bool coarseStridesOn_ = true;     ///< setCoarseStrides
+  bool coarseThisFrame_ = false;    ///< whether this frame's tiles may be drawn coarser (tileStride)
   gl::Program tileAerialProgram_;     ///< terrain/tile_aerial.comp
   gl::Buffer tileAerial_;             ///< two vec4s a vertex of the frame's tiles
   std::size_t tileAerialBytes_ = 0;
@@ -305,7 +338,6 @@ class TerrainRenderer {
   gl::Framebuffer shadowFbo_;
   gl::VertexArray vao_;
   gl::Buffer indices_;
-  int indexCount_ = 0;
   std::unordered_map<std::uint64_t, GpuTile> gpu_;
   TerrainStats stats_;
   gl::PassTimer* timer_ = nullptr;

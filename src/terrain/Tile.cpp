@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "geo/Wgs84.hpp"
 
@@ -11,6 +14,30 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 // Finest grid: kTileQuads << kMaxLevel steps over 180° (a power of two, so the step is exact).
 constexpr double kFineStepDeg = 180.0 / static_cast<double>(static_cast<std::int64_t>(kTileQuads) << kMaxLevel);
+
+// How far the mesh of every `stride`-th vertex lies from the (kTileQuads + 1)² grid `ecef`
+// (row-major, m; verticals `up`), its quads split as tileIndices(stride) splits them.
+Tile::StrideDeviation strideDeviation(const std::vector<glm::dvec3>& ecef, const std::vector<glm::dvec3>& up,
+                                      int stride) {
+  constexpr int n = kTileQuads + 1;
+  auto at = [&](int i, int j) { return ecef[static_cast<std::size_t>(j * n + i)]; };
+  Tile::StrideDeviation worst;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int i0 = std::min(i / stride * stride, kTileQuads - stride);
+      const int j0 = std::min(j / stride * stride, kTileQuads - stride);
+      const double fx = static_cast<double>(i - i0) / stride, fy = static_cast<double>(j - j0) / stride;
+      const glm::dvec3 a = at(i0, j0), d = at(i0 + stride, j0 + stride);
+      // Triangle a, b, d below the diagonal, a, d, c above it.
+      const glm::dvec3 p = fx >= fy ? a + fx * (at(i0 + stride, j0) - a) + fy * (d - at(i0 + stride, j0))
+                                    : a + fy * (at(i0, j0 + stride) - a) + fx * (d - at(i0, j0 + stride));
+      const glm::dvec3 off = at(i, j) - p;
+      const glm::dvec3& u = up[static_cast<std::size_t>(j * n + i)];
+      worst.verticalM = std::max(worst.verticalM, std::abs(glm::dot(off, u)));
+      worst.horizontalM = std::max(worst.horizontalM, glm::length(off - glm::dot(off, u) * u));
+    }
+  return worst;
+}
 }  // namespace
 
 double TileKey::sizeDeg() const { return 180.0 / static_cast<double>(1 << level); }
@@ -74,6 +101,15 @@ Tile buildTile(const Heightfield& heights, const TileKey& key) {
   // Skirt depth: hides the gaps at T-junctions with coarser neighbours, which are at most the
   // height differences across a cell of this tile.
   const double skirt = std::clamp(0.5 * (t.maxHeightM - t.minHeightM) + 0.1 * t.spacingM, 20.0, 20000.0);
+  t.skirtDepthM = skirt;
+  std::vector<glm::dvec3> ups(lats.size());
+  for (std::size_t k = 0; k < lats.size(); ++k) ups[k] = geodeticUpFast(lats[k], lons[k]);
+  for (std::size_t k = 1; k < std::size(kTileStrides); ++k)
+    t.strideDeviation[k - 1] = strideDeviation(ecef, ups, kTileStrides[k]);
+  t.middleUp = ups[static_cast<std::size_t>((n / 2) * n + n / 2)];
+  double leastCos = 1.0;
+  for (const glm::dvec3& u : ups) leastCos = std::min(leastCos, glm::dot(t.middleUp, u));
+  t.upConeRad = std::acos(std::clamp(leastCos, -1.0, 1.0)) + std::sqrt(2.0) * key.sizeDeg() / kTileQuads * kDeg;
 
   t.positions.reserve(kTileVertices);
   t.vertices.reserve(kTileVertices);
@@ -126,31 +162,51 @@ Tile buildTile(const Heightfield& heights, const TileKey& key) {
   return t;
 }
 
-const std::vector<std::uint32_t>& tileIndices() {
-  static const std::vector<std::uint32_t> indices = [] {
-    constexpr std::uint32_t n = kTileQuads + 1;
-    std::vector<std::uint32_t> v;
-    v.reserve(6 * kTileQuads * kTileQuads + 4 * 6 * kTileQuads);
-    for (std::uint32_t j = 0; j < kTileQuads; ++j)
-      for (std::uint32_t i = 0; i < kTileQuads; ++i) {
-        const std::uint32_t a = j * n + i, b = a + 1, c = a + n, d = c + 1;
-        v.insert(v.end(), {a, b, d, a, d, c});
-      }
-    // Skirt strips: edge vertex k of edge e (grid index g(k)) joined to its lowered copy.
-    auto grid = [&](std::uint32_t e, std::uint32_t s) {
-      const std::uint32_t i = e == 0 ? s : e == 1 ? n - 1 : e == 2 ? s : 0;
-      const std::uint32_t j = e == 0 ? 0 : e == 1 ? s : e == 2 ? n - 1 : s;
-      return j * n + i;
-    };
-    for (std::uint32_t e = 0; e < 4; ++e)
-      for (std::uint32_t s = 0; s < kTileQuads; ++s) {
-        const std::uint32_t top0 = grid(e, s), top1 = grid(e, s + 1);
-        const std::uint32_t low0 = n * n + e * n + s, low1 = low0 + 1;
-        v.insert(v.end(), {top0, top1, low1, top0, low1, low0});
-      }
-    return v;
+namespace {
+std::vector<std::uint32_t> makeTileIndices(std::uint32_t stride) {
+  constexpr std::uint32_t n = kTileQuads + 1;
+  const std::uint32_t quads = kTileQuads / stride;
+  std::vector<std::uint32_t> v;
+  v.reserve(6 * quads * quads + 4 * 6 * quads);
+  for (std::uint32_t j = 0; j < kTileQuads; j += stride)
+    for (std::uint32_t i = 0; i < kTileQuads; i += stride) {
+      const std::uint32_t a = j * n + i, b = a + stride, c = a + stride * n, d = c + stride;
+      v.insert(v.end(), {a, b, d, a, d, c});
+    }
+  // Skirt strips: edge vertex k of edge e (grid index g(k)) joined to its lowered copy.
+  auto grid = [&](std::uint32_t e, std::uint32_t s) {
+    const std::uint32_t i = e == 0 ? s : e == 1 ? n - 1 : e == 2 ? s : 0;
+    const std::uint32_t j = e == 0 ? 0 : e == 1 ? s : e == 2 ? n - 1 : s;
+    return j * n + i;
+  };
+  for (std::uint32_t e = 0; e < 4; ++e)
+    for (std::uint32_t s = 0; s < kTileQuads; s += stride) {
+      const std::uint32_t top0 = grid(e, s), top1 = grid(e, s + stride);
+      const std::uint32_t low0 = n * n + e * n + s, low1 = low0 + stride;
+      v.insert(v.end(), {top0, top1, low1, top0, low1, low0});
+    }
+  return v;
+}
+
+int strideIndex(int stride) {
+  for (std::size_t k = 0; k < std::size(kTileStrides); ++k)
+    if (kTileStrides[k] == stride) return static_cast<int>(k);
+  throw std::invalid_argument("terrain tile stride " + std::to_string(stride) + " is not one of terrain::kTileStrides");
+}
+}  // namespace
+
+const std::vector<std::uint32_t>& tileIndices(int stride) {
+  static const std::array<std::vector<std::uint32_t>, std::size(kTileStrides)> indices = [] {
+    std::array<std::vector<std::uint32_t>, std::size(kTileStrides)> a;
+    for (std::size_t k = 0; k < a.size(); ++k) a[k] = makeTileIndices(static_cast<std::uint32_t>(kTileStrides[k]));
+    return a;
   }();
-  return indices;
+  return indices[static_cast<std::size_t>(strideIndex(stride))];
+}
+
+int tileGridIndexCount(int stride) {
+  const int quads = kTileQuads / kTileStrides[strideIndex(stride)];
+  return 6 * quads * quads;
 }
 
 }  // namespace og::terrain

@@ -6,6 +6,8 @@
 // vertex shared by tiles of any levels has bit-identical coordinates, height and position.
 #include <glm/glm.hpp>
 
+#include <array>
+#include <iterator>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -18,6 +20,11 @@ inline constexpr int kTileQuads = 32;                    ///< quads along a tile
 inline constexpr int kTileGridVertices = (kTileQuads + 1) * (kTileQuads + 1);
 inline constexpr int kTileVertices = kTileGridVertices + 4 * (kTileQuads + 1);  ///< with skirts
 inline constexpr int kMaxLevel = 16;                     ///< finest level (~20 m spacing)
+/// The meshes of a tile's grid: every vertex, every 2nd vertex (tileIndices(stride)). The
+/// coarser is drawn where it lies within a fraction of a pixel of the full grid, the fragments
+/// still shaded from the full grid's vertices (render/TerrainRenderer::tileStride). (Every 4th
+/// vertex: from orbit at 1280 x 720 no tile's lies within half a pixel.)
+inline constexpr int kTileStrides[] = {1, 2};
 
 struct TileKey {
   int level = 0;  ///< 0 .. kMaxLevel
@@ -62,6 +69,19 @@ struct Tile {
   double boundRadiusM = 0.0;
   double minHeightM = 0.0, maxHeightM = 0.0;
   double spacingM = 0.0;                 ///< vertex spacing north-south, m
+  double skirtDepthM = 0.0;              ///< how far the skirts hang below the edges, m
+  /// How far the mesh of each stride after the first (kTileStrides) lies from the full grid:
+  /// the most a grid vertex lies off it along its vertical (mostly the ellipsoid's curvature
+  /// under a longer chord, and the relief) and across it (a chord across the grid's curved
+  /// parallels and meridians), m.
+  struct StrideDeviation {
+    double verticalM = 0.0, horizontalM = 0.0;
+  };
+  std::array<StrideDeviation, std::size(kTileStrides) - 1> strideDeviation{};
+  glm::dvec3 middleUp{0.0, 0.0, 1.0};  ///< the geodetic vertical at the middle vertex (unit, ECEF)
+  /// The largest angle between middleUp and the geodetic vertical anywhere on the tile, rad (a
+  /// cell's diagonal more than at its vertices).
+  double upConeRad = 0.0;
   int normalOctaves = 0;                 ///< detail octaves in the vertex normals (the rest per pixel)
   std::uint64_t lastUsedFrame = 0;
 
@@ -80,8 +100,11 @@ struct Tile {
 Tile buildTile(const Heightfield& heights, const TileKey& key);
 
 /// Triangle indices shared by every tile (the grid, then the skirts), counter-clockwise seen
-/// from above.
-const std::vector<std::uint32_t>& tileIndices();
+/// from above, joining every `stride`-th vertex (1 or 2: kTileStrides) of the grid and of the
+/// skirts. Every quad is split along the diagonal from (i, j) to (i + stride, j + stride).
+const std::vector<std::uint32_t>& tileIndices(int stride = 1);
+/// How many of tileIndices(stride) are the grid's (the skirts' follow).
+int tileGridIndexCount(int stride);
 
 /// Closed-form geodetic -> ECEF (m): the same arithmetic for every caller, so shared vertices
 /// match bit for bit.

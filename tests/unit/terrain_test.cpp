@@ -103,6 +103,44 @@ TEST(TerrainTile, SkirtsHangBelowTheEdges) {
   for (auto i : idx) EXPECT_LT(i, static_cast<std::uint32_t>(kTileVertices));
 }
 
+// The coarser mesh (render/TerrainRenderer::tileStride) joins only every 2nd vertex of the grid
+// and of the skirts, covers the tile with 16² quads, and knows how far it lies from the full
+// grid: it is the parent's mesh, so its deviation is the longest morph offset
+// (terrain/tile_vertex.glsl), split along and across the vertical.
+TEST(TerrainTile, CoarserMeshesJoinEveryStrideVertexAndKnowTheirDeviation) {
+  constexpr int n = kTileQuads + 1;
+  for (const int stride : {2}) {
+    const auto& idx = tileIndices(stride);
+    const int grid = tileGridIndexCount(stride);
+    EXPECT_EQ(grid, 6 * (kTileQuads / stride) * (kTileQuads / stride));
+    EXPECT_EQ(static_cast<int>(idx.size()), grid + 4 * 6 * (kTileQuads / stride));
+    for (std::size_t k = 0; k < idx.size(); ++k) {
+      const int v = static_cast<int>(idx[k]);
+      ASSERT_LT(v, kTileVertices);
+      // A skirt's lowered vertex only after the grid's triangles; every vertex a multiple of
+      // the stride along its edge (skirt) or in both directions (grid).
+      if (v >= kTileGridVertices) {
+        EXPECT_GE(static_cast<int>(k), grid);
+        EXPECT_EQ((v - kTileGridVertices) % n % stride, 0) << stride << ": " << v;
+      } else {
+        EXPECT_TRUE(v % n % stride == 0 && v / n % stride == 0) << stride << ": " << v;
+      }
+    }
+  }
+  EXPECT_EQ(tileIndices(1), tileIndices());
+  EXPECT_THROW((void)tileIndices(3), std::invalid_argument);
+  EXPECT_THROW((void)tileIndices(4), std::invalid_argument);
+
+  const Tile t = buildTile(*heights(), TileKey{9, 759, 335});  // the Himalaya
+  double longestMorph = 0.0;
+  for (int k = 0; k < kTileGridVertices; ++k)
+    longestMorph = std::max(longestMorph, static_cast<double>(glm::length(t.vertices[static_cast<std::size_t>(k)].morph)));
+  const Tile::StrideDeviation& two = t.strideDeviation[0];
+  EXPECT_GT(longestMorph, 100.0);
+  EXPECT_GE(std::hypot(two.verticalM, two.horizontalM), longestMorph - 0.01);
+  EXPECT_LE(std::max(two.verticalM, two.horizontalM), longestMorph + 0.01);
+}
+
 TEST(TerrainTile, MorphTargetsLieOnTheParentsMesh) {
   // A child's vertices morph onto its parent's triangles: the parent's own vertices stay, the
   // others go to the midpoint of the parent's edge or diagonal through them (the parent's quads

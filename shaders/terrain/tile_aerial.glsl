@@ -1,0 +1,12 @@
+// The tile aerial buffer (TERRAIN_AERIAL_BUFFER; written by terrain/tile_aerial.comp,
+// TERRAIN_AERIAL_STORE): per vertex of the frame's tiles, at uFirstVertex + its index, the
+// transmittance and the in-scatter of the eye's path to it as two vec4s
+// (render/TerrainRenderer::computeTileAerial).
+#if defined(TERRAIN_AERIAL_BUFFER) || defined(TERRAIN_AERIAL_STORE)
+#ifdef TERRAIN_AERIAL_STORE
+layout(std430, binding = OG_TERRAIN_AERIAL_BINDING) writeonly buffer TileAerial { vec4 tileAerial[]; };
+#else
+layout(std430, binding = OG_TERRAIN_AERIAL_BINDING) readonly buffer TileAerial { vec4 tileAerial[]; };
+#endif
+uniform int uFirstVertex;  // the tile's first vertex in the buffer
+#endif
