@@ -677,6 +677,22 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
     if (!t->coveredBySea()) casters.push_back(t);
   renderShadowMap(view, casters, sunDirectionEcef);
   if (timer_ != nullptr) timer_->mark("terrain");
+  const unsigned frameBits = prepareFrame(view, tiles, drawn, sunDirectionEcef, seaFromGlobe);
+  drawFrameTiles(view, drawn, frameBits, sunDirectionEcef, seaFromGlobe);
+  stats_.tiles = static_cast<int>(tiles.size());
+  stats_.drawnTiles = static_cast<int>(drawn.size());
+  stats_.landTiles = static_cast<int>(casters.size());
+  stats_.aerialBufferTiles = (frameBits & kAerialBuffer) != 0 ? static_cast<int>(drawn.size()) : 0;
+  stats_.finestLevel = sel.finestLevel;
+  stats_.tilesPending = sel.pending;
+  stats_.cpuBytes = cache_.bytes();
+  stats_.gpuBytes = gpu_.size() * terrain::kTileVertices * sizeof(terrain::TileVertex);
+  gl::checkErrors("TerrainRenderer::draw");
+}
+
+unsigned TerrainRenderer::prepareFrame(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
+                                       const std::vector<const terrain::Tile*>& drawn,
+                                       const glm::dvec3& sunDirectionEcef, bool seaFromGlobe) {
   stats_.maxHeightM = tiles.empty() ? 0.0 : -1e30;
   for (const terrain::Tile* t : tiles) stats_.maxHeightM = std::max(stats_.maxHeightM, t->maxHeightM);
   // (Above the ceiling the globe draws the sea: no water volume to decide.)
@@ -700,14 +716,20 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   stats_.pixelDetail = !drawn.empty() && (frameBits & kNoDetail) == 0;
   if (aerialBuffer) computeTileAerial(view, drawn, sunDirectionEcef);
   coarseThisFrame_ = coarseStridesOn_ && aerialBuffer && !shadows_.on;
-  waterBits_ = frameBits;
   stats_.coarseTiles = 0;
-  waterSunDirection_ = sunDirectionEcef;
   // Single-sampled only: with samples the clip would cut each sample where the discard cuts
   // the pixel (an edge anti-aliased along the -1 m contour: another picture).
   GLint samples = 0;
   glGetIntegerv(GL_SAMPLES, &samples);
-  floorClip_ = seaFromGlobe || samples > 1 ? FloorClip{} : floorClip(view, height);
+  floorClip_ = seaFromGlobe || samples > 1 ? FloorClip{} : floorClip(view, params_.heightPx);
+  return frameBits;
+}
+
+void TerrainRenderer::drawFrameTiles(const geo::CameraView& view, const std::vector<const terrain::Tile*>& drawn,
+                                     unsigned frameBits, const glm::dvec3& sunDirectionEcef, bool seaFromGlobe) {
+  waterBits_ = frameBits;
+  waterSunDirection_ = sunDirectionEcef;
+  waterView_ = view;
   // Tiles all above the sea and away from the poles need none of terrain.frag's discards and
   // coast test (their skirts may hang under the sea, where the grid's surface hides them but
   // for a pixel at the horizon): drawn without them (kLandOnly), since llvmpipe runs the test's
@@ -732,16 +754,6 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
     drawTiles(view, landTiles, (frameBits & ~kCoarseMask) | kLandOnly, sunDirectionEcef, seaFromGlobe);  // (no mask)
   glDisable(GL_STENCIL_TEST);
   drawCovered(view, otherTiles, frameBits, sunDirectionEcef, seaFromGlobe);
-  waterView_ = view;
-  stats_.tiles = static_cast<int>(tiles.size());
-  stats_.drawnTiles = static_cast<int>(drawn.size());
-  stats_.landTiles = static_cast<int>(casters.size());
-  stats_.aerialBufferTiles = aerialBuffer ? static_cast<int>(drawn.size()) : 0;
-  stats_.finestLevel = sel.finestLevel;
-  stats_.tilesPending = sel.pending;
-  stats_.cpuBytes = cache_.bytes();
-  stats_.gpuBytes = gpu_.size() * terrain::kTileVertices * sizeof(terrain::TileVertex);
-  gl::checkErrors("TerrainRenderer::draw");
 }
 
 }  // namespace og::render

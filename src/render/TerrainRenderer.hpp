@@ -185,6 +185,15 @@ class TerrainRenderer {
   /// GL_EQUAL, not writing it).
   void drawTiles(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles, unsigned bits,
                  const glm::dvec3& sunDirectionEcef, bool seaFromGlobe, GLenum depthFunc = GL_GREATER);
+  /// The frame's state before its tiles are drawn (statistics, the aerial table or buffer,
+  /// whether tiles may be coarser, the floor's clip) and its variant bits.
+  unsigned prepareFrame(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
+                        const std::vector<const terrain::Tile*>& drawn, const glm::dvec3& sunDirectionEcef,
+                        bool seaFromGlobe);
+  /// Draws `drawn`: the tiles all above the sea without the coast test (zeroing the stencil
+  /// above the ceiling), then the others, or above the ceiling leaves them to drawWaterTiles.
+  void drawFrameTiles(const geo::CameraView& view, const std::vector<const terrain::Tile*>& drawn, unsigned frameBits,
+                      const glm::dvec3& sunDirectionEcef, bool seaFromGlobe);
   /// drawTiles' tiles of one variant (`bits`, each tile's own included).
   void drawTileGroup(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles, unsigned bits,
                      const glm::dvec3& sunDirectionEcef, bool seaFromGlobe, GLenum depthFunc);
