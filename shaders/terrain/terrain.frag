@@ -1,10 +1,11 @@
 #version 450 core
 // Terrain shading: Lambertian stand-in materials (terrain/material.glsl) lit by the Sun
 // attenuated to the point's altitude and by the sky's irradiance (tilted by the slope), then
-// aerial perspective along the eye-to-point path ending at the point's altitude (per vertex,
-// terrain/terrain.vert). Radiance in
-// Sun-irradiance units, like the globe pass. The normal is the mesh's, tilted by the detail
-// octaves finer than the mesh resolves (terrain/detail.glsl), down to the pixel's footprint.
+// aerial perspective along the eye-to-point path ending at the point's altitude (per vertex of
+// the full grid, terrain/terrain.vert). Radiance in Sun-irradiance units, like the globe pass.
+// The normal is the full grid's, interpolated from its vertices, tilted by the detail octaves
+// finer than the grid resolves (terrain/detail.glsl), down to the pixel's footprint. A tile
+// drawn from a coarser mesh (TERRAIN_COARSE) reads the full grid's vertices itself.
 #include "common/constants.glsl"
 #include "common/types.glsl"
 #include "atmosphere/model.glsl"
@@ -23,12 +24,13 @@ in vec3 vRelative;
 in vec3 vNormal;
 in vec4 vInfo;  // height m, latitude rad, longitude rad, detail amplitude m
 #ifdef TERRAIN_COARSE
-// Drawn from a coarser mesh (render/TerrainRenderer::tileStride): the fragment's place in the
-// full grid, and 1 on a skirt's lowered edge (terrain.vert). Its normal, height, detail
+// Drawn from a coarser mesh (render/TerrainRenderer::tileStrideIndex): the fragment's place in
+// the full grid, and 1 on a skirt's lowered edge (terrain.vert). Its normal, height, detail
 // amplitude and aerial perspective (from the tile aerial buffer, which the coarser meshes
 // need) are the full grid's there, as drawn from it; latitude and longitude are linear in the
 // grid, so the coarser mesh interpolates them alike. Only its place on screen moves: less than
-// TerrainRenderer::kStrideDeviationPx.
+// TerrainRenderer::kStrideDeviationPx. (A skirt's fragments take the light of the edge above
+// them, not of the lowered vertices': a skirt is seen, if at all, for a pixel at an edge.)
 in vec3 vGridPlace;
 uniform float uSkirtDepthM;  // the tile's skirts' depth, m (terrain::Tile::skirtDepthM)
 #endif

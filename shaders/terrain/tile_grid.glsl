@@ -2,7 +2,7 @@
 // position, normal, height, latitude, longitude, detail amplitude, morph) and the place of a
 // vertex in the tile's grid. terrain/tile_aerial.comp reads every vertex; the terrain's
 // fragments drawn from a coarser mesh (TERRAIN_COARSE: every 2nd vertex,
-// render/TerrainRenderer::tileStride) read the full grid's normal, height, detail amplitude and
+// render/TerrainRenderer::tileStrideIndex) read the full grid's normal, height, detail amplitude and
 // aerial perspective where the full grid's triangles would have put them.
 layout(std430, binding = OG_TILE_VERTICES_BINDING) readonly buffer TileVertices { float tileVertices[]; };
 

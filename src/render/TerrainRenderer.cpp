@@ -441,16 +441,15 @@ void TerrainRenderer::drawTileGroup(const geo::CameraView& view, const std::vect
     if (aerialBuffer) p.set("uFirstVertex", tileFirstVertex_.at(t));
     if (imagery_ != nullptr) imagery_->bindTile(p, t->key);
     bindTile(*t);
-    int stride = 0;  // index into kTileStrides
-    if ((bits & kCoarse) != 0) {  // the full grid's vertices, read by the fragments (terrain/tile_grid.glsl)
-      while (terrain::kTileStrides[stride] != tileStride(*t, view)) ++stride;
+    const std::size_t stride = (bits & kCoarse) != 0 ? tileStrideIndex(*t, view) : 0;  // into kTileStrides
+    if (stride > 0) {  // the full grid's vertices, read by the fragments (terrain/tile_grid.glsl)
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTileVerticesBinding, tileBuffer(*t).id());
       p.set("uSkirtDepthM", static_cast<float>(t->skirtDepthM));
     }
     if ((bits & kCoverage) == 0) {  // (counted once: drawCovered draws a tile twice)
       stats_.coarseTiles += stride > 0 ? 1 : 0;
     }
-    const StrideIndices& mesh = strideIndices_[static_cast<std::size_t>(stride)];
+    const StrideIndices& mesh = strideIndices_[stride];
     glEnable(GL_CULL_FACE);
     glDrawElements(GL_TRIANGLES, mesh.grid, GL_UNSIGNED_INT, offset(mesh.first));
     glDisable(GL_CULL_FACE);
@@ -459,30 +458,32 @@ void TerrainRenderer::drawTileGroup(const geo::CameraView& view, const std::vect
   if (clipFloor) glDisable(GL_CLIP_DISTANCE0);
 }
 
-int TerrainRenderer::tileStride(const terrain::Tile& t, const geo::CameraView& view) const {
-  if (!coarseThisFrame_) return 1;
+std::size_t TerrainRenderer::tileStrideIndex(const terrain::Tile& t, const geo::CameraView& view) const {
+  if (!coarseThisFrame_) return 0;
   const glm::dvec3 toCentre = t.boundCentreEcef - view.positionEcef;
   const double centreM = glm::length(toCentre);
+  if (centreM <= t.boundRadiusM) return 0;
   // terrain/tile_vertex.glsl's morph weight is 0 within half the morph scale of the eye.
   const double morph = morphScale(t, view);
-  if (morph > 0.0 && centreM + t.boundRadiusM > 0.5 * morph) return 1;
+  if (morph > 0.0 && centreM + t.boundRadiusM > 0.5 * morph) return 0;
   // A vertical offset moves a point on screen by its part across the view ray: at most the
   // sine of the largest angle between a vertical on the tile and a ray to a point of it.
+  const double toEdge = std::asin(t.boundRadiusM / centreM);
   const double facing = std::acos(std::clamp(-glm::dot(t.middleUp, toCentre) / centreM, -1.0, 1.0));
-  const double spread = t.upConeRad + std::asin(std::min(t.boundRadiusM / centreM, 1.0));
-  const double across = facing + spread >= 0.5 * std::numbers::pi ? 1.0 : std::sin(facing + spread);
-  const double pixelsPerM =
-      params_.heightPx / (2.0 * std::tan(0.5 * view.verticalFovRad)) / std::max(centreM - t.boundRadiusM, 1.0);
+  const double across = facing + t.upConeRad + toEdge >= 0.5 * std::numbers::pi ? 1.0 : std::sin(facing + t.upConeRad + toEdge);
+  // The smallest pixel the tile can reach: the one farthest off the axis its sphere reaches.
+  const double offAxisRad = std::acos(std::clamp(glm::dot(toCentre, view.forward) / centreM, -1.0, 1.0)) + toEdge;
+  const double pixelsPerM = 1.0 / (geo::smallestPixelAngleRad(view, params_.heightPx, offAxisRad) * (centreM - t.boundRadiusM));
   for (std::size_t k = std::size(terrain::kTileStrides) - 1; k >= 1; --k) {
     const terrain::Tile::StrideDeviation& d = t.strideDeviation[k - 1];
     const double shiftM = d.verticalM * across + d.horizontalM;
-    if (shiftM * pixelsPerM <= kStrideDeviationPx && d.verticalM <= t.skirtDepthM) return terrain::kTileStrides[k];
+    if (shiftM * pixelsPerM <= kStrideDeviationPx && d.verticalM <= t.skirtDepthM) return k;
   }
-  return 1;
+  return 0;
 }
 
 unsigned TerrainRenderer::tileBits(const terrain::Tile& t, const geo::CameraView& view) const {
-  return tileStride(t, view) > 1 ? kCoarse : 0u;
+  return tileStrideIndex(t, view) > 0 ? kCoarse : 0u;
 }
 
 TerrainRenderer::FloorClip TerrainRenderer::floorClip(const geo::CameraView& view, int heightPx) const {
@@ -715,7 +716,9 @@ unsigned TerrainRenderer::prepareFrame(const geo::CameraView& view, const std::v
                              (skipDetail(view, drawn) ? kNoDetail : 0u);
   stats_.pixelDetail = !drawn.empty() && (frameBits & kNoDetail) == 0;
   if (aerialBuffer) computeTileAerial(view, drawn, sunDirectionEcef);
-  coarseThisFrame_ = coarseStridesOn_ && aerialBuffer && !shadows_.on;
+  // (Above the grid's ceiling: no floor clip and no coverage pass, whose clip distances and
+  // discards would then come from different heights.)
+  coarseThisFrame_ = coarseStridesOn_ && seaFromGlobe && aerialBuffer && !shadows_.on;
   stats_.coarseTiles = 0;
   // Single-sampled only: with samples the clip would cut each sample where the discard cuts
   // the pixel (an edge anti-aliased along the -1 m contour: another picture).

@@ -58,7 +58,7 @@ struct TerrainStats {
   /// Whether the last frame's tiles were shaded with the detail octaves per pixel (false where
   /// no pixel resolves one: detailUnresolved).
   bool pixelDetail = false;
-  /// Drawn tiles drawn from the coarser mesh (every 2nd vertex: tileStride) in the last frame.
+  /// Drawn tiles drawn from the coarser mesh (every 2nd vertex: tileStrideIndex) in the last frame.
   int coarseTiles = 0;
   double maxHeightM = 0.0;      ///< highest point of the selected tiles, m (0 when none)
   /// Below the grid's ceiling, the highest the floor can be (a vertex's height, risen at a 45°
@@ -158,7 +158,7 @@ class TerrainRenderer {
   enum class DetailSkip { never, whereUnresolved, always };
   void setDetailSkip(DetailSkip skip) { detailSkip_ = skip; }
   /// Whether tiles are drawn from a coarser mesh (every 2nd vertex) where it lies within
-  /// kStrideDeviationPx of the full grid (tileStride; the default), or always from the full
+  /// kStrideDeviationPx of the full grid (tileStrideIndex; the default), or always from the full
   /// grid (the tests' reference). Where drawn so, the fragments still take their normal,
   /// height, detail amplitude and aerial perspective from the full grid (TERRAIN_COARSE), so
   /// only the picture's place moves, by under kStrideDeviationPx. Why: llvmpipe shades a
@@ -200,7 +200,8 @@ class TerrainRenderer {
   /// Tiles whose fragments may be discarded (under the sea, the coast test): below the grid's
   /// ceiling and single-sampled, their depth by the kCoverage program, then their shading by
   /// variant(frameBits | kAfterCoverage) (sea-2m-horizon's terrain pass -18 %; mountain-15km,
-  /// whose tiles are land, unchanged); otherwise variant(frameBits) alone.
+  /// whose tiles are land, unchanged); otherwise variant(frameBits) alone (each tile's own
+  /// bits on top: drawTiles).
   void drawCovered(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
                    unsigned frameBits, const glm::dvec3& sunDirectionEcef, bool seaFromGlobe);
   /// What the vertices' aerial perspective reads (terrain/tile_vertex.glsl): the Sun, the eye's
@@ -287,14 +288,18 @@ class TerrainRenderer {
   };
   const gl::Program& variant(unsigned bits);
   std::array<gl::Program, 2048> variants_;
-  /// The stride (terrain::kTileStrides) of the mesh `tile` is drawn from: the coarsest that lies
-  /// within kStrideDeviationPx of the full grid at the tile's nearest point and within its
-  /// skirts' depth (which then still close the cracks at its edges), where no vertex of it
-  /// morphs (a morphing vertex leaves the full grid: terrain/tile_vertex.glsl), in frames with
-  /// the tile aerial buffer (the fragments read the full grid's aerial perspective from it)
-  /// and no shadow map (whose depths are the full grid's); 1 (the full grid) elsewhere.
-  [[nodiscard]] int tileStride(const terrain::Tile& tile, const geo::CameraView& view) const;
-  /// Variant bits of one tile on top of a draw's: kCoarse (tileStride).
+  /// The stride of the mesh `tile` is drawn from, as an index into terrain::kTileStrides: the
+  /// coarsest that lies within kStrideDeviationPx of the full grid, in the smallest pixel the
+  /// tile can reach at its nearest point. Its own skirts must also be deeper than its vertical
+  /// offset (so they hang below the full grid's edge; where a neighbour's edge lies under
+  /// its chord, the neighbour's skirts close the gap, as at any T-junction). Only where no
+  /// vertex of the tile morphs (a morphing vertex leaves the full grid:
+  /// terrain/tile_vertex.glsl), above the grid's ceiling (no floor clip, no coverage pass), in
+  /// frames with the tile aerial buffer (the fragments read the full grid's aerial
+  /// perspective from it) and no shadow map (whose depths are the full grid's); 0 (the full
+  /// grid) elsewhere.
+  [[nodiscard]] std::size_t tileStrideIndex(const terrain::Tile& tile, const geo::CameraView& view) const;
+  /// Variant bits of one tile on top of a draw's: kCoarse (tileStrideIndex).
   [[nodiscard]] unsigned tileBits(const terrain::Tile& tile, const geo::CameraView& view) const;
   /// The first index and the grid's and the skirts' counts of each stride's mesh in indices_.
   struct StrideIndices {
@@ -328,7 +333,7 @@ class TerrainRenderer {
   bool tileAerialBufferOn_ = true;  ///< setTileAerialBuffer
   DetailSkip detailSkip_ = DetailSkip::whereUnresolved;  ///< setDetailSkip
   bool coarseStridesOn_ = true;     ///< setCoarseStrides
-  bool coarseThisFrame_ = false;    ///< whether this frame's tiles may be drawn coarser (tileStride)
+  bool coarseThisFrame_ = false;    ///< whether this frame's tiles may be drawn coarser (tileStrideIndex)
   gl::Program tileAerialProgram_;     ///< terrain/tile_aerial.comp
   gl::Buffer tileAerial_;             ///< two vec4s a vertex of the frame's tiles
   std::size_t tileAerialBytes_ = 0;

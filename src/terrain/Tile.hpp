@@ -22,7 +22,7 @@ inline constexpr int kTileVertices = kTileGridVertices + 4 * (kTileQuads + 1);  
 inline constexpr int kMaxLevel = 16;                     ///< finest level (~20 m spacing)
 /// The meshes of a tile's grid: every vertex, every 2nd vertex (tileIndices(stride)). The
 /// coarser is drawn where it lies within a fraction of a pixel of the full grid, the fragments
-/// still shaded from the full grid's vertices (render/TerrainRenderer::tileStride). (Every 4th
+/// still shaded from the full grid's vertices (render/TerrainRenderer::tileStrideIndex). (Every 4th
 /// vertex: from orbit at 1280 x 720 no tile's lies within half a pixel.)
 inline constexpr int kTileStrides[] = {1, 2};
 

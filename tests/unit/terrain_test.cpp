@@ -103,7 +103,7 @@ TEST(TerrainTile, SkirtsHangBelowTheEdges) {
   for (auto i : idx) EXPECT_LT(i, static_cast<std::uint32_t>(kTileVertices));
 }
 
-// The coarser mesh (render/TerrainRenderer::tileStride) joins only every 2nd vertex of the grid
+// The coarser mesh (render/TerrainRenderer::tileStrideIndex) joins only every 2nd vertex of the grid
 // and of the skirts, covers the tile with 16² quads, and knows how far it lies from the full
 // grid: it is the parent's mesh, so its deviation is the longest morph offset
 // (terrain/tile_vertex.glsl), split along and across the vertical.
