@@ -32,7 +32,6 @@ in vec4 vInfo;  // height m, latitude rad, longitude rad, detail amplitude m
 // TerrainRenderer::kStrideDeviationPx. (A skirt's fragments take the light of the edge above
 // them, not of the lowered vertices': a skirt is seen, if at all, for a pixel at an edge.)
 in vec3 vGridPlace;
-uniform float uSkirtDepthM;  // the tile's skirts' depth, m (terrain::Tile::skirtDepthM)
 #endif
 #ifndef TERRAIN_COVERAGE
 in vec3 vTransmittance;  // aerial perspective, per vertex (terrain/terrain.vert)
@@ -120,9 +119,9 @@ void main() {
   float meshHeightM = vInfo.x;
 #ifdef TERRAIN_COARSE
   TileGridTriangle gridTriangle = tileGridTriangle(vGridPlace.xy);
-  TileGridSample grid = tileGridSample(gridTriangle);
+  TileGridSample grid = tileGridSample(gridTriangle, vGridPlace.z);
   vec3 vertexNormal = grid.normalHeight.xyz;
-  float heightM = grid.normalHeight.w - vGridPlace.z * uSkirtDepthM;
+  float heightM = grid.normalHeight.w;
   float detailAmplitudeM = grid.detailAmplitudeM;
 #else
   vec3 vertexNormal = vNormal;

@@ -43,18 +43,22 @@ TileGridTriangle tileGridTriangle(vec2 g) {
   return t;
 }
 
-// The full grid's normal (xyz, not normalised) and height (w, m) and detail amplitude (m) over
-// triangle t.
+uniform float uSkirtDepthM;  // the tile's skirts' depth, m (terrain::Tile::skirtDepthM)
+
+// The full grid's normal (xyz, not normalised), height (w, m) and detail amplitude (m) over
+// triangle t, at `skirt` of the way down a skirt (the place's z: 0 on the grid, 1 at a skirt's
+// lowered edge; the height lowered by that much of the skirts' depth).
 struct TileGridSample {
   vec4 normalHeight;
   float detailAmplitudeM;
 };
-TileGridSample tileGridSample(TileGridTriangle t) {
+TileGridSample tileGridSample(TileGridTriangle t, float skirt) {
   vec4 nhA = vec4(tileVertexVec3(13 * t.a + 3), tileVertices[13 * t.a + 6]);
   vec4 nhB = vec4(tileVertexVec3(13 * t.b + 3), tileVertices[13 * t.b + 6]);
   vec4 nhD = vec4(tileVertexVec3(13 * t.d + 3), tileVertices[13 * t.d + 6]);
   TileGridSample s;
   s.normalHeight = nhA + t.w.x * (nhB - nhA) + t.w.y * (nhD - nhB);
+  s.normalHeight.w -= skirt * uSkirtDepthM;
   s.detailAmplitudeM = 0.0;
 #ifndef TERRAIN_NO_DETAIL
   float ampA = tileVertices[13 * t.a + 9], ampB = tileVertices[13 * t.b + 9], ampD = tileVertices[13 * t.d + 9];

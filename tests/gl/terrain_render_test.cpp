@@ -394,7 +394,8 @@ io::ImageRgbaF blockMeans(const io::ImageRgbaF& image, int k) {
 // blocks over what it changes. Shaded from the coarse mesh's own vertices instead, 155 of the
 // Andes' blocks change by over 1 %; with the coarse vertices' aerial perspective, 276 of them
 // and 28 of the Himalaya's. (Not seen here: the skirts' heights, seen, if at all, for a pixel at
-// a tile's edge; the detail amplitude, which these views' pixels leave out: TERRAIN_NO_DETAIL.)
+// a tile's edge; the detail amplitude, which these views' pixels leave out: TERRAIN_NO_DETAIL.
+// TileGridGpu probes both.)
 TEST(TerrainRender, CoarserMeshesKeepThePicture) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(data::defaultElevation());
