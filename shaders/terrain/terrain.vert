@@ -73,8 +73,8 @@ void main() {
   vGridPlace = tileGridPlace(gl_VertexID);
 #endif
 #if defined(TERRAIN_AERIAL_BUFFER) && !defined(TERRAIN_DEPTH_ONLY)
-  vTransmittance = tileAerial[2 * (uFirstVertex + gl_VertexID)].rgb;
-  vInscatter = tileAerial[2 * (uFirstVertex + gl_VertexID) + 1].rgb;
+  vTransmittance = tileAerial[tileAerialSlot(gl_VertexID)].rgb;
+  vInscatter = tileAerial[tileAerialSlot(gl_VertexID) + 1].rgb;
 #elif !defined(TERRAIN_DEPTH_ONLY)
   tileVertexAerial(vRelative, vInfo.x, vTransmittance, vInscatter);
 #endif

@@ -16,12 +16,11 @@ uniform int uVertexCount;
 void main() {
   int i = int(gl_GlobalInvocationID.x);
   if (i >= uVertexCount) return;
-  int at = 13 * i;
-  vec4 info = vec4(tileVertices[at + 6], tileVertices[at + 7], tileVertices[at + 8], tileVertices[at + 9]);
   float heightM;
-  vec3 relative = morphedTileVertex(tileVertexVec3(at), info, tileVertexVec3(at + 10), heightM);
+  vec3 relative = morphedTileVertex(tileVertexVec3(i, TILE_VERTEX_POSITION), tileVertexInfo(i),
+                                    tileVertexVec3(i, TILE_VERTEX_MORPH), heightM);
   vec3 transmittance, inscatter;
   tileVertexAerial(relative, heightM, transmittance, inscatter);
-  tileAerial[2 * (uFirstVertex + i)] = vec4(transmittance, 0.0);
-  tileAerial[2 * (uFirstVertex + i) + 1] = vec4(inscatter, 0.0);
+  tileAerial[tileAerialSlot(i)] = vec4(transmittance, 0.0);
+  tileAerial[tileAerialSlot(i) + 1] = vec4(inscatter, 0.0);
 }

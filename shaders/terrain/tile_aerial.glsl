@@ -9,4 +9,7 @@ layout(std430, binding = OG_TERRAIN_AERIAL_BINDING) writeonly buffer TileAerial 
 layout(std430, binding = OG_TERRAIN_AERIAL_BINDING) readonly buffer TileAerial { vec4 tileAerial[]; };
 #endif
 uniform int uFirstVertex;  // the tile's first vertex in the buffer
+
+// Where the tile's vertex `vertex` has its transmittance in the buffer (its in-scatter: the next).
+int tileAerialSlot(int vertex) { return 2 * (uFirstVertex + vertex); }
 #endif

@@ -8,7 +8,19 @@ layout(std430, binding = OG_TILE_VERTICES_BINDING) readonly buffer TileVertices 
 
 const int TILE_GRID_SIDE = OG_TILE_QUADS + 1;  // vertices along a grid row
 
-vec3 tileVertexVec3(int at) { return vec3(tileVertices[at], tileVertices[at + 1], tileVertices[at + 2]); }
+// terrain::TileVertex in floats: its size, and where its position, normal, info (height,
+// latitude, longitude, detail amplitude) and morph start.
+const int TILE_VERTEX_FLOATS = 13;
+const int TILE_VERTEX_POSITION = 0, TILE_VERTEX_NORMAL = 3, TILE_VERTEX_INFO = 6, TILE_VERTEX_MORPH = 10;
+
+vec3 tileVertexVec3(int vertex, int field) {
+  int at = TILE_VERTEX_FLOATS * vertex + field;
+  return vec3(tileVertices[at], tileVertices[at + 1], tileVertices[at + 2]);
+}
+vec4 tileVertexInfo(int vertex) {
+  int at = TILE_VERTEX_FLOATS * vertex + TILE_VERTEX_INFO;
+  return vec4(tileVertices[at], tileVertices[at + 1], tileVertices[at + 2], tileVertices[at + 3]);
+}
 
 // Grid column and row (0..OG_TILE_QUADS) of vertex `index` (terrain/Tile.cpp's order: the grid
 // row by row from the south-west, then the skirts' lowered copies of the south, east, north and
@@ -53,16 +65,16 @@ struct TileGridSample {
   float detailAmplitudeM;
 };
 TileGridSample tileGridSample(TileGridTriangle t, float skirt) {
-  vec4 nhA = vec4(tileVertexVec3(13 * t.a + 3), tileVertices[13 * t.a + 6]);
-  vec4 nhB = vec4(tileVertexVec3(13 * t.b + 3), tileVertices[13 * t.b + 6]);
-  vec4 nhD = vec4(tileVertexVec3(13 * t.d + 3), tileVertices[13 * t.d + 6]);
+  vec4 infoA = tileVertexInfo(t.a), infoB = tileVertexInfo(t.b), infoD = tileVertexInfo(t.d);
+  vec4 nhA = vec4(tileVertexVec3(t.a, TILE_VERTEX_NORMAL), infoA.x);
+  vec4 nhB = vec4(tileVertexVec3(t.b, TILE_VERTEX_NORMAL), infoB.x);
+  vec4 nhD = vec4(tileVertexVec3(t.d, TILE_VERTEX_NORMAL), infoD.x);
   TileGridSample s;
   s.normalHeight = nhA + t.w.x * (nhB - nhA) + t.w.y * (nhD - nhB);
   s.normalHeight.w -= skirt * uSkirtDepthM;
   s.detailAmplitudeM = 0.0;
 #ifndef TERRAIN_NO_DETAIL
-  float ampA = tileVertices[13 * t.a + 9], ampB = tileVertices[13 * t.b + 9], ampD = tileVertices[13 * t.d + 9];
-  s.detailAmplitudeM = ampA + t.w.x * (ampB - ampA) + t.w.y * (ampD - ampB);
+  s.detailAmplitudeM = infoA.w + t.w.x * (infoB.w - infoA.w) + t.w.y * (infoD.w - infoB.w);
 #endif
   return s;
 }
@@ -71,7 +83,7 @@ TileGridSample tileGridSample(TileGridTriangle t, float skirt) {
 // The full grid's aerial perspective over triangle t, from the tile aerial buffer
 // (terrain/tile_aerial.glsl, included first).
 void tileGridAerial(TileGridTriangle t, out vec3 transmittance, out vec3 inscatter) {
-  int a = 2 * (uFirstVertex + t.a), b = 2 * (uFirstVertex + t.b), d = 2 * (uFirstVertex + t.d);
+  int a = tileAerialSlot(t.a), b = tileAerialSlot(t.b), d = tileAerialSlot(t.d);
   vec3 tA = tileAerial[a].rgb, tB = tileAerial[b].rgb, tD = tileAerial[d].rgb;
   vec3 iA = tileAerial[a + 1].rgb, iB = tileAerial[b + 1].rgb, iD = tileAerial[d + 1].rgb;
   transmittance = tA + t.w.x * (tB - tA) + t.w.y * (tD - tB);

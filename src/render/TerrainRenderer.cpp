@@ -129,7 +129,10 @@ void TerrainRenderer::bindTile(const terrain::Tile& t) {
 
 void TerrainRenderer::computeTileAerial(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
                                         const glm::dvec3& sunDirectionEcef) {
-  static_assert(sizeof(terrain::TileVertex) == 13 * sizeof(float), "terrain/tile_aerial.comp reads 13 floats a vertex");
+  static_assert(sizeof(terrain::TileVertex) == 13 * sizeof(float) && offsetof(terrain::TileVertex, normal) == 3 * sizeof(float) &&
+                    offsetof(terrain::TileVertex, heightM) == 6 * sizeof(float) &&
+                    offsetof(terrain::TileVertex, morph) == 10 * sizeof(float),
+                "terrain/tile_grid.glsl's TILE_VERTEX_FLOATS and fields");
   gl::Program& p = tileAerialProgram_;
   if (p.id() == 0) p = gl::Program({{GL_COMPUTE_SHADER, "terrain/tile_aerial.comp"}});
   const std::size_t bytes = tiles.size() * terrain::kTileVertices * 2 * sizeof(glm::vec4);

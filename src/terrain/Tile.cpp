@@ -134,7 +134,7 @@ Tile buildTile(const Heightfield& heights, const TileKey& key) {
 
   auto push = [&](std::size_t k, double depth) {
     const double lat = lats[k] * kDeg, lon = lons[k] * kDeg;
-    const glm::dvec3 p = ecef[k] - depth * geodeticUpFast(lats[k], lons[k]) - t.centreEcef;
+    const glm::dvec3 p = ecef[k] - depth * ups[k] - t.centreEcef;
     t.positions.push_back(p);
     t.vertices.push_back({glm::vec3(p), glm::vec3(samples[k].normal),
                           static_cast<float>(samples[k].heightM - depth), static_cast<float>(lat),
