@@ -335,6 +335,23 @@ TEST(TerrainRender, AerialTableKeepsThePerVertexPicture) {
   }
 }
 
+namespace {
+// Frame `f` with a terrain feature off, then on (TerrainRenderer's `set`), and the second
+// frame's statistics: the first drew no tile with the feature (`count`), the second some.
+std::pair<test::OffAndOn, render::TerrainStats> terrainOffAndOn(render::GlobeRenderer& r, const render::FrameInput& f,
+                                                                 const char* name, void (render::TerrainRenderer::*set)(bool),
+                                                                 int render::TerrainStats::*count) {
+  const test::OffAndOn images = test::renderOffAndOn(r, f, [&](bool on) {
+    if (on) {  // (of the frame without)
+      EXPECT_EQ(r.terrain().stats().*count, 0) << name;
+    }
+    (r.terrain().*set)(on);
+  });
+  EXPECT_GT(r.terrain().stats().*count, 0) << name << ": no tile drawn with the feature";
+  return {images, r.terrain().stats()};
+}
+}  // namespace
+
 // Above 500 km (no table) the vertices' aerial perspective is the exact path's, computed for
 // every vertex of the frame's tiles by a compute pass (terrain/tile_aerial.comp) instead of
 // the vertex shader: the same code on the same inputs, so the same picture. From orbit over
@@ -351,20 +368,13 @@ TEST(TerrainRender, TileAerialBufferKeepsThePerVertexPicture) {
   r.terrain().setCoarseStrides(false);  // (which need the buffer: their own test below)
   for (const ViewCase& c : cases) {
     const render::FrameInput f = test::frameOf(c.view, c.sunElevationDeg, c.sunAzimuthDeg);
-    r.terrain().setTileAerialBuffer(true);
-    r.render(f);
-    const io::ImageRgbaF on = r.radiance();
-    const render::TerrainStats stats = r.terrain().stats();
-    EXPECT_GT(stats.aerialBufferTiles, 0) << c.name << ": the compute pass made no tile's aerial perspective";
-    r.terrain().setTileAerialBuffer(false);
-    r.render(f);
-    EXPECT_EQ(r.terrain().stats().aerialBufferTiles, 0) << c.name;
-    const test::RadianceChange change = test::radianceChange(r.radiance(), on, 1e-4);
+    const auto [images, stats] = terrainOffAndOn(r, f, c.name, &render::TerrainRenderer::setTileAerialBuffer,
+                                                 &render::TerrainStats::aerialBufferTiles);
+    const test::RadianceChange change = test::radianceChange(images.off, images.on, 1e-4);
     std::printf("%s: %d tiles, largest change %.2e\n", c.name, stats.drawnTiles, change.worst);
     if (change.worst > 1e-4) test::savePng(r, std::string("tile_aerial_buffer_") + c.name);
     EXPECT_LT(change.worst, 1e-4) << c.name;
   }
-  r.terrain().setTileAerialBuffer(true);
   r.terrain().setCoarseStrides(true);
 }
 
@@ -409,16 +419,10 @@ TEST(TerrainRender, CoarserMeshesKeepThePicture) {
   };
   for (const auto& [c, bound] : cases) {
     const render::FrameInput f = test::frameOf(c.view, c.sunElevationDeg, c.sunAzimuthDeg);
-    r.terrain().setCoarseStrides(false);
-    r.render(f);
-    EXPECT_EQ(r.terrain().stats().coarseTiles, 0) << c.name;
-    const io::ImageRgbaF full = r.radiance();
-    r.terrain().setCoarseStrides(true);
-    r.render(f);
-    const render::TerrainStats stats = r.terrain().stats();
-    EXPECT_GT(stats.coarseTiles, 0) << c.name << ": no tile drawn from a coarser mesh";
-    const test::RadianceChange pixels = test::radianceChange(full, r.radiance(), 0.01);
-    const test::RadianceChange blocks = test::radianceChange(blockMeans(full, 4), blockMeans(r.radiance(), 4), 0.01);
+    const auto [images, stats] =
+        terrainOffAndOn(r, f, c.name, &render::TerrainRenderer::setCoarseStrides, &render::TerrainStats::coarseTiles);
+    const test::RadianceChange pixels = test::radianceChange(images.off, images.on, 0.01);
+    const test::RadianceChange blocks = test::radianceChange(blockMeans(images.off, 4), blockMeans(images.on, 4), 0.01);
     std::printf("%s: %d of %d tiles coarser; pixels over 1 %%: %d, blocks of 4 x 4 over 1 %%: %d (mean %.5f)\n",
                 c.name, stats.coarseTiles, stats.drawnTiles, pixels.over, blocks.over, blocks.mean);
     if (blocks.over > bound) test::savePng(r, std::string("coarse_meshes_") + c.name);
