@@ -15,6 +15,15 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 // Finest grid: kTileQuads << kMaxLevel steps over 180° (a power of two, so the step is exact).
 constexpr double kFineStepDeg = 180.0 / static_cast<double>(static_cast<std::int64_t>(kTileQuads) << kMaxLevel);
 
+// The grid vertex (row-major index) that is vertex s (0..kTileQuads) of edge e: 0 south, 1
+// east, 2 north, 3 west, the skirts' order (terrain/tile_grid.glsl's tileGridPlace too).
+constexpr std::uint32_t edgeVertex(std::uint32_t e, std::uint32_t s) {
+  constexpr std::uint32_t n = kTileQuads + 1;
+  const std::uint32_t i = e == 0 ? s : e == 1 ? n - 1 : e == 2 ? s : 0;
+  const std::uint32_t j = e == 0 ? 0 : e == 1 ? s : e == 2 ? n - 1 : s;
+  return j * n + i;
+}
+
 // How far the mesh of every `stride`-th vertex lies from the (kTileQuads + 1)² grid `ecef`
 // (row-major, m; verticals `up`), its quads split as tileIndices(stride) splits them.
 Tile::StrideDeviation strideDeviation(const std::vector<glm::dvec3>& ecef, const std::vector<glm::dvec3>& up,
@@ -143,13 +152,8 @@ Tile buildTile(const Heightfield& heights, const TileKey& key) {
   };
   for (std::size_t k = 0; k < samples.size(); ++k) push(k, 0.0);
   // Skirts: south edge, east edge, north edge, west edge, each kTileQuads + 1 vertices.
-  for (int e = 0; e < 4; ++e)
-    for (int s = 0; s < n; ++s) {
-      const int i = e == 0 ? s : e == 1 ? n - 1 : e == 2 ? s : 0;
-      const int j = e == 0 ? 0 : e == 1 ? s : e == 2 ? n - 1 : s;
-      const auto k = static_cast<std::size_t>(j * n + i);
-      push(k, skirt);
-    }
+  for (std::uint32_t e = 0; e < 4; ++e)
+    for (std::uint32_t s = 0; s < static_cast<std::uint32_t>(n); ++s) push(edgeVertex(e, s), skirt);
 
   // Bounding sphere about the tile's middle vertex: the mesh lies in the vertices' hull.
   t.boundCentreEcef = t.centreEcef + t.positions[static_cast<std::size_t>((n / 2) * n + n / 2)];
@@ -173,15 +177,10 @@ std::vector<std::uint32_t> makeTileIndices(std::uint32_t stride) {
       const std::uint32_t a = j * n + i, b = a + stride, c = a + stride * n, d = c + stride;
       v.insert(v.end(), {a, b, d, a, d, c});
     }
-  // Skirt strips: edge vertex k of edge e (grid index g(k)) joined to its lowered copy.
-  auto grid = [&](std::uint32_t e, std::uint32_t s) {
-    const std::uint32_t i = e == 0 ? s : e == 1 ? n - 1 : e == 2 ? s : 0;
-    const std::uint32_t j = e == 0 ? 0 : e == 1 ? s : e == 2 ? n - 1 : s;
-    return j * n + i;
-  };
+  // Skirt strips: edge vertex s of edge e joined to its lowered copy.
   for (std::uint32_t e = 0; e < 4; ++e)
     for (std::uint32_t s = 0; s < kTileQuads; s += stride) {
-      const std::uint32_t top0 = grid(e, s), top1 = grid(e, s + stride);
+      const std::uint32_t top0 = edgeVertex(e, s), top1 = edgeVertex(e, s + stride);
       const std::uint32_t low0 = n * n + e * n + s, low1 = low0 + stride;
       v.insert(v.end(), {top0, top1, low1, top0, low1, low0});
     }
