@@ -12,6 +12,11 @@
 #include "ocean/wind.glsl"
 #include "ocean/patterns.glsl"
 #include "ocean/coast.glsl"  // waves shrink over shoaling water (the shore)
+// The sea's radiance per vertex (OCEAN_RADIANCE_TERMS; included outside it: files are included
+// once, before the preprocessor runs, and later files include the sky maps inside their own).
+#include "ocean/brdf.glsl"
+#include "ocean/lighting.glsl"
+#include "ocean/radiance_terms.glsl"
 
 uniform ivec2 uGridSize;      // vertices per row, rows
 uniform vec4 uGridMarginNdc;  // overshoot (left, right, bottom, top) so displaced edges stay covered
@@ -58,6 +63,41 @@ GRID_OUT vec3 vTransmittance;      // of the eye-to-vertex path
 GRID_OUT vec3 vInscatter;          // light scattered towards the eye along it (units of the Sun's irradiance)
 #endif
 #include "ocean/water_volume_vertex.glsl"  // the water volume's smooth terms per vertex
+
+#ifdef OCEAN_RADIANCE_TERMS
+// The sea's radiance at the vertex as a quadratic in a pixel's mean slope and covariance
+// (ocean/radiance_terms.glsl), for the pixels of large cells, with the aerial perspective
+// folded in: each term times the transmittance, the light scattered in added to the constant
+// (and to the foam's radiance) so that the pixel's mix of the two needs neither.
+GRID_OUT vec4 vRadianceTerms[SEA_RADIANCE_VEC4S];
+void prepareRadianceTerms(vec2 xy, float pixelFootprintM, vec2 wind, PatternSums coarse, PatternBands bands) {
+  SeaSurface sea = oceanSurface(xy, pixelFootprintM, wind, coarse, bands);  // a pixel's sea here
+  // Expanded about the cell's mean slope (the vertices' patterns: the pixels' own average out
+  // over a cell) and the covariance a pixel has here, in steps of the pixels' spread: the
+  // slope variance the pixels resolve (what their BRDF does not hold), at least half the
+  // BRDF's standard deviation (a vertex whose pixel keeps more than the sea's average would
+  // take a tangent its neighbours' pixels extrapolate far: bright specks).
+  vec2 cellSlope = frameVector(uPatternAmplitude * coarse.mean);
+  vec2 total = seaSlopeVarianceTotal(wind.x);
+  float kept = sea.covariance.x + sea.covariance.y;
+  float spread = sqrt(max(0.5 * (total.x + total.y - kept), 0.125 * kept));
+  float dist = length(vRelative);
+  vec3 v = -vRelative / dist;
+  vec3 up = ellipsoidNormal(-v, dist);
+  mat3 local = localFrame(up);
+  vec2 windSinCos = windAzimuthSinCos(wind);
+  vec3 windDir = windSinCos.x * local[0] + windSinCos.y * local[1];
+  SeaPlace place = seaPlace(v, transpose(uEcefToOcean), windDir, up, uSunDirEcef);
+  SeaRadianceTerms t = seaRadianceTerms(place, cellSlope, sea.covariance, spread);
+  vec3 foam = foamRadiance(place.p);
+#ifndef OCEAN_SIMPLE_SKY
+  for (int i = 0; i < SEA_RADIANCE_TERMS; ++i) t.k[i] *= vTransmittance;
+  t.k[0] += vInscatter;
+  foam = foam * vTransmittance + vInscatter;
+#endif
+  packSeaRadianceTerms(t, foam, vRadianceTerms);
+}
+#endif
 // Grid vertex `vertexId` (row after row); returns its clip-space position.
 vec4 gridVertex(int vertexId) {
   int ix = vertexId % uGridSize.x;
@@ -102,6 +142,9 @@ vec4 gridVertex(int vertexId) {
 #ifndef OCEAN_SIMPLE_SKY
   float dist = length(vRelative);
   aerialPerspective(vRelative / dist, dist, uSunDirEcef, vTransmittance, vInscatter);
+#endif
+#ifdef OCEAN_RADIANCE_TERMS
+  prepareRadianceTerms(local.xy, pixelCell / uCellPixels, wind, coarse, bands);
 #endif
   return uViewProjection * vec4(vRelative, 1.0);
 }

@@ -1,10 +1,12 @@
-// The projected grid's vertices computed once per frame by a compute pass (ocean/grid_vertices.comp)
-// and read back by the deferred sea's surface pass (ocean/grid_cached.vert), render/OceanRenderer's
-// drawDeferred: llvmpipe runs a draw's vertex shader on one thread, compute work groups on every
-// core (docs/performance.md, "Eighth session"). Each vertex takes GRID_VERTEX_VEC4S vec4s, what
-// ocean/sea_surface.frag reads of ocean/grid_vertex.glsl's outputs (the per-wind bands the
-// deferred shading looks up per pixel are not kept); one layout for every program variant, the
-// outputs a variant lacks left out.
+// The projected grid's vertices computed once per frame by a compute pass
+// (ocean/grid_vertices.comp) and read back (ocean/grid_cached.vert) by the deferred sea's surface
+// pass (render/OceanRenderer's drawDeferred) and by the forward draw whose pixels take the
+// vertices' radiance terms (OCEAN_RADIANCE_TERMS, in a buffer of their own): llvmpipe runs a
+// draw's vertex shader on one thread, compute work groups on every core (docs/performance.md,
+// "Eighth session"). Each vertex takes GRID_VERTEX_VEC4S vec4s, what ocean/sea_surface.frag
+// reads of ocean/grid_vertex.glsl's outputs (the per-wind bands the deferred shading looks up
+// per pixel are not kept); one layout for every program variant, the outputs a variant lacks
+// left out.
 // Needs (included first): ocean/grid_vertex.glsl with GRID_OUT empty (compute) or out (vertex).
 #if PATTERN_COUNT != 5
 #error "grid_vertex_buffer.glsl packs 5 patterns' shares"
@@ -14,6 +16,11 @@ const int GRID_VERTEX_VEC4S = 10;  // render/OceanRenderer::kGridVertexVec4s
 layout(std430, binding = 4) writeonly buffer GridVertices { vec4 gridVertices[]; };  // kGridVerticesBinding
 #else
 layout(std430, binding = 4) readonly buffer GridVertices { vec4 gridVertices[]; };
+#endif
+#ifdef OCEAN_RADIANCE_TERMS
+// The vertices' radiance terms (vRadianceTerms, SEA_RADIANCE_VEC4S each), for the forward draw of
+// large cells (render/OceanRenderer::draw, computeGridVertices).
+layout(std430, binding = 8) buffer GridRadianceTerms { vec4 gridRadianceTerms[]; };  // kGridRadianceTermsBinding
 #endif
 
 #ifdef GRID_VERTEX_STORE
@@ -49,6 +56,9 @@ void storeGridVertex(int i, vec4 position) {
   gridVertices[at + 7] = vec4(floorFine, sunE);
   gridVertices[at + 8] = vec4(skyE, nearLand);
   gridVertices[at + 9] = vec4(nearShadow, gridRow, 0.0, 0.0);
+#ifdef OCEAN_RADIANCE_TERMS
+  for (int k = 0; k < SEA_RADIANCE_VEC4S; ++k) gridRadianceTerms[i * SEA_RADIANCE_VEC4S + k] = vRadianceTerms[k];
+#endif
 }
 #else
 // Vertex i's outputs from the buffer; returns its clip-space position.
@@ -79,6 +89,9 @@ vec4 loadGridVertex(int i) {
   vNearLand = v8.w;
   vNearShadow = v9.x;
   vGridRow = int(v9.y);
+#endif
+#ifdef OCEAN_RADIANCE_TERMS
+  for (int k = 0; k < SEA_RADIANCE_VEC4S; ++k) vRadianceTerms[k] = gridRadianceTerms[i * SEA_RADIANCE_VEC4S + k];
 #endif
   return gridVertices[at];
 }

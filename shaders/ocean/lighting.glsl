@@ -83,15 +83,19 @@ const vec4 uLightingTerms = vec4(1.0);
 // terrain/shadow.glsl); the grid's shaders set it before shading, elsewhere the Sun is open.
 Number gSeaSunVisibility = 1.0;
 
+// Sets p's normal n and its tangents along and across the wind w (both in p's local frame).
+void setSeaNormal(INOUT(SeaPoint) p, vec3 n, vec3 w) {
+  p.n = n;
+  p.tx = normalize(w - dot(w, n) * n + vec3(1e-6, 0.0, 0.0));
+  p.ty = cross(p.n, p.tx);
+}
+
 SeaPoint seaPoint(vec3 vE, vec3 nE, vec3 windE, vec3 upE, vec3 sunE) {
   mat3 toLocal = transpose(localFrame(upE));
   SeaPoint p;
   p.v = toLocal * vE;
-  p.n = toLocal * nE;
   p.l = toLocal * sunE;
-  vec3 w = toLocal * windE;
-  p.tx = normalize(w - dot(w, p.n) * p.n + vec3(1e-6, 0.0, 0.0));
-  p.ty = cross(p.n, p.tx);
+  setSeaNormal(p, toLocal * nE, toLocal * windE);
   p.sunZenith = acos(clamp(p.l.z, -1.0, 1.0));
   p.sunAzimuthCS = sunAzimuthCosSin(p.l);
   p.eSun = sunIrradiance(p.sunZenith) * gSeaSunVisibility;
@@ -166,14 +170,17 @@ vec3 seaRadiance(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE)
 // (Koepke 1984) over the fraction `coverage` of the footprint, the clear sea over the rest:
 // R = W R_foam + (1 - W) R_sea.
 const Number FOAM_REFLECTANCE = 0.4;
+// The foam's radiance at p (the light it gets does not depend on the normal).
+vec3 foamRadiance(SeaPoint p) { return FOAM_REFLECTANCE / PI * (p.eSun * max(p.l.z, 0.0) + p.eSky); }
+// The clear sea's and the foam's radiance mixed by the foam's `coverage` of the footprint.
+vec3 mixFoam(vec3 clear, vec3 foam, Number coverage) {
+  OG_EXPECT_RANGE(coverage, 0.0, 1.0);  // a share of the footprint (asserts in debug C++ only)
+  return mix(clear, foam, coverage * uLightingTerms.w);
+}
 vec3 seaRadianceWithFoam(vec3 vE, vec3 nE, vec3 windE, vec3 cov, vec3 upE, vec3 sunE,
                          Number coverage) {
-  OG_EXPECT_RANGE(coverage, 0.0, 1.0);  // a share of the footprint (asserts in debug C++ only)
   SeaPoint p = seaPoint(vE, nE, windE, upE, sunE);  // once for the sea and the foam
-  vec3 clear = seaRadianceAt(p, cov, upE);
-  coverage *= uLightingTerms.w;
-  vec3 foam = FOAM_REFLECTANCE / PI * (p.eSun * max(p.l.z, 0.0) + p.eSky);
-  return mix(clear, foam, coverage);
+  return mixFoam(seaRadianceAt(p, cov, upE), foamRadiance(p), coverage);
 }
 vec3 seaRadianceWithFoam(vec3 vE, vec3 nE, vec3 windE, vec2 sigma2, vec3 upE, vec3 sunE,
                          Number coverage) {

@@ -6,7 +6,9 @@
 // globe's aerial perspective on top.
 // OCEAN_DEFERRED: a full-screen pass per sea class reading the grid's values from the surface
 // buffer (ocean/sea_surface.glsl, render/OceanRenderer::drawDeferred), once per pixel; the
-// coast test was the surface pass's. Otherwise the grid's own fragments, with their varyings.
+// coast test was the surface pass's. Otherwise the grid's own fragments, with their varyings;
+// OCEAN_RADIANCE_TERMS: the radiance from the vertices' quadratic in the pixel's mean slope and
+// covariance (ocean/radiance_terms.glsl), where the cells are large.
 #ifdef OCEAN_DEFERRED
 #define SEA_IN
 #define PATTERN_BANDS_PER_PIXEL  // ocean/patterns.glsl
@@ -19,6 +21,7 @@
 #include "ocean/patterns.glsl"
 #include "ocean/brdf.glsl"
 #include "ocean/lighting.glsl"
+#include "ocean/radiance_terms.glsl"
 #include "render/elevation.glsl"
 #include "ocean/coast.glsl"
 #include "terrain/shadow.glsl"
@@ -33,6 +36,9 @@ SEA_IN float vPatternShare[PATTERN_COUNT];
 #ifndef OCEAN_DEFERRED
 in vec2 vPatternBand[PATTERN_COUNT];  // patternBands at the vertex's wind
 in vec3 vPatternAveragedFrom[PATTERN_COUNT + 1];
+#endif
+#ifdef OCEAN_RADIANCE_TERMS
+in vec4 vRadianceTerms[SEA_RADIANCE_VEC4S];  // the sea's radiance in the cell (ocean/grid.vert)
 #endif
 #ifndef OCEAN_SIMPLE_SKY
 SEA_IN vec3 vTransmittance;  // aerial perspective, per vertex (ocean/grid.vert)
@@ -69,7 +75,6 @@ void main() {
   vec3 nGeometry = normalize(cross(dFdx(vRelative), dFdy(vRelative)));
   if (dot(nGeometry, v) < 0.0) nGeometry = -nGeometry;
 #endif
-  vec3 frameUp = oceanToEcef[2];
   vec3 up = ellipsoidNormal(dir, dist);
   vec2 latLon = latLonOfNormal(up);
   gSeaSunVisibility = sunVisibility(vRelative, up);  // mountains shade the sea at their feet
@@ -90,10 +95,7 @@ void main() {
 #ifdef OCEAN_VALIDATION_CONSTANT_BRDF
   sea.covariance = vec3(patternTable(PATTERN_COUNT, wind.x).xy, 0.0);  // the paper's constant BRDF
 #endif
-  // Waves live in the frame's tangent plane; tilt their normal onto the ellipsoid's curvature
-  // so that with the waves faded out the normal is exactly the ellipsoid's (as in orbit).
-  vec3 nFrame = oceanToEcef * normalize(vec3(-sea.meanSlope, 1.0));
-  vec3 n = normalize(nFrame + (up - frameUp) * dot(nFrame, frameUp));
+  vec3 n = seaTiltedNormal(sea.meanSlope, oceanToEcef, up);
 #ifdef OCEAN_VALIDATION_REFERENCE
   // Sub-triangle facets are sampled uniformly over the triangle, but a facet's share of the
   // pixel is its area projected towards the eye: weight (v.n) / ((v.n_g)(n.n_g)), whose mean
@@ -102,9 +104,7 @@ void main() {
   float sampleWeight = max(dot(n, v), 0.0) /
                        (max(dot(v, nGeometry), 1e-3) * max(dot(n, nGeometry), 1e-3));
 #endif
-  // Back-facing normals seen at grazing angles: reflect about the view plane (§5.1).
-  float nv = dot(n, v);
-  if (nv < 0.0) n = normalize(n - 2.0 * nv * v);
+  n = seaNormalFacing(n, v);  // back-facing normals seen at grazing angles (§5.1)
   mat3 local = localFrame(up);
   vec2 windSinCos = windAzimuthSinCos(wind);
   vec3 windDir = windSinCos.x * local[0] + windSinCos.y * local[1];
@@ -118,6 +118,14 @@ void main() {
   return;
 #else
   float foam = whitecapCoverage(sea.jacobian);
+#ifdef OCEAN_RADIANCE_TERMS
+  // The vertices' quadratic in the pixel's mean slope and covariance, the aerial perspective
+  // folded in (ocean/radiance_terms.glsl).
+  vec3 clear = seaRadianceOfTerms(unpackSeaRadianceTerms(vRadianceTerms), sea.meanSlope, sea.covariance);
+  fragRadiance = vec4(mixFoam(clear, unpackFoamRadiance(vRadianceTerms), foam), 1.0);
+  fragAux = vec4(foam, 0.0, 0.0, 0.0);
+  return;
+#endif
 #ifndef OCEAN_NO_WATER_VOLUME  // compiled out when no sea floor in view is within reach
   // How the pixel's slopes spread: the mean slope's change to the next pixel (deferred:
   // between neighbouring pixels' own values, which at the sea's edges may belong to no sea

@@ -1,6 +1,7 @@
 #include "ocean/Lighting.hpp"
 
 #include <mutex>
+#include <tuple>
 #include <numbers>
 
 #include "core/GlslShim.hpp"
@@ -24,6 +25,7 @@ using namespace og::glsl;
 #pragma GCC diagnostic ignored "-Wunused-parameter"
 #include "ocean/brdf.glsl"
 #include "ocean/lighting.glsl"
+#include "ocean/radiance_terms.glsl"
 #pragma GCC diagnostic pop
 #undef uniform
 #undef OCEAN_VALIDATION_REFERENCE
@@ -33,6 +35,8 @@ using namespace og::glsl;
 #undef OG_WGS84_A
 #undef OG_PI
 }  // namespace glsl
+
+static_assert(glsl::SEA_RADIANCE_TERMS == std::tuple_size_v<decltype(RadianceTerms::k)>);
 
 namespace {
 std::mutex kUniformsLock;  // the twin's uniforms are globals: one evaluation at a time
@@ -60,6 +64,30 @@ glm::dvec3 seaRadianceMirror(const Settings& settings, const SeaSample& p,
   const std::lock_guard lock(kUniformsLock);
   setUniforms(settings);
   return glsl::seaRadianceMirror(p.toEye, p.normal, p.wind, patchCovariance, p.up, p.toSun);
+}
+
+glm::dvec3 clearSeaRadiance(const Settings& settings, const SlopePoint& point, const glm::dvec2& slope,
+                            const glm::dvec3& cov) {
+  const std::lock_guard lock(kUniformsLock);
+  setUniforms(settings);
+  return glsl::clearSeaRadiance(glsl::seaPlace(point.toEye, point.oceanToEcef, point.wind, point.up, point.toSun), slope, cov);
+}
+
+RadianceTerms seaRadianceTerms(const Settings& settings, const SlopePoint& point, const glm::dvec2& slope,
+                               const glm::dvec3& cov, double slopeStep) {
+  const std::lock_guard lock(kUniformsLock);
+  setUniforms(settings);
+  const glsl::SeaRadianceTerms t = glsl::seaRadianceTerms(
+      glsl::seaPlace(point.toEye, point.oceanToEcef, point.wind, point.up, point.toSun), slope, cov, slopeStep);
+  RadianceTerms r;
+  for (std::size_t i = 0; i < r.k.size(); ++i) r.k[i] = t.k[i];
+  return r;
+}
+
+glm::dvec3 seaRadianceOfTerms(const RadianceTerms& terms, const glm::dvec2& slope, const glm::dvec3& cov) {
+  glsl::SeaRadianceTerms t;
+  for (std::size_t i = 0; i < terms.k.size(); ++i) t.k[i] = terms.k[i];
+  return glsl::seaRadianceOfTerms(t, slope, cov);
 }
 
 glm::dvec3 sunIrradiance(double sunZenithRad) { return glsl::sunIrradiance(sunZenithRad); }

@@ -4,6 +4,8 @@
 // same file compiled as C++ in double precision (through core/GlslShim.hpp), lit by the file's
 // analytic sky (OCEAN_SIMPLE_SKY) since the precomputed sky maps live on the GPU. Over the open
 // sea (no sea floor: the shallow-water hook returns the deep colour).
+#include <array>
+
 #include <glm/glm.hpp>
 
 namespace og::ocean::lighting {
@@ -37,6 +39,34 @@ glm::dvec3 seaRadiance(const Settings& settings, const SeaSample& sample);
 /// patch of slope covariance patchCovariance (sample.slopeCovariance is not used).
 glm::dvec3 seaRadianceMirror(const Settings& settings, const SeaSample& sample,
                              const glm::dvec3& patchCovariance);
+/// shaders/ocean/radiance_terms.glsl: the clear sea's radiance (no foam) as the projected
+/// grid's vertices hand it to the pixels of large cells, a quadratic in the pixel's resolved
+/// mean slope (dz/dx, dz/dy in the ocean frame's axes) and unresolved slope covariance (xx, yy,
+/// xy along/across the wind): k[0] + sum_d (k[1 + d] x_d + k[6 + d] x_d²) + k[11] x_0 x_1 over
+/// x = (slope.x, slope.y, cov.x, cov.y, cov.z).
+struct RadianceTerms {
+  std::array<glm::dvec3, 12> k{};
+};
+/// Where the quadratic is taken, and the rest of the point: `oceanToEcef`'s columns are the
+/// ocean frame's east, north and up in ECEF; toEye, wind, up, toSun as in SeaSample.
+struct SlopePoint {
+  glm::dvec3 toEye{0.0, 0.0, 1.0};
+  glm::dmat3 oceanToEcef{1.0};
+  glm::dvec3 wind{0.0, 1.0, 0.0};
+  glm::dvec3 up{0.0, 0.0, 1.0};
+  glm::dvec3 toSun{0.0, 0.0, 1.0};
+};
+/// The clear sea's radiance for a footprint of mean slope `slope` and covariance `cov`
+/// (clearSeaRadiance: the slope's normal tilted onto the ellipsoid and turned to face the eye).
+glm::dvec3 clearSeaRadiance(const Settings& settings, const SlopePoint& point, const glm::dvec2& slope,
+                            const glm::dvec3& cov);
+/// The quadratic about (slope, cov), in slope steps of `slopeStep` (> 0) and steps of a tenth of
+/// the covariance's entries (seaRadianceTerms).
+RadianceTerms seaRadianceTerms(const Settings& settings, const SlopePoint& point, const glm::dvec2& slope,
+                               const glm::dvec3& cov, double slopeStep);
+/// The quadratic's value (seaRadianceOfTerms).
+glm::dvec3 seaRadianceOfTerms(const RadianceTerms& terms, const glm::dvec2& slope, const glm::dvec3& cov);
+
 /// Sun and sky irradiance at sea level of the analytic sky for a Sun zenith angle, rad, [0, pi].
 glm::dvec3 sunIrradiance(double sunZenithRad);
 glm::dvec3 skyIrradiance(double sunZenithRad);

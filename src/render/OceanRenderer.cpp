@@ -127,8 +127,9 @@ OceanRenderer::OceanRenderer(const Atmosphere* atmosphere, ValidationMode mode)
 const gl::Program& OceanRenderer::program(unsigned features) {
   gl::Program& p = programs().variants.at(features);
   if (p.id() != 0) return p;
-  p = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}},
-                  featureDefines(features));
+  // The radiance terms' vertices come from the compute pass (draw: computeGridVertices).
+  const char* vertex = (features & kFeatureRadianceTerms) != 0 ? "ocean/grid_cached.vert" : "ocean/grid.vert";
+  p = gl::Program({{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}}, featureDefines(features));
   return p;
 }
 
@@ -138,6 +139,8 @@ std::vector<std::string> OceanRenderer::featureDefines(unsigned features) const 
   if ((features & kFeatureCoastTest) == 0) d.emplace_back("SEA_NO_COAST_TEST");
   if ((features & kFeatureShadows) == 0) d.emplace_back("SHADOWS_OFF");
   if ((features & kFeatureFrameSky) != 0) d.emplace_back("SKY_FRAME_LAYER");
+  // The per-wind bands from the tables (the vertex buffer does not keep the vertices').
+  if ((features & kFeatureRadianceTerms) != 0) d.insert(d.end(), {"OCEAN_RADIANCE_TERMS", "PATTERN_BANDS_PER_PIXEL"});
   if (atmosphere_ != nullptr && atmosphere_->skyFilter().radialSums) d.emplace_back("SKY_RADIAL_SUMS");
   return d;
 }
@@ -275,25 +278,80 @@ void OceanRenderer::setCommon(const gl::Program& p, const geo::CameraView& view,
   }
 }
 
-void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
-                         const OceanPatterns& patterns, const ocean::OceanFrame& frame, double timeS,
-                         const OceanLighting& lighting, double amplitudeScale, OceanModel model,
-                         const WindTextures& wind) {
-  // The grid overshoots the screen (NDC) so displaced edges stay covered: waves displace
-  // vertices by up to their amplitude, which is a large angle seen from a few metres.
-  const double amplitude = model == OceanModel::Classic ? 0.76 : patterns.amplitudeBoundM();  // classic: its four sines
-  const double eyeAbove = std::max(view.position.heightM, 0.1);
-  const double side = std::clamp(amplitudeScale * amplitude / eyeAbove, 0.1, 1.0);
-  const double bottom = std::clamp(3.0 * amplitudeScale * amplitude / eyeAbove, 0.1, 3.0);
-  const glm::vec4 margin(static_cast<float>(side), static_cast<float>(side),
-                         static_cast<float>(bottom), 0.1f);  // left, right, bottom, top
-  frameCellPixels_ = cellPixels_;
-  if (model == OceanModel::Bruneton && cellGrowth_ && geometryIsSubPixel(view, height, amplitudeScale * amplitude)) {
-    // Up to kGrownCellFactor-fold, the cell no wider than kGrownCellMaxRad.
-    const double pixelRad = 2.0 * std::tan(0.5 * view.verticalFovRad) / height;
-    for (int k = kGrownCellFactor; k > 1 && frameCellPixels_ == cellPixels_; k /= 2)
-      if (k * cellPixels_ * pixelRad <= kGrownCellMaxRad) frameCellPixels_ = k * cellPixels_;
+unsigned OceanRenderer::frameFeatures(const geo::CameraView& view, const OceanPatterns& patterns, double timeS,
+                                      const OceanLighting& lighting, OceanModel model) {
+  if (model == OceanModel::Classic) return kFeatureCoastTest | kFeatureShadows;  // classic.frag has no variants: its uniforms
+  unsigned features = 0;
+  if (lighting.floorInReach) features |= kFeatureWaterVolume;
+  if (lighting.landInView) features |= kFeatureCoastTest;
+  if (lighting.shadows != nullptr && lighting.shadows->on) features |= kFeatureShadows;
+  if (atmosphere_ != nullptr && farthestSeaAngleRad(view) <= kFrameSkyMaxAngleRad) {
+    features |= kFeatureFrameSky;
+    const double cosSun = glm::dot(glm::normalize(lighting.sunDirectionEcef), view.enu.up);
+    atmosphere_->prepareFrameSkyLayer(std::acos(std::clamp(cosSun, -1.0, 1.0)));
+  } else if (atmosphere_ != nullptr) {
+    atmosphere_->prepareSunLayerSums();  // (once: the Sun layers' radial sums, where used)
   }
+  if ((features & kFeatureWaterVolume) != 0) {
+    if (timer_ != nullptr) timer_->mark("ocean caustics");
+    caustics_.update(patterns, timeS);
+    if (timer_ != nullptr) timer_->mark("ocean");
+  }
+  return features;
+}
+
+bool OceanRenderer::drawsClassified(const OceanLighting& lighting, unsigned features) {
+  return lighting.classes && (features & (kFeatureWaterVolume | kFeatureCoastTest)) != 0 && drawTargetHasStencil() &&
+         gl::driverProfile().stencilExport;
+}
+
+double OceanRenderer::slopeVarianceFloor(const OceanPatterns& patterns, const WindTextures& wind) {
+  const double low = wind.hasLayers() ? 0.0 : wind.constantSpeedMs();
+  const double high = wind.hasLayers() ? wind.maxLayerSpeedMs() : wind.constantSpeedMs();
+  const int last = ocean::PatternTables::kSpeeds - 1;
+  double floor = std::numeric_limits<double>::infinity();
+  for (int speed = std::clamp(static_cast<int>(std::floor(low)), 0, last);
+       speed <= std::clamp(static_cast<int>(std::ceil(high)), 0, last); ++speed) {
+    const ocean::SlopeVariance v = patterns.tables().totalSlopeVariance(speed);
+    floor = std::min({floor, v.up, v.cross});
+  }
+  return floor;
+}
+
+double OceanRenderer::mostGrazingSeaZenithRad(const geo::CameraView& view) {
+  const double r = geo::kWgs84SemiMajorM, h = std::max(view.position.heightM, 0.1);
+  const glm::dvec3 eye = (r + h) * view.enu.up;
+  double most = 0.0;
+  for (const double sy : {-1.0, 0.0, 1.0})
+    for (const double sx : {-1.0, 0.0, 1.0}) {
+      const glm::dvec3 dir = view.rayDirection(sx, sy);
+      const std::optional<double> t = seaSphereHitM(h, view.enu.up, dir);
+      if (!t) return 0.5 * std::numbers::pi;
+      most = std::max(most, std::acos(std::clamp(-glm::dot(dir, (eye + *t * dir) / r), -1.0, 1.0)));
+    }
+  return most;
+}
+
+double OceanRenderer::radianceTermsMaxCellRad(const geo::CameraView& view, const glm::dvec3& sunDirectionEcef,
+                                              const OceanPatterns& patterns, const WindTextures& wind) {
+  // The glint's lobe seen across the view at zenith angle theta: a facet tilted sideways by
+  // sigma turns the reflected ray's azimuth by ~2 sigma cot(theta). It lies where the view's
+  // zenith angle is 90° less the Sun's elevation, and no sea in view is more grazing than the
+  // view's top.
+  const double sunElevation = std::asin(std::clamp(glm::dot(glm::normalize(sunDirectionEcef), view.enu.up), -1.0, 1.0));
+  const double zenith = std::min(mostGrazingSeaZenithRad(view), 0.5 * std::numbers::pi - std::max(sunElevation, 0.0));
+  const double lobeRad = 2.0 * std::sqrt(slopeVarianceFloor(patterns, wind)) / std::max(std::tan(zenith), 1e-6);
+  return std::min(kRadianceTermsMaxCellLobes * lobeRad, kGrownCellMaxRad);
+}
+
+int OceanRenderer::grownCellPixels(const geo::CameraView& view, int height, double maxCellRad) const {
+  const double pixelRad = 2.0 * std::tan(0.5 * view.verticalFovRad) / height;
+  for (int k = kGrownCellFactor; k > 1; k /= 2)
+    if (k * cellPixels_ * pixelRad <= maxCellRad) return k * cellPixels_;
+  return cellPixels_;
+}
+
+void OceanRenderer::layOutGrid(int width, int height, double side, double bottom, OceanModel model) {
   // The rows (ocean/grid.vert's gridNdc): the uniform rows' layout from the grid's bottom to
   // its top, fine from kGridFineBottomNdc below the screen up (the same rows as all fine), the
   // filtered model's rows below that merged kGridCoarseFactor to one.
@@ -309,34 +367,43 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
   gridCoarseRows_ = coarseRows;
   ensureGrid(std::max(2, static_cast<int>(std::ceil(width * (1 + side) / frameCellPixels_)) + 1),
              coarseRows + rows - below + 1);
+}
+
+void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
+                         const OceanPatterns& patterns, const ocean::OceanFrame& frame, double timeS,
+                         const OceanLighting& lighting, double amplitudeScale, OceanModel model,
+                         const WindTextures& wind) {
+  // The grid overshoots the screen (NDC) so displaced edges stay covered: waves displace
+  // vertices by up to their amplitude, which is a large angle seen from a few metres.
+  const double amplitude = model == OceanModel::Classic ? 0.76 : patterns.amplitudeBoundM();  // classic: its four sines
+  const double eyeAbove = std::max(view.position.heightM, 0.1);
+  const double side = std::clamp(amplitudeScale * amplitude / eyeAbove, 0.1, 1.0);
+  const double bottom = std::clamp(3.0 * amplitudeScale * amplitude / eyeAbove, 0.1, 3.0);
+  const glm::vec4 margin(static_cast<float>(side), static_cast<float>(side),
+                         static_cast<float>(bottom), 0.1f);  // left, right, bottom, top
+  unsigned features = frameFeatures(view, patterns, timeS, lighting, model);
+  // Grown cells where the geometry is sub-pixel: small enough for the vertices' radiance
+  // quadratic where that may serve (the forward draw's open sea), else up to kGrownCellMaxRad.
+  frameCellPixels_ = cellPixels_;
+  bool termsCells = false;
+  if (model == OceanModel::Bruneton && cellGrowth_ && geometryIsSubPixel(view, height, amplitudeScale * amplitude)) {
+    if (radianceTerms_ && mode_ == ValidationMode::Filtered && (features & (kFeatureWaterVolume | kFeatureShadows)) == 0 &&
+        !drawsClassified(lighting, features)) {
+      frameCellPixels_ = grownCellPixels(view, height, radianceTermsMaxCellRad(view, lighting.sunDirectionEcef, patterns, wind));
+      termsCells = frameCellPixels_ >= kDeferredMaxCellPixels;
+    }
+    if (!termsCells) frameCellPixels_ = grownCellPixels(view, height, kGrownCellMaxRad);
+  }
+  layOutGrid(width, height, side, bottom, model);
 
   // A constant wind along one of the patterns' bins: the programs that read one bin.
   programSet_ = model == OceanModel::Bruneton && oneBinAllowed_ && !wind.hasLayers() &&
                         windAlongOneBin(glm::radians(wind.constantTowardsDeg()), frame.fieldRotationRad())
                     ? 1
                     : 0;
-  unsigned features = 0;
   lastDeferred_ = false;
   lastSurfaceCompact_ = false;
-  if (model == OceanModel::Classic) {
-    features = kFeatureCoastTest | kFeatureShadows;  // classic.frag has no variants: its uniforms
-  } else {
-    if (lighting.floorInReach) features |= kFeatureWaterVolume;
-    if (lighting.landInView) features |= kFeatureCoastTest;
-    if (lighting.shadows != nullptr && lighting.shadows->on) features |= kFeatureShadows;
-    if (atmosphere_ != nullptr && farthestSeaAngleRad(view) <= kFrameSkyMaxAngleRad) {
-      features |= kFeatureFrameSky;
-      const double cosSun = glm::dot(glm::normalize(lighting.sunDirectionEcef), view.enu.up);
-      atmosphere_->prepareFrameSkyLayer(std::acos(std::clamp(cosSun, -1.0, 1.0)));
-    } else if (atmosphere_ != nullptr) {
-      atmosphere_->prepareSunLayerSums();  // (once: the Sun layers' radial sums, where used)
-    }
-    if ((features & kFeatureWaterVolume) != 0) {
-      if (timer_ != nullptr) timer_->mark("ocean caustics");
-      caustics_.update(patterns, timeS);
-      if (timer_ != nullptr) timer_->mark("ocean");
-    }
-  }
+  lastRadianceTerms_ = false;
   if (model == OceanModel::Classic) {
     if (classic_.id() == 0) {  // made on first use (start-up: bench --startup)
       classic_ = gl::Program({{GL_VERTEX_SHADER, "ocean/classic.vert"}, {GL_FRAGMENT_SHADER, "ocean/classic.frag"}},
@@ -360,11 +427,18 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
              depthStencil != 0 && (gl::driverProfile().stencilExport || deferredWithoutExport_)) {
     lastDeferred_ = true;
     drawDeferred(view, width, height, patterns, frame, lighting, amplitudeScale, wind, features, margin, depthStencil);
-  } else if (lighting.classes && (features & (kFeatureWaterVolume | kFeatureCoastTest)) != 0 &&
-             drawTargetHasStencil() && gl::driverProfile().stencilExport) {  // sea_classify.frag
+  } else if (drawsClassified(lighting, features)) {  // sea_classify.frag
     drawClassified(view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
   } else {
+    lastRadianceTerms_ = termsCells;
+    if (termsCells) features |= kFeatureRadianceTerms;
     const gl::Program& p = program(features);
+    if (termsCells) {  // the vertices first, on every core
+      gl::Program& compute = programs().termsComputeVariants.at(features & ~kFeatureRadianceTerms);
+      if (compute.id() == 0) compute = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_vertices.comp"}}, featureDefines(features));
+      prepare(compute, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
+      computeGridVertices(compute, true);
+    }
     prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
     drawGrid(p);
   }
@@ -627,21 +701,30 @@ const gl::Program& OceanRenderer::prepareSurfacePass(unsigned key,
   const gl::Program& surface = surfaceProgram(key);
   gl::Program& compute = programs().gridComputeVariants.at(key);
   if (compute.id() == 0) compute = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_vertices.comp"}}, surfaceDefines(key));
-  const auto vertices = static_cast<std::size_t>(gridColumns_) * static_cast<std::size_t>(gridRows_);
-  const std::size_t bytes = vertices * kGridVertexVec4s * 4 * sizeof(float);
-  if (bytes > gridVerticesBytes_) {
-    gridVertices_ = gl::createBuffer();
-    glNamedBufferStorage(gridVertices_.id(), static_cast<GLsizeiptr>(bytes), nullptr, 0);
-    gridVerticesBytes_ = bytes;
-  }
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridVerticesBinding, gridVertices_.id());
   prepareProgram(compute);
+  computeGridVertices(compute, false);
+  prepareProgram(surface);
+  return surface;
+}
+
+void OceanRenderer::computeGridVertices(const gl::Program& compute, bool radianceTerms) {
+  const auto vertices = static_cast<std::size_t>(gridColumns_) * static_cast<std::size_t>(gridRows_);
+  const auto ensure = [](gl::Buffer& buffer, std::size_t& had, std::size_t bytes) {
+    if (bytes <= had) return;
+    buffer = gl::createBuffer();
+    glNamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(bytes), nullptr, 0);
+    had = bytes;
+  };
+  ensure(gridVertices_, gridVerticesBytes_, vertices * kGridVertexVec4s * 4 * sizeof(float));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridVerticesBinding, gridVertices_.id());
+  if (radianceTerms) {
+    ensure(gridRadianceTerms_, gridRadianceTermsBytes_, vertices * kGridRadianceTermsVec4s * 4 * sizeof(float));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridRadianceTermsBinding, gridRadianceTerms_.id());
+  }
   if (timer_ != nullptr) timer_->mark("ocean grid");
   compute.use();
   glDispatchCompute(static_cast<GLuint>((vertices + 63) / 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  prepareProgram(surface);
-  return surface;
 }
 
 void OceanRenderer::splitNearLand(unsigned key) {

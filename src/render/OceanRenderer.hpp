@@ -150,6 +150,15 @@ class OceanRenderer {
   void setCellGrowth(bool on) { cellGrowth_ = on; }
   /// The cell size (pixels) the last draw used.
   [[nodiscard]] int lastCellPixels() const { return frameCellPixels_; }
+  /// Whether the grid's vertices may hand the pixels of grown cells their radiance as a
+  /// quadratic in the pixel's mean slope and slope covariance (ocean/radiance_terms.glsl,
+  /// OCEAN_RADIANCE_TERMS); on by default. Where they do, the cells grow only to
+  /// kRadianceTermsMaxCellSigma of the BRDF's width, and only for the forward draw's open sea:
+  /// the filtered model's picture (not a validation variant), neither the water volume nor the
+  /// terrain's shadows (terms per pixel the quadratic does not carry), no sea classes.
+  void setRadianceTerms(bool on) { radianceTerms_ = on; }
+  /// Whether the last draw's pixels took their radiance from the vertices' quadratic.
+  [[nodiscard]] bool lastRadianceTerms() const { return lastRadianceTerms_; }
   /// Whether a grid of larger cells draws the same sea: the waves displace no point by more
   /// than kSubPixelDisplacementPx on the screen (displacementBoundM at the nearest sea point in
   /// view, where the screen magnifies most), and the corners and edges of the view meet the
@@ -167,6 +176,11 @@ class OceanRenderer {
   /// The largest grown cell, rad: 4.2° (32 px at 640x360, 45° tall) draws the same sea (OceanCell
   /// tests); 8.4° cells (32 px at 320x180) move the far sea by up to 5 levels.
   static constexpr double kGrownCellMaxRad = 0.075;
+  /// The largest cell whose pixels take their radiance from the vertices' quadratic
+  /// (setRadianceTerms), in widths of the glint's lobe across the view
+  /// (radianceTermsMaxCellRad): the triangles interpolate the quadratic's coefficients, which
+  /// curve over the screen as fast as the lobe is narrow.
+  static constexpr double kRadianceTermsMaxCellLobes = 0.21;
 
   /// Draws the sea into the bound framebuffer (width x height), depth-tested. `patterns` must
   /// hold the sea at `timeS` (OceanPatterns::update). `amplitudeScale` in [0, 1] fades the
@@ -197,6 +211,14 @@ class OceanRenderer {
   /// ocean/grid_vertex_buffer.glsl's GridVertices and its vec4s per vertex.
   static constexpr GLuint kGridVerticesBinding = 4;
   static constexpr int kGridVertexVec4s = 10;
+  /// ocean/grid_vertex_buffer.glsl's GridRadianceTerms and its vec4s per vertex
+  /// (ocean/radiance_terms.glsl's SEA_RADIANCE_VEC4S).
+  static constexpr GLuint kGridRadianceTermsBinding = 8;
+  static constexpr int kGridRadianceTermsVec4s = 10;
+  /// All the grid's vertices by `compute` (ocean/grid_vertices.comp, its uniforms set) into
+  /// gridVertices_, and with `radianceTerms` their radiance terms into gridRadianceTerms_:
+  /// llvmpipe shades a draw's vertices on one thread, a dispatch on every core.
+  void computeGridVertices(const gl::Program& compute, bool radianceTerms);
   /// The deferred sea's surface pass: its program (the variant for `key`: kFeatureWaterVolume,
   /// kFeatureCoastTest and kSurfaceClasses bits, compiled on first use) and, before its draw,
   /// all the grid's vertices computed by the matching compute pass into gridVertices_ (llvmpipe
@@ -271,6 +293,32 @@ class OceanRenderer {
                 const WindTextures& wind, unsigned features, const glm::vec4& margin);
   /// The filtered model's defines with `features` (bits of kFeature*) compiled in.
   [[nodiscard]] std::vector<std::string> featureDefines(unsigned features) const;
+  /// The frame's features (kFeature* bits) for `model`: the sea floor, land and the terrain's
+  /// shadows as `lighting` has them, the sky's frame layer where it serves (prepared here), and
+  /// the caustics updated where the floor is in reach.
+  unsigned frameFeatures(const geo::CameraView& view, const OceanPatterns& patterns, double timeS,
+                         const OceanLighting& lighting, OceanModel model);
+  /// Whether the filtered model's forward draw with `features` goes through the sea's classes
+  /// (drawClassified).
+  [[nodiscard]] static bool drawsClassified(const OceanLighting& lighting, unsigned features);
+  /// The smallest of the whole sea's slope variances along and across the wind (per-wind
+  /// tables, bands and tail) at the winds the frame may meet: the constant wind's two table
+  /// columns, or every column up to the wind layers' fastest.
+  [[nodiscard]] static double slopeVarianceFloor(const OceanPatterns& patterns, const WindTextures& wind);
+  /// The largest zenith angle (rad) at which the view's rays (corners and edges' middles) meet
+  /// the sea (the sphere of the semi-major axis); pi/2 if one misses it.
+  [[nodiscard]] static double mostGrazingSeaZenithRad(const geo::CameraView& view);
+  /// The largest cell (rad) for the vertices' radiance quadratic: kRadianceTermsMaxCellLobes
+  /// of the glint's narrowest lobe across the view, 2 sigma cot(theta), sigma² the
+  /// slopeVarianceFloor and theta the view's zenith angle where the Sun's glint lies (90° less
+  /// its elevation at the camera), at most the view's most grazing; and kGrownCellMaxRad at most.
+  [[nodiscard]] static double radianceTermsMaxCellRad(const geo::CameraView& view, const glm::dvec3& sunDirectionEcef,
+                                                      const OceanPatterns& patterns, const WindTextures& wind);
+  /// The cell size (pixels) grown kGrownCellFactor- or 2-fold, the largest no wider than
+  /// `maxCellRad` (rad), or cellPixels_ if none is.
+  [[nodiscard]] int grownCellPixels(const geo::CameraView& view, int height, double maxCellRad) const;
+  /// The grid's rows for frameCellPixels_ (gridRowsNdc_, gridCoarseRows_) and its buffers.
+  void layOutGrid(int width, int height, double side, double bottom, OceanModel model);
   /// The deferred sea's shading program for `features` (coast test excluded), compiled on first use.
   const gl::Program& deferredProgram(unsigned features);
   /// How far from land (m along the sea) the terrain's shadows can fall on the sea's surface or
@@ -297,6 +345,8 @@ class OceanRenderer {
   /// angle varies by no more than that across the sea in view: the sea from a few metres (the
   /// horizon 7 km away at 4 m: 0.06°), or looking down from a few km (sea-8km: 0.70°).
   static constexpr unsigned kFeatureFrameSky = 8;
+  /// The radiance from the vertices' quadratic (OCEAN_RADIANCE_TERMS, setRadianceTerms).
+  static constexpr unsigned kFeatureRadianceTerms = 16;
   const Atmosphere* atmosphere_;
   ValidationMode mode_;
   std::vector<std::string> defines_;        ///< the filtered model's, whatever the features
@@ -310,11 +360,13 @@ class OceanRenderer {
   /// windAlongOneBin), set 0
   /// without.
   struct PatternPrograms {
-    std::array<gl::Program, 16> variants;    ///< by feature bits
+    std::array<gl::Program, 32> variants;    ///< by feature bits
     gl::Program classify;                    ///< ocean/sea_classify.frag
     std::array<gl::Program, 16> deferredVariants;  ///< ocean.frag OCEAN_DEFERRED, by feature bits
     std::array<gl::Program, 8> surfaceVariants;    ///< sea_surface.frag: volume, coast, classes bits
     std::array<gl::Program, 8> gridComputeVariants;  ///< grid_vertices.comp, as surfaceVariants
+    /// grid_vertices.comp with the radiance terms, by feature bits (kFeatureRadianceTerms's aside)
+    std::array<gl::Program, 16> termsComputeVariants;
     gl::Program nearLandSplit;  ///< ocean/grid_near_land.comp
   };
   std::array<PatternPrograms, 2> programSets_;
@@ -328,6 +380,8 @@ class OceanRenderer {
   gl::Buffer openIndices_, nearLandIndices_;  ///< splitNearLand's copies of indices_
   GLsizeiptr nearLandSplitBytes_ = 0;
   std::size_t gridVerticesBytes_ = 0;
+  gl::Buffer gridRadianceTerms_;  ///< the radiance terms' vertices' (ocean/grid_vertex_buffer.glsl)
+  std::size_t gridRadianceTermsBytes_ = 0;
   SeaSurfaceBuffer surface_;
   bool lastDeferred_ = false;
   bool lastSurfaceCompact_ = false;
@@ -352,6 +406,8 @@ class OceanRenderer {
   int gridCoarseRows_ = 0;       ///< grid.vert's uGridCoarseRows
   int frameCellPixels_ = 8;  ///< this frame's: cellPixels_, or grown (geometryIsSubPixel)
   bool cellGrowth_ = true;
+  bool radianceTerms_ = true;
+  bool lastRadianceTerms_ = false;
   glm::vec4 lightingTerms_{1.0f};
   glm::vec4 elevationMap_{0.0f};
   glm::vec2 elevationSize_{0.0f};
