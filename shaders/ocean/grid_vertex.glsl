@@ -146,5 +146,13 @@ vec4 gridVertex(int vertexId) {
 #ifdef OCEAN_RADIANCE_TERMS
   prepareRadianceTerms(local.xy, pixelCell / uCellPixels, wind, coarse, bands);
 #endif
+#ifdef OCEAN_RADIANCE_TERMS
+  // Large cells of sub-pixel waves (render/OceanRenderer::layOutGridOnBlocks): the vertex on
+  // its grid point, the cells' edges between the rasteriser's pixel blocks; the displaced
+  // point (vRelative) shades.
+  vec4 clip = uViewProjection * vec4(rel, 1.0);
+  return vec4(ndc * clip.w, clip.zw);
+#else
   return uViewProjection * vec4(vRelative, 1.0);
+#endif
 }

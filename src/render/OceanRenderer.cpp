@@ -369,6 +369,17 @@ void OceanRenderer::layOutGrid(int width, int height, double side, double bottom
              coarseRows + rows - below + 1);
 }
 
+glm::vec4 OceanRenderer::layOutGridOnBlocks(int width, int height) {
+  const int cell = frameCellPixels_;
+  const int columns = (width + cell - 1) / cell, rows = (height + cell - 1) / cell;
+  gridRowsNdc_ = glm::vec4(-1.0f, 0.0f, -1.0f, static_cast<float>(2.0 * cell / height));
+  gridCoarseRows_ = 0;
+  ensureGrid(columns + 1, rows + 1);
+  // Whole cells from the screen's bottom-left corner: past the right and top edges, not below.
+  return {0.0f, static_cast<float>(2.0 * columns * cell / width - 2.0), 0.0f,
+          static_cast<float>(2.0 * rows * cell / height - 2.0)};
+}
+
 void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
                          const OceanPatterns& patterns, const ocean::OceanFrame& frame, double timeS,
                          const OceanLighting& lighting, double amplitudeScale, OceanModel model,
@@ -379,8 +390,8 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
   const double eyeAbove = std::max(view.position.heightM, 0.1);
   const double side = std::clamp(amplitudeScale * amplitude / eyeAbove, 0.1, 1.0);
   const double bottom = std::clamp(3.0 * amplitudeScale * amplitude / eyeAbove, 0.1, 3.0);
-  const glm::vec4 margin(static_cast<float>(side), static_cast<float>(side),
-                         static_cast<float>(bottom), 0.1f);  // left, right, bottom, top
+  glm::vec4 margin(static_cast<float>(side), static_cast<float>(side), static_cast<float>(bottom),
+                   0.1f);  // left, right, bottom, top
   unsigned features = frameFeatures(view, patterns, timeS, lighting, model);
   // Grown cells where the geometry is sub-pixel: small enough for the vertices' radiance
   // quadratic where that may serve (the forward draw's open sea), else up to kGrownCellMaxRad.
@@ -394,7 +405,10 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     }
     if (!termsCells) frameCellPixels_ = grownCellPixels(view, height, kGrownCellMaxRad);
   }
-  layOutGrid(width, height, side, bottom, model);
+  if (termsCells)
+    margin = layOutGridOnBlocks(width, height);
+  else
+    layOutGrid(width, height, side, bottom, model);
 
   // A constant wind along one of the patterns' bins: the programs that read one bin.
   programSet_ = model == OceanModel::Bruneton && oneBinAllowed_ && !wind.hasLayers() &&
@@ -438,6 +452,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
       if (compute.id() == 0) compute = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_vertices.comp"}}, featureDefines(features));
       prepare(compute, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
       computeGridVertices(compute, true);
+      if (timer_ != nullptr) timer_->mark("ocean");
     }
     prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
     drawGrid(p);

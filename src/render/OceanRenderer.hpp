@@ -319,6 +319,14 @@ class OceanRenderer {
   [[nodiscard]] int grownCellPixels(const geo::CameraView& view, int height, double maxCellRad) const;
   /// The grid's rows for frameCellPixels_ (gridRowsNdc_, gridCoarseRows_) and its buffers.
   void layOutGrid(int width, int height, double side, double bottom, OceanModel model);
+  /// The grid of the radiance terms' cells (frameCellPixels_, a multiple of 4): its vertices on
+  /// whole pixels every frameCellPixels_ from the screen's corner, where ocean/grid_vertex.glsl
+  /// keeps them (OCEAN_RADIANCE_TERMS: the waves move no point by half a pixel there), so that
+  /// the cells' edges lie between llvmpipe's 4 x 4 pixel blocks: a block an edge crosses is
+  /// shaded by the triangles on both sides (sea-8km at 1280x720: 1.60 fragment shader
+  /// invocations a pixel with the grid's usual layout, 1.19 on the blocks). Returns the grid's
+  /// margin (uGridMarginNdc: left, right, bottom, top).
+  glm::vec4 layOutGridOnBlocks(int width, int height);
   /// The deferred sea's shading program for `features` (coast test excluded), compiled on first use.
   const gl::Program& deferredProgram(unsigned features);
   /// How far from land (m along the sea) the terrain's shadows can fall on the sea's surface or
