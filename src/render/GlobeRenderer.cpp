@@ -313,10 +313,12 @@ void GlobeRenderer::render(const FrameInput& f) {
   glBindVertexArray(emptyVao_.id());
   if (grid) {
     drawOcean(view, f);
-    glDepthMask(GL_FALSE);
-    classifyGlobe(view, f, grid);
-    shadeGlobe(view, f, grid);
-    glDepthMask(GL_TRUE);
+    if (!ocean_->lastDrawCoversScreen()) {  // else no pixel is left for the globe
+      glDepthMask(GL_FALSE);
+      classifyGlobe(view, f, grid);
+      shadeGlobe(view, f, grid);
+      glDepthMask(GL_TRUE);
+    }
   } else {
     shadeGlobe(view, f, grid, frameLandLast_ ? GlobeParts::allButLand : GlobeParts::all);
     terrain_->drawWaterTiles();

@@ -418,6 +418,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
   lastDeferred_ = false;
   lastSurfaceCompact_ = false;
   lastRadianceTerms_ = false;
+  lastCoversScreen_ = false;
   if (model == OceanModel::Classic) {
     if (classic_.id() == 0) {  // made on first use (start-up: bench --startup)
       classic_ = gl::Program({{GL_VERTEX_SHADER, "ocean/classic.vert"}, {GL_FRAGMENT_SHADER, "ocean/classic.frag"}},
@@ -445,6 +446,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     drawClassified(view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
   } else {
     lastRadianceTerms_ = termsCells;
+    lastCoversScreen_ = termsCells && (features & kFeatureCoastTest) == 0;
     if (termsCells) features |= kFeatureRadianceTerms;
     const gl::Program& p = program(features);
     if (termsCells) {  // the vertices first, on every core

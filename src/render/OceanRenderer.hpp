@@ -159,6 +159,10 @@ class OceanRenderer {
   void setRadianceTerms(bool on) { radianceTerms_ = on; }
   /// Whether the last draw's pixels took their radiance from the vertices' quadratic.
   [[nodiscard]] bool lastRadianceTerms() const { return lastRadianceTerms_; }
+  /// Whether the last draw's sea covered every pixel of the screen: the grid laid over it
+  /// whole (layOutGridOnBlocks: the radiance terms' cells, no horizon in view) and no coast
+  /// test to discard samples. Then nothing is left for the globe to draw.
+  [[nodiscard]] bool lastDrawCoversScreen() const { return lastCoversScreen_; }
   /// Whether a grid of larger cells draws the same sea: the waves displace no point by more
   /// than kSubPixelDisplacementPx on the screen (displacementBoundM at the nearest sea point in
   /// view, where the screen magnifies most), and the corners and edges of the view meet the
@@ -416,6 +420,7 @@ class OceanRenderer {
   bool cellGrowth_ = true;
   bool radianceTerms_ = true;
   bool lastRadianceTerms_ = false;
+  bool lastCoversScreen_ = false;
   glm::vec4 lightingTerms_{1.0f};
   glm::vec4 elevationMap_{0.0f};
   glm::vec2 elevationSize_{0.0f};

@@ -78,6 +78,7 @@ TEST(OceanCell, RadianceFromTheVerticesDrawsTheSameSea) {
   const io::ImageRgba8 terms = r.display();
   EXPECT_TRUE(r.ocean().lastRadianceTerms());
   EXPECT_EQ(r.ocean().lastCellPixels(), 32);
+  EXPECT_TRUE(r.ocean().lastDrawCoversScreen());  // the globe then draws nothing
   r.ocean().setCellGrowth(false);
   r.render(f);
   const io::ImageRgba8 fine = r.display();
