@@ -68,7 +68,8 @@ TEST(OceanCell, GrownCellsDrawTheSameSea) {
 // is wide there (2 sigma cot 40°): 32-px cells (1.8°). Measured max 4, mean 0.26, 0.08 % of the
 // pixels over 2 levels; the quadratic cut to its linear part gives more than 1 %. Looking down
 // 12° at the Sun 5° up, the lobe across the view at the top of the screen is 1.8° wide: the
-// pixels keep their own radiance (and the cells their 32 px).
+// pixels keep their own radiance (and the cells their 32 px). Also with the programs that read
+// the wind and its tables per point (two bins).
 TEST(OceanCell, RadianceFromTheVerticesDrawsTheSameSea) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(data::defaultElevation());
@@ -91,7 +92,17 @@ TEST(OceanCell, RadianceFromTheVerticesDrawsTheSameSea) {
   }
   EXPECT_TRUE(c.within(bound)) << c.describe();
 
+  // The programs for a wind that is not constant along one bin (per-pixel wind and tables):
+  // the same sea.
   r.ocean().setCellGrowth(true);
+  r.ocean().setOneBinAllowed(false);
+  r.render(f);
+  EXPECT_TRUE(r.ocean().lastRadianceTerms());
+  EXPECT_FALSE(r.ocean().lastDrawOneBin());
+  const test::Comparison twoBins = test::compareRgb(r.display(), fine, 2);
+  EXPECT_TRUE(twoBins.within(bound)) << twoBins.describe();
+  r.ocean().setOneBinAllowed(true);
+
   r.render(test::frameOf({20.0, -40.0, 8000.0, 270.0, -12.0, 10.0, 320, 180}, 5.0, 270.0));
   EXPECT_FALSE(r.ocean().lastRadianceTerms());
   EXPECT_EQ(r.ocean().lastCellPixels(), 32);
