@@ -24,6 +24,14 @@ bool subPixel(double heightM, double pitchDeg, int width, int height, double fov
   pose.verticalFovDeg = fovDeg;
   return render::OceanRenderer::geometryIsSubPixel(geo::makeCameraView(pose, width, height), height, 1.98);
 }
+// 8 km up over the open Atlantic, heading west, looking down pitchDeg through a lens fovDeg tall
+// at 320x180, the Sun sunElevationDeg up at azimuth sunAzimuthDeg; the waves at 3 s.
+render::FrameInput lookingDown(double pitchDeg, double fovDeg, double sunElevationDeg, double sunAzimuthDeg) {
+  render::FrameInput f =
+      test::frameOf({20.0, -40.0, 8000.0, 270.0, pitchDeg, fovDeg, 320, 180}, sunElevationDeg, sunAzimuthDeg);
+  f.simulationTimeS = 3.0;
+  return f;
+}
 }  // namespace
 
 // The bench's views with their 1.98 m displacement bound (7 m/s): sea-8km grows at 720p (0.29 px
@@ -44,8 +52,7 @@ TEST(OceanCell, GrowsOnlyWhereTheGeometryIsSubPixelAndNoHorizonIsInView) {
 TEST(OceanCell, GrownCellsDrawTheSameSea) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(data::defaultElevation());
-  render::FrameInput f = test::frameOf({20.0, -40.0, 8000.0, 270.0, -30.0, 45.0, 320, 180}, 20.0, 250.0);
-  f.simulationTimeS = 3.0;
+  const render::FrameInput f = lookingDown(-30.0, 45.0, 20.0, 250.0);
   r.render(f);
   const io::ImageRgba8 grown = r.display();
   EXPECT_EQ(r.ocean().lastCellPixels(), 16);  // 32 px would be 8.4° across (kGrownCellMaxRad)
@@ -73,8 +80,7 @@ TEST(OceanCell, GrownCellsDrawTheSameSea) {
 TEST(OceanCell, RadianceFromTheVerticesDrawsTheSameSea) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(data::defaultElevation());
-  render::FrameInput f = test::frameOf({20.0, -40.0, 8000.0, 270.0, -50.0, 10.0, 320, 180}, 50.0, 250.0);
-  f.simulationTimeS = 3.0;
+  const render::FrameInput f = lookingDown(-50.0, 10.0, 50.0, 250.0);
   r.render(f);
   const io::ImageRgba8 terms = r.display();
   EXPECT_TRUE(r.ocean().lastRadianceTerms());
@@ -103,7 +109,7 @@ TEST(OceanCell, RadianceFromTheVerticesDrawsTheSameSea) {
   EXPECT_TRUE(twoBins.within(bound)) << twoBins.describe();
   r.ocean().setOneBinAllowed(true);
 
-  r.render(test::frameOf({20.0, -40.0, 8000.0, 270.0, -12.0, 10.0, 320, 180}, 5.0, 270.0));
+  r.render(lookingDown(-12.0, 10.0, 5.0, 270.0));
   EXPECT_FALSE(r.ocean().lastRadianceTerms());
   EXPECT_EQ(r.ocean().lastCellPixels(), 32);
 }

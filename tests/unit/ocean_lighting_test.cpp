@@ -24,6 +24,14 @@ glm::dvec3 dir(double zDeg, double aDeg) {
   return {std::sin(zDeg * kDeg) * std::cos(aDeg * kDeg), std::sin(zDeg * kDeg) * std::sin(aDeg * kDeg),
           std::cos(zDeg * kDeg)};
 }
+// A sky brighter at the horizon and a blue-green sea.
+lighting::Settings skyAndSea() {
+  lighting::Settings s;
+  s.skyZenithRadiance = {0.05, 0.08, 0.15};
+  s.skyHorizonRadiance = {0.1, 0.12, 0.15};
+  s.seaColorPerSr = {0.004, 0.012, 0.025};
+  return s;
+}
 lighting::Settings onlyTerm(int term) {
   lighting::Settings s;
   s.terms = glm::dvec4(0.0);
@@ -142,10 +150,7 @@ TEST(OceanLightingTwin, RefractedLightAndFoamFollowTheirFormulas) {
 // The shading happens in the point's own local frame: turning the whole scene (eye, normal,
 // wind, vertical, Sun) about the Earth's centre changes nothing, at a pole as elsewhere.
 TEST(OceanLightingTwin, ResultDoesNotDependOnWhereOnTheGlobeThePointIs) {
-  lighting::Settings s;
-  s.skyZenithRadiance = {0.05, 0.08, 0.15};
-  s.skyHorizonRadiance = {0.1, 0.12, 0.15};
-  s.seaColorPerSr = {0.004, 0.012, 0.025};
+  const lighting::Settings s = skyAndSea();
   lighting::SeaSample p;
   p.toSun = dir(60, 10);
   p.toEye = dir(55, 175);
@@ -175,10 +180,7 @@ TEST(OceanLightingTwin, ResultDoesNotDependOnWhereOnTheGlobeThePointIs) {
 // towards grazing; and its square terms matter: without them the worst pixel is several times
 // farther off.
 TEST(OceanRadianceTerms, QuadraticMatchesTheRadianceOverACellsPixels) {
-  lighting::Settings s;
-  s.skyZenithRadiance = {0.05, 0.08, 0.15};
-  s.skyHorizonRadiance = {0.1, 0.12, 0.15};
-  s.seaColorPerSr = {0.004, 0.012, 0.025};
+  const lighting::Settings s = skyAndSea();
   lighting::SlopePoint point;
   point.toSun = dir(60, 0);
   point.wind = glm::normalize(glm::dvec3(0.3, 1.0, 0.0));
