@@ -51,8 +51,10 @@ GRID_OUT vec2 vPatternMean;
 GRID_OUT vec3 vPatternCov;
 GRID_OUT vec2 vPatternJacobian;
 GRID_OUT float vPatternShare[PATTERN_COUNT];
+#ifndef PATTERN_BANDS_PER_PIXEL  // (else the pixels look the tables up themselves)
 GRID_OUT vec2 vPatternBand[PATTERN_COUNT];              // patternBands at the vertex's wind
 GRID_OUT vec3 vPatternAveragedFrom[PATTERN_COUNT + 1];
+#endif
 
 uniform vec3 uSunDirEcef;  // unit, ECEF axes
 #ifndef OCEAN_SIMPLE_SKY
@@ -80,7 +82,7 @@ void prepareRadianceTerms(vec2 xy, float pixelFootprintM, vec2 wind, PatternSums
   vec2 cellSlope = frameVector(uPatternAmplitude * coarse.mean);
   vec2 total = seaSlopeVarianceTotal(wind.x);
   float kept = sea.covariance.x + sea.covariance.y;
-  float spread = sqrt(max(0.5 * (total.x + total.y - kept), 0.125 * kept));
+  float spread = max(sqrt(max(0.5 * (total.x + total.y - kept), 0.125 * kept)), 1e-4);
   float dist = length(vRelative);
   vec3 v = -vRelative / dist;
   vec3 up = ellipsoidNormal(-v, dist);
@@ -91,9 +93,7 @@ void prepareRadianceTerms(vec2 xy, float pixelFootprintM, vec2 wind, PatternSums
   SeaRadianceTerms t = seaRadianceTerms(place, cellSlope, sea.covariance, spread);
   vec3 foam = foamRadiance(place.p);
 #ifndef OCEAN_SIMPLE_SKY
-  for (int i = 0; i < SEA_RADIANCE_TERMS; ++i) t.k[i] *= vTransmittance;
-  t.k[0] += vInscatter;
-  foam = foam * vTransmittance + vInscatter;
+  foldAerialPerspective(t, foam, vTransmittance, vInscatter);
 #endif
   packSeaRadianceTerms(t, foam, vRadianceTerms);
 }
@@ -137,16 +137,16 @@ vec4 gridVertex(int vertexId) {
   vPatternJacobian = coarse.jac;
   vPatternShare = coarse.share;
   PatternBands bands = patternBands(wind.x);
+#ifndef PATTERN_BANDS_PER_PIXEL
   vPatternBand = bands.band;
   vPatternAveragedFrom = bands.averagedFrom;
+#endif
 #ifndef OCEAN_SIMPLE_SKY
   float dist = length(vRelative);
   aerialPerspective(vRelative / dist, dist, uSunDirEcef, vTransmittance, vInscatter);
 #endif
 #ifdef OCEAN_RADIANCE_TERMS
   prepareRadianceTerms(local.xy, pixelCell / uCellPixels, wind, coarse, bands);
-#endif
-#ifdef OCEAN_RADIANCE_TERMS
   // Large cells of sub-pixel waves (render/OceanRenderer::layOutGridOnBlocks): the vertex on
   // its grid point, the cells' edges between the rasteriser's pixel blocks; the displaced
   // point (vRelative) shades.

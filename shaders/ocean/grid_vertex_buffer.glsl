@@ -20,7 +20,13 @@ layout(std430, binding = 4) readonly buffer GridVertices { vec4 gridVertices[]; 
 #ifdef OCEAN_RADIANCE_TERMS
 // The vertices' radiance terms (vRadianceTerms, SEA_RADIANCE_VEC4S each), for the forward draw of
 // large cells (render/OceanRenderer::draw, computeGridVertices).
-layout(std430, binding = 8) buffer GridRadianceTerms { vec4 gridRadianceTerms[]; };  // kGridRadianceTermsBinding
+// Binding 7 as grid_near_land.comp's NearLandIndices (GL 4.5 guarantees bindings 0-7; each pass
+// binds its own buffer there).
+#ifdef GRID_VERTEX_STORE
+layout(std430, binding = 7) writeonly buffer GridRadianceTerms { vec4 gridRadianceTerms[]; };  // kGridRadianceTermsBinding
+#else
+layout(std430, binding = 7) readonly buffer GridRadianceTerms { vec4 gridRadianceTerms[]; };
+#endif
 #endif
 
 #ifdef GRID_VERTEX_STORE

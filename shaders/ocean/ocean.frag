@@ -33,14 +33,16 @@ SEA_IN vec2 vPatternMean;  // the patterns the grid's vertices looked up (ocean/
 SEA_IN vec3 vPatternCov;
 SEA_IN vec2 vPatternJacobian;
 SEA_IN float vPatternShare[PATTERN_COUNT];
-#ifndef OCEAN_DEFERRED
+#ifndef PATTERN_BANDS_PER_PIXEL  // (the deferred sea and the radiance terms look the tables up)
 in vec2 vPatternBand[PATTERN_COUNT];  // patternBands at the vertex's wind
 in vec3 vPatternAveragedFrom[PATTERN_COUNT + 1];
 #endif
 #ifdef OCEAN_RADIANCE_TERMS
-in vec4 vRadianceTerms[SEA_RADIANCE_VEC4S];  // the sea's radiance in the cell (ocean/grid.vert)
+// The sea's radiance in the cell, the aerial perspective folded in (ocean/grid_vertex.glsl's
+// prepareRadianceTerms, from ocean/grid_cached.vert).
+in vec4 vRadianceTerms[SEA_RADIANCE_VEC4S];
 #endif
-#ifndef OCEAN_SIMPLE_SKY
+#if !defined(OCEAN_SIMPLE_SKY) && !defined(OCEAN_RADIANCE_TERMS)
 SEA_IN vec3 vTransmittance;  // aerial perspective, per vertex (ocean/grid.vert)
 SEA_IN vec3 vInscatter;
 #endif
@@ -81,7 +83,7 @@ void main() {
   vec2 wind = localWind(latLon);  // speed, azimuth
   SeaSurface sea = oceanSurface(vOceanXY, max(footprint, 1e-4), wind,
                                 PatternSums(vPatternMean, vPatternCov, vPatternJacobian, vPatternShare),
-#ifdef OCEAN_DEFERRED
+#ifdef PATTERN_BANDS_PER_PIXEL
                                 PatternBands(vec2[PATTERN_COUNT](vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0)),
                                              vec3[PATTERN_COUNT + 1](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0),
                                                                      vec3(0.0), vec3(0.0))));  // unread
@@ -141,7 +143,7 @@ void main() {
 #endif
 }
 
-#ifdef OCEAN_SIMPLE_SKY
+#if defined(OCEAN_SIMPLE_SKY) || defined(OCEAN_RADIANCE_TERMS)  // (the terms carry it)
 vec3 oceanSurfaceRadiance(vec3 relative, vec3 radiance) { return radiance; }
 #else
 vec3 oceanSurfaceRadiance(vec3 relative, vec3 radiance) { return radiance * vTransmittance + vInscatter; }

@@ -9,9 +9,10 @@
 // slope covariance it leaves to the BRDF, c = (xx, yy, xy) in the local wind's frame (Bruneton
 // 2010 Eqs. 3-4). Those two vary from pixel to pixel by a fraction of the BRDF's own width (the
 // unresolved slopes' standard deviation), so the radiance is close to a quadratic in them
-// around the cell's values: the vertex evaluates it 11 times (at the expansion point and a step
-// either side in each of the five variables), the triangle interpolates the quadratic's
-// coefficients, and the pixel evaluates the quadratic at its own s and c.
+// around the cell's values: the vertex evaluates it 13 times (at the expansion point, a step
+// either side in each of the five variables, and two diagonal steps for the slopes' cross
+// term), the triangle interpolates the quadratic's coefficients, and the pixel evaluates the
+// quadratic at its own s and c.
 //
 // Written in the twins' subset (common/types.glsl): src/ocean/Lighting.cpp compiles this file as
 // C++ (ocean::lighting::seaRadianceTerms, its tests).
@@ -106,8 +107,10 @@ SeaRadianceTerms seaRadianceTerms(SeaPlace place, vec2 slope, vec3 cov, Number s
   t.k[1] -= m * slope.y;
   t.k[2] -= m * slope.x;
   t.k[11] = m;
-  vec3 var = max(cov, vec3(1e-6, 1e-6, 0.0));
-  vec3 hc = 0.1 * vec3(var.x, var.y, sqrt(var.x * var.y));
+  // Steps that keep the covariance a covariance: a tenth of each variance, and of the cross
+  // term's room, sqrt(xx yy - xy²).
+  vec2 var = max(vec2(cov.x, cov.y), vec2(1e-7));
+  vec3 hc = 0.1 * vec3(var.x, var.y, sqrt(max(var.x * var.y - cov.z * cov.z, 1e-14)));
   vec3 cx = vec3(hc.x, 0.0, 0.0), cy = vec3(0.0, hc.y, 0.0), cxy = vec3(0.0, 0.0, hc.z);
   addSeaRadianceTerm(t, 2, cov.x, hc.x, r0, clearSeaRadiance(place, slope, cov + cx),
                      clearSeaRadiance(place, slope, cov - cx));
@@ -118,11 +121,22 @@ SeaRadianceTerms seaRadianceTerms(SeaPlace place, vec2 slope, vec3 cov, Number s
   return t;
 }
 
-// The quadratic's value at a pixel's mean slope and covariance.
+// The quadratic's value at a pixel's mean slope and covariance (never below 0: far past its
+// steps a quadratic about the glint's peak turns negative).
 vec3 seaRadianceOfTerms(SeaRadianceTerms t, vec2 slope, vec3 cov) {
-  return t.k[0] + (t.k[1] + t.k[6] * slope.x) * slope.x + (t.k[2] + t.k[7] * slope.y) * slope.y +
-         (t.k[3] + t.k[8] * cov.x) * cov.x + (t.k[4] + t.k[9] * cov.y) * cov.y +
-         (t.k[5] + t.k[10] * cov.z) * cov.z + t.k[11] * (slope.x * slope.y);
+  return max(t.k[0] + (t.k[1] + t.k[6] * slope.x) * slope.x + (t.k[2] + t.k[7] * slope.y) * slope.y +
+                 (t.k[3] + t.k[8] * cov.x) * cov.x + (t.k[4] + t.k[9] * cov.y) * cov.y +
+                 (t.k[5] + t.k[10] * cov.z) * cov.z + t.k[11] * (slope.x * slope.y),
+             vec3(0.0));
+}
+
+// The aerial perspective folded into the terms and the foam's radiance: each times the path's
+// transmittance, the light scattered in added to the constant and to the foam, so that
+// mixFoam(seaRadianceOfTerms(t, s, c), foam, W) is the per-pixel mixFoam(R, F, W) T + I.
+void foldAerialPerspective(INOUT(SeaRadianceTerms) t, INOUT(vec3) foam, vec3 transmittance, vec3 inscatter) {
+  for (int i = 0; i < SEA_RADIANCE_TERMS; ++i) t.k[i] = t.k[i] * transmittance;
+  t.k[0] = t.k[0] + inscatter;
+  foam = foam * transmittance + inscatter;
 }
 
 #ifndef OG_GLSL_SHIM

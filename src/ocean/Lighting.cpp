@@ -48,6 +48,17 @@ void setUniforms(const Settings& s) {
   glsl::uLightingTerms = s.terms;
   glsl::gSeaSunVisibility = s.sunVisibility;
 }
+
+glsl::SeaRadianceTerms toGlsl(const RadianceTerms& terms) {
+  glsl::SeaRadianceTerms t;
+  for (std::size_t i = 0; i < terms.k.size(); ++i) t.k[i] = terms.k[i];
+  return t;
+}
+RadianceTerms fromGlsl(const glsl::SeaRadianceTerms& t) {
+  RadianceTerms terms;
+  for (std::size_t i = 0; i < terms.k.size(); ++i) terms.k[i] = t.k[i];
+  return terms;
+}
 }  // namespace
 
 glm::dvec3 seaRadiance(const Settings& settings, const SeaSample& p) {
@@ -77,17 +88,25 @@ RadianceTerms seaRadianceTerms(const Settings& settings, const SlopePoint& point
                                const glm::dvec3& cov, double slopeStep) {
   const std::lock_guard lock(kUniformsLock);
   setUniforms(settings);
-  const glsl::SeaRadianceTerms t = glsl::seaRadianceTerms(
-      glsl::seaPlace(point.toEye, point.oceanToEcef, point.wind, point.up, point.toSun), slope, cov, slopeStep);
-  RadianceTerms r;
-  for (std::size_t i = 0; i < r.k.size(); ++i) r.k[i] = t.k[i];
-  return r;
+  return fromGlsl(glsl::seaRadianceTerms(
+      glsl::seaPlace(point.toEye, point.oceanToEcef, point.wind, point.up, point.toSun), slope, cov, slopeStep));
 }
 
 glm::dvec3 seaRadianceOfTerms(const RadianceTerms& terms, const glm::dvec2& slope, const glm::dvec3& cov) {
-  glsl::SeaRadianceTerms t;
-  for (std::size_t i = 0; i < terms.k.size(); ++i) t.k[i] = terms.k[i];
-  return glsl::seaRadianceOfTerms(t, slope, cov);
+  return glsl::seaRadianceOfTerms(toGlsl(terms), slope, cov);
+}
+
+void foldAerialPerspective(RadianceTerms& terms, glm::dvec3& foam, const glm::dvec3& transmittance,
+                           const glm::dvec3& inscatter) {
+  glsl::SeaRadianceTerms t = toGlsl(terms);
+  glsl::foldAerialPerspective(t, foam, transmittance, inscatter);
+  terms = fromGlsl(t);
+}
+
+glm::dvec3 mixFoam(const Settings& settings, const glm::dvec3& clear, const glm::dvec3& foam, double coverage) {
+  const std::lock_guard lock(kUniformsLock);
+  setUniforms(settings);
+  return glsl::mixFoam(clear, foam, coverage);
 }
 
 glm::dvec3 sunIrradiance(double sunZenithRad) { return glsl::sunIrradiance(sunZenithRad); }

@@ -64,8 +64,16 @@ glm::dvec3 clearSeaRadiance(const Settings& settings, const SlopePoint& point, c
 /// the covariance's entries (seaRadianceTerms).
 RadianceTerms seaRadianceTerms(const Settings& settings, const SlopePoint& point, const glm::dvec2& slope,
                                const glm::dvec3& cov, double slopeStep);
-/// The quadratic's value (seaRadianceOfTerms).
+/// The quadratic's value (seaRadianceOfTerms), >= 0.
 glm::dvec3 seaRadianceOfTerms(const RadianceTerms& terms, const glm::dvec2& slope, const glm::dvec3& cov);
+/// The aerial perspective folded into the terms and the foam's radiance
+/// (foldAerialPerspective): each times `transmittance`, `inscatter` added to the constant and
+/// to the foam.
+void foldAerialPerspective(RadianceTerms& terms, glm::dvec3& foam, const glm::dvec3& transmittance,
+                           const glm::dvec3& inscatter);
+/// The clear sea's and the foam's radiance mixed by the foam's coverage, [0, 1], and the
+/// settings' foam weight (mixFoam).
+glm::dvec3 mixFoam(const Settings& settings, const glm::dvec3& clear, const glm::dvec3& foam, double coverage);
 
 /// Sun and sky irradiance at sea level of the analytic sky for a Sun zenith angle, rad, [0, pi].
 glm::dvec3 sunIrradiance(double sunZenithRad);

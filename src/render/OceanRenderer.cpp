@@ -318,29 +318,36 @@ double OceanRenderer::slopeVarianceFloor(const OceanPatterns& patterns, const Wi
   return floor;
 }
 
-double OceanRenderer::mostGrazingSeaZenithRad(const geo::CameraView& view) {
+glm::dvec2 OceanRenderer::seaZenithRangeRad(const geo::CameraView& view) {
   const double r = geo::kWgs84SemiMajorM, h = std::max(view.position.heightM, 0.1);
   const glm::dvec3 eye = (r + h) * view.enu.up;
-  double most = 0.0;
+  glm::dvec2 range(0.5 * std::numbers::pi, 0.0);
   for (const double sy : {-1.0, 0.0, 1.0})
     for (const double sx : {-1.0, 0.0, 1.0}) {
       const glm::dvec3 dir = view.rayDirection(sx, sy);
       const std::optional<double> t = seaSphereHitM(h, view.enu.up, dir);
-      if (!t) return 0.5 * std::numbers::pi;
-      most = std::max(most, std::acos(std::clamp(-glm::dot(dir, (eye + *t * dir) / r), -1.0, 1.0)));
+      if (!t) return {range.x, 0.5 * std::numbers::pi};
+      const double zenith = std::acos(std::clamp(-glm::dot(dir, (eye + *t * dir) / r), -1.0, 1.0));
+      range = {std::min(range.x, zenith), std::max(range.y, zenith)};
     }
-  return most;
+  const glm::dvec3 down = -view.enu.up;  // the nadir in view: 0
+  const double ahead = glm::dot(down, view.forward), tanY = std::tan(0.5 * view.verticalFovRad);
+  if (ahead > 0.0 && std::abs(glm::dot(down, view.right)) <= tanY * view.aspect * ahead &&
+      std::abs(glm::dot(down, view.up)) <= tanY * ahead)
+    range.x = 0.0;
+  return range;
 }
 
 double OceanRenderer::radianceTermsMaxCellRad(const geo::CameraView& view, const glm::dvec3& sunDirectionEcef,
                                               const OceanPatterns& patterns, const WindTextures& wind) {
   // The glint's lobe seen across the view at zenith angle theta: a facet tilted sideways by
-  // sigma turns the reflected ray's azimuth by ~2 sigma cot(theta). It lies where the view's
-  // zenith angle is 90° less the Sun's elevation, and no sea in view is more grazing than the
-  // view's top.
+  // sigma turns the reflected ray's azimuth by ~2 sigma cot(theta), on the screen 2 sigma
+  // cos(theta). It lies where the view's zenith angle is 90° less the Sun's elevation, taken
+  // within the zenith angles of the sea in view.
   const double sunElevation = std::asin(std::clamp(glm::dot(glm::normalize(sunDirectionEcef), view.enu.up), -1.0, 1.0));
-  const double zenith = std::min(mostGrazingSeaZenithRad(view), 0.5 * std::numbers::pi - std::max(sunElevation, 0.0));
-  const double lobeRad = 2.0 * std::sqrt(slopeVarianceFloor(patterns, wind)) / std::max(std::tan(zenith), 1e-6);
+  const glm::dvec2 range = seaZenithRangeRad(view);
+  const double zenith = std::clamp(0.5 * std::numbers::pi - std::max(sunElevation, 0.0), range.x, range.y);
+  const double lobeRad = 2.0 * std::sqrt(slopeVarianceFloor(patterns, wind)) * std::cos(zenith);
   return std::min(kRadianceTermsMaxCellLobes * lobeRad, kGrownCellMaxRad);
 }
 
@@ -401,7 +408,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     if (radianceTerms_ && mode_ == ValidationMode::Filtered && (features & (kFeatureWaterVolume | kFeatureShadows)) == 0 &&
         !drawsClassified(lighting, features)) {
       frameCellPixels_ = grownCellPixels(view, height, radianceTermsMaxCellRad(view, lighting.sunDirectionEcef, patterns, wind));
-      termsCells = frameCellPixels_ >= kDeferredMaxCellPixels;
+      termsCells = frameCellPixels_ > cellPixels_ && frameCellPixels_ >= kDeferredMaxCellPixels;  // grown
     }
     if (!termsCells) frameCellPixels_ = grownCellPixels(view, height, kGrownCellMaxRad);
   }

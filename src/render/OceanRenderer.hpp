@@ -153,7 +153,7 @@ class OceanRenderer {
   /// Whether the grid's vertices may hand the pixels of grown cells their radiance as a
   /// quadratic in the pixel's mean slope and slope covariance (ocean/radiance_terms.glsl,
   /// OCEAN_RADIANCE_TERMS); on by default. Where they do, the cells grow only to
-  /// kRadianceTermsMaxCellSigma of the BRDF's width, and only for the forward draw's open sea:
+  /// kRadianceTermsMaxCellLobes of the glint's width, and only for the forward draw's open sea:
   /// the filtered model's picture (not a validation variant), neither the water volume nor the
   /// terrain's shadows (terms per pixel the quadratic does not carry), no sea classes.
   void setRadianceTerms(bool on) { radianceTerms_ = on; }
@@ -184,7 +184,7 @@ class OceanRenderer {
   /// (setRadianceTerms), in widths of the glint's lobe across the view
   /// (radianceTermsMaxCellRad): the triangles interpolate the quadratic's coefficients, which
   /// curve over the screen as fast as the lobe is narrow.
-  static constexpr double kRadianceTermsMaxCellLobes = 0.21;
+  static constexpr double kRadianceTermsMaxCellLobes = 0.23;
 
   /// Draws the sea into the bound framebuffer (width x height), depth-tested. `patterns` must
   /// hold the sea at `timeS` (OceanPatterns::update). `amplitudeScale` in [0, 1] fades the
@@ -217,7 +217,7 @@ class OceanRenderer {
   static constexpr int kGridVertexVec4s = 10;
   /// ocean/grid_vertex_buffer.glsl's GridRadianceTerms and its vec4s per vertex
   /// (ocean/radiance_terms.glsl's SEA_RADIANCE_VEC4S).
-  static constexpr GLuint kGridRadianceTermsBinding = 8;
+  static constexpr GLuint kGridRadianceTermsBinding = 7;  ///< kNearLandIndicesBinding's too (GL 4.5 guarantees 0-7): each pass binds its own
   static constexpr int kGridRadianceTermsVec4s = 10;
   /// All the grid's vertices by `compute` (ocean/grid_vertices.comp, its uniforms set) into
   /// gridVertices_, and with `radianceTerms` their radiance terms into gridRadianceTerms_:
@@ -309,13 +309,14 @@ class OceanRenderer {
   /// tables, bands and tail) at the winds the frame may meet: the constant wind's two table
   /// columns, or every column up to the wind layers' fastest.
   [[nodiscard]] static double slopeVarianceFloor(const OceanPatterns& patterns, const WindTextures& wind);
-  /// The largest zenith angle (rad) at which the view's rays (corners and edges' middles) meet
-  /// the sea (the sphere of the semi-major axis); pi/2 if one misses it.
-  [[nodiscard]] static double mostGrazingSeaZenithRad(const geo::CameraView& view);
+  /// The smallest and largest zenith angles (rad) at which the view's rays (corners, edges'
+  /// middles, centre) meet the sea (the sphere of the semi-major axis): 0 for the smallest with
+  /// the nadir in view, pi/2 for the largest if a ray misses it.
+  [[nodiscard]] static glm::dvec2 seaZenithRangeRad(const geo::CameraView& view);
   /// The largest cell (rad) for the vertices' radiance quadratic: kRadianceTermsMaxCellLobes
-  /// of the glint's narrowest lobe across the view, 2 sigma cot(theta), sigma² the
+  /// of the glint's narrowest lobe across the view, 2 sigma cos(theta), sigma² the
   /// slopeVarianceFloor and theta the view's zenith angle where the Sun's glint lies (90° less
-  /// its elevation at the camera), at most the view's most grazing; and kGrownCellMaxRad at most.
+  /// its elevation at the camera), within seaZenithRangeRad; and kGrownCellMaxRad at most.
   [[nodiscard]] static double radianceTermsMaxCellRad(const geo::CameraView& view, const glm::dvec3& sunDirectionEcef,
                                                       const OceanPatterns& patterns, const WindTextures& wind);
   /// The cell size (pixels) grown kGrownCellFactor- or 2-fold, the largest no wider than
@@ -323,7 +324,8 @@ class OceanRenderer {
   [[nodiscard]] int grownCellPixels(const geo::CameraView& view, int height, double maxCellRad) const;
   /// The grid's rows for frameCellPixels_ (gridRowsNdc_, gridCoarseRows_) and its buffers.
   void layOutGrid(int width, int height, double side, double bottom, OceanModel model);
-  /// The grid of the radiance terms' cells (frameCellPixels_, a multiple of 4): its vertices on
+  /// The grid of the radiance terms' cells (frameCellPixels_: 16 or 32 with the default 8-px
+  /// cells; the blocks' edges are met when it is a multiple of 4): its vertices on
   /// whole pixels every frameCellPixels_ from the screen's corner, where ocean/grid_vertex.glsl
   /// keeps them (OCEAN_RADIANCE_TERMS: the waves move no point by half a pixel there), so that
   /// the cells' edges lie between llvmpipe's 4 x 4 pixel blocks: a block an edge crosses is

@@ -218,3 +218,28 @@ TEST(OceanRadianceTerms, QuadraticMatchesTheRadianceOverACellsPixels) {
   EXPECT_LT(worst, 0.05);  // of the radiance's length: 0.040 measured
   EXPECT_GT(worstLinear, 4.0 * worst) << worstLinear;
 }
+
+// The aerial perspective folded into the vertices' terms (foldAerialPerspective): the pixel's
+// mix of the folded quadratic and foam is the per-pixel radiance's, mixFoam(R, F, W) T + I, at
+// any mean slope, covariance and whitecap coverage.
+TEST(OceanRadianceTerms, FoldedAerialPerspectiveIsTheRadiancesThroughThePath) {
+  const lighting::Settings s = skyAndSea();
+  lighting::SlopePoint point;
+  point.toSun = dir(50, 0);
+  point.toEye = dir(45, 170);
+  const glm::dvec2 slope(0.01, 0.02);
+  const glm::dvec3 cov(0.018, 0.011, 0.001);
+  const lighting::RadianceTerms t = lighting::seaRadianceTerms(s, point, slope, cov, 0.05);
+  const glm::dvec3 foam(0.3, 0.31, 0.32), transmittance(0.7, 0.8, 0.9), inscatter(0.02, 0.03, 0.05);
+  lighting::RadianceTerms folded = t;
+  glm::dvec3 foldedFoam = foam;
+  lighting::foldAerialPerspective(folded, foldedFoam, transmittance, inscatter);
+  for (const double w : {0.0, 0.3, 1.0}) {
+    const glm::dvec2 ps = slope + glm::dvec2(0.03, -0.02);
+    const glm::dvec3 pc = cov * 1.1;
+    const glm::dvec3 expected =
+        lighting::mixFoam(s, lighting::seaRadianceOfTerms(t, ps, pc), foam, w) * transmittance + inscatter;
+    const glm::dvec3 got = lighting::mixFoam(s, lighting::seaRadianceOfTerms(folded, ps, pc), foldedFoam, w);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], expected[c], 1e-12) << w;
+  }
+}
