@@ -87,7 +87,7 @@ void addSeaRadianceTerm(INOUT(SeaRadianceTerms) t, int d, Number e, Number h, ve
 
 // The quadratic around the cell's mean slope `slope` and a pixel's covariance there `cov`, with
 // steps of `slopeStep` (the spread of the pixels' mean slopes about it, > 0) and a tenth of each
-// covariance entry (of the geometric mean of the variances for the cross term): 13 radiances.
+// variance and of the cross term's room (below): 13 radiances.
 SeaRadianceTerms seaRadianceTerms(SeaPlace place, vec2 slope, vec3 cov, Number slopeStep) {
   SeaRadianceTerms t;
   vec3 r0 = clearSeaRadiance(place, slope, cov);
