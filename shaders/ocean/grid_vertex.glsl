@@ -86,10 +86,7 @@ void prepareRadianceTerms(vec2 xy, float pixelFootprintM, vec2 wind, PatternSums
   float dist = length(vRelative);
   vec3 v = -vRelative / dist;
   vec3 up = ellipsoidNormal(-v, dist);
-  mat3 local = localFrame(up);
-  vec2 windSinCos = windAzimuthSinCos(wind);
-  vec3 windDir = windSinCos.x * local[0] + windSinCos.y * local[1];
-  SeaPlace place = seaPlace(v, transpose(uEcefToOcean), windDir, up, uSunDirEcef);
+  SeaPlace place = seaPlace(v, transpose(uEcefToOcean), windDirectionEcef(windAzimuthSinCos(wind), up), up, uSunDirEcef);
   SeaRadianceTerms t = seaRadianceTerms(place, cellSlope, sea.covariance, spread);
   vec3 foam = foamRadiance(place.p);
 #ifndef OCEAN_SIMPLE_SKY

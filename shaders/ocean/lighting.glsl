@@ -63,6 +63,13 @@ mat3 localFrame(vec3 upE) {
   return mat3(east, cross(upE, east), upE);
 }
 
+// The horizontal unit vector (ECEF axes) towards the azimuth whose (sin, cos) is
+// `azimuthSinCos` (clockwise from north) at a point of vertical upE: a wind's direction.
+vec3 windDirectionEcef(vec2 azimuthSinCos, vec3 upE) {
+  mat3 local = localFrame(upE);
+  return azimuthSinCos.x * local[0] + azimuthSinCos.y * local[1];
+}
+
 // The view, the Sun and the surface in the point's local frame, and the light arriving there.
 struct SeaPoint {
   vec3 v, n, l, tx, ty;  // to the eye, normal, to the Sun, tangents along/across the wind

@@ -107,9 +107,7 @@ void main() {
                        (max(dot(v, nGeometry), 1e-3) * max(dot(n, nGeometry), 1e-3));
 #endif
   n = seaNormalFacing(n, v);  // back-facing normals seen at grazing angles (§5.1)
-  mat3 local = localFrame(up);
-  vec2 windSinCos = windAzimuthSinCos(wind);
-  vec3 windDir = windSinCos.x * local[0] + windSinCos.y * local[1];
+  vec3 windDir = windDirectionEcef(windAzimuthSinCos(wind), up);
 #ifdef OCEAN_VALIDATION_REFERENCE
   // Validation reference: a mirror per sample, the Sun's disc integrated over the sample's patch.
   vec3 patchCov = referencePatchCovariance(dSlopeDx, dSlopeDy, wind.y);

@@ -162,12 +162,8 @@ vec3 shadeLand(vec3 albedo, float muS, vec3 sunIrr, vec3 skyIrr) {
 // code as the projected grid (ocean/lighting.glsl), so the switch between the two is invisible.
 float gSeaFoam = 0.0;  // whitecap coverage of the last shadeSea (the auxiliary output)
 vec3 shadeSea(vec3 v, vec3 n, float footprintRad) {
-  vec3 east = cross(vec3(0.0, 0.0, 1.0), n);
-  east = dot(east, east) > 1e-12 ? normalize(east) : vec3(0.0, 1.0, 0.0);
-  vec3 north = cross(n, east);
   vec2 w = localWind(latLonOfNormal(n));  // speed, azimuth (PATTERN_CONSTANT_WIND: uniforms)
-  vec2 azimuthSinCos = windAzimuthSinCos(w);
-  vec3 wind = azimuthSinCos.x * east + azimuthSinCos.y * north;
+  vec3 wind = windDirectionEcef(windAzimuthSinCos(w), n);
   float foam = whitecapCoverage(vec2(1.0, seaJacobianVarianceTotal(w.x)));
   gSeaFoam = foam;
 #if GLOBE_PART == GLOBE_PART_OPEN_SEA
