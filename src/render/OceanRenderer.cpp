@@ -30,6 +30,14 @@ std::optional<double> seaSphereHitM(double heightM, const glm::dvec3& up, const 
   return b - std::sqrt(disc);
 }
 
+/// Whether the point straight below the eye is on the screen.
+bool nadirInView(const geo::CameraView& view) {
+  const glm::dvec3 down = -view.enu.up;
+  const double ahead = glm::dot(down, view.forward), tanY = std::tan(0.5 * view.verticalFovRad);
+  return ahead > 0.0 && std::abs(glm::dot(down, view.right)) <= tanY * view.aspect * ahead &&
+         std::abs(glm::dot(down, view.up)) <= tanY * ahead;
+}
+
 // The classic model's textures (seed 002): a tileable ripple normal map (sum of sines with
 // integer frequencies over the tile, so it repeats seamlessly) and the 1D Fresnel ramp.
 gl::Texture makeBumpMap() {
@@ -187,11 +195,7 @@ bool OceanRenderer::geometryIsSubPixel(const geo::CameraView& view, int height, 
       if (-glm::dot(dir, (eye + *t * dir) / r) < std::sin(kGrownCellMinGrazingRad)) return false;
       nearestM = std::min(nearestM, *t);
     }
-  const glm::dvec3 down = -view.enu.up;
-  const double ahead = glm::dot(down, view.forward);
-  if (ahead > 0.0 && std::abs(glm::dot(down, view.right)) <= tanX * ahead &&
-      std::abs(glm::dot(down, view.up)) <= tanY * ahead)
-    nearestM = h;
+  if (nadirInView(view)) nearestM = h;
   // The waves move no point by more than displacementBoundM: its largest angle, at the nearest
   // sea point, in pixels where the screen magnifies most (a corner: a rectilinear projection's
   // pixels per radian grow as 1 + tan² of the angle off its axis).
@@ -330,11 +334,7 @@ glm::dvec2 OceanRenderer::seaZenithRangeRad(const geo::CameraView& view) {
       const double zenith = std::acos(std::clamp(-glm::dot(dir, (eye + *t * dir) / r), -1.0, 1.0));
       range = {std::min(range.x, zenith), std::max(range.y, zenith)};
     }
-  const glm::dvec3 down = -view.enu.up;  // the nadir in view: 0
-  const double ahead = glm::dot(down, view.forward), tanY = std::tan(0.5 * view.verticalFovRad);
-  if (ahead > 0.0 && std::abs(glm::dot(down, view.right)) <= tanY * view.aspect * ahead &&
-      std::abs(glm::dot(down, view.up)) <= tanY * ahead)
-    range.x = 0.0;
+  if (nadirInView(view)) range.x = 0.0;
   return range;
 }
 
@@ -400,13 +400,14 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
   glm::vec4 margin(static_cast<float>(side), static_cast<float>(side), static_cast<float>(bottom),
                    0.1f);  // left, right, bottom, top
   unsigned features = frameFeatures(view, patterns, timeS, lighting, model);
+  const bool classified = model == OceanModel::Bruneton && drawsClassified(lighting, features);
   // Grown cells where the geometry is sub-pixel: small enough for the vertices' radiance
   // quadratic where that may serve (the forward draw's open sea), else up to kGrownCellMaxRad.
   frameCellPixels_ = cellPixels_;
   bool termsCells = false;
   if (model == OceanModel::Bruneton && cellGrowth_ && geometryIsSubPixel(view, height, amplitudeScale * amplitude)) {
     if (radianceTerms_ && mode_ == ValidationMode::Filtered && (features & (kFeatureWaterVolume | kFeatureShadows)) == 0 &&
-        !drawsClassified(lighting, features)) {
+        !classified) {
       frameCellPixels_ = grownCellPixels(view, height, radianceTermsMaxCellRad(view, lighting.sunDirectionEcef, patterns, wind));
       termsCells = frameCellPixels_ > cellPixels_ && frameCellPixels_ >= kDeferredMaxCellPixels;  // grown
     }
@@ -449,7 +450,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
              depthStencil != 0 && (gl::driverProfile().stencilExport || deferredWithoutExport_)) {
     lastDeferred_ = true;
     drawDeferred(view, width, height, patterns, frame, lighting, amplitudeScale, wind, features, margin, depthStencil);
-  } else if (drawsClassified(lighting, features)) {  // sea_classify.frag
+  } else if (classified) {  // sea_classify.frag
     drawClassified(view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
   } else {
     lastRadianceTerms_ = termsCells;
