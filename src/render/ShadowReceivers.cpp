@@ -35,8 +35,12 @@ LightRect shadowReceiverRect(const geo::CameraView& view, const glm::dvec3& lx, 
         addStretch(dir, enter, leave);
         continue;
       }
-      if (under->first > enter) addStretch(dir, enter, under->first);
-      if (under->second < leave) addStretch(dir, under->second, leave);
+      // Below lowM all is ground: a ray that reaches it from above stops there (the stretch
+      // past its far crossing lies behind the planet); one from an eye below it leaves it.
+      if (under->first > enter)
+        addStretch(dir, enter, under->first);
+      else if (under->second < leave)
+        addStretch(dir, under->second, leave);
     }
   if (rect.empty()) return rect;
   // Between neighbouring rays: their angle (at most a step of tan) at the farthest point, and

@@ -17,6 +17,7 @@
 #include "geo/Sun.hpp"
 #include "gl/Context.hpp"
 #include "render/GlobeRenderer.hpp"
+#include "render/ShadowReceivers.hpp"
 #include "support/GlFixtures.hpp"
 #include "support/GridFixtures.hpp"
 
@@ -267,6 +268,26 @@ const ViewCase kGibraltar2m{"gibraltar_2m", {.latDeg = 36.0, .lonDeg = -5.5, .he
 const ViewCase kGibraltar30km{"gibraltar_30km", {.latDeg = 35.6, .lonDeg = -5.6, .heightM = 30000.0, .headingDeg = 0.0, .pitchDeg = -30.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0};
 
 }  // namespace
+
+TEST(ShadowReceivers, RaysStopAtTheGroundUnderTheSlab) {
+  // From 2 m over Gibraltar's strait towards a Sun 20° up, the slab of the tiles' heights
+  // (-1100 m to 1600 m): a ray below the horizon meets the slab's floor, under which all is
+  // ground. Its stretch past the floor's far crossing lies behind the planet, 12 700 km on:
+  // projected across the Sun's rays it stretched the rectangle to 3700 km, and the padding
+  // between rays (the farthest end's angle) with it. Every point the view can show within
+  // the slab lies within its upper surface's horizon (~290 km) of the eye.
+  const render::FrameInput f = test::frameOf(kGibraltar2m.view, kGibraltar2m.sunElevationDeg, kGibraltar2m.sunAzimuthDeg);
+  const geo::CameraView view = geo::makeCameraView(f.camera, f.width, f.height);
+  const glm::dvec3 s = glm::normalize(f.sunDirectionEcef);
+  const glm::dvec3 lx = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), s)), ly = glm::cross(s, lx);
+  const render::LightRect rect = render::shadowReceiverRect(view, lx, ly, 0.0, 1e9, -1100.0, 1600.0);
+  ASSERT_FALSE(rect.empty());
+  for (const double v : {rect.lo.x, rect.lo.y, rect.hi.x, rect.hi.y}) EXPECT_LT(std::abs(v), 4.0e5);
+  // The far cascade's reach (render::TerrainRenderer, 20 km at 2 m) and the view's half
+  // across it: the rectangle holds the near receivers.
+  EXPECT_LT(rect.lo.x, -1.0e4);
+  EXPECT_GT(rect.hi.x - rect.lo.x, 2.0e4);
+}
 
 TEST(TerrainRender, ShadowMapsCroppedToTheReceiversKeepThePicture) {
   auto ctx = gl::createHeadlessContext();
