@@ -23,10 +23,12 @@ float terrainSnowLineM(float latitudeDeg) {
 // A beach's width, m: the sand band covers this much of a pixel's footprint on the coast.
 const float TERRAIN_BEACH_WIDTH_M = 100.0;
 
+// snowLineM: terrainSnowLineM at the point's latitude (the caller's, shared with
+// terrainAlbedoOverImagery: its loop is a tenth of the terrain's pixel from orbit on llvmpipe).
 // footprintM: the pixel's footprint on the ground, m: where it is wider than a beach, the
 // sand takes only the beach's share of it (from orbit a coast pixel spans kilometres: all
 // sand, it sparkled along every coastline).
-vec3 terrainAlbedo(float heightM, float slope, float latitudeRad, float footprintM) {
+vec3 terrainAlbedo(float heightM, float slope, float latitudeRad, float snowLineM, float footprintM) {
   const vec3 sand = vec3(0.35, 0.30, 0.20);
   const vec3 wetSand = vec3(0.16, 0.14, 0.10);
   const vec3 forest = vec3(0.05, 0.09, 0.035);
@@ -35,7 +37,7 @@ vec3 terrainAlbedo(float heightM, float slope, float latitudeRad, float footprin
   const vec3 rock = vec3(0.21, 0.20, 0.19);
   const vec3 snow = vec3(0.72, 0.74, 0.78);
   float latDeg = abs(latitudeRad) * (180.0 / PI);
-  float snowLine = terrainSnowLineM(latDeg);
+  float snowLine = snowLineM;
   float treeLine = snowLine - 1200.0;
   // Lowlands: forest, drier in the subtropical belt (deserts and steppes around 15-35°).
   float aridity = smoothstep(12.0, 22.0, latDeg) * (1.0 - smoothstep(32.0, 42.0, latDeg));
@@ -61,16 +63,15 @@ vec3 terrainAlbedo(float heightM, float slope, float latitudeRad, float footprin
 // the imagery's texel or coarser, the imagery decides: no snow where it is brown (Tibet's dry
 // plateau), snow where it is white (ice sheets, snowy ranges in winter imagery). `pixelPerTexel`: the pixel's footprint over the
 // imagery's texel there, both angles. Where the imagery shows water (its coarse pixels spill
-// the sea onto land) the procedural material stands in.
-vec3 terrainAlbedoOverImagery(vec3 imagery, vec3 procedural, float heightM, float slope, float latitudeRad,
+// the sea onto land) the procedural material stands in. snowLineM: as terrainAlbedo's.
+vec3 terrainAlbedoOverImagery(vec3 imagery, vec3 procedural, float heightM, float slope, float snowLineM,
                               float pixelPerTexel) {
   float water = smoothstep(0.0, 0.04, imagery.b - max(imagery.r, imagery.g));
   vec3 c = mix(imagery, procedural, water);
   float luma = dot(c, vec3(0.2126, 0.7152, 0.0722));
   vec3 rock = vec3(1.05, 1.0, 0.93) * max(luma, 0.12);
   c = mix(c, rock, 0.6 * smoothstep(0.25, 0.45, slope));
-  float snowLine = terrainSnowLineM(abs(latitudeRad) * (180.0 / PI));
-  float snowy = smoothstep(snowLine - 250.0, snowLine + 250.0, heightM) * (1.0 - smoothstep(0.35, 0.55, slope));
+  float snowy = smoothstep(snowLineM - 250.0, snowLineM + 250.0, heightM) * (1.0 - smoothstep(0.35, 0.55, slope));
   // At coarse scale only where the imagery itself shows snow: bright in every channel and
   // nearly grey (Blue Marble's ice sheets and snowy ranges reach ~0.5 in albedo after
   // imagery.glsl's scaling; deserts ~0.44 red but ~0.25 blue). Fully procedural from 4 pixels

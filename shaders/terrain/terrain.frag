@@ -202,9 +202,10 @@ void main() {
   vec3 skyIrr;
   vec3 sunIrr = sunAndSkyIrradiance(uAtmosphere, uAtmTransmittance, uAtmIrradiance,
                                     uAtmosphere.bottomRadius + hP, dot(up, uSunDir), skyIrr);
-  vec3 albedo = terrainAlbedo(heightM, slope, lat, footprint * WGS84_A);
+  float snowLineM = terrainSnowLineM(abs(lat) * (180.0 / PI));
+  vec3 albedo = terrainAlbedo(heightM, slope, lat, snowLineM, footprint * WGS84_A);
   if (uImageryEnabled == 1 && heightM >= 0.0)
-    albedo = terrainAlbedoOverImagery(imageryAlbedo(vec2(lat, lon), footprint), albedo, heightM, slope, lat,
+    albedo = terrainAlbedoOverImagery(imageryAlbedo(vec2(lat, lon), footprint), albedo, heightM, slope, snowLineM,
                                       footprint / imageryFinestTexelRad(vec2(lat, lon)));
   // Sky light on a tilted surface: the part of the sky dome it sees.
   float skyView = 0.5 + 0.5 * dot(n, up);

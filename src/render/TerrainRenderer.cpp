@@ -404,7 +404,7 @@ void TerrainRenderer::drawTiles(const geo::CameraView& view, const std::vector<c
   // Each tile with its own variant's bits (tileBits), the tiles of a variant together.
   std::vector<std::pair<unsigned, std::vector<const terrain::Tile*>>> groups;
   for (const terrain::Tile* t : tiles) {
-    const unsigned tileVariant = bits | tileBits(*t, view);
+    const unsigned tileVariant = bits | tileBits(*t, view, bits, sunDirectionEcef);
     auto group = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == tileVariant; });
     if (group == groups.end()) group = groups.insert(groups.end(), {tileVariant, {}});
     group->second.push_back(t);
@@ -451,6 +451,7 @@ void TerrainRenderer::drawTileGroup(const geo::CameraView& view, const std::vect
     }
     if ((bits & kCoverage) == 0) {  // (counted once: drawCovered draws a tile twice)
       stats_.coarseTiles += stride > 0 ? 1 : 0;
+      stats_.dayTiles += (bits & kNoNight) != 0 ? 1 : 0;
     }
     const StrideIndices& mesh = strideIndices_[stride];
     glEnable(GL_CULL_FACE);
@@ -485,8 +486,17 @@ std::size_t TerrainRenderer::tileStrideIndex(const terrain::Tile& t, const geo::
   return 0;
 }
 
-unsigned TerrainRenderer::tileBits(const terrain::Tile& t, const geo::CameraView& view) const {
-  return tileStrideIndex(t, view) > 0 ? kCoarse : 0u;
+unsigned TerrainRenderer::tileBits(const terrain::Tile& t, const geo::CameraView& view, unsigned bits,
+                                   const glm::dvec3& sunDirectionEcef) const {
+  const unsigned coarse = tileStrideIndex(t, view) > 0 ? kCoarse : 0u;
+  if ((bits & (kNoNight | kCoverage)) != 0 || !dayTilesOn_) return coarse;
+  // terrain.frag's night lights are 0 where the Sun is above a point's horizon: leave their
+  // lookup out of tiles whose every vertical (within upConeRad of the middle one) has the Sun
+  // at least a degree up (llvmpipe runs it for every pixel of a draw that has it: orbit's
+  // terrain pass -10 % of one thread with the terminator in view).
+  const double sunFromMiddleRad = std::acos(std::clamp(glm::dot(t.middleUp, glm::normalize(sunDirectionEcef)), -1.0, 1.0));
+  const bool sunUpOnTile = sunFromMiddleRad + t.upConeRad + std::numbers::pi / 180.0 < 0.5 * std::numbers::pi;
+  return coarse | (sunUpOnTile ? kNoNight : 0u);
 }
 
 TerrainRenderer::FloorClip TerrainRenderer::floorClip(const geo::CameraView& view, int heightPx) const {
@@ -723,6 +733,7 @@ unsigned TerrainRenderer::prepareFrame(const geo::CameraView& view, const std::v
   // discards would then come from different heights.)
   coarseThisFrame_ = coarseStridesOn_ && seaFromGlobe && aerialBuffer && !shadows_.on;
   stats_.coarseTiles = 0;
+  stats_.dayTiles = 0;
   // Single-sampled only: with samples the clip would cut each sample where the discard cuts
   // the pixel (an edge anti-aliased along the -1 m contour: another picture).
   GLint samples = 0;

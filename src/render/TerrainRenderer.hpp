@@ -60,6 +60,9 @@ struct TerrainStats {
   bool pixelDetail = false;
   /// Drawn tiles drawn from the coarser mesh (every 2nd vertex: tileStrideIndex) in the last frame.
   int coarseTiles = 0;
+  /// Drawn tiles shaded without the night lights' lookup in the last frame (the Sun up on all
+  /// of each, or in all of the view: tileBits).
+  int dayTiles = 0;
   double maxHeightM = 0.0;      ///< highest point of the selected tiles, m (0 when none)
   /// Below the grid's ceiling, the highest the floor can be (a vertex's height, risen at a 45°
   /// slope over 1.5 vertex spacings) around the vertices of the selected tiles with water over
@@ -165,6 +168,10 @@ class TerrainRenderer {
   /// triangle's fragments in blocks of 4 x 4 pixels, and orbit's tiles are quads of 7-10
   /// pixels (docs/performance.md, twenty-first session).
   void setCoarseStrides(bool on) { coarseStridesOn_ = on; }
+  /// Whether a tile with the Sun up everywhere on it leaves the night lights' lookup out where
+  /// the frame has night elsewhere (tileBits; the default), or only frames all in daylight do
+  /// (the tests' reference).
+  void setDayTiles(bool on) { dayTilesOn_ = on; }
   /// The farthest on screen a coarser mesh may lie from the full grid, pixels.
   static constexpr double kStrideDeviationPx = 0.5;
 
@@ -299,8 +306,10 @@ class TerrainRenderer {
   /// perspective from it) and no shadow map (whose depths are the full grid's); 0 (the full
   /// grid) elsewhere.
   [[nodiscard]] std::size_t tileStrideIndex(const terrain::Tile& tile, const geo::CameraView& view) const;
-  /// Variant bits of one tile on top of a draw's: kCoarse (tileStrideIndex).
-  [[nodiscard]] unsigned tileBits(const terrain::Tile& tile, const geo::CameraView& view) const;
+  /// Variant bits of one tile on top of a draw's `bits`: kCoarse (tileStrideIndex), and
+  /// kNoNight where the Sun is up everywhere on the tile (a shading draw's only).
+  [[nodiscard]] unsigned tileBits(const terrain::Tile& tile, const geo::CameraView& view, unsigned bits,
+                                  const glm::dvec3& sunDirectionEcef) const;
   /// The first index and the grid's and the skirts' counts of each stride's mesh in indices_.
   struct StrideIndices {
     int first = 0, grid = 0, skirts = 0;
@@ -333,6 +342,7 @@ class TerrainRenderer {
   bool tileAerialBufferOn_ = true;  ///< setTileAerialBuffer
   DetailSkip detailSkip_ = DetailSkip::whereUnresolved;  ///< setDetailSkip
   bool coarseStridesOn_ = true;     ///< setCoarseStrides
+  bool dayTilesOn_ = true;          ///< setDayTiles
   bool coarseThisFrame_ = false;    ///< whether this frame's tiles may be drawn coarser (tileStrideIndex)
   gl::Program tileAerialProgram_;     ///< terrain/tile_aerial.comp
   gl::Buffer tileAerial_;             ///< two vec4s a vertex of the frame's tiles

@@ -151,6 +151,41 @@ TEST(LandImagery, TerrainCityLightsFollowTheSunInEveryVariant) {
   EXPECT_LT(maxDiff, 1e-6) << "no lights by day";
 }
 
+// From orbit with the terminator across the view the tiles with the Sun up on all of them are
+// shaded without the city lights' lookup (TerrainRenderer::tileBits: a tenth of orbit's terrain
+// pass on llvmpipe), the others with it: the same picture as all with it, lights and all.
+TEST(LandImagery, DayTilesLeaveOutTheLightsAndKeepThePicture) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  render::FrameInput f = downFrom(20.0, 10.0, 2.0e7, 0.0);
+  f.camera.verticalFovDeg = 40.0;
+  r.render(f);  // (the tiles' first frame)
+  r.imagery().setNightLights(0.0f);
+  r.render(f);
+  const io::ImageRgbaF unlit = r.radiance();
+  r.imagery().setNightLights(1.0f);
+  r.terrain().setDayTiles(false);
+  r.render(f);
+  const io::ImageRgbaF reference = r.radiance();
+  EXPECT_EQ(r.terrain().stats().dayTiles, 0);
+  r.terrain().setDayTiles(true);
+  r.render(f);
+  const int dayTiles = r.terrain().stats().dayTiles;
+  std::printf("day tiles %d of %d\n", dayTiles, r.terrain().stats().drawnTiles);
+  EXPECT_GT(dayTiles, 0);
+  EXPECT_LT(dayTiles, r.terrain().stats().drawnTiles) << "the night's tiles too";
+  double maxDiff = 0.0, maxValue = 0.0;
+  for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
+    maxDiff = std::max(maxDiff, static_cast<double>(std::abs(reference.pixels[i] - r.radiance().pixels[i])));
+    maxValue = std::max(maxValue, static_cast<double>(reference.pixels[i]));
+  }
+  EXPECT_LE(maxDiff, 1e-6 * maxValue);
+  int lights = 0;  // pixels the city lights brighten: the night's tiles kept them
+  for (std::size_t i = 0; i < reference.pixels.size(); i += 4)
+    lights += reference.pixels[i] > unlit.pixels[i] + 1e-4f ? 1 : 0;
+  EXPECT_GT(lights, 100) << "city lights in view";
+}
+
 TEST(LandImagery, CityLightsOnlyOnTheNightSide) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(data::defaultElevation());
