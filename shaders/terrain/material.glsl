@@ -37,14 +37,13 @@ vec3 terrainAlbedo(float heightM, float slope, float latitudeRad, float snowLine
   const vec3 rock = vec3(0.21, 0.20, 0.19);
   const vec3 snow = vec3(0.72, 0.74, 0.78);
   float latDeg = abs(latitudeRad) * (180.0 / PI);
-  float snowLine = snowLineM;
-  float treeLine = snowLine - 1200.0;
+  float treeLine = snowLineM - 1200.0;
   // Lowlands: forest, drier in the subtropical belt (deserts and steppes around 15-35°).
   float aridity = smoothstep(12.0, 22.0, latDeg) * (1.0 - smoothstep(32.0, 42.0, latDeg));
   vec3 c = mix(forest, dry, 0.7 * aridity);
   // Above the tree line: alpine grass and scree, greyer towards the snow line.
   c = mix(c, alpine, smoothstep(treeLine - 300.0, treeLine + 300.0, heightM));
-  c = mix(c, rock, smoothstep(treeLine + 300.0, snowLine, heightM) * 0.7);
+  c = mix(c, rock, smoothstep(treeLine + 300.0, snowLineM, heightM) * 0.7);
   // Beaches just above the sea, wet sand / sea floor below it.
   float beachShare = min(TERRAIN_BEACH_WIDTH_M / max(footprintM, 1e-3), 1.0);
   c = mix(c, sand, beachShare * (1.0 - smoothstep(2.0, 25.0, heightM)));
@@ -52,7 +51,7 @@ vec3 terrainAlbedo(float heightM, float slope, float latitudeRad, float snowLine
   // Bare rock where steep (cliffs, ridges, gullies).
   c = mix(c, rock, smoothstep(0.25, 0.45, slope));
   // Snow; not on cliffs.
-  float snowy = smoothstep(snowLine - 250.0, snowLine + 250.0, heightM) * (1.0 - smoothstep(0.35, 0.55, slope));
+  float snowy = smoothstep(snowLineM - 250.0, snowLineM + 250.0, heightM) * (1.0 - smoothstep(0.35, 0.55, slope));
   return mix(c, snow, snowy);
 }
 

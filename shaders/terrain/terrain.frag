@@ -211,7 +211,7 @@ void main() {
   float skyView = 0.5 + 0.5 * dot(n, up);
   float sunSeen = dot(n, uSunDir) > 0.0 ? sunVisibility(vRelative, nGeometric) : 0.0;
   vec3 surface = albedo / PI * (sunIrr * (max(dot(n, uSunDir), 0.0) * sunSeen) + skyIrr * skyView);
-#ifndef TERRAIN_NO_NIGHT  // (no point in view has the Sun down: TerrainRenderer's variants)
+#ifndef TERRAIN_NO_NIGHT  // (no point in view, or on the tile, has the Sun down: TerrainRenderer's variants)
   if (heightM >= 0.0) surface += nightLightsRadiance(vec2(lat, lon), footprint, dot(up, uSunDir));
 #endif
 #if defined(TERRAIN_COARSE) && defined(TERRAIN_AERIAL_BUFFER)

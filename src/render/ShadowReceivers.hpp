@@ -29,7 +29,9 @@ inline constexpr int kShadowReceiverRays = 32;
 /// [lowM, highM] (the ellipsoid raised by each, as geo::intersectEllipsoid raises it): the
 /// ends of each ray's stretches within that shell and slab, for (kShadowReceiverRays + 1)²
 /// rays over the screen, widened by the angle between neighbouring rays at the farthest end
-/// and by 2 % of its size (the stretches between the rays). Empty when no ray meets the slab
+/// and by 2 % of its size (the stretches between the rays). All under lowM is ground: a ray
+/// stops there, but where one between it and its neighbours may pass just over that floor the
+/// stretch goes on to the farthest such a ray meets the slab. Empty when no ray meets the slab
 /// within the distances.
 [[nodiscard]] LightRect shadowReceiverRect(const geo::CameraView& view, const glm::dvec3& lx, const glm::dvec3& ly,
                                            double nearM, double farM, double lowM, double highM);

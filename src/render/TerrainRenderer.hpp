@@ -269,7 +269,7 @@ class TerrainRenderer {
   /// terrain.vert/frag variants by bits, built on first use: llvmpipe runs every branch, so
   /// a frame draws with only the code it needs. kLandOnly: without the discards and the coast
   /// test, for tiles all above the sea and away from the poles; kNoNight: no city lights (the
-  /// Sun is up everywhere in view, geo::sunMayBeDownInView); kShadowsOff: no shadow maps this
+  /// Sun is up everywhere in view, geo::sunMayBeDownInView, or on the tile: tileBits); kShadowsOff: no shadow maps this
   /// frame; kNoImageryLayers: no user imagery layer loaded (terrain/imagery.glsl's loops
   /// compiled out); kCoarseMask: no pixel resolves the land mask's fine level
   /// (LANDMASK_COARSE_ONLY, setCoarseLandMask); kAerialTable: the vertices' aerial perspective

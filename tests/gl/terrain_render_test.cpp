@@ -275,7 +275,7 @@ TEST(ShadowReceivers, RaysStopAtTheGroundUnderTheSlab) {
   // ground. Its stretch past the floor's far crossing lies behind the planet, 12 700 km on:
   // projected across the Sun's rays it stretched the rectangle to 3700 km, and the padding
   // between rays (the farthest end's angle) with it. Every point the view can show within
-  // the slab lies within its upper surface's horizon (~290 km) of the eye.
+  // the slab lies within ~300 km of the eye (the far end of a ray grazing the floor).
   const render::FrameInput f = test::frameOf(kGibraltar2m.view, kGibraltar2m.sunElevationDeg, kGibraltar2m.sunAzimuthDeg);
   const geo::CameraView view = geo::makeCameraView(f.camera, f.width, f.height);
   const glm::dvec3 s = glm::normalize(f.sunDirectionEcef);
@@ -287,6 +287,57 @@ TEST(ShadowReceivers, RaysStopAtTheGroundUnderTheSlab) {
   // across it: the rectangle holds the near receivers.
   EXPECT_LT(rect.lo.x, -1.0e4);
   EXPECT_GT(rect.hi.x - rect.lo.x, 2.0e4);
+}
+
+namespace {
+// shadowReceiverRect's stretches by brute force, on n + 1 rays a side and without padding.
+render::LightRect denseReceivers(const geo::CameraView& view, const glm::dvec3& lx, const glm::dvec3& ly,
+                                 double lowM, double highM, int n) {
+  render::LightRect rect;
+  const auto add = [&](const glm::dvec3& dir, double t) { rect.add({glm::dot(t * dir, lx), glm::dot(t * dir, ly)}); };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const glm::dvec3 dir = view.rayDirection(-1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n);
+      const auto below = geo::ellipsoidCrossings(view.positionEcef, dir, highM);
+      if (!below || below->second < 0.0) continue;
+      const double enter = std::max(below->first, 0.0);
+      const auto under = geo::ellipsoidCrossings(view.positionEcef, dir, lowM);
+      const double leave = under && under->first > enter && under->first < below->second ? under->first : below->second;
+      add(dir, enter);
+      add(dir, leave);
+    }
+  return rect;
+}
+}  // namespace
+
+TEST(ShadowReceivers, HoldTheRaysBetweenTheirRaysThatPassOverTheFloor) {
+  // Near the horizon a ray between one that meets the slab's floor and one that misses it may
+  // pass just over the floor and see the slab's far side, beyond the floor's horizon: the
+  // rectangle must hold it (against 201² rays). Views from 2 m to 30 km, the Sun ahead,
+  // beside and behind.
+  struct Case { test::View view; double sunElevationDeg, sunAzimuthDeg, lowM, highM; };
+  const std::vector<Case> cases{
+      {kGibraltar2m.view, 20.0, 250.0, -1100.0, 1600.0},
+      {{.latDeg = 27.3, .lonDeg = 86.9, .heightM = 15000.0, .headingDeg = 10.0, .pitchDeg = -2.0, .fovDeg = 45.0, .width = 320, .height = 180}, 60.0, 250.0, 0.0, 8800.0},
+      {{.latDeg = 27.3, .lonDeg = 86.9, .heightM = 15000.0, .headingDeg = 10.0, .pitchDeg = -5.0, .fovDeg = 45.0, .width = 320, .height = 180}, 45.0, 90.0, 0.0, 8800.0},
+      {{.latDeg = 35.6, .lonDeg = -5.6, .heightM = 30000.0, .headingDeg = 0.0, .pitchDeg = -3.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0, -1100.0, 3400.0},
+      {{.latDeg = 35.6, .lonDeg = -5.6, .heightM = 5000.0, .headingDeg = 180.0, .pitchDeg = -1.0, .fovDeg = 45.0, .width = 320, .height = 180}, 10.0, 0.0, -1100.0, 3400.0},
+  };
+  for (const Case& c : cases) {
+    const render::FrameInput f = test::frameOf(c.view, c.sunElevationDeg, c.sunAzimuthDeg);
+    const geo::CameraView view = geo::makeCameraView(f.camera, f.width, f.height);
+    const glm::dvec3 s = glm::normalize(f.sunDirectionEcef);
+    const glm::dvec3 lx = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), s)), ly = glm::cross(s, lx);
+    const render::LightRect rect = render::shadowReceiverRect(view, lx, ly, 0.0, 1e9, c.lowM, c.highM);
+    const render::LightRect dense = denseReceivers(view, lx, ly, c.lowM, c.highM, 200);
+    ASSERT_FALSE(dense.empty());
+    std::printf("%.0f m: rect %.0f %.0f %.0f %.0f dense %.0f %.0f %.0f %.0f\n", c.view.heightM, rect.lo.x, rect.lo.y,
+                rect.hi.x, rect.hi.y, dense.lo.x, dense.lo.y, dense.hi.x, dense.hi.y);
+    EXPECT_LE(rect.lo.x, dense.lo.x) << c.view.heightM << " m";
+    EXPECT_LE(rect.lo.y, dense.lo.y) << c.view.heightM << " m";
+    EXPECT_GE(rect.hi.x, dense.hi.x) << c.view.heightM << " m";
+    EXPECT_GE(rect.hi.y, dense.hi.y) << c.view.heightM << " m";
+  }
 }
 
 TEST(TerrainRender, ShadowMapsCroppedToTheReceiversKeepThePicture) {
