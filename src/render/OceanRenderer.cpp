@@ -30,6 +30,28 @@ std::optional<double> seaSphereHitM(double heightM, const glm::dvec3& up, const 
   return b - std::sqrt(disc);
 }
 
+/// Where a ray of the view meets the sea (seaSphereHitM): m along it, and the cosine of its
+/// incidence there.
+struct SeaHit {
+  double distanceM = 0.0, cosIncidence = 0.0;
+};
+/// The view's rays through its corners, its edges' middles and its centre (rows bottom to top,
+/// each left to right: the centre is [4]) where they meet the sea; nothing for one that misses.
+std::array<std::optional<SeaHit>, 9> seaHitsOfView(const geo::CameraView& view) {
+  const double r = geo::kWgs84SemiMajorM, h = std::max(view.position.heightM, 0.1);
+  const glm::dvec3 eye = (r + h) * view.enu.up;
+  std::array<std::optional<SeaHit>, 9> hits;
+  std::size_t k = 0;
+  for (const double sy : {-1.0, 0.0, 1.0})
+    for (const double sx : {-1.0, 0.0, 1.0}) {
+      const glm::dvec3 dir = view.rayDirection(sx, sy);
+      if (const std::optional<double> t = seaSphereHitM(h, view.enu.up, dir))
+        hits[k] = SeaHit{*t, -glm::dot(dir, (eye + *t * dir) / r)};
+      ++k;
+    }
+  return hits;
+}
+
 /// Whether the point straight below the eye is on the screen.
 bool nadirInView(const geo::CameraView& view) {
   const glm::dvec3 down = -view.enu.up;
@@ -179,23 +201,19 @@ double OceanRenderer::farthestSeaAngleRad(const geo::CameraView& view) {
 }
 
 bool OceanRenderer::geometryIsSubPixel(const geo::CameraView& view, int height, double displacementBoundM) {
-  const double r = geo::kWgs84SemiMajorM, h = std::max(view.position.heightM, 0.1);
   const double tanY = std::tan(0.5 * view.verticalFovRad), tanX = tanY * view.aspect;
-  const glm::dvec3 eye = (r + h) * view.enu.up;
   // The sea in view, from the rays of the corners and the edges' middles (seen from the sphere
   // of the semi-major axis): every one must meet it kGrownCellMinGrazingRad above grazing,
   // and the nearest gives the nearest sea point, unless the nadir is in view (the eye's height).
   double nearestM = std::numeric_limits<double>::infinity();
-  for (const double sy : {-1.0, 0.0, 1.0})
-    for (const double sx : {-1.0, 0.0, 1.0}) {
-      if (sx == 0.0 && sy == 0.0) continue;
-      const glm::dvec3 dir = view.rayDirection(sx, sy);
-      const std::optional<double> t = seaSphereHitM(h, view.enu.up, dir);
-      if (!t) return false;  // the ray misses: the horizon is in view
-      if (-glm::dot(dir, (eye + *t * dir) / r) < std::sin(kGrownCellMinGrazingRad)) return false;
-      nearestM = std::min(nearestM, *t);
-    }
-  if (nadirInView(view)) nearestM = h;
+  const std::array<std::optional<SeaHit>, 9> hits = seaHitsOfView(view);
+  for (std::size_t k = 0; k < hits.size(); ++k) {
+    if (k == 4) continue;  // (the centre)
+    if (!hits[k]) return false;  // the ray misses: the horizon is in view
+    if (hits[k]->cosIncidence < std::sin(kGrownCellMinGrazingRad)) return false;
+    nearestM = std::min(nearestM, hits[k]->distanceM);
+  }
+  if (nadirInView(view)) nearestM = std::max(view.position.heightM, 0.1);
   // The waves move no point by more than displacementBoundM: its largest angle, at the nearest
   // sea point, in pixels where the screen magnifies most (a corner: a rectilinear projection's
   // pixels per radian grow as 1 + tan² of the angle off its axis).
@@ -323,17 +341,12 @@ double OceanRenderer::slopeVarianceFloor(const OceanPatterns& patterns, const Wi
 }
 
 glm::dvec2 OceanRenderer::seaZenithRangeRad(const geo::CameraView& view) {
-  const double r = geo::kWgs84SemiMajorM, h = std::max(view.position.heightM, 0.1);
-  const glm::dvec3 eye = (r + h) * view.enu.up;
   glm::dvec2 range(0.5 * std::numbers::pi, 0.0);
-  for (const double sy : {-1.0, 0.0, 1.0})
-    for (const double sx : {-1.0, 0.0, 1.0}) {
-      const glm::dvec3 dir = view.rayDirection(sx, sy);
-      const std::optional<double> t = seaSphereHitM(h, view.enu.up, dir);
-      if (!t) return {range.x, 0.5 * std::numbers::pi};
-      const double zenith = std::acos(std::clamp(-glm::dot(dir, (eye + *t * dir) / r), -1.0, 1.0));
-      range = {std::min(range.x, zenith), std::max(range.y, zenith)};
-    }
+  for (const std::optional<SeaHit>& hit : seaHitsOfView(view)) {
+    if (!hit) return {range.x, 0.5 * std::numbers::pi};
+    const double zenith = std::acos(std::clamp(hit->cosIncidence, -1.0, 1.0));
+    range = {std::min(range.x, zenith), std::max(range.y, zenith)};
+  }
   if (nadirInView(view)) range.x = 0.0;
   return range;
 }
