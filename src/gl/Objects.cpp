@@ -24,6 +24,12 @@ Buffer createBuffer() {
   glCreateBuffers(1, &id);
   return Buffer(id);
 }
+void ensureBufferCapacity(Buffer& buffer, std::size_t& capacity, std::size_t bytes, GLbitfield flags) {
+  if (bytes <= capacity) return;
+  buffer = createBuffer();
+  glNamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(bytes), nullptr, flags);
+  capacity = bytes;
+}
 VertexArray createVertexArray() {
   GLuint id = 0;
   glCreateVertexArrays(1, &id);

@@ -2,6 +2,7 @@
 // RAII owners for OpenGL objects (DSA, GL 4.5). Move-only; deleting 0 is a no-op.
 #include <glad/gl.h>
 
+#include <cstddef>
 #include <utility>
 
 namespace og::gl {
@@ -53,6 +54,11 @@ using ProgramObject = Handle<deleteProgram>;
 using Query = Handle<deleteQuery>;
 
 Buffer createBuffer();
+/// Makes `buffer` hold at least `bytes` (immutable storage with `flags`, contents undefined):
+/// where `capacity` (its size so far, bytes; 0 before the first) is less, a new buffer of
+/// exactly `bytes`, and `capacity` then `bytes`. For buffers that grow with the frame and are
+/// never shrunk.
+void ensureBufferCapacity(Buffer& buffer, std::size_t& capacity, std::size_t bytes, GLbitfield flags = 0);
 VertexArray createVertexArray();
 Texture createTexture(GLenum target);
 Framebuffer createFramebuffer();

@@ -726,11 +726,7 @@ void GlobeRenderer::shadeScatteredParts(const geo::CameraView& view, const Frame
                                         const std::vector<int>& counts) {
   // The block: count, the dispatch's three group counts, then a pixel each (globe_pixels.glsl).
   const std::size_t bytes = (4 + static_cast<std::size_t>(f.width) * static_cast<std::size_t>(f.height)) * sizeof(GLuint);
-  if (bytes > scatteredPixelsBytes_) {
-    scatteredPixels_ = gl::createBuffer();
-    glNamedBufferStorage(scatteredPixels_.id(), static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    scatteredPixelsBytes_ = bytes;
-  }
+  gl::ensureBufferCapacity(scatteredPixels_, scatteredPixelsBytes_, bytes, GL_DYNAMIC_STORAGE_BIT);
   if (scatteredList_.id() == 0) {
     scatteredList_ = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "render/globe_list.frag"}});
     scatteredArgs_ = gl::Program({{GL_COMPUTE_SHADER, "render/globe_list_args.comp"}});

@@ -747,16 +747,11 @@ const gl::Program& OceanRenderer::prepareSurfacePass(unsigned key,
 
 void OceanRenderer::computeGridVertices(const gl::Program& compute, bool radianceTerms) {
   const auto vertices = static_cast<std::size_t>(gridColumns_) * static_cast<std::size_t>(gridRows_);
-  const auto ensure = [](gl::Buffer& buffer, std::size_t& had, std::size_t bytes) {
-    if (bytes <= had) return;
-    buffer = gl::createBuffer();
-    glNamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(bytes), nullptr, 0);
-    had = bytes;
-  };
-  ensure(gridVertices_, gridVerticesBytes_, vertices * kGridVertexVec4s * 4 * sizeof(float));
+  gl::ensureBufferCapacity(gridVertices_, gridVerticesBytes_, vertices * kGridVertexVec4s * 4 * sizeof(float));
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridVerticesBinding, gridVertices_.id());
   if (radianceTerms) {
-    ensure(gridRadianceTerms_, gridRadianceTermsBytes_, vertices * kGridRadianceTermsVec4s * 4 * sizeof(float));
+    gl::ensureBufferCapacity(gridRadianceTerms_, gridRadianceTermsBytes_,
+                             vertices * kGridRadianceTermsVec4s * 4 * sizeof(float));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridRadianceTermsBinding, gridRadianceTerms_.id());
   }
   if (timer_ != nullptr) timer_->mark("ocean grid");
@@ -768,14 +763,9 @@ void OceanRenderer::computeGridVertices(const gl::Program& compute, bool radianc
 void OceanRenderer::splitNearLand(unsigned key) {
   if (programs().nearLandSplit.id() == 0)
     programs().nearLandSplit = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_near_land.comp"}}, surfaceDefines(key));
-  const auto bytes = static_cast<GLsizeiptr>(static_cast<std::size_t>(indexCount_) * sizeof(GLuint));
-  if (bytes > nearLandSplitBytes_) {
-    openIndices_ = gl::createBuffer();
-    nearLandIndices_ = gl::createBuffer();
-    glNamedBufferStorage(openIndices_.id(), bytes, nullptr, 0);
-    glNamedBufferStorage(nearLandIndices_.id(), bytes, nullptr, 0);
-    nearLandSplitBytes_ = bytes;
-  }
+  const std::size_t bytes = static_cast<std::size_t>(indexCount_) * sizeof(GLuint);
+  gl::ensureBufferCapacity(openIndices_, openIndicesBytes_, bytes);
+  gl::ensureBufferCapacity(nearLandIndices_, nearLandIndicesBytes_, bytes);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridIndicesBinding, indices_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOpenIndicesBinding, openIndices_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kNearLandIndicesBinding, nearLandIndices_.id());

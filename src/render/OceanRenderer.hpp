@@ -392,7 +392,7 @@ class OceanRenderer {
   gl::Buffer gridVertices_;  ///< the surface pass's vertices (ocean/grid_vertex_buffer.glsl)
   gl::Program classStencil_;   ///< ocean/sea_class_stencil.frag; id() 0 until first used
   gl::Buffer openIndices_, nearLandIndices_;  ///< splitNearLand's copies of indices_
-  GLsizeiptr nearLandSplitBytes_ = 0;
+  std::size_t openIndicesBytes_ = 0, nearLandIndicesBytes_ = 0;
   std::size_t gridVerticesBytes_ = 0;
   gl::Buffer gridRadianceTerms_;  ///< the radiance terms' vertices' (ocean/grid_vertex_buffer.glsl)
   std::size_t gridRadianceTermsBytes_ = 0;

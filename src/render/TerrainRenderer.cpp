@@ -136,11 +136,8 @@ void TerrainRenderer::computeTileAerial(const geo::CameraView& view, const std::
   gl::Program& p = tileAerialProgram_;
   if (p.id() == 0) p = gl::Program({{GL_COMPUTE_SHADER, "terrain/tile_aerial.comp"}});
   const std::size_t bytes = tiles.size() * terrain::kTileVertices * 2 * sizeof(glm::vec4);
-  if (bytes > tileAerialBytes_) {
-    tileAerialBytes_ = std::max(bytes, 2 * tileAerialBytes_);
-    tileAerial_ = gl::createBuffer();
-    glNamedBufferStorage(tileAerial_.id(), static_cast<GLsizeiptr>(tileAerialBytes_), nullptr, 0);
-  }
+  if (bytes > tileAerialBytes_)  // (grown by doubling at least)
+    gl::ensureBufferCapacity(tileAerial_, tileAerialBytes_, std::max(bytes, 2 * tileAerialBytes_));
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTerrainAerialBinding, tileAerial_.id());
   setAerialUniforms(p, view, sunDirectionEcef);
   p.set("uVertexCount", terrain::kTileVertices);
