@@ -24,6 +24,11 @@ layout(location = 3) in vec3 aMorph;     // the parent mesh's point minus this v
 uniform mat4 uViewProjection;  // for camera-relative ECEF positions
 uniform float uFloorClipM;     // m; 0: none (see main)
 uniform float uFloorClipFarM;  // m
+// The rays under the sea's lowest surface (terrain::seaHorizonCone, whose seaHorizonClip this
+// computes): unit axis from the eye (ECEF axes), and (cos, sin) of the half angle and the cap's
+// distance along the axis, m.
+uniform vec3 uSeaHorizonAxis;
+uniform vec3 uSeaHorizonCone;
 
 out vec3 vRelative;
 out vec3 vNormal;
@@ -62,6 +67,17 @@ void main() {
   precise float floorClip = max(max(vInfo.x + 1.0, length(vRelative) - uFloorClipFarM),
                                 uCamAltitude * across - uFloorClipM * (uCamAltitude - vInfo.x));
   gl_ClipDistance[0] = floorClip;
+#endif
+#ifndef TERRAIN_SHADOW_CASTER
+  // Beyond the sea's horizon (from near the sea, most of the far coasts' hills): the clipper
+  // cuts off what the sea or the land before it hides, before any fragment (enabled below the
+  // grid's ceiling where the land mask decides the coast: TerrainRenderer::prepareFrame). The
+  // function is convex, so between vertices its interpolation is never below a kept point's
+  // own. Precise, as the floor's clip.
+  precise float horizonAlong = dot(vRelative, uSeaHorizonAxis);
+  precise float horizonAcross = length(vRelative - horizonAlong * uSeaHorizonAxis);
+  gl_ClipDistance[1] = max(horizonAcross * uSeaHorizonCone.x - horizonAlong * uSeaHorizonCone.y,
+                           uSeaHorizonCone.z - horizonAlong);
 #endif
 #ifdef TERRAIN_SHADOW_CASTER
   // Ground below sea level casts no shadow (terrain/shadow_depth.frag): the clipper cuts it

@@ -419,6 +419,12 @@ void TerrainRenderer::drawTileGroup(const geo::CameraView& view, const std::vect
   p.set("uFloorClipFarM", static_cast<float>(floorClip_.farM));
   const bool clipFloor = floorClip_.clipM > 0.0 && (bits & kLandOnly) == 0;
   if (clipFloor) glEnable(GL_CLIP_DISTANCE0);
+  if (seaHorizonClip_) {
+    p.set("uSeaHorizonAxis", glm::vec3(seaHorizonClip_->axis));
+    p.set("uSeaHorizonCone", glm::vec3(seaHorizonClip_->cosHalfAngle, seaHorizonClip_->sinHalfAngle,
+                                       seaHorizonClip_->capM));
+    glEnable(GL_CLIP_DISTANCE1);
+  }
   glBindTextureUnit(gl::kUnitShadowMap, shadowMap_.id());
   const bool aerialBuffer = (bits & kAerialBuffer) != 0 && (bits & kCoverage) == 0;
   if (aerialBuffer) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTerrainAerialBinding, tileAerial_.id());
@@ -457,6 +463,7 @@ void TerrainRenderer::drawTileGroup(const geo::CameraView& view, const std::vect
     glDrawElements(GL_TRIANGLES, mesh.skirts, GL_UNSIGNED_INT, offset(mesh.first + mesh.grid));
   }
   if (clipFloor) glDisable(GL_CLIP_DISTANCE0);
+  glDisable(GL_CLIP_DISTANCE1);
 }
 
 std::size_t TerrainRenderer::tileStrideIndex(const terrain::Tile& t, const geo::CameraView& view) const {
@@ -689,7 +696,11 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   renderShadowMap(view, casters, sunDirectionEcef);
   if (timer_ != nullptr) timer_->mark("terrain");
   const unsigned frameBits = prepareFrame(view, tiles, drawn, sunDirectionEcef, seaFromGlobe);
-  drawFrameTiles(view, drawn, frameBits, sunDirectionEcef, seaFromGlobe);
+  stats_.samplesPassed = 0;
+  if (countSamples_)
+    stats_.samplesPassed = gl::queryResult(GL_SAMPLES_PASSED, [&] { drawFrameTiles(view, drawn, frameBits, sunDirectionEcef, seaFromGlobe); });
+  else
+    drawFrameTiles(view, drawn, frameBits, sunDirectionEcef, seaFromGlobe);
   stats_.tiles = static_cast<int>(tiles.size());
   stats_.drawnTiles = static_cast<int>(drawn.size());
   stats_.landTiles = static_cast<int>(casters.size());
@@ -736,6 +747,10 @@ unsigned TerrainRenderer::prepareFrame(const geo::CameraView& view, const std::v
   GLint samples = 0;
   glGetIntegerv(GL_SAMPLES, &samples);
   floorClip_ = seaFromGlobe || samples > 1 ? FloorClip{} : floorClip(view, params_.heightPx);
+  // (The eye at or under the sea: the cone is the sphere's from above it.)
+  seaHorizonClip_.reset();
+  if (seaHorizonClipOn_ && !seaFromGlobe && view.position.heightM > 0.0 && cache_.heights().coastFromMask())
+    seaHorizonClip_ = terrain::seaHorizonCone(view, seaCrestM_);
   return frameBits;
 }
 

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -64,6 +65,9 @@ struct TerrainStats {
   /// of each, or in all of the view: tileBits).
   int dayTiles = 0;
   double maxHeightM = 0.0;      ///< highest point of the selected tiles, m (0 when none)
+  /// Samples the last frame's tile draws passed (both draws of a tile drawn twice), with
+  /// setCountSamples(true); else 0.
+  std::uint64_t samplesPassed = 0;
   /// Below the grid's ceiling, the highest the floor can be (a vertex's height, risen at a 45°
   /// slope over 1.5 vertex spacings) around the vertices of the selected tiles with water over
   /// which the sea's surface can be seen a pixel or more below the horizon, in the frustum (its
@@ -104,6 +108,13 @@ class TerrainRenderer {
   /// the coast (terrain::aboveSeaHorizon; default on). Off: only the deep occluder culls them
   /// (terrain::aboveHorizon), as the selection does: for tests that compare the two.
   void setSeaHorizonCulling(bool on) { seaHorizonCulling_ = on; }
+  /// Whether, below the grid's ceiling where the land mask decides the coast, the drawn tiles'
+  /// points beyond the sea's horizon at the waves' depth (terrain::seaHorizonCone) are clipped
+  /// before any fragment (default on). Off: for tests that compare the two.
+  void setSeaHorizonClip(bool on) { seaHorizonClipOn_ = on; }
+  /// Whether draw() counts the samples its tile draws pass (TerrainStats::samplesPassed; an
+  /// occlusion query that waits for them: for tests).
+  void setCountSamples(bool on) { countSamples_ = on; }
   /// Whether a shadow cascade draws only as many texels as the screen resolves at its nearest
   /// receivers (shadowCascadeTexels; the default) or always kShadowMapSize: for tests that
   /// compare the two.
@@ -263,6 +274,8 @@ class TerrainRenderer {
   terrain::TileCache cache_;
   terrain::SelectionParams params_;
   bool seaHorizonCulling_ = true;
+  bool seaHorizonClipOn_ = true;
+  bool countSamples_ = false;  ///< setCountSamples
   bool shadowTexelsFitted_ = true;
   bool shadowCropped_ = true;
   double floorShadowReachM_ = 0.0;  ///< the crops' margin for the floor's shadows (constructor)
@@ -353,6 +366,7 @@ class TerrainRenderer {
   bool seaSightTest_ = true;  ///< setSeaSightTest
   bool floorClipOn_ = true;   ///< setFloorClip
   FloorClip floorClip_;       ///< this frame's (none above the ceiling)
+  std::optional<terrain::SeaHorizonCone> seaHorizonClip_;  ///< this frame's (setSeaHorizonClip)
   unsigned waterBits_ = 0;  ///< drawWaterTiles()' variant bits this frame
   glm::dvec3 waterSunDirection_{1.0, 0.0, 0.0};
   std::vector<const terrain::Tile*> waterTiles_;  ///< left by draw() for drawWaterTiles()

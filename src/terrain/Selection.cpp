@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 
 namespace og::terrain {
 namespace {
@@ -58,6 +59,38 @@ bool aboveSeaHorizon(const glm::dvec3& eyeEcef, const Tile& tile) {
   // + 1 m: the morph's and the chords' rounding.
   return aboveHorizon(eyeEcef, tile.boundCentreEcef, tile.boundRadiusM, kSeaOccluderDepthM,
                       std::max(tile.maxHeightM, 0.0) + 1.0);
+}
+
+SeaHorizonCone seaHorizonCone(const geo::CameraView& view, double depthM) {
+  // The meridian's radius of curvature under the eye, M = a (1 - e²) / (1 - e² sin² φ)^(3/2),
+  // the tightest (the prime vertical's N ≥ M: the ellipsoid stays outside the sphere across).
+  constexpr double a = geo::kWgs84SemiMajorM, f = geo::kWgs84Flattening, e2 = f * (2.0 - f);
+  const double sinLat = std::sin(view.position.latitudeDeg * std::numbers::pi / 180.0);
+  const double meridianM = a * (1.0 - e2) / std::pow(1.0 - e2 * sinLat * sinLat, 1.5);
+  // Along a meridian the ellipsoid falls under its osculating sphere by |dκ/ds| d³ / 6 with
+  // |dκ/ds| ≤ 1.5 e² / M²: ≤ 4.1e-17 d³ m. The rays enter the sphere within its tangent length
+  // of the eye, L = sqrt(2 M g) for a gap g under the eye: two rounds of margin (1 m besides).
+  const double eyeM = std::max(view.position.heightM, 0.0);
+  double gapM = eyeM + depthM + 1.0;
+  for (int i = 0; i < 2; ++i) {
+    const double tangentM = std::sqrt(2.0 * meridianM * gapM);
+    gapM = eyeM + depthM + 1.0 + 5e-17 * tangentM * tangentM * tangentM;
+  }
+  const double radiusM = meridianM - (gapM - eyeM);  // the sphere's
+  const double centreM = eyeM + meridianM;           // its centre's distance from the eye
+  const double tangentM = std::sqrt(gapM * (centreM + radiusM));
+  SeaHorizonCone c;
+  c.axis = -view.enu.up;
+  c.sinHalfAngle = radiusM / centreM;
+  c.cosHalfAngle = tangentM / centreM;
+  c.capM = tangentM * c.cosHalfAngle;
+  return c;
+}
+
+double seaHorizonClip(const SeaHorizonCone& c, const glm::dvec3& relative) {
+  const double along = glm::dot(relative, c.axis);
+  const double across = glm::length(relative - along * c.axis);
+  return std::max(across * c.cosHalfAngle - along * c.sinHalfAngle, c.capM - along);
 }
 
 bool inFrustum(const geo::CameraView& view, int widthPx, int heightPx, const glm::dvec3& centreEcef,

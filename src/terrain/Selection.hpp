@@ -78,6 +78,26 @@ inline constexpr double kSeaOccluderDepthM = 100.0;
 /// the Dead Sea), and aboveHorizon's deep occluder holds.
 bool aboveSeaHorizon(const glm::dvec3& eyeEcef, const Tile& tile);
 
+/// The view rays that pass under the sea's lowest surface within the eye's horizon: the cone
+/// from the eye tangent to a sphere inside the ellipsoid lowered by `depthM` (the osculating
+/// sphere of its tightest curvature under the eye, the meridian's, lowered by depthM and by a
+/// margin for how far the ellipsoid falls below it where the rays enter: 5e-17 d³ m at d m
+/// along a meridian). A point in the cone beyond its tangent circle's plane lies behind that
+/// sphere: where the land mask decides the coast (land never below sea level) the sea's waves
+/// or the land hide it (aboveSeaHorizon's argument, at the waves' own depth).
+struct SeaHorizonCone {
+  glm::dvec3 axis{0.0, 0.0, -1.0};  ///< unit, ECEF axes: from the eye towards the sphere's centre
+  double cosHalfAngle = 1.0, sinHalfAngle = 0.0;
+  double capM = 0.0;  ///< the tangent circle's plane, m along the axis from the eye
+};
+/// The cone for `view` and the waves' troughs `depthM` (m, ≥ 0) below sea level.
+SeaHorizonCone seaHorizonCone(const geo::CameraView& view, double depthM);
+/// Negative only for points (ECEF axes, m from the eye) in the cone beyond its cap: the most of
+/// the distance-like cone function and the cap's plane. Convex in the point, so its linear
+/// interpolation between hidden points (a triangle's clip distance: terrain/terrain.vert, its
+/// GLSL twin) is negative only where every point is hidden.
+double seaHorizonClip(const SeaHorizonCone& cone, const glm::dvec3& relative);
+
 /// Whether a sphere intersects the view frustum's four side planes (no far plane).
 bool inFrustum(const geo::CameraView& view, int widthPx, int heightPx,
                const glm::dvec3& centreEcef, double radiusM);

@@ -321,6 +321,55 @@ TEST(TerrainSelection, SeaHorizonHidesWhatTheDeepOccluderDoesNot) {
   EXPECT_TRUE(aboveSeaHorizon(eye, t));
 }
 
+// The clip of what lies beyond the sea's horizon at the waves' depth (terrain::seaHorizonCone,
+// terrain.vert's clip distance): a point it clips lies behind the ellipsoid lowered by that
+// depth, seen from eyes 0.5 m to 20 km up at latitudes 0-80° (the exact crossing,
+// geo::intersectEllipsoid), it clips most of what lies 20 m or more under that horizon, and
+// its function is convex (its interpolation along a segment never falls below the midpoint's).
+TEST(TerrainSelection, SeaHorizonClipKeepsWhatTheLoweredSeaDoesNotHide) {
+  const double depthM = 3.0;
+  int clipped = 0, deepUnder = 0, deepClipped = 0;
+  for (const double lat : {0.0, 30.0, 45.0, 60.0, 80.0})
+    for (const double eyeM : {0.5, 2.0, 30.0, 1000.0, 20000.0})
+      for (const double azimuth : {0.0, 45.0, 90.0, 170.0}) {
+        const geo::CameraView view = viewAt(lat, -20.0, eyeM, azimuth, 0.0);
+        const SeaHorizonCone cone = seaHorizonCone(view, depthM);
+        const double tangentM = std::sqrt(2.0 * geo::kWgs84SemiMajorM * (eyeM + depthM));
+        for (int i = 1; i <= 40; ++i) {
+          const double distanceM = tangentM * 0.1 * i;  // out to four tangent lengths
+          for (const double aboveM : {-50.0, -5.0, 0.0, 20.0, 200.0, 2000.0}) {
+            // The point `distanceM` along the ground in the azimuth, `aboveM` over the ellipsoid.
+            const double arcDeg = glm::degrees(distanceM / geo::kWgs84SemiMajorM);
+            const glm::dvec3 p =
+                geo::geodeticToEcef({lat + arcDeg * std::cos(glm::radians(azimuth)),
+                                     -20.0 + arcDeg * std::sin(glm::radians(azimuth)) / std::cos(glm::radians(lat)),
+                                     aboveM}) -
+                view.positionEcef;
+            const double length = glm::length(p);
+            const auto crossing = geo::intersectEllipsoid(view.positionEcef, p / length, -depthM);
+            const bool hidden = crossing.has_value() && *crossing < length;
+            const bool clip = seaHorizonClip(cone, p) < 0.0;
+            if (clip) ++clipped;
+            EXPECT_TRUE(!clip || hidden) << lat << " " << eyeM << " " << azimuth << " " << distanceM << " " << aboveM;
+            // 20 m under the lowered sea's horizon there, beyond the tangent point.
+            const auto deeper = geo::intersectEllipsoid(view.positionEcef, p / length, -depthM - 20.0);
+            if (distanceM > 1.2 * tangentM && deeper.has_value() && *deeper < length) {
+              ++deepUnder;
+              if (clip) ++deepClipped;
+            }
+          }
+        }
+        // Convex: along segments between points around the horizon.
+        const glm::dvec3 a = view.forward * tangentM * 1.5 - view.up * 1.0, b = view.right * tangentM * 2.0 + view.forward * tangentM;
+        for (const double t : {0.25, 0.5, 0.75})
+          EXPECT_LE(seaHorizonClip(cone, a + t * (b - a)),
+                    (1.0 - t) * seaHorizonClip(cone, a) + t * seaHorizonClip(cone, b) + 1e-6);
+      }
+  std::printf("clipped %d points; %d of %d points 20 m under the lowered horizon\n", clipped, deepClipped, deepUnder);
+  EXPECT_GT(clipped, 1000);
+  EXPECT_GT(deepClipped, 0.99 * deepUnder);
+}
+
 TEST(TerrainSelection, OrbitViewIsCoarse) {
   TileCache cache(heights());
   const geo::CameraView view = viewAt(10.0, -30.0, 6.0e6, 0.0, -90.0, 256, 256);
