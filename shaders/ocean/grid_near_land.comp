@@ -20,8 +20,7 @@ void main() {
   int t = int(gl_GlobalInvocationID.x);
   if (t >= uTriangleCount) return;
   uvec3 tri = uvec3(gridIndices[3 * t], gridIndices[3 * t + 1], gridIndices[3 * t + 2]);
-  bool near = gridVertexNearLand(int(tri.x)) > 0.0 || gridVertexNearLand(int(tri.y)) > 0.0 ||
-              gridVertexNearLand(int(tri.z)) > 0.0;
+  bool near = gridVertexNearLand(int(tri.x)) || gridVertexNearLand(int(tri.y)) || gridVertexNearLand(int(tri.z));
   uvec3 open = near ? tri.xxx : tri, landward = near ? tri : tri.xxx;
   for (int k = 0; k < 3; ++k) {
     openIndices[3 * t + k] = open[k];

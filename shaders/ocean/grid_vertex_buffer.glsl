@@ -29,6 +29,17 @@ layout(std430, binding = 7) readonly buffer GridRadianceTerms { vec4 gridRadianc
 #endif
 #endif
 
+#ifdef OCEAN_SEA_CLASSIFY
+// Each vertex's vNearLand > 0 again, 4 bytes a vertex, for ocean/grid_near_land.comp: its
+// three reads a triangle from the vertices' 160-byte records were ~30 ns a triangle on
+// llvmpipe (binding 2 as render/globe_pixels.glsl's: each pass binds its own buffer there).
+#ifdef GRID_VERTEX_STORE
+layout(std430, binding = 2) writeonly buffer GridNearLand { uint gridNearLand[]; };  // kGridNearLandBinding
+#else
+layout(std430, binding = 2) readonly buffer GridNearLand { uint gridNearLand[]; };
+#endif
+#endif
+
 #ifdef GRID_VERTEX_STORE
 // After gridVertex(i): its outputs (globals here) into the buffer.
 void storeGridVertex(int i, vec4 position) {
@@ -56,6 +67,7 @@ void storeGridVertex(int i, vec4 position) {
   nearLand = vNearLand;
   nearShadow = vNearShadow;
   gridRow = float(vGridRow);
+  gridNearLand[i] = vNearLand > 0.0 ? 1u : 0u;
 #endif
   gridVertices[at + 5] = vec4(vPatternShare[4], transmittance);
   gridVertices[at + 6] = vec4(inscatter, floorDepthM);
@@ -102,7 +114,7 @@ vec4 loadGridVertex(int i) {
   return gridVertices[at];
 }
 #ifdef OCEAN_SEA_CLASSIFY
-// Vertex i's vNearLand alone (ocean/grid_near_land.comp).
-float gridVertexNearLand(int i) { return gridVertices[i * GRID_VERTEX_VEC4S + 8].w; }
+// Whether vertex i's vNearLand > 0 (ocean/grid_near_land.comp).
+bool gridVertexNearLand(int i) { return gridNearLand[i] != 0u; }
 #endif
 #endif

@@ -749,6 +749,9 @@ void OceanRenderer::computeGridVertices(const gl::Program& compute, bool radianc
   const auto vertices = static_cast<std::size_t>(gridColumns_) * static_cast<std::size_t>(gridRows_);
   gl::ensureBufferCapacity(gridVertices_, gridVerticesBytes_, vertices * kGridVertexVec4s * 4 * sizeof(float));
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridVerticesBinding, gridVertices_.id());
+  // (Written by the classes' variants; bound for every one: a few bytes a vertex.)
+  gl::ensureBufferCapacity(gridNearLand_, gridNearLandBytes_, vertices * sizeof(GLuint));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridNearLandBinding, gridNearLand_.id());
   if (radianceTerms) {
     gl::ensureBufferCapacity(gridRadianceTerms_, gridRadianceTermsBytes_,
                              vertices * kGridRadianceTermsVec4s * 4 * sizeof(float));
@@ -767,6 +770,7 @@ void OceanRenderer::splitNearLand(unsigned key) {
   gl::ensureBufferCapacity(openIndices_, openIndicesBytes_, bytes);
   gl::ensureBufferCapacity(nearLandIndices_, nearLandIndicesBytes_, bytes);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridIndicesBinding, indices_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridNearLandBinding, gridNearLand_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOpenIndicesBinding, openIndices_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kNearLandIndicesBinding, nearLandIndices_.id());
   const int triangles = indexCount_ / 3;

@@ -214,6 +214,8 @@ class OceanRenderer {
   static constexpr GLuint kClassRowsBinding = 3;  ///< ocean/sea_classify.frag's SeaClassRows
   /// ocean/grid_vertex_buffer.glsl's GridVertices and its vec4s per vertex.
   static constexpr GLuint kGridVerticesBinding = 4;
+  /// The vertices' near-land flags (gl::kGlobePixelsBinding's too: each pass binds its own).
+  static constexpr GLuint kGridNearLandBinding = 2;
   static constexpr int kGridVertexVec4s = 10;
   /// ocean/grid_vertex_buffer.glsl's GridRadianceTerms and its vec4s per vertex
   /// (ocean/radiance_terms.glsl's SEA_RADIANCE_VEC4S).
@@ -396,6 +398,8 @@ class OceanRenderer {
   std::size_t gridVerticesBytes_ = 0;
   gl::Buffer gridRadianceTerms_;  ///< the radiance terms' vertices' (ocean/grid_vertex_buffer.glsl)
   std::size_t gridRadianceTermsBytes_ = 0;
+  gl::Buffer gridNearLand_;  ///< a flag a vertex for the near-land split (ocean/grid_vertex_buffer.glsl)
+  std::size_t gridNearLandBytes_ = 0;
   SeaSurfaceBuffer surface_;
   bool lastDeferred_ = false;
   bool lastSurfaceCompact_ = false;
