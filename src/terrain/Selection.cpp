@@ -84,7 +84,18 @@ SeaHorizonCone seaHorizonCone(const geo::CameraView& view, double depthM) {
   c.sinHalfAngle = radiusM / centreM;
   c.cosHalfAngle = tangentM / centreM;
   c.capM = tangentM * c.cosHalfAngle;
+  c.centreM = centreM;
+  c.radiusM = radiusM;
+  c.tangentM = tangentM;
   return c;
+}
+
+bool seaHorizonMayHide(const SeaHorizonCone& c, const glm::dvec3& centreRelative, double radiusM) {
+  // (A point inside the cone's sphere is hidden wherever it lies.)
+  const double lowest = glm::length(centreRelative - c.centreM * c.axis) - radiusM;
+  if (lowest <= c.radiusM) return true;
+  const double ownTangentM = std::sqrt((lowest - c.radiusM) * (lowest + c.radiusM));
+  return glm::length(centreRelative) + radiusM > c.tangentM + ownTangentM;
 }
 
 double seaHorizonClip(const SeaHorizonCone& c, const glm::dvec3& relative) {

@@ -89,6 +89,8 @@ struct SeaHorizonCone {
   glm::dvec3 axis{0.0, 0.0, -1.0};  ///< unit, ECEF axes: from the eye towards the sphere's centre
   double cosHalfAngle = 1.0, sinHalfAngle = 0.0;
   double capM = 0.0;  ///< the tangent circle's plane, m along the axis from the eye
+  double centreM = 0.0, radiusM = 0.0;  ///< the sphere's centre along the axis and its radius, m
+  double tangentM = 0.0;                ///< the eye's tangent length to it, m
 };
 /// The cone for `view` and the waves' troughs `depthM` (m, ≥ 0) below sea level.
 SeaHorizonCone seaHorizonCone(const geo::CameraView& view, double depthM);
@@ -97,6 +99,12 @@ SeaHorizonCone seaHorizonCone(const geo::CameraView& view, double depthM);
 /// interpolation between hidden points (a triangle's clip distance: terrain/terrain.vert, its
 /// GLSL twin) is negative only where every point is hidden.
 double seaHorizonClip(const SeaHorizonCone& cone, const glm::dvec3& relative);
+/// Whether the cone may hide any point of a sphere (centre m from the eye, ECEF axes; radius
+/// m): false when every point of it is seen over the cone's sphere, outside that sphere and
+/// its distance from the eye within the two tangent lengths (the eye's, and the point's own,
+/// from its least distance to the sphere's centre). A tile it may not hide is drawn without the
+/// clip, which costs llvmpipe's clipper every triangle.
+bool seaHorizonMayHide(const SeaHorizonCone& cone, const glm::dvec3& centreRelative, double radiusM);
 
 /// Whether a sphere intersects the view frustum's four side planes (no far plane).
 bool inFrustum(const geo::CameraView& view, int widthPx, int heightPx,

@@ -370,6 +370,42 @@ TEST(TerrainSelection, SeaHorizonClipKeepsWhatTheLoweredSeaDoesNotHide) {
   EXPECT_GT(deepClipped, 0.99 * deepUnder);
 }
 
+// A tile drawn without the horizon's clip (terrain::seaHorizonMayHide false) holds no point the
+// clip would cut: spheres around the horizon from 2 m, 300 m and 15 km up, each sampled on its
+// surface and inside. From 15 km a tile of ridges 100 km off is drawn without it.
+TEST(TerrainSelection, SeaHorizonMayHideHoldsEveryClippedPoint) {
+  int hidingSpheres = 0, visibleSpheres = 0;
+  for (const double eyeM : {2.0, 300.0, 15000.0}) {
+    const geo::CameraView view = viewAt(36.0, -5.5, eyeM, 270.0, 0.0);
+    const SeaHorizonCone cone = seaHorizonCone(view, 3.0);
+    for (const double distanceM : {0.5, 0.9, 1.0, 1.1, 1.5, 2.0, 4.0})
+      for (const double radiusM : {0.01, 0.1, 0.5})
+        for (const double aboveM : {-0.2, 0.0, 0.05, 0.3}) {
+          const double d = distanceM * cone.tangentM, r = radiusM * cone.tangentM;
+          const glm::dvec3 ahead = glm::normalize(view.forward - glm::dot(view.forward, view.enu.up) * view.enu.up);
+          const double drop = d * d / (2.0 * geo::kWgs84SemiMajorM);
+          const glm::dvec3 centre = d * ahead + (aboveM * r - drop) * view.enu.up;
+          const bool mayHide = seaHorizonMayHide(cone, centre, r);
+          (mayHide ? hidingSpheres : visibleSpheres) += 1;
+          if (mayHide) continue;
+          for (int k = 0; k < 200; ++k) {
+            const double u = std::sin(k * 12.9898) * 0.5 + 0.5, v = std::sin(k * 78.233) * 0.5 + 0.5;
+            const double theta = 2.0 * std::numbers::pi * u, phi = std::acos(2.0 * v - 1.0);
+            const glm::dvec3 dir(std::sin(phi) * std::cos(theta), std::sin(phi) * std::sin(theta), std::cos(phi));
+            for (const double s : {0.5, 1.0})
+              EXPECT_GE(seaHorizonClip(cone, centre + s * r * dir), 0.0) << eyeM << " " << distanceM << " " << radiusM;
+          }
+        }
+  }
+  EXPECT_GT(hidingSpheres, 20);
+  EXPECT_GE(visibleSpheres, 20);
+  // A 6 km tile of ridges 5 km up, 100 km off, from 15 km; not one that reaches under the sea.
+  const geo::CameraView high = viewAt(27.3, 86.9, 15000.0, 10.0, 0.0);
+  const SeaHorizonCone cone = seaHorizonCone(high, 3.0);
+  EXPECT_FALSE(seaHorizonMayHide(cone, 1.0e5 * high.forward - 10000.0 * high.enu.up, 3000.0));
+  EXPECT_TRUE(seaHorizonMayHide(cone, 1.0e5 * high.forward - 15000.0 * high.enu.up, 3000.0));
+}
+
 TEST(TerrainSelection, OrbitViewIsCoarse) {
   TileCache cache(heights());
   const geo::CameraView view = viewAt(10.0, -30.0, 6.0e6, 0.0, -90.0, 256, 256);
