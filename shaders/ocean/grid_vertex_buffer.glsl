@@ -12,32 +12,25 @@
 #error "grid_vertex_buffer.glsl packs 5 patterns' shares"
 #endif
 const int GRID_VERTEX_VEC4S = 10;  // render/OceanRenderer::kGridVertexVec4s
+// The compute pass writes the buffers, the passes after it read them.
 #ifdef GRID_VERTEX_STORE
-layout(std430, binding = 4) writeonly buffer GridVertices { vec4 gridVertices[]; };  // kGridVerticesBinding
+#define GRID_BUFFER_ACCESS writeonly
 #else
-layout(std430, binding = 4) readonly buffer GridVertices { vec4 gridVertices[]; };
+#define GRID_BUFFER_ACCESS readonly
 #endif
+layout(std430, binding = 4) GRID_BUFFER_ACCESS buffer GridVertices { vec4 gridVertices[]; };  // kGridVerticesBinding
 #ifdef OCEAN_RADIANCE_TERMS
 // The vertices' radiance terms (vRadianceTerms, SEA_RADIANCE_VEC4S each), for the forward draw of
 // large cells (render/OceanRenderer::draw, computeGridVertices).
 // Binding 7 as grid_near_land.comp's NearLandIndices (GL 4.5 guarantees bindings 0-7; each pass
 // binds its own buffer there).
-#ifdef GRID_VERTEX_STORE
-layout(std430, binding = 7) writeonly buffer GridRadianceTerms { vec4 gridRadianceTerms[]; };  // kGridRadianceTermsBinding
-#else
-layout(std430, binding = 7) readonly buffer GridRadianceTerms { vec4 gridRadianceTerms[]; };
+layout(std430, binding = 7) GRID_BUFFER_ACCESS buffer GridRadianceTerms { vec4 gridRadianceTerms[]; };  // kGridRadianceTermsBinding
 #endif
-#endif
-
 #ifdef OCEAN_SEA_CLASSIFY
 // Each vertex's vNearLand > 0 again, 4 bytes a vertex, for ocean/grid_near_land.comp: its
 // three reads a triangle from the vertices' 160-byte records were ~30 ns a triangle on
 // llvmpipe (binding 2 as render/globe_pixels.glsl's: each pass binds its own buffer there).
-#ifdef GRID_VERTEX_STORE
-layout(std430, binding = 2) writeonly buffer GridNearLand { uint gridNearLand[]; };  // kGridNearLandBinding
-#else
-layout(std430, binding = 2) readonly buffer GridNearLand { uint gridNearLand[]; };
-#endif
+layout(std430, binding = 2) GRID_BUFFER_ACCESS buffer GridNearLand { uint gridNearLand[]; };  // kGridNearLandBinding
 #endif
 
 #ifdef GRID_VERTEX_STORE
