@@ -71,13 +71,19 @@ void main() {
 #ifndef TERRAIN_SHADOW_CASTER
   // Beyond the sea's horizon (from near the sea, most of the far coasts' hills): the clipper
   // cuts off what the sea or the land before it hides, before any fragment (enabled below the
-  // grid's ceiling where the land mask decides the coast: TerrainRenderer::prepareFrame). The
-  // function is convex, so between vertices its interpolation is never below a kept point's
-  // own. Precise, as the floor's clip.
+  // grid's ceiling where the land mask decides the coast, for the tiles it may cut:
+  // TerrainRenderer::drawTileGroup). The function is convex, so between vertices its
+  // interpolation is never below a kept point's own. Most of what it cuts is the sea floor,
+  // which terrain.frag would discard after its whole shader. (The floor it keeps as land
+  // where the mask holds land at the ray's sea-level crossing, a spit the layer sinks, is
+  // cut too where that crossing lies before the cone and the floor point beyond it: the
+  // globe's land shows there instead. Keeping all of the floor lost the gain.) Precise, as
+  // the floor's clip.
   precise float horizonAlong = dot(vRelative, uSeaHorizonAxis);
   precise float horizonAcross = length(vRelative - horizonAlong * uSeaHorizonAxis);
-  gl_ClipDistance[1] = max(horizonAcross * uSeaHorizonCone.x - horizonAlong * uSeaHorizonCone.y,
-                           uSeaHorizonCone.z - horizonAlong);
+  precise float horizonClip = max(horizonAcross * uSeaHorizonCone.x - horizonAlong * uSeaHorizonCone.y,
+                                  uSeaHorizonCone.z - horizonAlong);
+  gl_ClipDistance[1] = horizonClip;
 #endif
 #ifdef TERRAIN_SHADOW_CASTER
   // Ground below sea level casts no shadow (terrain/shadow_depth.frag): the clipper cuts it

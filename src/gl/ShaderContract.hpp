@@ -49,7 +49,8 @@ enum UniformBlockBinding : unsigned {
 };
 
 /// Binding points of shader storage blocks that several programs share (GLSL: OG_<NAME>); under 8,
-/// the least GL 4.5 guarantees (render/OceanRenderer's own passes use 3-7; gl::runProbe's
+/// the least GL 4.5 guarantees (render/OceanRenderer's own passes use 3-7, and 2 for the grid's
+/// near-land flags, which GlobeRenderer binds again for its pixels; gl::runProbe's
 /// test probes bind 0 for their run: the terrain binds its buffer again at each draw).
 enum StorageBinding : unsigned {
   kTerrainAerialBinding = 0,  ///< terrain/tile_vertex.glsl TileAerial (TerrainRenderer::computeTileAerial)

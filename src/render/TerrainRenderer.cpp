@@ -702,11 +702,12 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   renderShadowMap(view, casters, sunDirectionEcef);
   if (timer_ != nullptr) timer_->mark("terrain");
   const unsigned frameBits = prepareFrame(view, tiles, drawn, sunDirectionEcef, seaFromGlobe);
+  const auto drawAll = [&] { drawFrameTiles(view, drawn, frameBits, sunDirectionEcef, seaFromGlobe); };
   stats_.samplesPassed = 0;
   if (countSamples_)
-    stats_.samplesPassed = gl::queryResult(GL_SAMPLES_PASSED, [&] { drawFrameTiles(view, drawn, frameBits, sunDirectionEcef, seaFromGlobe); });
+    stats_.samplesPassed = gl::queryResult(GL_SAMPLES_PASSED, drawAll);
   else
-    drawFrameTiles(view, drawn, frameBits, sunDirectionEcef, seaFromGlobe);
+    drawAll();
   stats_.tiles = static_cast<int>(tiles.size());
   stats_.drawnTiles = static_cast<int>(drawn.size());
   stats_.landTiles = static_cast<int>(casters.size());
@@ -753,7 +754,7 @@ unsigned TerrainRenderer::prepareFrame(const geo::CameraView& view, const std::v
   GLint samples = 0;
   glGetIntegerv(GL_SAMPLES, &samples);
   floorClip_ = seaFromGlobe || samples > 1 ? FloorClip{} : floorClip(view, params_.heightPx);
-  // (The eye at or under the sea: the cone is the sphere's from above it.)
+  // (geo::makeCameraView keeps the eye 0.1 m over the ellipsoid at least.)
   seaHorizonClip_.reset();
   if (seaHorizonClipOn_ && !seaFromGlobe && view.position.heightM > 0.0 && cache_.heights().coastFromMask())
     seaHorizonClip_ = terrain::seaHorizonCone(view, seaCrestM_);

@@ -65,8 +65,9 @@ struct TerrainStats {
   /// of each, or in all of the view: tileBits).
   int dayTiles = 0;
   double maxHeightM = 0.0;      ///< highest point of the selected tiles, m (0 when none)
-  /// Samples the last frame's tile draws passed (both draws of a tile drawn twice), with
-  /// setCountSamples(true); else 0.
+  /// Samples the last frame's tile draws passed (both draws of a tile drawn twice; above the
+  /// grid's ceiling not those drawWaterTiles draws after the globe), with setCountSamples(true);
+  /// else 0.
   std::uint64_t samplesPassed = 0;
   /// Below the grid's ceiling, the highest the floor can be (a vertex's height, risen at a 45°
   /// slope over 1.5 vertex spacings) around the vertices of the selected tiles with water over

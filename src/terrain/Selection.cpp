@@ -68,8 +68,10 @@ SeaHorizonCone seaHorizonCone(const geo::CameraView& view, double depthM) {
   const double sinLat = std::sin(view.position.latitudeDeg * std::numbers::pi / 180.0);
   const double meridianM = a * (1.0 - e2) / std::pow(1.0 - e2 * sinLat * sinLat, 1.5);
   // Along a meridian the ellipsoid falls under its osculating sphere by |dκ/ds| d³ / 6 with
-  // |dκ/ds| ≤ 1.5 e² / M²: ≤ 4.1e-17 d³ m. The rays enter the sphere within its tangent length
-  // of the eye, L = sqrt(2 M g) for a gap g under the eye: two rounds of margin (1 m besides).
+  // |dκ/ds| ≤ 1.5 e² / M²: ≤ 4.14e-17 d³ m, and ~0.2 m more at 500 km from higher orders;
+  // 5e-17 keeps ~20 % besides (and 1 m for the shader's floats). The rays enter the sphere
+  // within its tangent length of the eye, L = sqrt(2 M g) for a gap g under the eye: two
+  // rounds for the margin that depends on it.
   const double eyeM = std::max(view.position.heightM, 0.0);
   double gapM = eyeM + depthM + 1.0;
   for (int i = 0; i < 2; ++i) {

@@ -368,6 +368,28 @@ TEST(TerrainSelection, SeaHorizonClipKeepsWhatTheLoweredSeaDoesNotHide) {
   std::printf("clipped %d points; %d of %d points 20 m under the lowered horizon\n", clipped, deepClipped, deepUnder);
   EXPECT_GT(clipped, 1000);
   EXPECT_GT(deepClipped, 0.99 * deepUnder);
+  // Along the cone's very edge, where the margins matter: every point just inside it and past
+  // the tangent circle is behind the lowered ellipsoid (fails without the cubic margin).
+  int edgeMisses = 0;
+  for (const double lat : {0.0, 30.0, 45.0, 60.0, 80.0, 89.5})
+    for (const double eyeM : {2.0, 30.0, 1000.0, 20000.0}) {
+      const geo::CameraView view = viewAt(lat, -20.0, eyeM, 0.0, 0.0);
+      const SeaHorizonCone cone = seaHorizonCone(view, depthM);
+      const glm::dvec3 side = glm::normalize(glm::cross(cone.axis, glm::dvec3(0.3, 0.5, 0.8)));
+      const double angle = std::asin(cone.sinHalfAngle) - 1e-9;
+      for (int k = 0; k < 36; ++k) {
+        const double azimuth = k * std::numbers::pi / 18.0;
+        const glm::dvec3 across = std::cos(azimuth) * side + std::sin(azimuth) * glm::cross(cone.axis, side);
+        const glm::dvec3 dir = std::cos(angle) * cone.axis + std::sin(angle) * across;
+        for (const double f : {1.0001, 1.01, 1.1, 1.5}) {
+          const double length = f * cone.tangentM;
+          if (seaHorizonClip(cone, length * dir) >= 0.0) continue;
+          const auto crossing = geo::intersectEllipsoid(view.positionEcef, dir, -depthM);
+          edgeMisses += crossing.has_value() && *crossing < length ? 0 : 1;
+        }
+      }
+    }
+  EXPECT_EQ(edgeMisses, 0);
 }
 
 // A tile drawn without the horizon's clip (terrain::seaHorizonMayHide false) holds no point the
