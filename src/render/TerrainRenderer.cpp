@@ -421,8 +421,8 @@ void TerrainRenderer::drawTileGroup(const geo::CameraView& view, const std::vect
   if (clipFloor) glEnable(GL_CLIP_DISTANCE0);
   if (seaHorizonClip_) {
     p.set("uSeaHorizonAxis", glm::vec3(seaHorizonClip_->axis));
-    p.set("uSeaHorizonCone", glm::vec3(seaHorizonClip_->cosHalfAngle, seaHorizonClip_->sinHalfAngle,
-                                       seaHorizonClip_->capM));
+    p.set("uSeaHorizonCone", glm::vec3(seaHorizonClip_->cosHalfAngle(), seaHorizonClip_->sinHalfAngle(),
+                                       seaHorizonClip_->capM()));
   }
   glBindTextureUnit(gl::kUnitShadowMap, shadowMap_.id());
   const bool aerialBuffer = (bits & kAerialBuffer) != 0 && (bits & kCoverage) == 0;
@@ -754,7 +754,8 @@ unsigned TerrainRenderer::prepareFrame(const geo::CameraView& view, const std::v
   GLint samples = 0;
   glGetIntegerv(GL_SAMPLES, &samples);
   floorClip_ = seaFromGlobe || samples > 1 ? FloorClip{} : floorClip(view, params_.heightPx);
-  // (geo::makeCameraView keeps the eye 0.1 m over the ellipsoid at least.)
+  // No cone for an eye at or under the sea (a view not made by geo::makeCameraView, which keeps
+  // the eye 0.1 m up at least).
   seaHorizonClip_.reset();
   if (seaHorizonClipOn_ && !seaFromGlobe && view.position.heightM > 0.0 && cache_.heights().coastFromMask())
     seaHorizonClip_ = terrain::seaHorizonCone(view, seaCrestM_);

@@ -81,15 +81,7 @@ SeaHorizonCone seaHorizonCone(const geo::CameraView& view, double depthM) {
   const double radiusM = meridianM - (gapM - eyeM);  // the sphere's
   const double centreM = eyeM + meridianM;           // its centre's distance from the eye
   const double tangentM = std::sqrt(gapM * (centreM + radiusM));
-  SeaHorizonCone c;
-  c.axis = -view.enu.up;
-  c.sinHalfAngle = radiusM / centreM;
-  c.cosHalfAngle = tangentM / centreM;
-  c.capM = tangentM * c.cosHalfAngle;
-  c.centreM = centreM;
-  c.radiusM = radiusM;
-  c.tangentM = tangentM;
-  return c;
+  return {-view.enu.up, centreM, radiusM, tangentM};
 }
 
 bool seaHorizonMayHide(const SeaHorizonCone& c, const glm::dvec3& centreRelative, double radiusM) {
@@ -103,7 +95,7 @@ bool seaHorizonMayHide(const SeaHorizonCone& c, const glm::dvec3& centreRelative
 double seaHorizonClip(const SeaHorizonCone& c, const glm::dvec3& relative) {
   const double along = glm::dot(relative, c.axis);
   const double across = glm::length(relative - along * c.axis);
-  return std::max(across * c.cosHalfAngle - along * c.sinHalfAngle, c.capM - along);
+  return std::max(across * c.cosHalfAngle() - along * c.sinHalfAngle(), c.capM() - along);
 }
 
 bool inFrustum(const geo::CameraView& view, int widthPx, int heightPx, const glm::dvec3& centreEcef,

@@ -87,10 +87,13 @@ bool aboveSeaHorizon(const glm::dvec3& eyeEcef, const Tile& tile);
 /// or the land hide it (aboveSeaHorizon's argument, at the waves' own depth).
 struct SeaHorizonCone {
   glm::dvec3 axis{0.0, 0.0, -1.0};  ///< unit, ECEF axes: from the eye towards the sphere's centre
-  double cosHalfAngle = 1.0, sinHalfAngle = 0.0;  ///< of the cone's half angle (the sphere's angular radius)
-  double capM = 0.0;  ///< the tangent circle's plane, m along the axis from the eye
-  double centreM = 0.0, radiusM = 0.0;  ///< the sphere's centre along the axis and its radius, m
-  double tangentM = 0.0;                ///< the eye's tangent length to it, m
+  double centreM = 1.0, radiusM = 0.0;  ///< the sphere's centre along the axis and its radius, m
+  double tangentM = 1.0;                ///< the eye's tangent length to it, m
+  /// The cosine and the sine of the cone's half angle (the sphere's angular radius).
+  [[nodiscard]] double cosHalfAngle() const { return tangentM / centreM; }
+  [[nodiscard]] double sinHalfAngle() const { return radiusM / centreM; }
+  /// The tangent circle's plane, m along the axis from the eye.
+  [[nodiscard]] double capM() const { return tangentM * cosHalfAngle(); }
 };
 /// The cone for `view` and the waves' troughs `depthM` (m, ≥ 0) below sea level.
 SeaHorizonCone seaHorizonCone(const geo::CameraView& view, double depthM);

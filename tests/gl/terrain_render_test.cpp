@@ -266,6 +266,8 @@ struct ViewCase {
 };
 const ViewCase kHimalaya15kmHorizon{"himalaya_15km_horizon", {.latDeg = 27.3, .lonDeg = 86.9, .heightM = 15000.0, .headingDeg = 10.0, .pitchDeg = -2.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0};
 const ViewCase kGibraltar2m{"gibraltar_2m", {.latDeg = 36.0, .lonDeg = -5.5, .heightM = 2.0, .headingDeg = 270.0, .pitchDeg = 2.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0};
+const ViewCase kTarifa2mBeach{"tarifa_2m_beach", {.latDeg = 35.995, .lonDeg = -5.595, .heightM = 2.0, .headingDeg = 300.0, .pitchDeg = -3.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0};
+const ViewCase kBahamas2m{"bahamas_2m", {.latDeg = 24.2, .lonDeg = -78.2, .heightM = 2.0, .headingDeg = 270.0, .pitchDeg = -10.0, .fovDeg = 45.0, .width = 320, .height = 180}, 30.0, 120.0};
 const ViewCase kGibraltar30km{"gibraltar_30km", {.latDeg = 35.6, .lonDeg = -5.6, .heightM = 30000.0, .headingDeg = 0.0, .pitchDeg = -30.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0};
 
 }  // namespace
@@ -551,9 +553,9 @@ TEST(TerrainRender, FloorClippedAroundTheEyeKeepsThePicture) {
   render::GlobeRenderer r(data::defaultElevation());
   const std::vector<ViewCase> cases{
       kGibraltar2m,
-      {"tarifa_2m_beach", {.latDeg = 35.995, .lonDeg = -5.595, .heightM = 2.0, .headingDeg = 300.0, .pitchDeg = -3.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0},
+      kTarifa2mBeach,
       {"tarifa_150m_beach", {.latDeg = 35.99, .lonDeg = -5.59, .heightM = 150.0, .headingDeg = 300.0, .pitchDeg = -25.0, .fovDeg = 45.0, .width = 320, .height = 180}, 40.0, 200.0},
-      {"bahamas_2m", {.latDeg = 24.2, .lonDeg = -78.2, .heightM = 2.0, .headingDeg = 270.0, .pitchDeg = -10.0, .fovDeg = 45.0, .width = 320, .height = 180}, 30.0, 120.0},
+      kBahamas2m,
   };
   double clipped = 0.0;
   for (const ViewCase& c : cases) {
@@ -589,9 +591,9 @@ TEST(TerrainRender, SeaHorizonClipKeepsThePictureAndShadesLess) {
   render::GlobeRenderer r(data::defaultElevation());
   const std::vector<ViewCase> cases{
       kGibraltar2m,
-      {"tarifa_2m_beach", {.latDeg = 35.995, .lonDeg = -5.595, .heightM = 2.0, .headingDeg = 300.0, .pitchDeg = -3.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0},
+      kTarifa2mBeach,
       {"gibraltar_300m", {.latDeg = 36.0, .lonDeg = -5.5, .heightM = 300.0, .headingDeg = 250.0, .pitchDeg = -2.0, .fovDeg = 45.0, .width = 320, .height = 180}, 8.0, 260.0},
-      {"bahamas_2m", {.latDeg = 24.2, .lonDeg = -78.2, .heightM = 2.0, .headingDeg = 270.0, .pitchDeg = -10.0, .fovDeg = 45.0, .width = 320, .height = 180}, 30.0, 120.0},
+      kBahamas2m,
       {"gibraltar_0.3m_swell", {.latDeg = 36.0, .lonDeg = -5.5, .heightM = 0.3, .headingDeg = 270.0, .pitchDeg = 1.0, .fovDeg = 45.0, .width = 320, .height = 180}, 20.0, 250.0},
   };
   r.terrain().setCountSamples(true);

@@ -376,7 +376,7 @@ TEST(TerrainSelection, SeaHorizonClipKeepsWhatTheLoweredSeaDoesNotHide) {
       const geo::CameraView view = viewAt(lat, -20.0, eyeM, 0.0, 0.0);
       const SeaHorizonCone cone = seaHorizonCone(view, depthM);
       const glm::dvec3 side = glm::normalize(glm::cross(cone.axis, glm::dvec3(0.3, 0.5, 0.8)));
-      const double angle = std::asin(cone.sinHalfAngle) - 1e-9;
+      const double angle = std::asin(cone.sinHalfAngle()) - 1e-9;
       for (int k = 0; k < 36; ++k) {
         const double azimuth = k * std::numbers::pi / 18.0;
         const glm::dvec3 across = std::cos(azimuth) * side + std::sin(azimuth) * glm::cross(cone.axis, side);
