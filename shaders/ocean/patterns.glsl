@@ -160,6 +160,15 @@ float patternLod(float footprintM, int i) {
   return log2(max(footprintM, 1e-6) * uPatternFftSize / uPatternSizeM[i]);
 #endif
 }
+// Whether a footprint (m) resolves pattern i: patternLod(footprintM, i) < uPatternTopLod, the
+// 1 x 1 level log2(uPatternFftSize), without the logarithm: the footprint is under the tile.
+bool patternResolved(float footprintM, int i) {
+#if defined(OCEAN_VALIDATION_REFERENCE) || defined(OCEAN_VALIDATION_BRDF_ONLY)
+  return patternLod(footprintM, i) < uPatternTopLod;
+#else
+  return footprintM < uPatternSizeM[i];
+#endif
+}
 
 vec2 fieldPosition(vec2 xy) { return vec2(dot(xy, uFieldRotation), dot(xy, vec2(-uFieldRotation.y, uFieldRotation.x))); }
 vec2 frameVector(vec2 v) { return vec2(dot(v, vec2(uFieldRotation.x, -uFieldRotation.y)), dot(v, uFieldRotation.yx)); }
@@ -329,13 +338,19 @@ SeaSurface oceanSurface(vec2 xy, float footprintM, vec2 wind, PatternSums vertex
   WindBins wb = windBinsOf(wind.y, fieldTurn);
   PatternSums sums = vertexSums;
   // The footprint resolves a prefix of the patterns (largest first; lod grows along the list);
-  // the rest it averages out entirely. Of the prefix the vertices took the first patterns,
-  // wholly or in part. Loops rather than an if in one (llvmpipe runs both sides of an if, but
-  // no loop trip after the first that no pixel of a block needs).
-  int resolved = 0;
-  while (resolved < PATTERN_COUNT && patternLod(footprintM, resolved) < uPatternTopLod) ++resolved;
-  int first = uPatternFirst;
-  while (first < resolved && vertexSums.share[first] >= 0.999) ++first;
+  // the rest it averages out entirely. Of the prefix the vertices took the first patterns from
+  // uPatternFirst on wholly (a share of 0.999 or more: a prefix too, the shares fall along the
+  // list), the next ones in part. Both prefixes counted in loops of constant trips, which the
+  // compiler unrolls (as while loops, their trips' mask bookkeeping cost llvmpipe ~25 ms of
+  // sea-8km's 74 at 1280x720, docs/performance.md); the lookups in a loop rather than an if in
+  // one (llvmpipe runs both sides of an if, but no loop trip after the first that no pixel of
+  // a block needs).
+  int resolved = 0, taken = uPatternFirst;
+  for (int i = 0; i < PATTERN_COUNT; ++i) {
+    resolved += patternResolved(footprintM, i) ? 1 : 0;
+    taken += i >= uPatternFirst && vertexSums.share[i] >= 0.999 ? 1 : 0;
+  }
+  int first = min(taken, max(resolved, uPatternFirst));
   for (int i = first; i < resolved; ++i) {
     float lod = patternLod(footprintM, i);
     addPatternStatistics(sums, p, wb, i, lod, PATTERN_BAND(bands, i, wind.x), 1.0 - vertexSums.share[i]);
