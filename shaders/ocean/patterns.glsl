@@ -341,10 +341,11 @@ SeaSurface oceanSurface(vec2 xy, float footprintM, vec2 wind, PatternSums vertex
   // the rest it averages out entirely. Of the prefix the vertices took the first patterns from
   // uPatternFirst on wholly (a share of 0.999 or more: a prefix too, the shares fall along the
   // list), the next ones in part. Both prefixes counted in loops of constant trips, which the
-  // compiler unrolls (as while loops, their trips' mask bookkeeping cost llvmpipe ~25 ms of
-  // sea-8km's 74 at 1280x720, docs/performance.md); the lookups in a loop rather than an if in
-  // one (llvmpipe runs both sides of an if, but no loop trip after the first that no pixel of
-  // a block needs).
+  // compiler unrolls (as while loops, a logarithm a trip, they cost llvmpipe ~5 ms of
+  // sea-8km's ocean pass and ~4 ms of sea-4m's open sea, one thread at 1280x720:
+  // docs/performance.md, twenty-fifth session); the lookups in a loop rather than an if in one
+  // (llvmpipe runs both sides of an if, but no loop trip after the first that no pixel of a
+  // block needs; the first it runs, masked, even where none enters).
   int resolved = 0, taken = uPatternFirst;
   for (int i = 0; i < PATTERN_COUNT; ++i) {
     resolved += patternResolved(footprintM, i) ? 1 : 0;
