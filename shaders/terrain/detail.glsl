@@ -40,14 +40,15 @@ uint detailHash(ivec3 p) {
 
 // Gradient at a lattice point: one of the 12 cube-edge directions (Perlin's improved noise;
 // 16 cases, 4 repeated, so a bit mask picks it).
+// Written without branches (the CPU's tile builder mispredicted them at every lattice point):
+// c < 8 puts su on x, else on y; c < 4 puts sv on y, c = 12 or 14 on x, else on z. Every
+// term is 0 or ±1, so the sums are exact.
 vec3 detailGradient(uint h) {
   uint c = h & 15u;
-  Number su = (c & 1u) == 0u ? 1.0 : -1.0;
-  Number sv = (c & 2u) == 0u ? 1.0 : -1.0;
-  vec3 g = vec3(0.0);
-  if (c < 8u) g.x = su; else g.y = su;
-  if (c < 4u) g.y = sv; else if (c == 12u || c == 14u) g.x = sv; else g.z = sv;
-  return g;
+  Number su = 1.0 - 2.0 * Number(c & 1u);
+  Number sv = 1.0 - 2.0 * Number((c >> 1u) & 1u);
+  Number low = Number(c < 8u), svOnY = Number(c < 4u), svOnX = Number(c == 12u || c == 14u);
+  return vec3(low * su + svOnX * sv, (1.0 - low) * su + svOnY * sv, (1.0 - svOnY - svOnX) * sv);
 }
 
 // Gradient noise in about [-1, 1] at lattice cell `cell` and position `f` in [0,1)³ inside it,

@@ -113,17 +113,33 @@ double LandMask::constrainHeightM(double heightM, double latitudeDeg, double lon
   return f >= 0.5 ? std::max(heightM, edge) : std::min(heightM, edge * (1.0 - keepDepth));
 }
 
+namespace {
+
+/// The row's 64-cell chunk `chunk` of packed bits (cell 64 chunk + i at bit i), zero past the
+/// row's end: one popcount a chunk (std::popcount is a library call on baseline x86-64, which
+/// the per-byte counts paid 8 times over).
+std::uint64_t bitChunk(const std::uint8_t* rowBits, int stride, int chunk) {
+  std::uint64_t v = 0;
+  const int first = 8 * chunk, n = std::min(8, stride - first);
+  for (int b = 0; b < n; ++b) v |= static_cast<std::uint64_t>(rowBits[first + b]) << (8 * b);
+  return v;
+}
+
+}  // namespace
+
 void LandMask::setFineLevel(std::vector<std::uint8_t> refinedBits, std::vector<std::uint64_t> blocks) {
   if (!global() || refinedBits.size() != bits_.size())
     throw InternalError("LandMask: a fine level needs a global mask and one bit per cell");
   const int stride = bytesPerRow(), chunks = (stride + 7) / 8;
   refinedBefore_.assign(static_cast<std::size_t>(height_) * static_cast<std::size_t>(chunks), 0);
   std::uint32_t count = 0;
-  for (int r = 0; r < height_; ++r)
-    for (int b = 0; b < stride; ++b) {
-      if (b % 8 == 0) refinedBefore_[static_cast<std::size_t>(r) * static_cast<std::size_t>(chunks) + static_cast<std::size_t>(b / 8)] = count;
-      count += static_cast<std::uint32_t>(std::popcount(refinedBits[static_cast<std::size_t>(r) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(b)]));
+  for (int r = 0; r < height_; ++r) {
+    const std::uint8_t* rowBits = refinedBits.data() + static_cast<std::size_t>(r) * static_cast<std::size_t>(stride);
+    for (int k = 0; k < chunks; ++k) {
+      refinedBefore_[static_cast<std::size_t>(r) * static_cast<std::size_t>(chunks) + static_cast<std::size_t>(k)] = count;
+      count += static_cast<std::uint32_t>(std::popcount(bitChunk(rowBits, stride, k)));
     }
+  }
   if (count != blocks.size())
     throw InternalError("LandMask: " + std::to_string(count) + " refined cells but " + std::to_string(blocks.size()) + " blocks");
   refined_ = std::move(refinedBits);
@@ -141,10 +157,9 @@ std::uint64_t LandMask::block(int column, int row) const {
   // Its index: the refined cells before its row's 64-cell chunk, then those before it in the chunk.
   const int stride = bytesPerRow(), chunks = (stride + 7) / 8;
   const std::uint8_t* rowBits = refined_.data() + static_cast<std::size_t>(row) * static_cast<std::size_t>(stride);
-  std::size_t index = refinedBefore_[static_cast<std::size_t>(row) * static_cast<std::size_t>(chunks) + static_cast<std::size_t>(column / 64)];
-  for (int b = column / 64 * 8; b < column / 8; ++b) index += static_cast<std::size_t>(std::popcount(rowBits[b]));
-  index += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(rowBits[column / 8] & ((1u << (column % 8)) - 1u))));
-  return blocks_[index];
+  const std::size_t before = refinedBefore_[static_cast<std::size_t>(row) * static_cast<std::size_t>(chunks) + static_cast<std::size_t>(column / 64)];
+  const std::uint64_t below = (std::uint64_t{1} << (column % 64)) - 1u;
+  return blocks_[before + static_cast<std::size_t>(std::popcount(bitChunk(rowBits, stride, column / 64) & below))];
 }
 
 bool LandMask::waterAround(double latitudeDeg, double longitudeDeg, double radiusM, bool fine) const {

@@ -42,16 +42,19 @@ glm::dvec3 detailLatticePoint(const DetailOctaves& o, int k, const glm::dvec3& u
 
 double detailSum(const DetailOctaves& o, const glm::dvec3& unitUp, int count, int gradientOctaves,
                  glm::dvec3* gradient) {
+  if (count > o.normalCount || (count > 0 && o.weight[0] == 0.0))
+    throw InternalError("detailSum: octave tables not filled (Heightfield fills them)");
   double sum = 0.0;
   glm::dvec3 grad(0.0);
   for (int k = 0; k < count; ++k) {
-    const glm::dvec3 p = detailLatticePoint(o, k, unitUp);
+    const auto i = static_cast<std::size_t>(k);
+    const glm::dvec3 p = unitUp * o.latticeScale[i] + glsl::detailOctaveOffset(k);  // detailLatticePoint
     const glm::dvec3 cell = glm::floor(p);
     const glm::dvec4 r = glsl::detailRidged(glm::ivec3(cell), p - cell);
-    const double w = glsl::detailOctaveWeight(k) / o.norm;
+    const double w = o.weight[i] / o.norm;
     sum += w * r.x;
     // d/d(unitUp) of the lattice point is a / wavelength.
-    if (k < gradientOctaves) grad += w * (geo::kWgs84SemiMajorM / o.wavelengthM(k)) * glm::dvec3(r.y, r.z, r.w);
+    if (k < gradientOctaves) grad += w * o.latticeScale[i] * glm::dvec3(r.y, r.z, r.w);
   }
   if (gradient != nullptr) *gradient = grad;
   return std::clamp(sum, -1.0, 1.0);
@@ -66,7 +69,7 @@ Heightfield::Heightfield(std::shared_ptr<const data::LatLonGrid> layer) : layer_
   octaves_.normalCount = 0;
   octaves_.heightCount = 0;
   octaves_.norm = 0.0;
-  while (octaves_.normalCount < 24 && octaves_.wavelengthM(octaves_.normalCount) >= kNormalShortestM) {
+  while (octaves_.normalCount < DetailOctaves::kMaxOctaves && octaves_.wavelengthM(octaves_.normalCount) >= kNormalShortestM) {
     if (octaves_.wavelengthM(octaves_.normalCount) >= kDetailShortestM) {
       octaves_.norm += glsl::detailOctaveWeight(octaves_.normalCount);
       ++octaves_.heightCount;
@@ -74,6 +77,10 @@ Heightfield::Heightfield(std::shared_ptr<const data::LatLonGrid> layer) : layer_
     ++octaves_.normalCount;
   }
   if (octaves_.norm <= 0.0) octaves_.norm = 1.0;
+  for (int k = 0; k < octaves_.normalCount; ++k) {
+    octaves_.weight.at(static_cast<std::size_t>(k)) = glsl::detailOctaveWeight(k);
+    octaves_.latticeScale.at(static_cast<std::size_t>(k)) = geo::kWgs84SemiMajorM / octaves_.wavelengthM(k);
+  }
   // The land's detail amplitude per metre of the layer's RMS difference σ(Δ) (below): the
   // weights' sum times octave 0's a_0 = (λ_0 / c) S(λ_0) sqrt(1 - 4^(H-1)) for σ(Δ) = 1 m.
   amplitudePerRms_ = octaves_.norm * octaves_.longestM / kRidgedSlopeRms *
@@ -127,10 +134,14 @@ double Heightfield::calibratedRmsSlope(double rmsDifferenceM, double scaleM) con
 }
 
 double Heightfield::detailAmplitudeM(double latitudeDeg, double longitudeDeg, double h) const {
-  if (h <= 0.0) return seaDetailAmplitudeM(latitudeDeg, longitudeDeg, h);
+  return detailAmplitudeFromShadingM(h, detailShadingAmplitudeM(latitudeDeg, longitudeDeg, h));
+}
+
+double Heightfield::detailAmplitudeFromShadingM(double h, double shadingAmplitudeM) {
+  if (h <= 0.0) return shadingAmplitudeM;  // the sea's: the same (seaDetailAmplitudeM)
   // Never more than 80 % of the height, so the coastline stays on the layer's zero contour,
   // which the globe and ocean passes use too.
-  const double amplitude = std::min(detailShadingAmplitudeM(latitudeDeg, longitudeDeg, h), 0.8 * h);
+  const double amplitude = std::min(shadingAmplitudeM, 0.8 * h);
   return amplitude < 0.5 ? 0.0 : amplitude;
 }
 
@@ -164,8 +175,8 @@ HeightSample Heightfield::sample(double latitudeDeg, double longitudeDeg, int no
   HeightSample s;
   const double h = layerHeightM(latitudeDeg, longitudeDeg);
   const glm::dvec3 up = geodeticUpFast(latitudeDeg, longitudeDeg);
-  s.detailAmplitudeM = detailAmplitudeM(latitudeDeg, longitudeDeg, h);
   s.shadingAmplitudeM = detailShadingAmplitudeM(latitudeDeg, longitudeDeg, h);
+  s.detailAmplitudeM = detailAmplitudeFromShadingM(h, s.shadingAmplitudeM);
   glm::dvec3 grad(0.0);
   s.heightM = h;
   if (s.shadingAmplitudeM > 0.0) {

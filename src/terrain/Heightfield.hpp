@@ -9,6 +9,7 @@
 // ones, as many as each pixel's footprint allows.
 #include <glm/glm.hpp>
 
+#include <array>
 #include <memory>
 #include <utility>
 
@@ -24,6 +25,11 @@ struct DetailOctaves {
   int heightCount = 0;  ///< octaves in the heights (wavelength >= kDetailShortestM)
   int normalCount = 0;  ///< octaves in the normals (wavelength >= kNormalShortestM)
   double norm = 1.0;    ///< sum of the height octaves' weights
+  static constexpr int kMaxOctaves = 24;
+  /// Per octave (the first normalCount; Heightfield fills them), what detailSum would otherwise
+  /// recompute at every point: detailOctaveWeight(k) (before normalisation) and the lattice's
+  /// scale on the unit sphere, a / wavelengthM(k).
+  std::array<double, kMaxOctaves> weight{}, latticeScale{};
   [[nodiscard]] double wavelengthM(int k) const;
   /// The first octave finer than `wavelengthM` (the number of octaves at least that long).
   [[nodiscard]] int countAtLeast(double wavelengthM) const;
@@ -104,6 +110,8 @@ class Heightfield {
   /// detailAmplitudeM for a layer height `h` already read there.
   [[nodiscard]] double detailAmplitudeM(double latitudeDeg, double longitudeDeg, double h) const;
   [[nodiscard]] double detailShadingAmplitudeM(double latitudeDeg, double longitudeDeg, double h) const;
+  /// detailAmplitudeM from the shading's amplitude there (what bounds it on land).
+  [[nodiscard]] static double detailAmplitudeFromShadingM(double h, double shadingAmplitudeM);
   [[nodiscard]] double seaDetailAmplitudeM(double latitudeDeg, double longitudeDeg, double h) const;
   [[nodiscard]] double layerRmsDifferenceM(double latitudeDeg, double longitudeDeg, double h) const;
 
