@@ -1,13 +1,19 @@
 #include "core/CacheFile.hpp"
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <zlib.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <system_error>
+#include <utility>
 
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
@@ -63,26 +69,56 @@ std::string hex16(std::uint64_t v) {
   return s;
 }
 
-std::optional<std::vector<std::uint8_t>> readCacheFile(const std::filesystem::path& file, std::uint64_t key,
-                                                       std::string* whyNot) {
-  auto reject = [&](const char* why) -> std::optional<std::vector<std::uint8_t>> {
+CachePayload::CachePayload(CachePayload&& o) noexcept
+    : map_(std::exchange(o.map_, nullptr)), mapBytes_(std::exchange(o.mapBytes_, 0)),
+      data_(std::exchange(o.data_, nullptr)), size_(std::exchange(o.size_, 0)) {}
+
+CachePayload& CachePayload::operator=(CachePayload&& o) noexcept {
+  if (this != &o) {
+    CachePayload gone(std::move(*this));
+    map_ = std::exchange(o.map_, nullptr);
+    mapBytes_ = std::exchange(o.mapBytes_, 0);
+    data_ = std::exchange(o.data_, nullptr);
+    size_ = std::exchange(o.size_, 0);
+  }
+  return *this;
+}
+
+CachePayload::~CachePayload() {
+  if (map_ != nullptr) ::munmap(map_, mapBytes_);
+}
+
+std::optional<CachePayload> readCacheFile(const std::filesystem::path& file, std::uint64_t key, std::string* whyNot) {
+  auto reject = [&](const char* why) -> std::optional<CachePayload> {
     if (whyNot != nullptr) *whyNot = why;
     return std::nullopt;
   };
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return reject("missing");
-  std::error_code ec;
-  const std::uintmax_t fileSize = std::filesystem::file_size(file, ec);
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return reject("missing");
+  struct stat st {};
+  const bool regular = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+  const auto fileSize = regular ? static_cast<std::uintmax_t>(st.st_size) : 0;
+  if (!regular || fileSize < sizeof(Header)) {
+    ::close(fd);
+    return reject(regular ? "truncated header" : "not a regular file");
+  }
+  // Mapped, not read: the pages are the page cache's own (no copy, no zeroed pages of ours;
+  // MAP_POPULATE maps them all at once). Our writer replaces a file by renaming a new one over
+  // it, which leaves this mapping's file intact.
+  void* map = ::mmap(nullptr, fileSize, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+  ::close(fd);
+  if (map == MAP_FAILED) return reject("cannot be mapped");
+  CachePayload payload;
+  payload.map_ = map;
+  payload.mapBytes_ = fileSize;
   Header h;
-  if (ec || !in.read(reinterpret_cast<char*>(&h), sizeof h)) return reject("truncated header");
+  std::memcpy(&h, map, sizeof h);
   if (h.magic != kMagic) return reject("not an oceanglobe cache file");
   if (h.key != key) return reject("stale key");
-  // Before allocating: a corrupt size field must not ask for terabytes.
   if (h.size != fileSize - sizeof h) return reject("size field disagrees with the file's size");
-  std::vector<std::uint8_t> payload(static_cast<std::size_t>(h.size));
-  if (!in.read(reinterpret_cast<char*>(payload.data()), static_cast<std::streamsize>(payload.size())))
-    return reject("truncated payload");
-  if (crc32Of(payload.data(), payload.size()) != h.crc) return reject("CRC mismatch");
+  payload.data_ = static_cast<const std::uint8_t*>(map) + sizeof h;
+  payload.size_ = static_cast<std::size_t>(h.size);
+  if (crc32Of(payload.data_, payload.size_) != h.crc) return reject("CRC mismatch");
   return payload;
 }
 

@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -29,10 +30,34 @@ std::uint32_t crc32Of(const void* data, std::size_t n);
 /// 64-bit hex, zero-padded to 16 digits (cache file names).
 std::string hex16(std::uint64_t v);
 
+/// A cache file's payload, read-only, mapped from the file rather than copied: the pages are the
+/// page cache's, so a 37 MB relief costs neither a copy nor 9000 fresh zeroed pages at start-up
+/// (docs/performance.md, "Start-up"). Movable, not copyable; empty when default-constructed.
+class CachePayload {
+ public:
+  CachePayload() = default;
+  CachePayload(CachePayload&& other) noexcept;
+  CachePayload& operator=(CachePayload&& other) noexcept;
+  CachePayload(const CachePayload&) = delete;
+  CachePayload& operator=(const CachePayload&) = delete;
+  ~CachePayload();
+
+  [[nodiscard]] const std::uint8_t* data() const { return data_; }
+  [[nodiscard]] std::size_t size() const { return size_; }
+  [[nodiscard]] std::span<const std::uint8_t> bytes() const { return {data_, size_}; }
+
+ private:
+  friend std::optional<CachePayload> readCacheFile(const std::filesystem::path&, std::uint64_t, std::string*);
+  void* map_ = nullptr;  ///< the whole file (header too), mmap'ed
+  std::size_t mapBytes_ = 0;
+  const std::uint8_t* data_ = nullptr;
+  std::size_t size_ = 0;
+};
+
 /// The payload of cache file `file` when it is intact and was written with `key`; nullopt
 /// otherwise, with the reason in `*whyNot` when given ("missing" when there is no file).
-std::optional<std::vector<std::uint8_t>> readCacheFile(const std::filesystem::path& file, std::uint64_t key,
-                                                       std::string* whyNot = nullptr);
+std::optional<CachePayload> readCacheFile(const std::filesystem::path& file, std::uint64_t key,
+                                          std::string* whyNot = nullptr);
 
 /// Writes `payload` as cache file `file` (its directory created; temporary name, then rename)
 /// with `key`, first removing the files of that directory for which `superseded(fileName)` is

@@ -179,7 +179,7 @@ std::vector<std::uint8_t> serialize(const LatLonGrid& g) {
 }
 
 /// nullopt when the payload does not hold a consistent grid.
-std::optional<LatLonGrid> deserializeGrid(const std::vector<std::uint8_t>& bytes) {
+std::optional<LatLonGrid> deserializeGrid(std::span<const std::uint8_t> bytes) {
   try {
     ByteReader r(bytes);
     LatLonGrid g;

@@ -39,7 +39,7 @@ std::uint64_t embeddedCacheKey(const std::vector<std::string_view>& sources) {
   return key;
 }
 
-std::optional<std::vector<std::uint8_t>> loadEmbeddedCache(const std::string& name, std::uint64_t key) {
+std::optional<core::CachePayload> loadEmbeddedCache(const std::string& name, std::uint64_t key) {
   if (embeddedCacheDirectory().empty()) return std::nullopt;
   const std::filesystem::path file = fileOf(name, key);
   std::string why;

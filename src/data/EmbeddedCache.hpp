@@ -14,12 +14,14 @@
 #include <cstring>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "core/CacheFile.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "core/StartupTrace.hpp"
@@ -34,14 +36,14 @@ std::uint64_t embeddedCacheKey(const std::vector<std::string_view>& sources);
 
 /// The payload of `embedded-NAME-KEY.bin` when it is intact; nullopt when it is missing,
 /// stale or corrupt (logged at info level; the caller rebuilds and stores it).
-std::optional<std::vector<std::uint8_t>> loadEmbeddedCache(const std::string& name, std::uint64_t key);
+std::optional<core::CachePayload> loadEmbeddedCache(const std::string& name, std::uint64_t key);
 
 /// Writes `payload` as `embedded-NAME-KEY.bin` (temporary name, then rename) and removes older
 /// `embedded-NAME-*.bin`. Never throws: a failure is a warning, the next start rebuilds.
 void storeEmbeddedCache(const std::string& name, std::uint64_t key, const std::vector<std::uint8_t>& payload);
 
 /// `what` derived from embedded data, through the cache: the payload of `embedded-NAME-KEY.bin`
-/// decoded (`decode(bytes)` -> std::optional<T>, nullopt when inconsistent) when it is intact,
+/// decoded (`decode(std::span<const std::uint8_t>)` -> std::optional<T>, nullopt when inconsistent) when it is intact,
 /// else `build()`, stored (`encode(value)` -> bytes) for the next start. The cached read is
 /// timed in the start-up trace as "data: embedded WHAT (from the cache)".
 template <class T, class Decode, class Encode, class Build>
@@ -49,7 +51,7 @@ T cachedEmbedded(const std::string& name, std::uint64_t key, const std::string& 
                  Encode encode, Build build) {
   if (const auto bytes = loadEmbeddedCache(name, key)) {
     const core::startup::Scope timed("data: embedded " + what + " (from the cache)");
-    if (std::optional<T> cached = decode(*bytes)) return std::move(*cached);
+    if (std::optional<T> cached = decode(bytes->bytes())) return std::move(*cached);
     log::info("embedded " + what + ": the cached copy is inconsistent; rebuilding it");
   }
   T value = build();
@@ -86,7 +88,7 @@ class ByteWriter {
 /// Reads what ByteWriter wrote; throws og::InputError past the end (a corrupt payload).
 class ByteReader {
  public:
-  explicit ByteReader(const std::vector<std::uint8_t>& bytes) : bytes_(bytes) {}
+  explicit ByteReader(std::span<const std::uint8_t> bytes) : bytes_(bytes) {}
   template <class T>
   T get() {
     static_assert(std::is_trivially_copyable_v<T>);
@@ -116,7 +118,7 @@ class ByteReader {
     at_ += n;
     return p;
   }
-  const std::vector<std::uint8_t>& bytes_;
+  std::span<const std::uint8_t> bytes_;
   std::size_t at_ = 0;
 };
 

@@ -1,6 +1,7 @@
 #include "data/Imagery.hpp"
 
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -32,7 +33,7 @@ std::vector<std::uint8_t> serialize(const GeoImage& g) {
   return std::move(w.bytes());
 }
 
-std::optional<GeoImage> deserializeImage(const std::vector<std::uint8_t>& bytes) {
+std::optional<GeoImage> deserializeImage(std::span<const std::uint8_t> bytes) {
   try {
     ByteReader r(bytes);
     GeoImage g;

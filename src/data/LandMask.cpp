@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -279,7 +280,7 @@ std::vector<std::uint8_t> serialize(const LandMask& m) {
   return std::move(w.bytes());
 }
 
-std::optional<LandMask> deserializeMask(const std::vector<std::uint8_t>& bytes) {
+std::optional<LandMask> deserializeMask(std::span<const std::uint8_t> bytes) {
   try {
     ByteReader r(bytes);
     const int width = r.get<int>(), height = r.get<int>();

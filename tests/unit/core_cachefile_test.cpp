@@ -33,7 +33,7 @@ std::string rejection(const fs::path& file, std::uint64_t key = kKey) {
   std::string why;
   const auto read = readCacheFile(file, key, &why);
   if (read) {
-    EXPECT_EQ(*read, payload());
+    EXPECT_EQ(std::vector<std::uint8_t>(read->bytes().begin(), read->bytes().end()), payload());
     return "";
   }
   EXPECT_FALSE(why.empty());
@@ -89,6 +89,25 @@ TEST(CacheFile, RoundTripsAndRejectsEveryDamageWithoutCrashing) {
   fs::create_directory(file);  // a directory where the file should be
   std::string why;
   EXPECT_FALSE(readCacheFile(file, kKey, &why));
+  EXPECT_EQ(why, "not a regular file");
+}
+
+TEST(CacheFile, APayloadOutlivesItsFileBeingReplacedOrRemoved) {
+  // The payload is the file mapped into memory: the writer's rename of a new file over it, and
+  // the removal of a superseded one, must leave what was read intact.
+  const fs::path dir = og::test::scratchDir("cachefile");
+  const fs::path file = dir / "x.bin";
+  writeCacheFile(file, kKey, payload(), never);
+  auto read = readCacheFile(file, kKey);
+  ASSERT_TRUE(read);
+  writeCacheFile(file, kKey, std::vector<std::uint8_t>(50, 0xee), never);
+  auto moved = std::move(*read);  // moving keeps the mapping
+  EXPECT_EQ(read->size(), 0u);
+  ASSERT_EQ(moved.size(), payload().size());
+  EXPECT_EQ(std::vector<std::uint8_t>(moved.bytes().begin(), moved.bytes().end()), payload());
+  fs::remove(file);
+  EXPECT_EQ(moved.bytes()[9999], payload()[9999]);
+  EXPECT_EQ(rejection(file), "missing");
 }
 
 TEST(CacheFile, WritingRemovesOnlySupersededFiles) {
