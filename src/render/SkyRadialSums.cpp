@@ -36,17 +36,17 @@ void SkyRadialSums::fill(GLuint skyMapsId, int first, int count, bool frame) {
                      GL_RGBA32F);
   glDispatchCompute(static_cast<GLuint>((kAzimuths + 63) / 64), 1, static_cast<GLuint>(count));
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  if (frame) {
-    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-    glGenerateTextureMipmap(frame_.id());
-    return;
-  }
-  // The layers' mip levels by a compute of their own (skymap_radial_mip.comp).
-  if (mips_.id() == 0) mips_ = gl::Program({{GL_COMPUTE_SHADER, "atmosphere/skymap_radial_mip.comp"}});
-  mips_.use();
+  // The mip levels by a compute of their own (skymap_radial_mip.comp), each layer in z.
+  gl::Program& mips = frame ? frameMips_ : mips_;
+  if (mips.id() == 0)
+    mips = gl::Program({{GL_COMPUTE_SHADER, "atmosphere/skymap_radial_mip.comp"}},
+                       frame ? std::vector<std::string>{"SKY_RADIAL_FRAME"} : std::vector<std::string>{});
+  mips.use();
+  const GLuint target = frame ? frame_.id() : layers_.id();
+  const GLboolean layered = frame ? GL_FALSE : GL_TRUE;
   for (int level = 1; level < gl::fullMipLevels(kAzimuths); ++level) {
-    glBindImageTexture(0, layers_.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
-    glBindImageTexture(1, layers_.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(0, target, level - 1, layered, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, target, level, layered, 0, GL_WRITE_ONLY, GL_RGBA32F);
     const auto w = static_cast<GLuint>(std::max(kAzimuths >> level, 1)), h = static_cast<GLuint>(std::max(kRadii >> level, 1));
     glDispatchCompute((w + 7) / 8, (h + 7) / 8, static_cast<GLuint>(count));
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -91,10 +91,11 @@ void SkyRadialSums::setUniforms(const gl::Program& program) const {
 
 glm::vec3 SkyRadialSums::belowHorizon(int layer) const { return belowHorizon_.at(static_cast<std::size_t>(layer)); }
 
-std::vector<float> SkyRadialSums::read(int layer) const {
-  std::vector<float> texels(static_cast<std::size_t>(4 * kAzimuths * kRadii));
+std::vector<float> SkyRadialSums::read(int layer, int level) const {
+  const int w = std::max(kAzimuths >> level, 1), h = std::max(kRadii >> level, 1);
+  std::vector<float> texels(static_cast<std::size_t>(4 * w * h));
   const bool frame = layer == skyMapLayers_;
-  glGetTextureSubImage(frame ? frame_.id() : layers_.id(), 0, 0, 0, frame ? 0 : layer, kAzimuths, kRadii, 1, GL_RGBA,
+  glGetTextureSubImage(frame ? frame_.id() : layers_.id(), level, 0, 0, frame ? 0 : layer, w, h, 1, GL_RGBA,
                        GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(float)), texels.data());
   return texels;
 }

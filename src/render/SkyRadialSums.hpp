@@ -40,9 +40,10 @@ class SkyRadialSums {
   /// horizon).
   void setUniforms(const gl::Program& program) const;
   [[nodiscard]] bool ready() const { return frame_.id() != 0 || layers_.id() != 0; }
-  /// Level 0 of layer `layer` (0 ... skyMapLayers; skyMapLayers: the frame layer's), rgba per
-  /// texel, rows of azimuths from the zenith outwards, for tests.
-  [[nodiscard]] std::vector<float> read(int layer) const;
+  /// Mip level `level` of layer `layer` (0 ... skyMapLayers; skyMapLayers: the frame layer's),
+  /// rgba per texel, rows of azimuths from the zenith outwards (kAzimuths >> level of them, at
+  /// least 1, and kRadii >> level rows, at least 1), for tests.
+  [[nodiscard]] std::vector<float> read(int layer, int level = 0) const;
   /// Layer `layer`'s radiance below the horizon that the sums leave out, as last given.
   [[nodiscard]] glm::vec3 belowHorizon(int layer) const;
 
@@ -56,6 +57,7 @@ class SkyRadialSums {
   gl::Program fillFrame_;  ///< atmosphere/skymap_radial.comp (SKY_RADIAL_FRAME), on first use
   gl::Program fillLayers_; ///< atmosphere/skymap_radial.comp, on first use
   gl::Program mips_;       ///< atmosphere/skymap_radial_mip.comp, on first use
+  gl::Program frameMips_;  ///< atmosphere/skymap_radial_mip.comp (SKY_RADIAL_FRAME), on first use
   int skyMapLayers_ = 0;
   std::vector<glm::vec3> belowHorizon_;  ///< the Sun layers', then the frame layer's
   double frameKey_ = 0.0;

@@ -186,6 +186,41 @@ TEST(AtmospherePrecompute, SkyRadialSumsIntegrateTheLayersAlongTheirRadii) {
   }
 }
 
+// The radial sums' mip levels (skymap_radial_mip.comp, the frame layer's and the Sun layers'):
+// each texel the mean of the 2 x 2 below it, a 2 x 1 pair where the level below has one row.
+TEST(AtmospherePrecompute, SkyRadialSumsMipLevelsAreBoxesOfTheLevelBelow) {
+  auto ctx = gl::createHeadlessContext();
+  const test::ScopedEnv env("OCEANGLOBE_SKY_FILTER", "radial");
+  const atmosphere::Parameters p = smallEarth(2);
+  render::Atmosphere gpu(p, noCache());
+  const int layers = p.tables.skyMapLayers;
+  gpu.prepareFrameSkyLayer(0.6 * render::Atmosphere::kSkyMapMaxZenithRad);
+  gpu.prepareSunLayerSums();
+  const render::SkyRadialSums& sums = gpu.skyRadialSums();
+  constexpr int kAz = render::SkyRadialSums::kAzimuths, kRho = render::SkyRadialSums::kRadii;
+  for (const int layer : {layers, layers / 2}) {  // the frame layer, a Sun layer
+    for (const int level : {1, 4, 8}) {  // 256 x 64, 32 x 8, 2 x 1 (from 4 x 1: one row below)
+      const std::vector<float> finer = sums.read(layer, level - 1), coarser = sums.read(layer, level);
+      const int fw = std::max(kAz >> (level - 1), 1), fh = std::max(kRho >> (level - 1), 1);
+      const int w = std::max(kAz >> level, 1), h = std::max(kRho >> level, 1);
+      ASSERT_EQ(coarser.size(), static_cast<std::size_t>(4 * w * h));
+      double worst = 0.0, largest = 0.0;
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          auto at = [&](int i, int j) {
+            return static_cast<double>(finer[4 * static_cast<std::size_t>(std::min(j, fh - 1) * fw + std::min(i, fw - 1)) + 1]);
+          };
+          const double box = 0.25 * (at(2 * x, 2 * y) + at(2 * x + 1, 2 * y) + at(2 * x, 2 * y + 1) + at(2 * x + 1, 2 * y + 1));
+          const double got = static_cast<double>(coarser[4 * static_cast<std::size_t>(y * w + x) + 1]);
+          worst = std::max(worst, std::abs(got - box));
+          largest = std::max(largest, std::abs(box));
+        }
+      EXPECT_GT(largest, 0.0) << "layer " << layer << " level " << level;
+      EXPECT_LE(worst, 1e-5 * largest) << "layer " << layer << " level " << level;
+    }
+  }
+}
+
 // Each Sun layer's value below the horizon, which the radial sums' lookups add back, comes from
 // the sky maps' cache on a cached start (no read-back): it must be the layer's corner texel, as
 // on a cold start; the frame layer's, their blend at a fractional weight rounded to a half float
