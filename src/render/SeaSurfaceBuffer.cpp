@@ -22,15 +22,20 @@ GLuint SeaSurfaceBuffer::boundDepthStencilTexture() {
 }
 
 void SeaSurfaceBuffer::bindForWriting(int width, int height, GLuint depthStencil, bool compact) {
-  if (width != width_ || height != height_ || layers_.id() == 0) {
+  // Only the compact layout's layers until a frame needs them all (then all, from then on):
+  // llvmpipe zeroes a texture's storage when it makes it, and the two layers more are 29 MB at
+  // 1280 x 720, ~15 ms of a first frame over the open sea.
+  wantsAll_ = wantsAll_ || !compact;
+  const int layers = wantsAll_ ? kLayers : kCompactLayers;
+  if (width != width_ || height != height_ || layers_.id() == 0 || layers > allocated_) {
     layers_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(layers_.id(), 1, GL_RGBA32UI, width, height, kLayers);
+    glTextureStorage3D(layers_.id(), 1, GL_RGBA32UI, width, height, layers);
     glTextureParameteri(layers_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(layers_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     fbo_ = gl::createFramebuffer();
-    for (int i = 0; i < kLayers; ++i)
+    for (int i = 0; i < layers; ++i)
       glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), layers_.id(), 0, i);
-    width_ = width, height_ = height, depthStencil_ = 0, drawBuffers_ = 0;
+    width_ = width, height_ = height, depthStencil_ = 0, drawBuffers_ = 0, allocated_ = layers;
   }
   // Each layer written costs llvmpipe ~0.9 ms a frame at 640x360 (one thread): the compact
   // layout leaves the water volume's two off.

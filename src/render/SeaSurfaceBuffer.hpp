@@ -1,6 +1,6 @@
 #pragma once
 // The deferred sea's surface buffer (shaders/ocean/sea_surface.glsl): an RGBA32UI array
-// texture of kLayers layers, each a colour attachment of a framebuffer that shares the frame's
+// texture of kLayers layers (kCompactLayers while every frame has used the compact layout), each a colour attachment of a framebuffer that shares the frame's
 // depth-stencil texture, so that the projected grid's surface pass is depth-tested against the
 // terrain and writes the sea's classes into the frame's stencil (render/OceanRenderer).
 #include "gl/Objects.hpp"
@@ -19,7 +19,8 @@ class SeaSurfaceBuffer {
   [[nodiscard]] static GLuint boundDepthStencilTexture();
   /// Makes the buffer `width` x `height` over `depthStencil` (boundDepthStencilTexture) and binds
   /// its framebuffer with the kLayers draw buffers (kCompactLayers when `compact`); remade only
-  /// when the size or the depth-stencil texture changes.
+  /// when the size or the depth-stencil texture changes, or when the first frame without the
+  /// compact layout comes (until then it holds only the compact layout's layers).
   void bindForWriting(int width, int height, GLuint depthStencil, bool compact = false);
   /// Zeroes the layer that holds each pixel's class where the driver cannot export stencil
   /// values (layer 5, ocean/sea_surface.glsl's SEA_CLASS_IN_SURFACE; 0: no sea drawn), bound
@@ -34,6 +35,8 @@ class SeaSurfaceBuffer {
   int width_ = 0, height_ = 0;
   GLuint depthStencil_ = 0;
   int drawBuffers_ = 0;
+  int allocated_ = 0;      ///< layers of layers_: kCompactLayers until a frame wants them all
+  bool wantsAll_ = false;  ///< a frame has drawn without the compact layout
 };
 
 }  // namespace og::render
