@@ -170,19 +170,25 @@ double Heightfield::seaDetailAmplitudeM(double latitudeDeg, double longitudeDeg,
   return amplitude < 0.5 ? 0.0 : amplitude;
 }
 
-HeightSample Heightfield::sample(double latitudeDeg, double longitudeDeg, int normalOctaves,
-                                 double stepDeg) const {
+HeightSample Heightfield::sampleHeight(double latitudeDeg, double longitudeDeg, int normalOctaves,
+                                       glm::dvec3* detailGradient) const {
   HeightSample s;
   const double h = layerHeightM(latitudeDeg, longitudeDeg);
-  const glm::dvec3 up = geodeticUpFast(latitudeDeg, longitudeDeg);
   s.shadingAmplitudeM = detailShadingAmplitudeM(latitudeDeg, longitudeDeg, h);
   s.detailAmplitudeM = detailAmplitudeFromShadingM(h, s.shadingAmplitudeM);
   glm::dvec3 grad(0.0);
   s.heightM = h;
   if (s.shadingAmplitudeM > 0.0) {
+    const glm::dvec3 up = geodeticUpFast(latitudeDeg, longitudeDeg);
     const double sum = detailSum(octaves_, up, octaves_.heightCount, normalOctaves, &grad);
     if (s.detailAmplitudeM > 0.0) s.heightM = h + s.detailAmplitudeM * sum;
   }
+  *detailGradient = grad;
+  return s;
+}
+
+glm::dvec3 Heightfield::normalAt(double latitudeDeg, double longitudeDeg, double stepDeg,
+                                 const glm::dvec3& detailGradient, double shadingAmplitudeM) const {
   // The layer's normal from central differences on the ellipsoid (ECEF), over at least half a
   // cell so the bilinear layer's facets do not show in the lighting.
   const double latN = std::min(latitudeDeg + stepDeg, 90.0), latS = std::max(latitudeDeg - stepDeg, -90.0);
@@ -195,14 +201,21 @@ HeightSample Heightfield::sample(double latitudeDeg, double longitudeDeg, int no
   const glm::dvec3 c = glm::cross(pe - pw, pn - ps);
   const double len = glm::length(c), ns = glm::length(pn - ps);
   // At the poles the east-west difference vanishes: the vertical stands in.
+  const glm::dvec3 up = geodeticUpFast(latitudeDeg, longitudeDeg);
   glm::dvec3 n = len > 1e-6 * ns * ns ? c / len : up;
   // Tilt by the detail's height gradient per metre along the surface (the unit sphere's
   // coordinates move 1/a per metre), tangential part only. With the shading's amplitude, as
   // the fragment shader's finer octaves: an octave lights the same whether a tile's vertex
   // normals or its pixels carry it, so tiles of different levels meet without a seam.
-  const glm::dvec3 g = grad * (s.shadingAmplitudeM / geo::kWgs84SemiMajorM);
-  n = glm::normalize(n - (g - glm::dot(g, n) * n));
-  s.normal = n;
+  const glm::dvec3 g = detailGradient * (shadingAmplitudeM / geo::kWgs84SemiMajorM);
+  return glm::normalize(n - (g - glm::dot(g, n) * n));
+}
+
+HeightSample Heightfield::sample(double latitudeDeg, double longitudeDeg, int normalOctaves,
+                                 double stepDeg) const {
+  glm::dvec3 grad(0.0);
+  HeightSample s = sampleHeight(latitudeDeg, longitudeDeg, normalOctaves, &grad);
+  s.normal = normalAt(latitudeDeg, longitudeDeg, stepDeg, grad, s.shadingAmplitudeM);
   return s;
 }
 

@@ -60,6 +60,13 @@ class Heightfield {
   /// heightM() bit for bit.
   [[nodiscard]] HeightSample sample(double latitudeDeg, double longitudeDeg, int normalOctaves,
                                     double stepDeg) const;
+  /// sample() in two halves, for a caller that may not need the normal (a tile the sea
+  /// covers): the height and amplitudes (normal left zero) with the detail's gradient of its
+  /// first `normalOctaves` octaves in `*detailGradient`, then the normal from them.
+  [[nodiscard]] HeightSample sampleHeight(double latitudeDeg, double longitudeDeg, int normalOctaves,
+                                          glm::dvec3* detailGradient) const;
+  [[nodiscard]] glm::dvec3 normalAt(double latitudeDeg, double longitudeDeg, double stepDeg,
+                                    const glm::dvec3& detailGradient, double shadingAmplitudeM) const;
   /// The layer alone (bilinear, no detail), metres; for a global layer coarser than the GSHHG
   /// land mask (data::LandMask::refines), constrained to it so its coast is the mask's.
   [[nodiscard]] double layerHeightM(double latitudeDeg, double longitudeDeg) const;

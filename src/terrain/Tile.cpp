@@ -92,7 +92,7 @@ Tile buildTile(const Heightfield& heights, const TileKey& key) {
   const double stepDeg = 0.5 * std::max(key.sizeDeg() / kTileQuads, heights.layer().dLatDeg);
 
   std::vector<HeightSample> samples(static_cast<std::size_t>(n * n));
-  std::vector<glm::dvec3> ecef(static_cast<std::size_t>(n * n));
+  std::vector<glm::dvec3> ecef(static_cast<std::size_t>(n * n)), gradients(static_cast<std::size_t>(n * n));
   std::vector<double> lats(static_cast<std::size_t>(n * n)), lons(static_cast<std::size_t>(n * n));
   t.minHeightM = 1e30;
   t.maxHeightM = -1e30;
@@ -100,12 +100,19 @@ Tile buildTile(const Heightfield& heights, const TileKey& key) {
     for (int i = 0; i < n; ++i) {
       const auto k = static_cast<std::size_t>(j * n + i);
       tileVertexLatLon(key, i, j, lats[k], lons[k]);
-      samples[k] = heights.sample(lats[k], lons[k], t.normalOctaves, stepDeg);
+      samples[k] = heights.sampleHeight(lats[k], lons[k], t.normalOctaves, &gradients[k]);
       const double h = samples[k].heightM;
       ecef[k] = geodeticToEcefFast(lats[k], lons[k], h);
       t.minHeightM = std::min(t.minHeightM, h);
       t.maxHeightM = std::max(t.maxHeightM, h);
     }
+  // Normals (four more layer samples a vertex) only where a tile can be drawn: the sea hides a
+  // tile it covers everywhere it is seen (TerrainRenderer::tilesToDraw), whose vertical stands
+  // in. Most tiles a view near the open sea visits are such (docs/performance.md, start-up).
+  for (std::size_t k = 0; k < samples.size(); ++k)
+    samples[k].normal = t.coveredBySea() ? geodeticUpFast(lats[k], lons[k])
+                                         : heights.normalAt(lats[k], lons[k], stepDeg, gradients[k],
+                                                            samples[k].shadingAmplitudeM);
 
   // Skirt depth: hides the gaps at T-junctions with coarser neighbours, which are at most the
   // height differences across a cell of this tile.

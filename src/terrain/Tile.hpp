@@ -48,7 +48,7 @@ void tileVertexLatLon(const TileKey& key, int i, int j, double& latDeg, double& 
 /// Per-vertex data as uploaded (float, 10 per vertex).
 struct TileVertex {
   glm::vec3 position;  ///< relative to the tile centre, m (ECEF axes)
-  glm::vec3 normal;    ///< unit, ECEF axes
+  glm::vec3 normal;    ///< unit, ECEF axes (the vertical on a tile the sea covers, never drawn: Tile::coveredBySea)
   float heightM;       ///< above sea level, m
   float latitudeRad;
   float longitudeRad;

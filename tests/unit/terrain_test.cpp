@@ -90,6 +90,31 @@ TEST(TerrainTile, SharedEdgeVerticesIdenticalAcrossLevels) {
   }
 }
 
+TEST(TerrainTile, VerticesAreTheHeightfieldsSamplesAndTheSeaCoveredOnesTakeTheVertical) {
+  // buildTile takes a vertex's height and its normal in two halves (Heightfield::sampleHeight,
+  // normalAt) and skips the normals of a tile the sea covers: a drawable tile's vertices must
+  // be sample()'s exactly, a covered one's heights too with the vertical for normals.
+  const double size = 180.0 / 512.0;
+  const TileKey land{9, static_cast<int>((87.0 + 180.0) / size), static_cast<int>((28.0 + 90.0) / size)};  // the Himalaya
+  const TileKey sea{9, static_cast<int>((-40.0 + 180.0) / size), static_cast<int>((20.0 + 90.0) / size)};  // mid-Atlantic
+  for (const TileKey& key : {land, sea}) {
+    const Tile t = buildTile(*heights(), key);
+    EXPECT_EQ(t.coveredBySea(), key == sea);
+    const double stepDeg = 0.5 * std::max(key.sizeDeg() / kTileQuads, heights()->layer().dLatDeg);
+    for (int j = 0; j <= kTileQuads; j += 7)
+      for (int i = 0; i <= kTileQuads; i += 5) {
+        double lat = 0.0, lon = 0.0;
+        tileVertexLatLon(key, i, j, lat, lon);
+        const HeightSample s = heights()->sample(lat, lon, t.normalOctaves, stepDeg);
+        const TileVertex& v = t.vertices[static_cast<std::size_t>(j * (kTileQuads + 1) + i)];
+        EXPECT_EQ(v.heightM, static_cast<float>(s.heightM));
+        EXPECT_EQ(v.detailAmplitudeM, static_cast<float>(s.shadingAmplitudeM));
+        const glm::vec3 expected = t.coveredBySea() ? glm::vec3(geodeticUpFast(lat, lon)) : glm::vec3(s.normal);
+        EXPECT_EQ(v.normal, expected) << "vertex " << i << ", " << j << " of level " << key.level << " x " << key.x;
+      }
+  }
+}
+
 TEST(TerrainTile, SkirtsHangBelowTheEdges) {
   const Tile t = buildTile(*heights(), TileKey{8, 2 * 267 / 2, 168});
   ASSERT_EQ(t.vertices.size(), static_cast<std::size_t>(kTileVertices));
