@@ -42,7 +42,8 @@ uint detailHash(ivec3 p) {
 // 16 cases, 4 repeated, so a bit mask picks it).
 // Written without branches (the CPU's tile builder mispredicted them at every lattice point):
 // c < 8 puts su on x, else on y; c < 4 puts sv on y, c = 12 or 14 on x, else on z. Every
-// term is 0 or ±1, so the sums are exact.
+// term is 0 or ±1, so the sums are exact: the same vectors as the branches gave, but for the
+// sign of some zeros (-0 for +0), which can only flip the sign of an exactly zero result.
 vec3 detailGradient(uint h) {
   uint c = h & 15u;
   Number su = 1.0 - 2.0 * Number(c & 1u);

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -93,18 +94,20 @@ std::optional<CachePayload> readCacheFile(const std::filesystem::path& file, std
     if (whyNot != nullptr) *whyNot = why;
     return std::nullopt;
   };
-  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  // Non-blocking: a FIFO in the file's place must not hang the open (it is rejected below).
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) return reject("missing");
   struct stat st {};
   const bool regular = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
   const auto fileSize = regular ? static_cast<std::uintmax_t>(st.st_size) : 0;
-  if (!regular || fileSize < sizeof(Header)) {
+  if (!regular || fileSize < sizeof(Header) || fileSize > SIZE_MAX) {
     ::close(fd);
-    return reject(regular ? "truncated header" : "not a regular file");
+    return reject(!regular ? "not a regular file" : fileSize < sizeof(Header) ? "truncated header" : "too large");
   }
-  // Mapped, not read: the pages are the page cache's own (no copy, no zeroed pages of ours;
+  // Mapped, not read: the pages are the page cache's own (no copy into fresh zeroed pages;
   // MAP_POPULATE maps them all at once). Our writer replaces a file by renaming a new one over
-  // it, which leaves this mapping's file intact.
+  // it, which leaves this mapping's file intact; another program truncating the file in place
+  // while it is mapped would make the reads fault (SIGBUS), a race this cache accepts.
   void* map = ::mmap(nullptr, fileSize, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
   ::close(fd);
   if (map == MAP_FAILED) return reject("cannot be mapped");

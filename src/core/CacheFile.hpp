@@ -30,9 +30,10 @@ std::uint32_t crc32Of(const void* data, std::size_t n);
 /// 64-bit hex, zero-padded to 16 digits (cache file names).
 std::string hex16(std::uint64_t v);
 
-/// A cache file's payload, read-only, mapped from the file rather than copied: the pages are the
-/// page cache's, so a 37 MB relief costs neither a copy nor 9000 fresh zeroed pages at start-up
-/// (docs/performance.md, "Start-up"). Movable, not copyable; empty when default-constructed.
+/// A cache file's payload, read-only, mapped from the file rather than read into a buffer: the
+/// pages are the page cache's, so reading a 37 MB relief costs neither a copy nor 9000 fresh
+/// zeroed pages at start-up (its decoder still copies what it keeps; docs/performance.md,
+/// "Twenty-sixth session"). Movable, not copyable; empty when default-constructed.
 class CachePayload {
  public:
   CachePayload() = default;

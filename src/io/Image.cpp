@@ -139,7 +139,7 @@ bool writePngFile(const char* path, const std::uint8_t* rgba, int width, int hei
   png_write_end(png, info);
   png_destroy_write_struct(&png, &info);
   if (std::fflush(file) != 0 || std::ferror(file) != 0) {
-    std::snprintf(error->message.data(), error->message.size(), "%s", std::strerror(errno));
+    std::snprintf(error->message.data(), error->message.size(), "%s", errno != 0 ? std::strerror(errno) : "write error");
     std::fclose(file);
     return false;
   }

@@ -49,7 +49,8 @@ void SkyRadialSums::fill(GLuint skyMapsId, int first, int count, bool frame) {
     glBindImageTexture(1, target, level, layered, 0, GL_WRITE_ONLY, GL_RGBA32F);
     const auto w = static_cast<GLuint>(std::max(kAzimuths >> level, 1)), h = static_cast<GLuint>(std::max(kRadii >> level, 1));
     glDispatchCompute((w + 7) / 8, (h + 7) / 8, static_cast<GLuint>(count));
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    // (The update bit for read()'s glGetTextureSubImage in the tests.)
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   }
   for (GLuint unit : {0u, 1u}) glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
 }

@@ -2,6 +2,7 @@
 // tables, sky maps). Every damaged file is rejected with its reason and never crashes (also run
 // under AddressSanitizer/UBSan: scripts/test.sh).
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -108,6 +109,17 @@ TEST(CacheFile, APayloadOutlivesItsFileBeingReplacedOrRemoved) {
   fs::remove(file);
   EXPECT_EQ(moved.bytes()[9999], payload()[9999]);
   EXPECT_EQ(rejection(file), "missing");
+  // An empty payload round-trips (a header alone), and a FIFO in the file's place is refused
+  // without hanging the open.
+  writeCacheFile(file, kKey, {}, never);
+  const auto empty = readCacheFile(file, kKey);
+  ASSERT_TRUE(empty);
+  EXPECT_EQ(empty->size(), 0u);
+  fs::remove(file);
+  ASSERT_EQ(::mkfifo(file.c_str(), 0600), 0);
+  std::string why;
+  EXPECT_FALSE(readCacheFile(file, kKey, &why));
+  EXPECT_EQ(why, "not a regular file");
 }
 
 TEST(CacheFile, WritingRemovesOnlySupersededFiles) {
