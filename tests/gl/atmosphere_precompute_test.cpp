@@ -133,14 +133,26 @@ TEST(AtmospherePrecompute, FrameSkyLayerBlendsTheLayersAroundTheSun) {
 // horizon's band the sums stand still. Checked against the layer's own texels on radii towards
 // the Sun, away from it and across (a turned or mirrored table fails), for the frame layer (made
 // each frame) and two Sun layers (made once).
+namespace {
+/// An atmosphere on llvmpipe's sky filter with its radial sums made: the frame layer's (the Sun
+/// at 0.6 of the maps' zenith range) and the Sun layers'.
+struct RadialSums {
+  std::unique_ptr<gl::Context> ctx = gl::createHeadlessContext();
+  test::ScopedEnv env{"OCEANGLOBE_SKY_FILTER", "radial"};
+  atmosphere::Parameters p = smallEarth(2);
+  render::Atmosphere gpu{p, noCache()};
+  RadialSums() {
+    gpu.prepareFrameSkyLayer(0.6 * render::Atmosphere::kSkyMapMaxZenithRad);
+    gpu.prepareSunLayerSums();
+  }
+};
+}  // namespace
+
 TEST(AtmospherePrecompute, SkyRadialSumsIntegrateTheLayersAlongTheirRadii) {
-  auto ctx = gl::createHeadlessContext();
-  const test::ScopedEnv env("OCEANGLOBE_SKY_FILTER", "radial");
-  const atmosphere::Parameters p = smallEarth(2);
-  render::Atmosphere gpu(p, noCache());
+  RadialSums f;
+  const atmosphere::Parameters& p = f.p;
+  render::Atmosphere& gpu = f.gpu;
   const int layers = p.tables.skyMapLayers;
-  gpu.prepareFrameSkyLayer(0.6 * render::Atmosphere::kSkyMapMaxZenithRad);
-  gpu.prepareSunLayerSums();
   const render::SkyRadialSums& sums = gpu.skyRadialSums();
   constexpr int kAz = render::SkyRadialSums::kAzimuths, kRho = render::SkyRadialSums::kRadii;
   const int n = p.tables.skyMapSize;
@@ -189,14 +201,9 @@ TEST(AtmospherePrecompute, SkyRadialSumsIntegrateTheLayersAlongTheirRadii) {
 // The radial sums' mip levels (skymap_radial_mip.comp, the frame layer's and the Sun layers'):
 // each texel the mean of the 2 x 2 below it, a 2 x 1 pair where the level below has one row.
 TEST(AtmospherePrecompute, SkyRadialSumsMipLevelsAreBoxesOfTheLevelBelow) {
-  auto ctx = gl::createHeadlessContext();
-  const test::ScopedEnv env("OCEANGLOBE_SKY_FILTER", "radial");
-  const atmosphere::Parameters p = smallEarth(2);
-  render::Atmosphere gpu(p, noCache());
-  const int layers = p.tables.skyMapLayers;
-  gpu.prepareFrameSkyLayer(0.6 * render::Atmosphere::kSkyMapMaxZenithRad);
-  gpu.prepareSunLayerSums();
-  const render::SkyRadialSums& sums = gpu.skyRadialSums();
+  const RadialSums f;
+  const int layers = f.p.tables.skyMapLayers;
+  const render::SkyRadialSums& sums = f.gpu.skyRadialSums();
   constexpr int kAz = render::SkyRadialSums::kAzimuths, kRho = render::SkyRadialSums::kRadii;
   for (const int layer : {layers, layers / 2}) {  // the frame layer, a Sun layer
     for (const int level : {1, 4, 8}) {  // 256 x 64, 32 x 8, 2 x 1 (from 4 x 1: one row below)
