@@ -43,8 +43,9 @@ std::optional<core::CachePayload> loadEmbeddedCache(const std::string& name, std
 void storeEmbeddedCache(const std::string& name, std::uint64_t key, const std::vector<std::uint8_t>& payload);
 
 /// `what` derived from embedded data, through the cache: the payload of `embedded-NAME-KEY.bin`
-/// decoded (`decode(std::span<const std::uint8_t>)` -> std::optional<T>, nullopt when inconsistent) when it is intact,
-/// else `build()`, stored (`encode(value)` -> bytes) for the next start. The cached read is
+/// decoded (`decode(std::span<const std::uint8_t>)` -> std::optional<T>, nullopt when
+/// inconsistent) when it is intact, else `build()`, stored (`encode(value)` -> bytes) for the
+/// next start. The cached read is
 /// timed in the start-up trace as "data: embedded WHAT (from the cache)".
 template <class T, class Decode, class Encode, class Build>
 T cachedEmbedded(const std::string& name, std::uint64_t key, const std::string& what, Decode decode,

@@ -149,7 +149,7 @@ void appendBytes(std::vector<std::uint8_t>& out, const std::vector<T>& v) {
 // A cached payload of `bytes` bytes whose float32 part (from byte `floatsFrom` on) is finite and
 // ≥ 0; nullopt (with a warning naming the file and the reason, none when it is missing) else.
 std::optional<core::CachePayload> readPayload(const std::filesystem::path& file, std::uint64_t key,
-                                                     std::size_t bytes, std::size_t floatsFrom, const char* what) {
+                                              std::size_t bytes, std::size_t floatsFrom, const char* what) {
   std::string why;
   auto payload = core::readCacheFile(file, key, &why);
   if (payload && payload->size() != bytes) why = "wrong size";

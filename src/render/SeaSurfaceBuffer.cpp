@@ -25,8 +25,7 @@ void SeaSurfaceBuffer::bindForWriting(int width, int height, GLuint depthStencil
   // Only the compact layout's layers until a frame needs them all (then all, from then on):
   // llvmpipe zeroes a texture's storage when it makes it, and the two layers more are 29 MB at
   // 1280 x 720, ~15 ms of a first frame over the open sea.
-  wantsAll_ = wantsAll_ || !compact;
-  const int layers = wantsAll_ ? kLayers : kCompactLayers;
+  const int layers = compact && allocated_ < kLayers ? kCompactLayers : kLayers;
   if (width != width_ || height != height_ || layers_.id() == 0 || layers > allocated_) {
     layers_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
     glTextureStorage3D(layers_.id(), 1, GL_RGBA32UI, width, height, layers);

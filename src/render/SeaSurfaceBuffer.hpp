@@ -1,8 +1,9 @@
 #pragma once
 // The deferred sea's surface buffer (shaders/ocean/sea_surface.glsl): an RGBA32UI array
-// texture of kLayers layers (kCompactLayers while every frame has used the compact layout), each a colour attachment of a framebuffer that shares the frame's
-// depth-stencil texture, so that the projected grid's surface pass is depth-tested against the
-// terrain and writes the sea's classes into the frame's stencil (render/OceanRenderer).
+// texture of kLayers layers (kCompactLayers while every frame has used the compact layout),
+// each a colour attachment of a framebuffer that shares the frame's depth-stencil texture, so
+// that the projected grid's surface pass is depth-tested against the terrain and writes the
+// sea's classes into the frame's stencil (render/OceanRenderer).
 #include "gl/Objects.hpp"
 
 namespace og::render {
@@ -35,8 +36,7 @@ class SeaSurfaceBuffer {
   int width_ = 0, height_ = 0;
   GLuint depthStencil_ = 0;
   int drawBuffers_ = 0;
-  int allocated_ = 0;      ///< layers of layers_: kCompactLayers until a frame wants them all
-  bool wantsAll_ = false;  ///< a frame has drawn without the compact layout
+  int allocated_ = 0;  ///< layers of layers_: kCompactLayers until a frame wants them all, then kLayers
 };
 
 }  // namespace og::render

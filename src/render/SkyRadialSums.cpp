@@ -25,25 +25,25 @@ gl::Texture sumsTexture(GLenum target, int layers) {
 }  // namespace
 
 void SkyRadialSums::fill(GLuint skyMapsId, int first, int count, bool frame) {
-  gl::Program& program = frame ? fillFrame_ : fillLayers_;
-  if (program.id() == 0)
-    program = gl::Program({{GL_COMPUTE_SHADER, "atmosphere/skymap_radial.comp"}},
-                          frame ? std::vector<std::string>{"SKY_RADIAL_FRAME"} : std::vector<std::string>{});
+  // A compute program on its first use, the frame layer's variant (SKY_RADIAL_FRAME) or the
+  // Sun layers'.
+  const auto made = [frame](gl::Program& program, const char* shader) -> gl::Program& {
+    if (program.id() == 0)
+      program = gl::Program({{GL_COMPUTE_SHADER, shader}},
+                            frame ? std::vector<std::string>{"SKY_RADIAL_FRAME"} : std::vector<std::string>{});
+    return program;
+  };
+  const GLuint target = frame ? frame_.id() : layers_.id();
+  const GLboolean layered = frame ? GL_FALSE : GL_TRUE;
+  const gl::Program& program = made(frame ? fillFrame_ : fillLayers_, "atmosphere/skymap_radial.comp");
   glBindTextureUnit(gl::kUnitSkyMap, skyMapsId);
   program.set("uFirstLayer", first);
   program.use();
-  glBindImageTexture(0, frame ? frame_.id() : layers_.id(), 0, frame ? GL_FALSE : GL_TRUE, 0, GL_WRITE_ONLY,
-                     GL_RGBA32F);
+  glBindImageTexture(0, target, 0, layered, 0, GL_WRITE_ONLY, GL_RGBA32F);
   glDispatchCompute(static_cast<GLuint>((kAzimuths + 63) / 64), 1, static_cast<GLuint>(count));
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   // The mip levels by a compute of their own (skymap_radial_mip.comp), each layer in z.
-  gl::Program& mips = frame ? frameMips_ : mips_;
-  if (mips.id() == 0)
-    mips = gl::Program({{GL_COMPUTE_SHADER, "atmosphere/skymap_radial_mip.comp"}},
-                       frame ? std::vector<std::string>{"SKY_RADIAL_FRAME"} : std::vector<std::string>{});
-  mips.use();
-  const GLuint target = frame ? frame_.id() : layers_.id();
-  const GLboolean layered = frame ? GL_FALSE : GL_TRUE;
+  made(frame ? frameMips_ : mips_, "atmosphere/skymap_radial_mip.comp").use();
   for (int level = 1; level < gl::fullMipLevels(kAzimuths); ++level) {
     glBindImageTexture(0, target, level - 1, layered, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(1, target, level, layered, 0, GL_WRITE_ONLY, GL_RGBA32F);

@@ -106,11 +106,13 @@ Tile buildTile(const Heightfield& heights, const TileKey& key) {
       t.minHeightM = std::min(t.minHeightM, h);
       t.maxHeightM = std::max(t.maxHeightM, h);
     }
+  std::vector<glm::dvec3> ups(lats.size());
+  for (std::size_t k = 0; k < lats.size(); ++k) ups[k] = geodeticUpFast(lats[k], lons[k]);
   // Normals (four more layer samples a vertex) only where a tile can be drawn: the sea hides a
   // tile it covers everywhere it is seen (TerrainRenderer::tilesToDraw), whose vertical stands
   // in. Most tiles a view near the open sea visits are such (docs/performance.md, start-up).
   for (std::size_t k = 0; k < samples.size(); ++k)
-    samples[k].normal = t.coveredBySea() ? geodeticUpFast(lats[k], lons[k])
+    samples[k].normal = t.coveredBySea() ? ups[k]
                                          : heights.normalAt(lats[k], lons[k], stepDeg, gradients[k],
                                                             samples[k].shadingAmplitudeM);
 
@@ -118,8 +120,6 @@ Tile buildTile(const Heightfield& heights, const TileKey& key) {
   // height differences across a cell of this tile.
   const double skirt = std::clamp(0.5 * (t.maxHeightM - t.minHeightM) + 0.1 * t.spacingM, 20.0, 20000.0);
   t.skirtDepthM = skirt;
-  std::vector<glm::dvec3> ups(lats.size());
-  for (std::size_t k = 0; k < lats.size(); ++k) ups[k] = geodeticUpFast(lats[k], lons[k]);
   for (std::size_t k = 1; k < std::size(kTileStrides); ++k)
     t.strideDeviation[k - 1] = strideDeviation(ecef, ups, kTileStrides[k]);
   t.middleUp = ups[static_cast<std::size_t>((n / 2) * n + n / 2)];
