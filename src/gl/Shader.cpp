@@ -205,6 +205,9 @@ void Program::set(const char* n, int v) const { glProgramUniform1i(id(), locatio
 void Program::set(const char* n, const glm::ivec2& v) const {
   glProgramUniform2iv(id(), location(n), 1, glm::value_ptr(v));
 }
+void Program::set(const char* n, const glm::ivec4& v) const {
+  glProgramUniform4iv(id(), location(n), 1, glm::value_ptr(v));
+}
 void Program::set(const char* n, const glm::vec2& v) const {
   glProgramUniform2fv(id(), location(n), 1, glm::value_ptr(v));
 }

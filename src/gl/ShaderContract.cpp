@@ -36,6 +36,8 @@ std::vector<std::string> contractDefines() {
           define("OG_TILE_VERTICES_BINDING", kTileVerticesBinding),
           define("OG_TILE_QUADS", kTerrainTileQuads),
           define("OG_GLOBE_PIXELS_BINDING", kGlobePixelsBinding),
+          define("OG_UNCOVERED_BLOCKS_BINDING", kUncoveredBlocksBinding),
+          define("OG_UNCOVERED_TRIANGLES_BINDING", kUncoveredTrianglesBinding),
           define("OG_UNIT_SHADOW_MAP", kUnitShadowMap),
           define("OG_UNIT_PATTERN_DISPLACEMENT", kUnitPatternDisplacement),
           define("OG_UNIT_PATTERN_SLOPES", kUnitPatternSlopes),

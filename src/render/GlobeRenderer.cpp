@@ -398,8 +398,9 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
     // radial sums. Below it the globe shades only the horizon's sea samples, with the probes:
     // the sums of every Sun layer would cost a first frame at sea level ~60 ms.
     if (atmosphere_->skyFilter().radialSums && !behind) defines.emplace_back("SKY_RADIAL_SUMS");
-    // Above the ceiling the classifying draws cover blocks of pixels (render/GlobeBlocks).
-    const bool blocks = !behind && (variant <= kClassifyExportLandSea || variant == kBlockFill);
+    // Above the ceiling the classifying draws cover blocks of pixels (render/GlobeBlocks), below
+    // it the one draw the uncovered ones (render/UncoveredPixels).
+    const bool blocks = behind ? variant == kClassifyExport : variant <= kClassifyExportLandSea || variant == kBlockFill;
     if (variant == kListedPixels)
       p = gl::Program({{GL_COMPUTE_SHADER, "render/globe.frag"}}, defines);
     else
@@ -424,30 +425,24 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
   glBindVertexArray(emptyVao_.id());
   glDepthFunc(grid ? GL_GEQUAL : GL_ALWAYS);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the query's and the steps' draws
-  if (grid) {  // the classifying draws run on every pixel: skip them when nothing is left
-    if (uncovered_.id() == 0) {
-      uncovered_ = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"},
-                                {GL_FRAGMENT_SHADER, "render/uncovered.frag"}});
-      uncoveredQuery_ = gl::createQuery(GL_ANY_SAMPLES_PASSED);
-    }
-    uncovered_.use();
-    glBeginQuery(GL_ANY_SAMPLES_PASSED, uncoveredQuery_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glEndQuery(GL_ANY_SAMPLES_PASSED);
-    glBeginConditionalRender(uncoveredQuery_.id(), GL_QUERY_WAIT);
-    // The sky (every ray misses the ellipsoid) has count 0 below the ceiling: the draws skip it
-    // (after the query, which must see the sky the parts then shade).
-    if (ellipsoidScissorOn_) {
-      const std::array<int, 4> hits = ellipsoidScissor(view, f.width, f.height);
-      glEnable(GL_SCISSOR_TEST);
-      glScissor(hits[0], hits[1], hits[2], hits[3]);
-    }
-  }
-  glEnable(GL_STENCIL_TEST);
   // One draw writing the count where the driver allows it, else one draw per step counting,
   // each only over the pixels that passed every step before it (the classes nest: a pixel in
   // the open sea's class is in the sea's, and so on), as the one draw counts.
   const bool oneDraw = gl::driverProfile().stencilExport;
+  // Below the ceiling the one draw covers only the blocks of pixels the terrain and the grid left.
+  const bool listedBlocks = grid && oneDraw;
+  if (grid) {  // the classifying draws run on every pixel: skip them when nothing is left
+    // The sky (every ray misses the ellipsoid) has count 0 below the ceiling: the draws skip it
+    // (after the query, which must see the sky the parts then shade).
+    const std::array<int, 4> hits =
+        ellipsoidScissorOn_ ? ellipsoidScissor(view, f.width, f.height) : std::array<int, 4>{0, 0, f.width, f.height};
+    uncovered_.find(f.width, f.height, hits, listedBlocks, !uncoveredBlocksOn_);
+    glBindVertexArray(emptyVao_.id());
+    glBeginConditionalRender(uncovered_.query(), GL_QUERY_WAIT);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(hits[0], hits[1], hits[2], hits[3]);
+  }
+  glEnable(GL_STENCIL_TEST);
   glStencilOp(GL_KEEP, GL_KEEP, oneDraw ? GL_REPLACE : GL_INCR);
   if (!grid) bindOpenSeaMap();
   const bool blocks = uploadClassifyingBlocks(view, f, box, grid);
@@ -467,7 +462,7 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
     if (!grid) classify.set("uLandAtFarPlane", frameLandLast_ ? 1 : 0);
     classify.use();
     if (grid) {
-      glDrawArrays(GL_TRIANGLES, 0, 3);
+      listedBlocks ? uncovered_.drawBlocks() : glDrawArrays(GL_TRIANGLES, 0, 3);
       continue;
     }
     glBindVertexArray(blocksVao_.id());
@@ -625,7 +620,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   // The land after the tiles: where none drew, its class's depth is still the far plane (0),
   // the full-screen triangle's own depth; a tile's fragment fails it before the shader.
   glDepthFunc(grid ? GL_GEQUAL : landOnly ? GL_EQUAL : GL_ALWAYS);
-  if (grid) glBeginConditionalRender(uncoveredQuery_.id(), GL_QUERY_WAIT);
+  if (grid) glBeginConditionalRender(uncovered_.query(), GL_QUERY_WAIT);
   glEnable(GL_STENCIL_TEST);
   glDepthMask(GL_FALSE);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);

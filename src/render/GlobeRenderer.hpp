@@ -34,6 +34,7 @@
 #include "render/OceanRenderer.hpp"
 #include "render/OpenSeaMap.hpp"
 #include "render/TerrainRenderer.hpp"
+#include "render/UncoveredPixels.hpp"
 #include "render/WindTextures.hpp"
 
 namespace og::render {
@@ -223,6 +224,12 @@ class GlobeRenderer {
   /// Below 20 km the classifying draws are scissored to the pixels whose rays can meet the
   /// ellipsoid (ellipsoidScissor); false: the whole screen (the tests' reference).
   void setEllipsoidScissor(bool on) { ellipsoidScissorOn_ = on; }
+  /// Below the ceiling, the classifying draw that writes the stencil from its shader covers only
+  /// the blocks of pixels the terrain and the grid left (render/UncoveredPixels); false: every
+  /// block of the ellipsoid's box (the tests' reference).
+  void setUncoveredBlocks(bool on) { uncoveredBlocksOn_ = on; }
+  /// The blocks of pixels the last frame below the ceiling listed (reads them back: tests).
+  [[nodiscard]] int uncoveredBlocksListed() const { return uncovered_.listedBlocks(); }
   /// Above 20 km, blocks of pixels that are wholly land or wholly sea are classed on the CPU
   /// (render/GlobeBlocks) and spared the per-pixel classifying draw; false classes every pixel
   /// on the GPU (the tests' reference). On by default on software renderers (llvmpipe), where
@@ -399,10 +406,10 @@ class GlobeRenderer {
   /// Above 20 km with the aerial table, without, below, above without the mask's fine level.
   /// By set (globeProgram), and again with the constant wind's uniforms (PATTERN_CONSTANT_WIND).
   std::array<gl::Program, 8 * kGlobeVariants> globePrograms_;
-  /// Below 20 km: whether the terrain and the grid left any pixel for the globe (an occlusion
-  /// query of render/uncovered.frag; the globe's draws are conditional on it).
-  gl::Program uncovered_;
-  gl::Query uncoveredQuery_;
+  /// Below 20 km: whether the terrain and the grid left any pixel for the globe (the globe's
+  /// draws are conditional on it), and which blocks of pixels hold one.
+  UncoveredPixels uncovered_;
+  bool uncoveredBlocksOn_ = true;  ///< setUncoveredBlocks
   gl::Program tonemap_;
   gl::Program tonemapMs_;  ///< per-sample tone mapping of a multisampled target; id() 0 until first used
   gl::VertexArray emptyVao_;

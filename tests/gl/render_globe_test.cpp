@@ -201,3 +201,36 @@ TEST(GlobeRender, ClassifyingBelowTheCeilingOnlyWhereRaysMeetTheEllipsoid) {
   f.camera.pitchDeg = 60.0;
   EXPECT_EQ(render::ellipsoidScissor(geo::makeCameraView(f.camera, f.width, f.height), f.width, f.height)[2], 0);
 }
+
+// Below the ceiling the classifying draw that writes the stencil from its shader (which llvmpipe
+// then tests late, running it for every pixel it covers) covers only the blocks of 8 x 8
+// pixels that hold a pixel the terrain and the grid left (render/UncoveredPixels): the same
+// picture as over every block of the ellipsoid's box, in the views of the test above, and from
+// 2 m with the horizon at the middle row only the blocks along it, not the grid's half.
+TEST(GlobeRender, ClassifyingBelowTheCeilingOnlyOverTheBlocksLeftUncovered) {
+  auto ctx = gl::createHeadlessContext();
+  if (!gl::driverProfile().stencilExport) GTEST_SKIP() << "the driver cannot export stencil values";
+  render::GlobeRenderer r(halfLand());
+  struct Case {
+    double lat, lon, h, pitch, roll;
+  };
+  for (const Case& c : {Case{-1, -1, 2.0, 1.0, 0.0}, Case{-1, -1, 15000.0, -3.0, 0.0}, Case{3, 3, 500.0, 2.0, 25.0},
+                        Case{-1, -1, 4.0, -60.0, 0.0}, Case{-1, -1, 4.0, 60.0, 0.0}}) {
+    render::FrameInput f = frame(c.lat, c.lon, c.h, c.pitch, 160);
+    f.height = 90;
+    f.camera.rollDeg = c.roll;
+    const test::OffAndOn images = test::renderOffAndOn(r, f, [&r](bool on) { r.setUncoveredBlocks(on); });
+    EXPECT_EQ(test::radianceChange(images.off, images.on, 0.0, 4).over, 0)
+        << "at " << c.h << " m, pitch " << c.pitch << ", roll " << c.roll;
+  }
+  render::FrameInput f = frame(-1, -1, 2.0, 0.0, 160);
+  f.height = 90;
+  r.setUncoveredBlocks(false);
+  r.render(f);
+  const int every = r.uncoveredBlocksListed();  // the box's: the lower half and a margin
+  EXPECT_GE(every, 20 * 6);
+  r.setUncoveredBlocks(true);
+  r.render(f);
+  EXPECT_GT(r.uncoveredBlocksListed(), 0);
+  EXPECT_LE(r.uncoveredBlocksListed(), 20 * 2) << "of " << every;
+}
