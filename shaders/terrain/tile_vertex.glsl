@@ -17,12 +17,18 @@ uniform float uMorphScale;
 // amplitude m; morph: the parent mesh's point minus the vertex, m (terrain::TileVertex).
 // Returns the camera-relative position (m, ECEF axes); heightM: the morphed height, m (precise:
 // terrain.vert's clip distance from it must come out alike in every program of a tile).
-vec3 morphedTileVertex(vec3 position, vec4 info, vec3 morph, out precise float heightM) {
-  vec3 relative = uTileOffset + position;
-  float m = uMorphScale > 0.0 ? clamp(2.0 - uMorphScale / max(length(relative), 1e-3), 0.0, 1.0) : 0.0;
+// morphedTileVertexOf: of a tile whose centre minus the eye is tileOffset (m) and whose morph
+// scale is morphScale (uTileOffset's and uMorphScale's values).
+vec3 morphedTileVertexOf(vec3 tileOffset, float morphScale, vec3 position, vec4 info, vec3 morph,
+                         out precise float heightM) {
+  vec3 relative = tileOffset + position;
+  float m = morphScale > 0.0 ? clamp(2.0 - morphScale / max(length(relative), 1e-3), 0.0, 1.0) : 0.0;
   vec3 up = vec3(cos(info.y) * cos(info.z), cos(info.y) * sin(info.z), sin(info.y));
   heightM = info.x + m * dot(morph, up);
   return relative + m * morph;
+}
+vec3 morphedTileVertex(vec3 position, vec4 info, vec3 morph, out precise float heightM) {
+  return morphedTileVertexOf(uTileOffset, uMorphScale, position, info, morph, heightM);
 }
 
 #ifndef TERRAIN_DEPTH_ONLY

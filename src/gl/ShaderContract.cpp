@@ -34,6 +34,7 @@ std::vector<std::string> contractDefines() {
           define("OG_BLOCK_PATTERN_TABLE", kBlockPatternTable),
           define("OG_TERRAIN_AERIAL_BINDING", kTerrainAerialBinding),
           define("OG_TILE_VERTICES_BINDING", kTileVerticesBinding),
+          define("OG_TILE_AERIAL_TILES_BINDING", kTileAerialTilesBinding),
           define("OG_TILE_QUADS", kTerrainTileQuads),
           define("OG_GLOBE_PIXELS_BINDING", kGlobePixelsBinding),
           define("OG_UNCOVERED_BLOCKS_BINDING", kUncoveredBlocksBinding),

@@ -57,6 +57,7 @@ enum StorageBinding : unsigned {
   kTerrainAerialBinding = 0,  ///< terrain/tile_vertex.glsl TileAerial (TerrainRenderer::computeTileAerial)
   kTileVerticesBinding = 1,   ///< terrain/tile_grid.glsl TileVertices (a tile's vertex buffer: tile_aerial.comp, TERRAIN_COARSE)
   kGlobePixelsBinding = 2,    ///< render/globe_pixels.glsl GlobePixels (GlobeRenderer::shadeScatteredParts)
+  kTileAerialTilesBinding = 2,  ///< terrain/tile_aerial.comp TileAerialTiles (TerrainRenderer::computeTileAerial)
   kUncoveredBlocksBinding = 2,     ///< render/uncovered_blocks.glsl UncoveredBlocks (render/UncoveredPixels)
   kUncoveredTrianglesBinding = 3,  ///< render/uncovered_blocks.comp UncoveredTriangles (render/UncoveredPixels)
 };

@@ -361,6 +361,8 @@ class TerrainRenderer {
   gl::Program tileAerialProgram_;     ///< terrain/tile_aerial.comp
   gl::Buffer tileAerial_;             ///< two vec4s a vertex of the frame's tiles
   std::size_t tileAerialBytes_ = 0;
+  gl::Buffer tileAerialVertices_, tileAerialTiles_;  ///< tile_aerial.comp's copy of the tiles' vertices, their uniforms
+  std::size_t tileAerialVerticesBytes_ = 0, tileAerialTilesBytes_ = 0;
   std::unordered_map<const terrain::Tile*, int> tileFirstVertex_;  ///< this frame's slots in tileAerial_
   bool coarseMask_ = false;  ///< setCoarseLandMask
   double seaCrestM_ = 30.0;  ///< setSeaCrestM
