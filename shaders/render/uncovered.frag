@@ -11,7 +11,8 @@ layout(early_fragment_tests) in;
 uniform ivec4 uBox;  // pixels: x0, y0, x1, y1 (exclusive)
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
-  if (all(greaterThanEqual(p, uBox.xy)) && all(lessThan(p, uBox.zw))) uFlags[(p.y >> 3) * uBlocksPerRow + (p.x >> 3)] = 1u;
+  if (all(greaterThanEqual(p, uBox.xy)) && all(lessThan(p, uBox.zw)))
+    uFlags[(p.y >> 3) * uBlocksPerRow + (p.x >> 3)] = 1u;
 }
 #else
 void main() {}

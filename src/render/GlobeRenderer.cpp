@@ -400,7 +400,8 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
     if (atmosphere_->skyFilter().radialSums && !behind) defines.emplace_back("SKY_RADIAL_SUMS");
     // Above the ceiling the classifying draws cover blocks of pixels (render/GlobeBlocks), below
     // it the one draw the uncovered ones (render/UncoveredPixels).
-    const bool blocks = behind ? variant == kClassifyExport : variant <= kClassifyExportLandSea || variant == kBlockFill;
+    const bool blocks =
+        behind ? variant == kClassifyExport : variant <= kClassifyExportLandSea || variant == kBlockFill;
     if (variant == kListedPixels)
       p = gl::Program({{GL_COMPUTE_SHADER, "render/globe.frag"}}, defines);
     else

@@ -140,7 +140,8 @@ void TerrainRenderer::computeTileAerial(const geo::CameraView& view, const std::
   // another, and each tile's uniforms as a vec4 (tile_aerial.comp).
   constexpr std::size_t kTileBytes = terrain::kTileVertices * sizeof(terrain::TileVertex);
   const auto grow = [](gl::Buffer& buffer, std::size_t& capacity, std::size_t bytes, GLbitfield flags) {
-    if (bytes > capacity) gl::ensureBufferCapacity(buffer, capacity, std::max(bytes, 2 * capacity), flags);  // (by doubling at least)
+    if (bytes > capacity)  // (by doubling at least)
+      gl::ensureBufferCapacity(buffer, capacity, std::max(bytes, 2 * capacity), flags);
   };
   grow(tileAerial_, tileAerialBytes_, tiles.size() * terrain::kTileVertices * 2 * sizeof(glm::vec4), 0);
   grow(tileAerialVertices_, tileAerialVerticesBytes_, tiles.size() * kTileBytes, 0);
@@ -154,7 +155,8 @@ void TerrainRenderer::computeTileAerial(const geo::CameraView& view, const std::
     glCopyNamedBufferSubData(tileBuffer(t).id(), tileAerialVertices_.id(), 0, static_cast<GLintptr>(k * kTileBytes),
                              static_cast<GLsizeiptr>(kTileBytes));
   }
-  glNamedBufferSubData(tileAerialTiles_.id(), 0, static_cast<GLsizeiptr>(perTile.size() * sizeof(glm::vec4)), perTile.data());
+  glNamedBufferSubData(tileAerialTiles_.id(), 0, static_cast<GLsizeiptr>(perTile.size() * sizeof(glm::vec4)),
+                       perTile.data());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTerrainAerialBinding, tileAerial_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTileVerticesBinding, tileAerialVertices_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTileAerialTilesBinding, tileAerialTiles_.id());

@@ -1,19 +1,23 @@
 #include "render/UncoveredPixels.hpp"
 
 #include <algorithm>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "gl/ShaderContract.hpp"
 
 namespace og::render {
 
 void UncoveredPixels::find(int width, int height, const std::array<int, 4>& box, bool listBlocks, bool everyBlock) {
+  static const std::vector<std::pair<GLenum, std::string>> stages{{GL_VERTEX_SHADER, "render/fullscreen.vert"},
+                                                                  {GL_FRAGMENT_SHADER, "render/uncovered.frag"}};
   if (find_.id() == 0) {
-    find_ = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "render/uncovered.frag"}});
+    find_ = gl::Program(stages);
     query_ = gl::createQuery(GL_ANY_SAMPLES_PASSED);
   }
   if (listBlocks && findBlocks_.id() == 0) {
-    findBlocks_ = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "render/uncovered.frag"}},
-                              {"UNCOVERED_BLOCKS"});
+    findBlocks_ = gl::Program(stages, {"UNCOVERED_BLOCKS"});
     list_ = gl::Program({{GL_COMPUTE_SHADER, "render/uncovered_blocks.comp"}});
     vao_ = gl::createVertexArray();
     glEnableVertexArrayAttrib(vao_.id(), 0);
@@ -50,10 +54,11 @@ void UncoveredPixels::listFlagged(int width, int height, const std::array<int, 4
   list_.set("uBlockBox", glm::ivec4(x0, y0, x1, y1));
   list_.set("uBlocksPerRow", blocksPerRow_);
   list_.set("uEveryBlock", everyBlock ? 1 : 0);
-  list_.set("uBlockNdc", glm::vec2(2.0f * kBlockPx / static_cast<float>(width), 2.0f * kBlockPx / static_cast<float>(height)));
+  list_.set("uBlockNdc", 2.0f * kBlockPx / glm::vec2(static_cast<float>(width), static_cast<float>(height)));
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kUncoveredTrianglesBinding, triangles_.id());
   list_.use();
-  glDispatchCompute(static_cast<GLuint>(std::max(x1 - x0, 0) + 7) / 8, static_cast<GLuint>(std::max(y1 - y0, 0) + 7) / 8, 1);
+  const auto groups = [](int blocks) { return static_cast<GLuint>(std::max(blocks, 0) + 7) / 8; };  // 8 x 8 a group
+  glDispatchCompute(groups(x1 - x0), groups(y1 - y0), 1);
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
 }
 
