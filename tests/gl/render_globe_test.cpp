@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -172,13 +173,11 @@ TEST(GlobeRender, OneClassifyingDrawMatchesOneDrawPerStep) {
   }
 }
 
-// Below the grid's ceiling the classifying draws are scissored to the pixels whose rays can
-// meet the ellipsoid (render::ellipsoidScissor): the sky above the horizon has nothing to class.
-// The same picture as over the whole screen, from 2 m to 15 km, the horizon level, tilted by a
-// roll, looking down with no sky and up with no ellipsoid; the rectangle is the horizon's.
-TEST(GlobeRender, ClassifyingBelowTheCeilingOnlyWhereRaysMeetTheEllipsoid) {
-  auto ctx = gl::createHeadlessContext();
-  render::GlobeRenderer r(halfLand());
+// The same picture below the grid's ceiling with a setting `set` off and on (160 x 90 frames),
+// from 2 m to 15 km: the horizon level, tilted by a roll, looking down with no sky and up with
+// no ellipsoid.
+namespace {
+void expectBelowTheCeilingAlike(render::GlobeRenderer& r, const std::function<void(bool)>& set) {
   struct Case {
     double lat, lon, h, pitch, roll;
   };
@@ -187,10 +186,20 @@ TEST(GlobeRender, ClassifyingBelowTheCeilingOnlyWhereRaysMeetTheEllipsoid) {
     render::FrameInput f = frame(c.lat, c.lon, c.h, c.pitch, 160);
     f.height = 90;
     f.camera.rollDeg = c.roll;
-    const test::OffAndOn images = test::renderOffAndOn(r, f, [&r](bool on) { r.setEllipsoidScissor(on); });
+    const test::OffAndOn images = test::renderOffAndOn(r, f, set);
     EXPECT_EQ(test::radianceChange(images.off, images.on, 0.0, 4).over, 0)
         << "at " << c.h << " m, pitch " << c.pitch << ", roll " << c.roll;
   }
+}
+}  // namespace
+
+// Below the grid's ceiling the classifying draws are scissored to the pixels whose rays can
+// meet the ellipsoid (render::ellipsoidScissor): the sky above the horizon has nothing to class.
+// The same picture as over the whole screen; the rectangle is the horizon's.
+TEST(GlobeRender, ClassifyingBelowTheCeilingOnlyWhereRaysMeetTheEllipsoid) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(halfLand());
+  expectBelowTheCeilingAlike(r, [&r](bool on) { r.setEllipsoidScissor(on); });
   // The rectangle: level at 2 m, the horizon at the middle row (pitch 0): the lower half.
   render::FrameInput f = frame(-1, -1, 2.0, 0.0, 160);
   f.height = 90;
@@ -205,24 +214,13 @@ TEST(GlobeRender, ClassifyingBelowTheCeilingOnlyWhereRaysMeetTheEllipsoid) {
 // Below the ceiling the classifying draw that writes the stencil from its shader (which llvmpipe
 // then tests late, running it for every pixel it covers) covers only the blocks of 8 x 8
 // pixels that hold a pixel the terrain and the grid left (render/UncoveredPixels): the same
-// picture as over every block of the ellipsoid's box, in the views of the test above, and from
-// 2 m with the horizon at the middle row only the blocks along it, not the grid's half.
+// picture as over every block of the ellipsoid's box, and from 2 m with the horizon at the
+// middle row only the blocks along it, not the grid's half.
 TEST(GlobeRender, ClassifyingBelowTheCeilingOnlyOverTheBlocksLeftUncovered) {
   auto ctx = gl::createHeadlessContext();
   if (!gl::driverProfile().stencilExport) GTEST_SKIP() << "the driver cannot export stencil values";
   render::GlobeRenderer r(halfLand());
-  struct Case {
-    double lat, lon, h, pitch, roll;
-  };
-  for (const Case& c : {Case{-1, -1, 2.0, 1.0, 0.0}, Case{-1, -1, 15000.0, -3.0, 0.0}, Case{3, 3, 500.0, 2.0, 25.0},
-                        Case{-1, -1, 4.0, -60.0, 0.0}, Case{-1, -1, 4.0, 60.0, 0.0}}) {
-    render::FrameInput f = frame(c.lat, c.lon, c.h, c.pitch, 160);
-    f.height = 90;
-    f.camera.rollDeg = c.roll;
-    const test::OffAndOn images = test::renderOffAndOn(r, f, [&r](bool on) { r.setUncoveredBlocks(on); });
-    EXPECT_EQ(test::radianceChange(images.off, images.on, 0.0, 4).over, 0)
-        << "at " << c.h << " m, pitch " << c.pitch << ", roll " << c.roll;
-  }
+  expectBelowTheCeilingAlike(r, [&r](bool on) { r.setUncoveredBlocks(on); });
   render::FrameInput f = frame(-1, -1, 2.0, 0.0, 160);
   f.height = 90;
   r.setUncoveredBlocks(false);
