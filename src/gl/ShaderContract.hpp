@@ -50,14 +50,17 @@ enum UniformBlockBinding : unsigned {
 
 /// Binding points of shader storage blocks that several programs share (GLSL: OG_<NAME>); under 8,
 /// the least GL 4.5 guarantees (render/OceanRenderer's own passes use 3-7, and 2 for the grid's
-/// near-land flags, which GlobeRenderer binds again for its pixels and render/UncoveredPixels
-/// for its blocks, with 3 for their triangles; gl::runProbe's
-/// test probes bind 0 for their run: the terrain binds its buffer again at each draw).
+/// near-land flags, which GlobeRenderer binds again for its pixels, render/UncoveredPixels for
+/// its blocks (with 3 for their triangles) and TerrainRenderer::computeTileAerial for its tiles;
+/// gl::runProbe's test probes bind 0 for their run: the terrain binds its buffer again at each
+/// draw).
 enum StorageBinding : unsigned {
   kTerrainAerialBinding = 0,  ///< terrain/tile_vertex.glsl TileAerial (TerrainRenderer::computeTileAerial)
-  kTileVerticesBinding = 1,   ///< terrain/tile_grid.glsl TileVertices (a tile's vertex buffer: tile_aerial.comp, TERRAIN_COARSE)
-  kGlobePixelsBinding = 2,    ///< render/globe_pixels.glsl GlobePixels (GlobeRenderer::shadeScatteredParts)
-  kTileAerialTilesBinding = 2,  ///< terrain/tile_aerial.comp TileAerialTiles (TerrainRenderer::computeTileAerial)
+  /// terrain/tile_grid.glsl TileVertices: a tile's vertex buffer (TERRAIN_COARSE), or the frame's
+  /// tiles' vertices one after another (tile_aerial.comp)
+  kTileVerticesBinding = 1,
+  kGlobePixelsBinding = 2,         ///< render/globe_pixels.glsl GlobePixels (GlobeRenderer::shadeScatteredParts)
+  kTileAerialTilesBinding = 2,     ///< terrain/tile_aerial.comp TileAerialTiles (TerrainRenderer::computeTileAerial)
   kUncoveredBlocksBinding = 2,     ///< render/uncovered_blocks.glsl UncoveredBlocks (render/UncoveredPixels)
   kUncoveredTrianglesBinding = 3,  ///< render/uncovered_blocks.comp UncoveredTriangles (render/UncoveredPixels)
 };

@@ -401,7 +401,8 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
     // Above the ceiling the classifying draws cover blocks of pixels (render/GlobeBlocks), below
     // it the one draw the uncovered ones (render/UncoveredPixels).
     const bool blocks =
-        behind ? variant == kClassifyExport : variant <= kClassifyExportLandSea || variant == kBlockFill;
+        behind ? variant >= kClassifyExport && variant <= kClassifyExportLandSea
+               : variant <= kClassifyExportLandSea || variant == kBlockFill;
     if (variant == kListedPixels)
       p = gl::Program({{GL_COMPUTE_SHADER, "render/globe.frag"}}, defines);
     else
@@ -463,7 +464,10 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
     if (!grid) classify.set("uLandAtFarPlane", frameLandLast_ ? 1 : 0);
     classify.use();
     if (grid) {
-      listedBlocks ? uncovered_.drawBlocks() : glDrawArrays(GL_TRIANGLES, 0, 3);
+      if (listedBlocks)
+        uncovered_.drawBlocks();
+      else
+        glDrawArrays(GL_TRIANGLES, 0, 3);
       continue;
     }
     glBindVertexArray(blocksVao_.id());

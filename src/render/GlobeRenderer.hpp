@@ -308,7 +308,8 @@ class GlobeRenderer {
   /// (GLOBE_PART_BLOCK_FILL); 17 the edge part as a compute shader over listed pixels
   /// (GLOBE_COMPUTE); 18 the sky part with the Sun's disc (GLOBE_SKY_SUN_DISC: 15 leaves it
   /// out), drawn over the Sun's box only (drawSunDisc). `variant` in [0, kGlobeVariants). Above
-  /// the ceiling the classifying variants draw the triangles of blocksVao_ (render/blocks.vert).
+  /// the ceiling the classifying variants draw the triangles of blocksVao_ (render/blocks.vert),
+  /// below it the one draw (6, 7) render/UncoveredPixels' blocks.
   static constexpr int kGlobeVariants = 19;
   static constexpr int kSkyLowPass = 14, kSkyLowPart = 15, kBlockFill = 16, kListedPixels = 17, kSkyLowSunPart = 18;
   static constexpr int kClassifyExport = 6, kClassifyExportLandSea = 7;

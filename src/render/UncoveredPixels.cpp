@@ -59,7 +59,8 @@ void UncoveredPixels::listFlagged(int width, int height, const std::array<int, 4
   list_.use();
   const auto groups = [](int blocks) { return static_cast<GLuint>(std::max(blocks, 0) + 7) / 8; };  // 8 x 8 a group
   glDispatchCompute(groups(x1 - x0), groups(y1 - y0), 1);
-  glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+  // The draw's arguments and vertices; the next frame's reset and the tests' read-back.
+  glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
 void UncoveredPixels::drawBlocks() const {

@@ -19,8 +19,8 @@ class UncoveredPixels {
  public:
   static constexpr int kBlockPx = 8;  ///< a block's side, pixels (shaders/render/uncovered_blocks.glsl)
 
-  /// Draws uncovered.frag over a `width` x `height` frame in the query (the depth test and the
-  /// colour writes off, set by the caller, pass what is left); with `listBlocks`, flags the
+  /// Draws uncovered.frag over a `width` x `height` frame in the query (the caller's depth test
+  /// passes what is left; the caller turns the colour writes off); with `listBlocks`, flags the
   /// blocks holding such a pixel within `box` (x, y, width, height, pixels) and lists them for
   /// drawBlocks (`everyBlock`: every block within it, the tests' reference). Leaves the program
   /// and the storage bindings changed.
@@ -30,7 +30,8 @@ class UncoveredPixels {
   /// The blocks find listed, two triangles each (shaders/render/blocks.vert's input), with the
   /// bound program; binds its own vertex array.
   void drawBlocks() const;
-  /// The blocks find listed last (reads them back: for tests).
+  /// The blocks find listed last (reads them back: for tests; a frame whose grid left no pixel
+  /// lists none and leaves the count as it was).
   [[nodiscard]] int listedBlocks() const;
 
  private:

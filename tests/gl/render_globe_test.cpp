@@ -136,9 +136,10 @@ TEST(GlobeRender, OneClassifyingDrawMatchesOneDrawPerStep) {
   // classifies its pixels in one draw; OCEANGLOBE_STENCIL_EXPORT=0 takes the draw-per-step path.
   // Both must give the same picture: from orbit (open sea, land, coasts, limb, space), from
   // 300 km over the coast corner (the land's and the sea's parts, nested steps), and from 2 km
-  // (below the grid's ceiling, globe drawn last).
+  // (below the grid's ceiling, globe drawn last; the one draw over the blocks of pixels left,
+  // render/UncoveredPixels), also from 4 m in a frame of no whole number of blocks.
   const render::FrameInput frames[] = {frame(10, -30, 2.0e7, -90, 96), frame(2, 2, 3.0e5, -60, 96),
-                                       frame(-1, -1, 2000.0, -2, 96)};
+                                       frame(-1, -1, 2000.0, -2, 96), frame(-1, -1, 4.0, 1.0, 99)};
   std::vector<io::ImageRgbaF> images[2];
   for (int path = 0; path < 2; ++path) {
     const std::optional<test::ScopedEnv> off =
@@ -173,18 +174,19 @@ TEST(GlobeRender, OneClassifyingDrawMatchesOneDrawPerStep) {
   }
 }
 
-// The same picture below the grid's ceiling with a setting `set` off and on (160 x 90 frames),
-// from 2 m to 15 km: the horizon level, tilted by a roll, looking down with no sky and up with
-// no ellipsoid.
+// The same picture below the grid's ceiling with a setting `set` off and on (`width` x
+// `height` frames), from 2 m to 15 km: the horizon level, tilted by a roll, looking down with no
+// sky and up with no ellipsoid.
 namespace {
-void expectBelowTheCeilingAlike(render::GlobeRenderer& r, const std::function<void(bool)>& set) {
+void expectBelowTheCeilingAlike(render::GlobeRenderer& r, const std::function<void(bool)>& set, int width = 160,
+                                int height = 90) {
   struct Case {
     double lat, lon, h, pitch, roll;
   };
   for (const Case& c : {Case{-1, -1, 2.0, 1.0, 0.0}, Case{-1, -1, 15000.0, -3.0, 0.0}, Case{3, 3, 500.0, 2.0, 25.0},
                         Case{-1, -1, 4.0, -60.0, 0.0}, Case{-1, -1, 4.0, 60.0, 0.0}}) {
-    render::FrameInput f = frame(c.lat, c.lon, c.h, c.pitch, 160);
-    f.height = 90;
+    render::FrameInput f = frame(c.lat, c.lon, c.h, c.pitch, width);
+    f.height = height;
     f.camera.rollDeg = c.roll;
     const test::OffAndOn images = test::renderOffAndOn(r, f, set);
     EXPECT_EQ(test::radianceChange(images.off, images.on, 0.0, 4).over, 0)
@@ -214,13 +216,15 @@ TEST(GlobeRender, ClassifyingBelowTheCeilingOnlyWhereRaysMeetTheEllipsoid) {
 // Below the ceiling the classifying draw that writes the stencil from its shader (which llvmpipe
 // then tests late, running it for every pixel it covers) covers only the blocks of 8 x 8
 // pixels that hold a pixel the terrain and the grid left (render/UncoveredPixels): the same
-// picture as over every block of the ellipsoid's box, and from 2 m with the horizon at the
-// middle row only the blocks along it, not the grid's half.
+// picture as over every block of the ellipsoid's box (in frames of whole blocks and not; against
+// the full-screen draws per step: OneClassifyingDrawMatchesOneDrawPerStep), and from 2 m with
+// the horizon at the middle row only the blocks along it, not the grid's half.
 TEST(GlobeRender, ClassifyingBelowTheCeilingOnlyOverTheBlocksLeftUncovered) {
   auto ctx = gl::createHeadlessContext();
   if (!gl::driverProfile().stencilExport) GTEST_SKIP() << "the driver cannot export stencil values";
   render::GlobeRenderer r(halfLand());
   expectBelowTheCeilingAlike(r, [&r](bool on) { r.setUncoveredBlocks(on); });
+  expectBelowTheCeilingAlike(r, [&r](bool on) { r.setUncoveredBlocks(on); }, 163, 91);
   render::FrameInput f = frame(-1, -1, 2.0, 0.0, 160);
   f.height = 90;
   r.setUncoveredBlocks(false);
