@@ -12,7 +12,8 @@ uniform vec2 uBlockNdc;   // a block's size in normalised device coordinates
 uniform int uEveryBlock;  // 1: every block, flagged or not (the tests' reference)
 void main() {
   ivec2 b = uBlockBox.xy + ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(b, uBlockBox.zw)) || (uFlags[b.y * uBlocksPerRow + b.x] == 0u && uEveryBlock == 0)) return;
+  if (any(greaterThanEqual(b, uBlockBox.zw))) return;
+  if (uFlags[b.y * uBlocksPerRow + b.x] == 0u && uEveryBlock == 0) return;
   uint first = atomicAdd(uDrawArgs[0], 6u);
   vec2 lo = vec2(b) * uBlockNdc - 1.0, hi = vec2(b + 1) * uBlockNdc - 1.0;
   uNdc[first] = lo;

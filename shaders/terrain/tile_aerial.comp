@@ -30,6 +30,6 @@ void main() {
                                       tileVertexVec3(v, TILE_VERTEX_MORPH), heightM);
   vec3 transmittance, inscatter;
   tileVertexAerial(relative, heightM, transmittance, inscatter);
-  tileAerial[2 * v] = vec4(transmittance, 0.0);
-  tileAerial[2 * v + 1] = vec4(inscatter, 0.0);
+  tileAerial[tileAerialSlotOf(v)] = vec4(transmittance, 0.0);
+  tileAerial[tileAerialSlotOf(v) + 1] = vec4(inscatter, 0.0);
 }

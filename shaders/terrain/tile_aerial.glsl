@@ -10,6 +10,8 @@ layout(std430, binding = OG_TERRAIN_AERIAL_BINDING) readonly buffer TileAerial {
 #endif
 uniform int uFirstVertex;  // the tile's first vertex in the buffer
 
-// Where the tile's vertex `vertex` has its transmittance in the buffer (its in-scatter: the next).
-int tileAerialSlot(int vertex) { return 2 * (uFirstVertex + vertex); }
+// Where the frame's vertex `frameVertex` (its tile's uFirstVertex + its index) has its
+// transmittance in the buffer (its in-scatter: the next); tileAerialSlot: the tile's `vertex`.
+int tileAerialSlotOf(int frameVertex) { return 2 * frameVertex; }
+int tileAerialSlot(int vertex) { return tileAerialSlotOf(uFirstVertex + vertex); }
 #endif

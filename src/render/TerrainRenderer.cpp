@@ -99,9 +99,14 @@ void TerrainRenderer::ensureShadowMap() {
 }
 
 void TerrainRenderer::setTileUniforms(const gl::Program& p, const terrain::Tile& t, const geo::CameraView& view) const {
+  const glm::vec4 u = tileUniforms(t, view);
+  p.set("uTileOffset", glm::vec3(u));
+  p.set("uMorphScale", u.w);
+}
+
+glm::vec4 TerrainRenderer::tileUniforms(const terrain::Tile& t, const geo::CameraView& view) const {
   // Camera-relative tile origin in double, then float: never float world coordinates.
-  p.set("uTileOffset", glm::vec3(t.centreEcef - view.positionEcef));
-  p.set("uMorphScale", morphScale(t, view));
+  return {glm::vec3(t.centreEcef - view.positionEcef), morphScale(t, view)};
 }
 
 float TerrainRenderer::morphScale(const terrain::Tile& t, const geo::CameraView& view) const {
@@ -151,7 +156,7 @@ void TerrainRenderer::computeTileAerial(const geo::CameraView& view, const std::
   for (std::size_t k = 0; k < tiles.size(); ++k) {
     const terrain::Tile& t = *tiles[k];
     tileFirstVertex_[&t] = static_cast<int>(k) * terrain::kTileVertices;
-    perTile[k] = glm::vec4(glm::vec3(t.centreEcef - view.positionEcef), morphScale(t, view));  // setTileUniforms'
+    perTile[k] = tileUniforms(t, view);
     glCopyNamedBufferSubData(tileBuffer(t).id(), tileAerialVertices_.id(), 0, static_cast<GLintptr>(k * kTileBytes),
                              static_cast<GLsizeiptr>(kTileBytes));
   }

@@ -264,6 +264,8 @@ class TerrainRenderer {
   void prepareImagery(const std::vector<const terrain::Tile*>& tiles);
   /// terrain/tile_vertex.glsl's uniforms for a tile: uTileOffset, uMorphScale.
   void setTileUniforms(const gl::Program& p, const terrain::Tile& tile, const geo::CameraView& view) const;
+  /// Their values as (uTileOffset, uMorphScale) (also tile_aerial.comp's per-tile vec4).
+  [[nodiscard]] glm::vec4 tileUniforms(const terrain::Tile& tile, const geo::CameraView& view) const;
   /// terrain.vert's uMorphScale for a tile.
   [[nodiscard]] float morphScale(const terrain::Tile& tile, const geo::CameraView& view) const;
   struct GpuTile {
