@@ -36,12 +36,30 @@ float seaFloorDepthM(vec3 upE, float footprintRad) {
 }
 float seaFloorDepthM(vec3 upE) { return seaFloorDepthM(upE, 1e9); }
 
+// The width of the nearshore shallows, m. Within the land mask's reach of its coast (its
+// fraction of land above 0: a few 2′ cells) the floor comes from a layer's cells kilometres
+// wide and from the coast's lift of it (render/elevation.glsl's constrainByLandFraction),
+// metres under the surface along every coast; a footprint wider than this sees the shallows
+// over only this much of it, deep water over the rest. A stand-in like the beach's width
+// (terrain/material.glsl): a nearshore slope of ~1:50 down to 10 m. Not on the banks the
+// layer's correction set (keepDepth: their floor is the bank's own), nor on shelves away
+// from the coast. (From orbit the sea side of every coast pixel was pale with floor.)
+const float WATER_SHALLOWS_WIDTH_M = 500.0;
+
 // The water column under a point seen from afar (the globe's sea): a flat floor at the layer's
 // depth, the view (vE, to the eye) and the Sun (sunE) refracted by the mean surface, lit by
 // the Sun (irradiances from the sky model, `sunSeen` of its disc) and the sky; the pixel's
 // footprint there `footprintRad` (radians of arc).
 void prepareWaterColumn(vec3 vE, vec3 upE, vec3 sunE, float sunSeen, float footprintRad) {
-  float depthM = seaFloorDepthM(upE, footprintRad);
+  float depthM = 1e4, floorShare = 1.0;  // (seaFloorDepthM, with the mask's fraction at hand)
+  if (uElevationSize.x > 0.0) {
+    vec2 latLon = latLonOfNormal(upE);
+    vec2 heightKeep = elevationLayerAt(latLon);
+    float land = landMaskOn() ? landFraction(latLon, footprintRad) : 0.0;
+    depthM = max(-(landMaskOn() ? constrainByLandFraction(heightKeep.x, heightKeep.y, land) : heightKeep.x), 0.0);
+    if (land > 0.0 && heightKeep.y < 0.5)  // the coast's shallows: their share of the footprint
+      floorShare = min(WATER_SHALLOWS_WIDTH_M / max(footprintRad * WGS84_A, 1e-3), 1.0);
+  }
   vec3 k = uWaterAttenuation;
   if (depthM > waterMaxPathM(k, WATER_EPSILON)) {
     gWater = WaterVolume(true, uSeaColor);
@@ -56,7 +74,7 @@ void prepareWaterColumn(vec3 vE, vec3 upE, vec3 sunE, float sunSeen, float footp
   float viewPathM = depthM / waterRefractedCosine(clamp(dot(vE, upE), 0.0, 1.0));
   vec3 surfaceIrr = eSun * max(muS, 0.0) + eSky;
   vec3 radiance = waterColumnRadiance(k, uSeaColor, uFloorAlbedo, floorIrr, depthM, viewPathM, surfaceIrr);
-  gWater = WaterVolume(true, radiance / max(surfaceIrr, vec3(1e-6)));
+  gWater = WaterVolume(true, mix(uSeaColor, radiance / max(surfaceIrr, vec3(1e-6)), floorShare));
 }
 
 // Upwelling radiance per unit irradiance (sr^-1) over water `depthM` deep: what the caller
