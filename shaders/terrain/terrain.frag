@@ -157,7 +157,14 @@ void main() {
   bool globeSea = uSeaFromGlobe == 1;
   bool maskCoast = uTileHasWater == 1 && landMaskOn();
   bool below = heightM < (globeSea ? 0.0 : -1.0);
-  bool maskTest = maskCoast && (globeSea || below);
+#ifdef TERRAIN_GLOBE_LAND
+  // Drawn only over the pixels the globe's classifying draw found land at all four samples
+  // (the stencil: GlobeRenderer's frameLandLast_), which decides the coast up here: the globe's
+  // own parts shade the coast's mixed pixels, anti-aliased, and the sea's.
+  bool maskTest = false, atSeaLevel = true;
+#else
+  bool maskTest = maskCoast && (globeSea || below), atSeaLevel = maskTest;
+#endif
 #ifdef TERRAIN_DISCARDS
   if (below && !maskCoast) discard;
   vec2 maskLatLon = vec2(lat, lon);
@@ -169,7 +176,7 @@ void main() {
   }
   if (maskTest && landFraction(maskLatLon, maskFootprintRad) < 0.5) discard;
 #endif
-  if (maskTest) {
+  if (atSeaLevel) {  // land: where the mesh dips under the sea it is taken at sea level
     heightM = max(heightM, 0.0);
     meshHeightM = max(meshHeightM, 0.0);
   }

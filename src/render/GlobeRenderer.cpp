@@ -321,7 +321,18 @@ void GlobeRenderer::render(const FrameInput& f) {
     }
   } else {
     shadeGlobe(view, f, grid, frameLandLast_ ? GlobeParts::allButLand : GlobeParts::all);
-    terrain_->drawWaterTiles();
+    const bool overLand = frameLandLast_ && tilesOverLandClass_;
+    if (overLand) {  // (stencil writes off: llvmpipe then tests before the tiles' shader)
+      glEnable(GL_STENCIL_TEST);
+      glStencilFunc(GL_EQUAL, partStencilCount(kGlobePart0 + 4, grid), 0xff);
+      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+      glStencilMask(0);
+    }
+    terrain_->drawWaterTiles(overLand);
+    if (overLand) {
+      glStencilMask(0xff);
+      glDisable(GL_STENCIL_TEST);
+    }
     if (frameLandLast_) {
       shadeGlobe(view, f, grid, GlobeParts::land);
       glDepthFunc(GL_ALWAYS);  // as the other parts leave it
@@ -519,6 +530,12 @@ std::vector<int> GlobeRenderer::classifyingSteps(bool grid) const {
   return steps;
 }
 
+int GlobeRenderer::partStencilCount(int part, bool grid) const {
+  const std::vector<int> parts = globeParts(grid);
+  const auto at = std::find(parts.begin(), parts.end(), part);
+  return static_cast<int>(at - parts.begin()) + 1 - firstClassifyingStep(grid);
+}
+
 std::vector<int> GlobeRenderer::globeParts(bool grid) const {
   std::vector<int> parts{kGlobePart0 + 1, kGlobePart0 + 2, kGlobePart0 + 3};
   if (!grid && frameLandSea_) parts.insert(parts.end(), {kGlobePart0 + 4, kGlobePart0 + 5});
@@ -640,7 +657,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   const bool listed = listsScatteredParts();
   std::vector<int> listedCounts;
   for (std::size_t k = 0; k < parts.size(); ++k) {
-    const int count = static_cast<int>(k) + 1 - firstClassifyingStep(grid);
+    const int count = partStencilCount(parts[k], grid);
     if ((parts[k] == kGlobePart0 + 4) != landOnly && which != GlobeParts::all) continue;
     if (listed && (parts[k] == kGlobePart0 + 2 || parts[k] == kGlobePart0 + 3)) {  // the edge, the surface
       listedCounts.push_back(count);

@@ -211,6 +211,12 @@ class GlobeRenderer {
   /// land's part comes after the terrain's tiles with water and shades only the pixels they
   /// left, instead of all before them (frameLandLast_); false: before (the tests' reference).
   void setLandAfterTiles(bool on) { landAfterTiles_ = on; }
+  /// With the land's part after the tiles, those tiles draw only over the land's class (every
+  /// sample of the pixel on land), which then decides the coast: the coast's mixed pixels stay
+  /// the globe's surface part, anti-aliased by its four samples, and the tiles need no coast
+  /// test per fragment (terrain.frag's TERRAIN_GLOBE_LAND). false: the tiles test the land mask
+  /// themselves over every class (the reference of tests).
+  void setTilesOverLandClass(bool on) { tilesOverLandClass_ = on; }
   /// With `on`, each of the globe's parts counts the samples it shades (an occlusion query read
   /// back at once: for tests and `bench --breakdown`, not for frames that must not wait).
   void setCountPartSamples(bool on) { countPartSamples_ = on; }
@@ -319,6 +325,8 @@ class GlobeRenderer {
   /// land's, the sea's and the open sea's only above 20 km, where they are on.
   [[nodiscard]] std::vector<int> classifyingSteps(bool grid) const;
   [[nodiscard]] std::vector<int> globeParts(bool grid) const;
+  /// The stencil count the classifying draws leave on the pixels of `part` (kGlobePart0 + k).
+  [[nodiscard]] int partStencilCount(int part, bool grid) const;
   /// Below the ceiling, the sky part's pixels near the Sun's disc again with the disc
   /// (kSkyLowSunPart) over the sky just drawn without it: scissored to sunDiscScissor's box, or
   /// over the whole screen where that has none or setSunDiscBox(false).
@@ -432,6 +440,7 @@ class GlobeRenderer {
   bool openSeaPart_ = true;
   bool landSeaParts_ = true;
   bool landAfterTiles_ = true;
+  bool tilesOverLandClass_ = true;  ///< setTilesOverLandClass
   bool countPartSamples_ = false;
   std::vector<std::pair<std::string, std::uint64_t>> partSamples_;
   bool scissorGlobe_ = true;

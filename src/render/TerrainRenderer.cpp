@@ -69,6 +69,7 @@ const gl::Program& TerrainRenderer::variant(unsigned bits) {
     if ((bits & kAerialBuffer) != 0) defines.emplace_back("TERRAIN_AERIAL_BUFFER");
     if ((bits & kCoverage) != 0) defines.insert(defines.end(), {"TERRAIN_COVERAGE", "TERRAIN_DEPTH_ONLY"});
     if ((bits & kAfterCoverage) != 0) defines.emplace_back("TERRAIN_AFTER_COVERAGE");
+    if ((bits & kGlobeLand) != 0) defines.emplace_back("TERRAIN_GLOBE_LAND");
     p = gl::Program({{GL_VERTEX_SHADER, "terrain/terrain.vert"}, {GL_FRAGMENT_SHADER, "terrain/terrain.frag"}},
                     defines);
   }
@@ -381,10 +382,10 @@ void TerrainRenderer::drawShadowCascade(const geo::CameraView& view, int cascade
   }
 }
 
-void TerrainRenderer::drawWaterTiles() {
+void TerrainRenderer::drawWaterTiles(bool overGlobeLand) {
   if (waterTiles_.empty()) return;
   if (timer_ != nullptr) timer_->mark("terrain");
-  drawCovered(waterView_, waterTiles_, waterBits_, waterSunDirection_, true);
+  drawCovered(waterView_, waterTiles_, waterBits_ | (overGlobeLand ? kGlobeLand : 0u), waterSunDirection_, true);
   waterTiles_.clear();
   gl::checkErrors("TerrainRenderer::drawWaterTiles");
 }

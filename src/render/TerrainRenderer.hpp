@@ -92,8 +92,10 @@ class TerrainRenderer {
   /// With `seaFromGlobe`, draw() draws only the tiles all above the sea (zeroing the stencil
   /// where they draw: GlobeRenderer's parts then skip those pixels); this draws the rest of
   /// that frame's tiles, after the globe's parts but its land's (GlobeRenderer's
-  /// frameLandLast_). Without, draw() drew them all and this does nothing.
-  void drawWaterTiles();
+  /// frameLandLast_). Without, draw() drew them all and this does nothing. `overGlobeLand`: the
+  /// caller's stencil test keeps them to the pixels the globe classed land at every sample,
+  /// which then decide the coast (TERRAIN_GLOBE_LAND: no coast test of their own).
+  void drawWaterTiles(bool overGlobeLand);
 
   [[nodiscard]] const TerrainStats& stats() const { return stats_; }
 
@@ -292,7 +294,8 @@ class TerrainRenderer {
   /// from this frame's table (TERRAIN_AERIAL_TABLE, render/AerialTable); kAerialBuffer: from
   /// the tile aerial buffer (TERRAIN_AERIAL_BUFFER, computeTileAerial); kNoDetail: no pixel of
   /// these tiles resolves a detail octave their vertex normals leave out (TERRAIN_NO_DETAIL,
-  /// detailUnresolved).
+  /// detailUnresolved); kGlobeLand: over the globe's land class only, with no coast test
+  /// (TERRAIN_GLOBE_LAND, drawWaterTiles).
   /// kCoverage: only the discards, writing the depth of what survives them (its colour writes
   /// masked off); kAfterCoverage: the shading after it, the depth test (equal) before the
   /// shader and no discards (drawCovered).
@@ -307,10 +310,11 @@ class TerrainRenderer {
     kAerialTable = 128u,
     kAerialBuffer = 256u,
     kNoDetail = 512u,
-    kCoarse = 1024u
+    kCoarse = 1024u,
+    kGlobeLand = 2048u
   };
   const gl::Program& variant(unsigned bits);
-  std::array<gl::Program, 2048> variants_;
+  std::array<gl::Program, 4096> variants_;
   /// The stride of the mesh `tile` is drawn from, as an index into terrain::kTileStrides: the
   /// coarsest that lies within kStrideDeviationPx of the full grid, in the smallest pixel the
   /// tile can reach at its nearest point. Its own skirts must also be deeper than its vertical

@@ -155,6 +155,9 @@ TEST(GlobeRender, OneClassifyingDrawMatchesOneDrawPerStep) {
     // The deferred sea needs stencil export too; its picture against the forward one is
     // CoastWater.DeferredSeaMatchesTheGridsOwnFragments' (within a level, not bit for bit).
     r.ocean().setDeferred(false);
+    // So do the tiles over the land's class alone (their own test:
+    // TerrainRender.TilesOverTheGlobesLandClassKeepThePicture).
+    r.setTilesOverLandClass(false);
     for (const render::FrameInput& f : frames) {
       r.render(f);
       images[path].push_back(r.radiance());

@@ -160,6 +160,10 @@ void expectSplitKeepsThePicture(render::GlobeRenderer& r, const render::FrameInp
   // the split's and the unsplit surface part's colours 5 levels apart (the twenty-first
   // session's note).
   r.terrain().setCoarseStrides(false);
+  // The tiles with water over every class, with their own coast test: over the land's class
+  // alone they would follow each split's classes (their own test:
+  // TerrainRender.TilesOverTheGlobesLandClassKeepThePicture).
+  r.setTilesOverLandClass(false);
   setSplit(false);
   r.render(f);
   const io::ImageRgbaF reference = r.radiance();

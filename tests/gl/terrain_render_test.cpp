@@ -17,6 +17,7 @@
 #include "geo/Camera.hpp"
 #include "geo/Sun.hpp"
 #include "gl/Context.hpp"
+#include "gl/DriverProfile.hpp"
 #include "render/GlobeRenderer.hpp"
 #include "render/ShadowReceivers.hpp"
 #include "support/GlFixtures.hpp"
@@ -451,6 +452,42 @@ TEST(TerrainRender, TileAerialBufferKeepsThePerVertexPicture) {
     EXPECT_LT(change.worst, 1e-4) << c.name;
   }
   r.terrain().setCoarseStrides(true);
+}
+
+// Above 20 km the tiles with water come after the globe's parts and draw only over the pixels
+// the globe's classifying draw found land at all four samples (GlobeRenderer's
+// setTilesOverLandClass), with no coast test of their own: the globe's classes decide the
+// coast, whose mixed pixels keep the globe's surface part (anti-aliased by its four samples),
+// and a tile's mesh above sea level beyond the coast stays under the sea's classes. Against
+// the tiles' own test over every class: the same picture but at the coast's pixels, from orbit
+// over the Atlantic, 3000 km over the Aegean (islands, lakes), 300 km straight down on
+// Gibraltar's strait and 30 km over it. Each bound is ~1.3 times what the coast's pixels
+// change (measured: 315, 1153, 156, 286). Without the stencil test the tiles' land spills over
+// the sea (Gibraltar's views: 480 and 680); with the wrong class the tiles draw nowhere and the
+// globe's flat land (no relief, no snow) changes most of the land's pixels (1573 to 13 399).
+TEST(TerrainRender, TilesOverTheGlobesLandClassKeepThePicture) {
+  auto ctx = gl::createHeadlessContext();
+  if (!gl::driverProfile().stencilExport) GTEST_SKIP() << "needs GL_ARB_shader_stencil_export";
+  render::GlobeRenderer r(data::defaultElevation());
+  struct Case {
+    ViewCase view;
+    int maxOver;  // pixels (of 320 x 180) changed by over 2 %
+  };
+  const std::vector<Case> cases{
+      {{"atlantic_20000km", {.latDeg = 10.0, .lonDeg = -30.0, .heightM = 2.0e7, .headingDeg = 0.0, .pitchDeg = -90.0, .fovDeg = 45.0, .width = 320, .height = 180}, 40.0, 120.0}, 420},
+      {{"aegean_3000km", {.latDeg = 38.0, .lonDeg = 25.0, .heightM = 3.0e6, .headingDeg = 0.0, .pitchDeg = -90.0, .fovDeg = 45.0, .width = 320, .height = 180}, 35.0, 200.0}, 1500},
+      {{"gibraltar_300km_down", {.latDeg = 36.0, .lonDeg = -5.5, .heightM = 3.0e5, .headingDeg = 0.0, .pitchDeg = -90.0, .fovDeg = 30.0, .width = 320, .height = 180}, 45.0, 160.0}, 220},
+      {kGibraltar30km, 380},
+  };
+  for (const auto& [c, maxOver] : cases) {
+    const render::FrameInput f = test::frameOf(c.view, c.sunElevationDeg, c.sunAzimuthDeg);
+    const test::OffAndOn images = test::renderOffAndOn(r, f, [&r](bool on) { r.setTilesOverLandClass(on); });
+    const test::RadianceChange change = test::radianceChange(images.off, images.on, 0.02);
+    std::printf("%s: %d pixels over 2 %%, mean %.5f\n", c.name, change.over, change.mean);
+    if (change.over > maxOver) test::savePng(r, std::string("tiles_over_land_class_") + c.name);
+    EXPECT_GT(change.over, 0) << c.name << ": the coast's pixels unchanged (the tiles' own test still in use?)";
+    EXPECT_LE(change.over, maxOver) << c.name;
+  }
 }
 
 namespace {
