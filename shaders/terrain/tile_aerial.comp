@@ -1,10 +1,11 @@
 #version 450 core
-// The aerial perspective of every vertex of the frame's terrain tiles (terrain/tile_vertex.glsl),
-// into the frame's tile aerial buffer: what terrain/terrain.vert computed per vertex, on every
-// core instead of the draw's one thread (render/TerrainRenderer::computeTileAerial). One
-// dispatch for all the tiles, a row of work groups a tile (llvmpipe's dispatches each cost
-// ~0.2 ms of waiting): tile k's vertices from k x uVertexCount on in the frame's copy of their
-// buffers and in the aerial buffer (tile_aerial.glsl's slots, uFirstVertex = k x uVertexCount).
+// The aerial perspective of the vertices of the frame's terrain tiles (terrain/tile_vertex.glsl)
+// that the eye may see, into the frame's tile aerial buffer: what terrain/terrain.vert computed
+// per vertex, on every core instead of the draw's one thread
+// (render/TerrainRenderer::computeTileAerial). One dispatch for all the tiles (llvmpipe's
+// dispatches each cost ~0.2 ms of waiting) over a list of those vertices: tile k's from
+// k x uVertexCount on in the frame's copy of their buffers and in the aerial buffer
+// (tile_aerial.glsl's slots, uFirstVertex = k x uVertexCount).
 #define TERRAIN_AERIAL_STORE
 #include "common/constants.glsl"
 #include "common/types.glsl"
@@ -19,12 +20,17 @@ uniform int uVertexCount;  // a tile's
 // uMorphScale.
 layout(std430, binding = OG_TILE_AERIAL_TILES_BINDING) readonly buffer TileAerialTiles { vec4 tileAerialTiles[]; };
 
+// The vertices to do: their indices among the frame's (tile k's from k x uVertexCount on), those
+// the eye may see (render/TerrainRenderer::listTileAerialVertices; llvmpipe runs every
+// invocation dispatched in full, those that return at once too).
+layout(std430, binding = OG_TILE_AERIAL_LIST_BINDING) readonly buffer TileAerialList { int tileAerialList[]; };
+uniform int uListed;  // the list's length
+
 void main() {
-  int tile = int(gl_WorkGroupID.y);
-  int i = int(gl_GlobalInvocationID.x);
-  if (i >= uVertexCount) return;
-  int v = tile * uVertexCount + i;
-  vec4 t = tileAerialTiles[tile];
+  int at = int(gl_GlobalInvocationID.x);
+  if (at >= uListed) return;
+  int v = tileAerialList[at];
+  vec4 t = tileAerialTiles[v / uVertexCount];
   float heightM;
   vec3 relative = morphedTileVertexOf(t.xyz, t.w, tileVertexVec3(v, TILE_VERTEX_POSITION), tileVertexInfo(v),
                                       tileVertexVec3(v, TILE_VERTEX_MORPH), heightM);

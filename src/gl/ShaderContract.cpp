@@ -35,6 +35,7 @@ std::vector<std::string> contractDefines() {
           define("OG_TERRAIN_AERIAL_BINDING", kTerrainAerialBinding),
           define("OG_TILE_VERTICES_BINDING", kTileVerticesBinding),
           define("OG_TILE_AERIAL_TILES_BINDING", kTileAerialTilesBinding),
+          define("OG_TILE_AERIAL_LIST_BINDING", kTileAerialListBinding),
           define("OG_TILE_QUADS", kTerrainTileQuads),
           define("OG_GLOBE_PIXELS_BINDING", kGlobePixelsBinding),
           define("OG_UNCOVERED_BLOCKS_BINDING", kUncoveredBlocksBinding),

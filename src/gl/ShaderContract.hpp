@@ -51,7 +51,8 @@ enum UniformBlockBinding : unsigned {
 /// Binding points of shader storage blocks that several programs share (GLSL: OG_<NAME>); under 8,
 /// the least GL 4.5 guarantees (render/OceanRenderer's own passes use 3-7, and 2 for the grid's
 /// near-land flags, which GlobeRenderer binds again for its pixels, render/UncoveredPixels for
-/// its blocks (with 3 for their triangles) and TerrainRenderer::computeTileAerial for its tiles;
+/// its blocks (with 3 for their triangles) and TerrainRenderer::computeTileAerial for its tiles
+/// (with 3 for its vertices);
 /// gl::runProbe's test probes bind 0 for their run: the terrain binds its buffer again at each
 /// draw).
 enum StorageBinding : unsigned {
@@ -63,6 +64,7 @@ enum StorageBinding : unsigned {
   kTileAerialTilesBinding = 2,     ///< terrain/tile_aerial.comp TileAerialTiles (TerrainRenderer::computeTileAerial)
   kUncoveredBlocksBinding = 2,     ///< render/uncovered_blocks.glsl UncoveredBlocks (render/UncoveredPixels)
   kUncoveredTrianglesBinding = 3,  ///< render/uncovered_blocks.comp UncoveredTriangles (render/UncoveredPixels)
+  kTileAerialListBinding = 3,      ///< terrain/tile_aerial.comp TileAerialList (TerrainRenderer::computeTileAerial)
 };
 
 /// Quads along a terrain tile's edge (terrain::kTileQuads, asserted by render/TerrainRenderer;

@@ -166,11 +166,46 @@ void TerrainRenderer::computeTileAerial(const geo::CameraView& view, const std::
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTerrainAerialBinding, tileAerial_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTileVerticesBinding, tileAerialVertices_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTileAerialTilesBinding, tileAerialTiles_.id());
+  // Only the vertices the eye may see (llvmpipe runs every invocation dispatched in full).
+  listTileAerialVertices(view, tiles);
+  stats_.aerialVertices = static_cast<int>(tileAerialListed_.size());
+  if (tileAerialListed_.empty()) return;
+  const std::size_t listBytes = tileAerialListed_.size() * sizeof(std::int32_t);
+  grow(tileAerialList_, tileAerialListBytes_, listBytes, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferSubData(tileAerialList_.id(), 0, static_cast<GLsizeiptr>(listBytes), tileAerialListed_.data());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTileAerialListBinding, tileAerialList_.id());
   setAerialUniforms(p, view, sunDirectionEcef);
   p.set("uVertexCount", terrain::kTileVertices);
+  p.set("uListed", static_cast<int>(tileAerialListed_.size()));
   p.use();
-  glDispatchCompute((terrain::kTileVertices + 63) / 64, static_cast<GLuint>(tiles.size()), 1);
+  glDispatchCompute(static_cast<GLuint>((tileAerialListed_.size() + 63) / 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void TerrainRenderer::listTileAerialVertices(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles) {
+  // A point P the eye E sees: the segment between them misses the ellipsoid, so also the ball of
+  // radius b within it, and the angle between them at the centre is at most
+  // acos(b / |E|) + acos(b / |P|), with |P| at most a + the tile's highest point.
+  const double a = geo::kWgs84SemiMajorM, b = geo::kWgs84SemiMinorM;
+  const double eyeR = glm::length(view.positionEcef);
+  const glm::dvec3 eyeDir = view.positionEcef / eyeR;
+  const double eyeCap = std::acos(std::clamp(b / eyeR, -1.0, 1.0));
+  tileAerialListed_.clear();
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    const terrain::Tile& t = *tiles[k];
+    // A seen fragment reads the vertices of its triangle of the full grid, within a cell's
+    // diagonal of it (two of a coarser mesh's cells): a grid cell spans at most pi / (2^level
+    // kTileQuads) of latitude and of arc along a parallel.
+    const double cellRad = std::numbers::pi / (static_cast<double>(1 << t.key.level) * terrain::kTileQuads);
+    const double reach = eyeCap + std::acos(b / (a + std::max(t.maxHeightM, 0.0))) + 2.0 * std::numbers::sqrt2 * cellRad;
+    const double cosReach = std::cos(std::min(reach, std::numbers::pi));
+    const int first = static_cast<int>(k) * terrain::kTileVertices;
+    const int n = std::min(terrain::kTileVertices, static_cast<int>(t.positions.size()));
+    for (int i = 0; i < n; ++i) {
+      const glm::dvec3 p = t.centreEcef + t.positions[static_cast<std::size_t>(i)];
+      if (glm::dot(eyeDir, p) >= cosReach * glm::length(p)) tileAerialListed_.push_back(first + i);
+    }
+  }
 }
 
 namespace {
@@ -730,6 +765,7 @@ void TerrainRenderer::draw(const geo::CameraView& view, int width, int height,
   stats_.drawnTiles = static_cast<int>(drawn.size());
   stats_.landTiles = static_cast<int>(casters.size());
   stats_.aerialBufferTiles = (frameBits & kAerialBuffer) != 0 ? static_cast<int>(drawn.size()) : 0;
+  if ((frameBits & kAerialBuffer) == 0) stats_.aerialVertices = 0;
   stats_.finestLevel = sel.finestLevel;
   stats_.tilesPending = sel.pending;
   stats_.cpuBytes = cache_.bytes();

@@ -56,6 +56,9 @@ struct TerrainStats {
   int landTiles = 0;            ///< drawn tiles reaching above the sea (-1 m); 0: open ocean
   /// Drawn tiles whose vertices' aerial perspective the compute pass made (setTileAerialBuffer).
   int aerialBufferTiles = 0;
+  /// Of their vertices, those it made: the ones the eye may see (the others' triangles lie
+  /// beyond its horizon; TerrainRenderer::computeTileAerial).
+  int aerialVertices = 0;
   /// Whether the last frame's tiles were shaded with the detail octaves per pixel (false where
   /// no pixel resolves one: detailUnresolved).
   bool pixelDetail = false;
@@ -335,10 +338,18 @@ class TerrainRenderer {
     int first = 0, grid = 0, skirts = 0;
   };
   std::array<StrideIndices, std::size(terrain::kTileStrides)> strideIndices_{};
-  /// Fills the tile aerial buffer for `tiles` (kAerialBuffer's frames): each tile's vertices'
-  /// transmittance and in-scatter at its slot (tileFirstVertex_).
+  /// Fills the tile aerial buffer for `tiles` (kAerialBuffer's frames): the transmittance and
+  /// in-scatter of each tile's vertices at its slots (tileFirstVertex_), of those the eye may
+  /// see (listTileAerialVertices).
   void computeTileAerial(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
                          const glm::dvec3& sunDirectionEcef);
+  /// Lists in tileAerialListed_ the vertices of `tiles` (their indices among the frame's, tile k's
+  /// from k x terrain::kTileVertices) that a fragment the eye sees may read: within the cap of the
+  /// globe the eye can see, widened by how far beyond it a point of the tile can be seen and by
+  /// a cell of its grid (a seen fragment reads its triangle's vertices). The others lie on
+  /// triangles beyond the horizon, which the globe's nearer tiles hide where they are drawn at
+  /// all.
+  void listTileAerialVertices(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles);
   /// Whether no pixel of `tiles` resolves the first detail octave its vertex normals leave out
   /// (terrain.frag's pixelDetailGradient adds nothing): each tile's nearest point is far enough
   /// that a pixel's footprint there, at its smallest (the pixel farthest off the axis the tile
@@ -369,6 +380,9 @@ class TerrainRenderer {
   std::size_t tileAerialBytes_ = 0;
   gl::Buffer tileAerialVertices_, tileAerialTiles_;  ///< tile_aerial.comp's copy of the tiles' vertices, their uniforms
   std::size_t tileAerialVerticesBytes_ = 0, tileAerialTilesBytes_ = 0;
+  gl::Buffer tileAerialList_;  ///< tile_aerial.comp's vertices to do, their indices among the frame's
+  std::size_t tileAerialListBytes_ = 0;
+  std::vector<std::int32_t> tileAerialListed_;  ///< listTileAerialVertices' list
   std::unordered_map<const terrain::Tile*, int> tileFirstVertex_;  ///< this frame's slots in tileAerial_
   bool coarseMask_ = false;  ///< setCoarseLandMask
   double seaCrestM_ = 30.0;  ///< setSeaCrestM
