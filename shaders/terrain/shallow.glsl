@@ -57,8 +57,10 @@ void prepareWaterColumn(vec3 vE, vec3 upE, vec3 sunE, float sunSeen, float footp
     vec2 heightKeep = elevationLayerAt(latLon);
     float land = landMaskOn() ? landFraction(latLon, footprintRad) : 0.0;
     depthM = max(-(landMaskOn() ? constrainByLandFraction(heightKeep.x, heightKeep.y, land) : heightKeep.x), 0.0);
-    if (land > 0.0 && heightKeep.y < 0.5)  // the coast's shallows: their share of the footprint
-      floorShare = min(WATER_SHALLOWS_WIDTH_M / max(footprintRad * WGS84_A, 1e-3), 1.0);
+    // The coast's shallows: their share of the footprint, faded in over the mask's first tenth
+    // of land and out over the banks' marks (no step where either starts).
+    float share = min(WATER_SHALLOWS_WIDTH_M / max(footprintRad * WGS84_A, 1e-3), 1.0);
+    floorShare = mix(1.0, share, smoothstep(0.0, 0.1, land) * (1.0 - smoothstep(0.25, 0.75, heightKeep.y)));
   }
   vec3 k = uWaterAttenuation;
   if (depthM > waterMaxPathM(k, WATER_EPSILON)) {

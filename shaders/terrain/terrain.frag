@@ -137,7 +137,8 @@ void main() {
   // Where the coastline mask decides the coast (terrain/landmask.glsl), it does so per pixel up
   // here: the mesh's zero crossing is straight between vertices, which on far tiles are
   // kilometres apart (a staircase of straight lines along the coast from 30 km). Tiles that are
-  // land at every vertex skip it (a lake narrower than their vertex spacing does not show).
+  // land at every vertex skip it (a lake narrower than their vertex spacing does not show), and
+  // so do those drawn over the globe's land class alone (TERRAIN_GLOBE_LAND).
   float lat = vInfo.y, lon = vInfo.z;
   vec3 up = vec3(cos(lat) * cos(lon), cos(lat) * sin(lon), sin(lat));
 #ifndef TERRAIN_LAND_ONLY
@@ -149,8 +150,8 @@ void main() {
   vec3 viewDir = normalize(vRelative);
   float maskFootprintRad = coastFootprintRad(length(vRelative), max(length(dFdx(viewDir)), length(dFdy(viewDir))),
                                              -dot(up, viewDir));
-  // Above the ceiling (the globe's sea) the mask decides every pixel of a tile with water;
-  // below it, the pixels of the mesh more than a metre under the sea, tested where the view
+  // Above the ceiling (the globe's sea) the mask decides every pixel of a tile with water (but
+  // with TERRAIN_GLOBE_LAND, where the globe's classes decide); below it, the pixels of the mesh more than a metre under the sea, tested where the view
   // ray crosses sea level, as the grid tests its surface (the mesh point lies |h| below it, up
   // to a fine cell farther along the ray at oblique views). One lookup for either case:
   // llvmpipe runs both sides of an if for every pixel.

@@ -1,7 +1,7 @@
 // The tile aerial buffer (TERRAIN_AERIAL_BUFFER; written by terrain/tile_aerial.comp,
-// TERRAIN_AERIAL_STORE): per vertex of the frame's tiles, at uFirstVertex + its index, the
-// transmittance and the in-scatter of the eye's path to it as two vec4s
-// (render/TerrainRenderer::computeTileAerial).
+// TERRAIN_AERIAL_STORE): per vertex of the frame's tiles the eye may see, at uFirstVertex +
+// its index, the transmittance and the in-scatter of the eye's path to it as two vec4s
+// (render/TerrainRenderer::computeTileAerial; the others' slots hold what they held).
 #if defined(TERRAIN_AERIAL_BUFFER) || defined(TERRAIN_AERIAL_STORE)
 #ifdef TERRAIN_AERIAL_STORE
 layout(std430, binding = OG_TERRAIN_AERIAL_BINDING) writeonly buffer TileAerial { vec4 tileAerial[]; };

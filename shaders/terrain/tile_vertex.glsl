@@ -1,7 +1,7 @@
 // A terrain tile's vertex as terrain/terrain.vert places it, and the aerial perspective of its
-// path from the eye: shared with terrain/tile_aerial.comp, which computes that light for every
-// vertex of the frame's tiles on every core (llvmpipe runs a draw's vertex shaders on one
-// thread; render/TerrainRenderer's tile aerial buffer).
+// path from the eye: shared with terrain/tile_aerial.comp, which computes that light for the
+// vertices of the frame's tiles the eye may see on every core (llvmpipe runs a draw's vertex
+// shaders on one thread; render/TerrainRenderer's tile aerial buffer).
 // Needs (included first): common/constants.glsl, atmosphere/model.glsl, render/aerial.glsl.
 
 uniform vec3 uTileOffset;  // tile centre - eye, m

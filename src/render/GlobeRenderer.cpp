@@ -304,10 +304,11 @@ void GlobeRenderer::render(const FrameInput& f) {
 
   // Terrain over the globe's land (its far fallback), depth-tested; the ocean below is then
   // depth-tested against it, so the shoreline is where sea surface and ground meet. Above
-  // 20 km its tiles all above the sea come first and zero the stencil where they draw, so the
+  // 20 km its tiles all above the sea come first and mark the stencil where they draw, so the
   // globe's parts leave those pixels alone, and the tiles with water come after the globe,
-  // over it, but for the land's part, which comes after them where it can (frameLandLast_);
-  // below, the globe comes last, shading only what the two left empty.
+  // over it (over its land class alone where their relief allows: setTilesOverLandClass),
+  // but for the land's part, which comes after them where it can (frameLandLast_); below, the
+  // globe comes last, shading only what the two left empty.
   terrain_->draw(view, f.width, f.height, f.sunDirectionEcef, !grid);
   glBindTextureUnit(gl::kUnitElevation, elevation_.id());
   glBindVertexArray(emptyVao_.id());
@@ -321,18 +322,9 @@ void GlobeRenderer::render(const FrameInput& f) {
     }
   } else {
     shadeGlobe(view, f, grid, frameLandLast_ ? GlobeParts::allButLand : GlobeParts::all);
-    const bool overLand = frameLandLast_ && tilesOverLandClass_;
-    if (overLand) {  // (stencil writes off: llvmpipe then tests before the tiles' shader)
-      glEnable(GL_STENCIL_TEST);
-      glStencilFunc(GL_EQUAL, partStencilCount(kGlobePart0 + 4, grid), 0xff);
-      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-      glStencilMask(0);
-    }
-    terrain_->drawWaterTiles(overLand);
-    if (overLand) {
-      glStencilMask(0xff);
-      glDisable(GL_STENCIL_TEST);
-    }
+    // The tiles with water over the land's class alone where their relief stays within half a
+    // pixel of the ellipsoid's points the classes are of (setTilesOverLandClass).
+    terrain_->drawWaterTiles(frameLandLast_ && tilesOverLandClass_ ? partStencilCount(kGlobePart0 + 4, grid) : 0);
     if (frameLandLast_) {
       shadeGlobe(view, f, grid, GlobeParts::land);
       glDepthFunc(GL_ALWAYS);  // as the other parts leave it
@@ -431,7 +423,7 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
 // header), and each part is then drawn over only its own pixels. Above 20 km the classifying
 // draws come before the terrain (their first writes the globe's depth, which the terrain is
 // tested against) and the parts after it, skipping what the terrain's land-only tiles covered
-// (they zero the stencil where they draw); below, both come after the terrain and the grid.
+// (they set a stencil bit where they draw); below, both come after the terrain and the grid.
 void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput& f, bool grid) {
   if (timer_ != nullptr) timer_->mark("globe");
   const std::array<int, 4> box = grid ? std::array<int, 4>{0, 0, f.width, f.height} : scissorToGlobe(view, f);

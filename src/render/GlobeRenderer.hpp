@@ -211,11 +211,12 @@ class GlobeRenderer {
   /// land's part comes after the terrain's tiles with water and shades only the pixels they
   /// left, instead of all before them (frameLandLast_); false: before (the tests' reference).
   void setLandAfterTiles(bool on) { landAfterTiles_ = on; }
-  /// With the land's part after the tiles, those tiles draw only over the land's class (every
-  /// sample of the pixel on land), which then decides the coast: the coast's mixed pixels stay
-  /// the globe's surface part, anti-aliased by its four samples, and the tiles need no coast
-  /// test per fragment (terrain.frag's TERRAIN_GLOBE_LAND). false: the tiles test the land mask
-  /// themselves over every class (the reference of tests).
+  /// With the land's part after the tiles, the tiles with water whose relief moves a point on
+  /// screen by at most TerrainRenderer::kGlobeLandShiftPx draw only over the land's class (every
+  /// sample of the pixel on land), which then decides their coast: the coast's mixed pixels
+  /// stay the globe's surface part, anti-aliased by its four samples, and those tiles need no
+  /// coast test per fragment (terrain.frag's TERRAIN_GLOBE_LAND). false: the tiles test the
+  /// land mask themselves over every class (the reference of tests).
   void setTilesOverLandClass(bool on) { tilesOverLandClass_ = on; }
   /// With `on`, each of the globe's parts counts the samples it shades (an occlusion query read
   /// back at once: for tests and `bench --breakdown`, not for frames that must not wait).

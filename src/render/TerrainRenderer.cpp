@@ -1,6 +1,7 @@
 #include "render/TerrainRenderer.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <numbers>
 #include <array>
 #include <cmath>
@@ -139,6 +140,8 @@ void TerrainRenderer::computeTileAerial(const geo::CameraView& view, const std::
                     offsetof(terrain::TileVertex, heightM) == 6 * sizeof(float) &&
                     offsetof(terrain::TileVertex, morph) == 10 * sizeof(float),
                 "terrain/tile_grid.glsl's TILE_VERTEX_FLOATS and fields");
+  static_assert(terrain::kTileVertices == (gl::kTerrainTileQuads + 1) * (gl::kTerrainTileQuads + 5),
+                "terrain/tile_grid.glsl's TILE_VERTEX_COUNT");
   gl::Program& p = tileAerialProgram_;
   if (p.id() == 0) p = gl::Program({{GL_COMPUTE_SHADER, "terrain/tile_aerial.comp"}});
 
@@ -175,10 +178,11 @@ void TerrainRenderer::computeTileAerial(const geo::CameraView& view, const std::
   glNamedBufferSubData(tileAerialList_.id(), 0, static_cast<GLsizeiptr>(listBytes), tileAerialListed_.data());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTileAerialListBinding, tileAerialList_.id());
   setAerialUniforms(p, view, sunDirectionEcef);
-  p.set("uVertexCount", terrain::kTileVertices);
   p.set("uListed", static_cast<int>(tileAerialListed_.size()));
   p.use();
-  glDispatchCompute(static_cast<GLuint>((tileAerialListed_.size() + 63) / 64), 1, 1);
+  // Rows of at most 65 535 work groups (GL's least limit on a dimension), each of 64 vertices.
+  const std::size_t groups = (tileAerialListed_.size() + 63) / 64, perRow = std::min<std::size_t>(groups, 65535);
+  glDispatchCompute(static_cast<GLuint>(perRow), static_cast<GLuint>((groups + perRow - 1) / perRow), 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
@@ -417,10 +421,12 @@ void TerrainRenderer::drawShadowCascade(const geo::CameraView& view, int cascade
   }
 }
 
-void TerrainRenderer::drawWaterTiles(bool overGlobeLand) {
+void TerrainRenderer::drawWaterTiles(int landClassStencil) {
   if (waterTiles_.empty()) return;
   if (timer_ != nullptr) timer_->mark("terrain");
-  drawCovered(waterView_, waterTiles_, waterBits_ | (overGlobeLand ? kGlobeLand : 0u), waterSunDirection_, true);
+  landClassStencil_ = landClassStencil;  // (tileBits' kGlobeLand, drawTileGroup's stencil test)
+  drawCovered(waterView_, waterTiles_, waterBits_, waterSunDirection_, true);
+  landClassStencil_ = 0;
   waterTiles_.clear();
   gl::checkErrors("TerrainRenderer::drawWaterTiles");
 }
@@ -485,6 +491,13 @@ void TerrainRenderer::drawTileGroup(const geo::CameraView& view, const std::vect
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(depthFunc);
   glDepthMask(depthFunc == GL_EQUAL ? GL_FALSE : GL_TRUE);
+  const bool overLandClass = (bits & kGlobeLand) != 0;
+  if (overLandClass) {  // the globe's land class, whatever the tiles all above the sea set (drawWaterTiles)
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_EQUAL, landClassStencil_, kLandTilesStencilBit - 1);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glStencilMask(0);  // (no stencil writes: llvmpipe then tests it before the shader)
+  }
   // A heightfield seen from above hides its back faces behind front ones: cull them (the
   // skirts, seen from either side, are drawn without culling). Fragments are not free even
   // when hidden: llvmpipe shades them before the depth test when multisampling.
@@ -523,16 +536,17 @@ void TerrainRenderer::drawTileGroup(const geo::CameraView& view, const std::vect
   }
   if (clipFloor) glDisable(GL_CLIP_DISTANCE0);
   glDisable(GL_CLIP_DISTANCE1);
+  if (overLandClass) {
+    glStencilMask(0xff);
+    glDisable(GL_STENCIL_TEST);
+  }
 }
 
-std::size_t TerrainRenderer::tileStrideIndex(const terrain::Tile& t, const geo::CameraView& view) const {
-  if (!coarseThisFrame_) return 0;
+std::optional<TerrainRenderer::ScreenScale> TerrainRenderer::tileScreenScale(const terrain::Tile& t,
+                                                                            const geo::CameraView& view) const {
   const glm::dvec3 toCentre = t.boundCentreEcef - view.positionEcef;
   const double centreM = glm::length(toCentre);
-  if (centreM <= t.boundRadiusM) return 0;
-  // terrain/tile_vertex.glsl's morph weight is 0 within half the morph scale of the eye.
-  const double morph = morphScale(t, view);
-  if (morph > 0.0 && centreM + t.boundRadiusM > 0.5 * morph) return 0;
+  if (centreM <= t.boundRadiusM) return std::nullopt;
   // A vertical offset moves a point on screen by its part across the view ray: at most the
   // sine of the largest angle between a vertical on the tile and a ray to a point of it.
   const double toEdge = std::asin(t.boundRadiusM / centreM);
@@ -540,18 +554,36 @@ std::size_t TerrainRenderer::tileStrideIndex(const terrain::Tile& t, const geo::
   const double across = facing + t.upConeRad + toEdge >= 0.5 * std::numbers::pi ? 1.0 : std::sin(facing + t.upConeRad + toEdge);
   // The smallest pixel the tile can reach: the one farthest off the axis its sphere reaches.
   const double offAxisRad = std::acos(std::clamp(glm::dot(toCentre, view.forward) / centreM, -1.0, 1.0)) + toEdge;
-  const double pixelsPerM = 1.0 / (geo::smallestPixelAngleRad(view, params_.heightPx, offAxisRad) * (centreM - t.boundRadiusM));
+  return ScreenScale{across, 1.0 / (geo::smallestPixelAngleRad(view, params_.heightPx, offAxisRad) * (centreM - t.boundRadiusM))};
+}
+
+double TerrainRenderer::reliefShiftPx(const terrain::Tile& t, const geo::CameraView& view) const {
+  const std::optional<ScreenScale> s = tileScreenScale(t, view);
+  if (!s) return std::numeric_limits<double>::infinity();
+  // A point of the tile at height h (or depth) lies |h| along its vertical from its foot on the
+  // ellipsoid, which the ray through it passes within that much of on screen.
+  return std::max({t.maxHeightM, -t.minHeightM, 0.0}) * s->across * s->pixelsPerM;
+}
+
+std::size_t TerrainRenderer::tileStrideIndex(const terrain::Tile& t, const geo::CameraView& view) const {
+  if (!coarseThisFrame_) return 0;
+  const std::optional<ScreenScale> s = tileScreenScale(t, view);
+  if (!s) return 0;
+  // terrain/tile_vertex.glsl's morph weight is 0 within half the morph scale of the eye.
+  const double morph = morphScale(t, view);
+  if (morph > 0.0 && glm::length(t.boundCentreEcef - view.positionEcef) + t.boundRadiusM > 0.5 * morph) return 0;
   for (std::size_t k = std::size(terrain::kTileStrides) - 1; k >= 1; --k) {
     const terrain::Tile::StrideDeviation& d = t.strideDeviation[k - 1];
-    const double shiftM = d.verticalM * across + d.horizontalM;
-    if (shiftM * pixelsPerM <= kStrideDeviationPx && d.verticalM <= t.skirtDepthM) return k;
+    const double shiftM = d.verticalM * s->across + d.horizontalM;
+    if (shiftM * s->pixelsPerM <= kStrideDeviationPx && d.verticalM <= t.skirtDepthM) return k;
   }
   return 0;
 }
 
 unsigned TerrainRenderer::tileBits(const terrain::Tile& t, const geo::CameraView& view, unsigned bits,
                                    const glm::dvec3& sunDirectionEcef) const {
-  const unsigned coarse = tileStrideIndex(t, view) > 0 ? kCoarse : 0u;
+  unsigned coarse = tileStrideIndex(t, view) > 0 ? kCoarse : 0u;
+  if (landClassStencil_ > 0 && reliefShiftPx(t, view) <= kGlobeLandShiftPx) coarse |= kGlobeLand;
   if ((bits & (kNoNight | kCoverage)) != 0 || !dayTilesOn_) return coarse;
   // terrain.frag's night lights are 0 where the Sun is above a point's horizon: leave their
   // lookup out of tiles whose every vertical (within upConeRad of the middle one) has the Sun
@@ -826,9 +858,11 @@ void TerrainRenderer::drawFrameTiles(const geo::CameraView& view, const std::vec
   // for a pixel at the horizon): drawn without them (kLandOnly), since llvmpipe runs the test's
   // lookups even where a uniform turns it off (~13 % of the pass at mountain-15km). Above
   // 20 km they also pass the depth test before the shader with the stencil on (llvmpipe tests
-  // late in a shader that may discard) and zero the stencil, so the globe's parts skip what
-  // they cover (GlobeRenderer::shadeGlobe); the other tiles then wait for drawWaterTiles(),
-  // after the globe, over which they draw as before.
+  // late in a shader that may discard) and set kLandTilesStencilBit, so the globe's parts skip
+  // what they cover (GlobeRenderer::shadeGlobe); the other tiles then wait for
+  // drawWaterTiles(), after the globe, over which they draw (over its land class alone where
+  // their relief moves a point by at most kGlobeLandShiftPx; the depth test decides between
+  // them and these).
   waterTiles_.clear();
   std::vector<const terrain::Tile*> landTiles, otherTiles;
   for (const terrain::Tile* t : drawn) {
@@ -836,13 +870,15 @@ void TerrainRenderer::drawFrameTiles(const geo::CameraView& view, const std::vec
     const bool landOnly = t->minHeightM > 0.0 && t->key.y > 0 && t->key.y < lastRow;
     (landOnly ? landTiles : seaFromGlobe ? waterTiles_ : otherTiles).push_back(t);
   }
-  if (seaFromGlobe) {
+  if (seaFromGlobe) {  // (only the bit: the tiles with water still read the globe's class under it)
     glEnable(GL_STENCIL_TEST);
-    glStencilFunc(GL_ALWAYS, 0, 0xff);
+    glStencilFunc(GL_ALWAYS, kLandTilesStencilBit, 0xff);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    glStencilMask(kLandTilesStencilBit);
   }
   if (!landTiles.empty())  // (the variant is compiled on first use: none over the open sea)
     drawTiles(view, landTiles, (frameBits & ~kCoarseMask) | kLandOnly, sunDirectionEcef, seaFromGlobe);  // (no mask)
+  glStencilMask(0xff);
   glDisable(GL_STENCIL_TEST);
   drawCovered(view, otherTiles, frameBits, sunDirectionEcef, seaFromGlobe);
 }

@@ -92,13 +92,23 @@ class TerrainRenderer {
   /// fragments under sea level are left to it.
   void draw(const geo::CameraView& view, int width, int height, const glm::dvec3& sunDirectionEcef,
             bool seaFromGlobe);
-  /// With `seaFromGlobe`, draw() draws only the tiles all above the sea (zeroing the stencil
-  /// where they draw: GlobeRenderer's parts then skip those pixels); this draws the rest of
-  /// that frame's tiles, after the globe's parts but its land's (GlobeRenderer's
-  /// frameLandLast_). Without, draw() drew them all and this does nothing. `overGlobeLand`: the
-  /// caller's stencil test keeps them to the pixels the globe classed land at every sample,
-  /// which then decide the coast (TERRAIN_GLOBE_LAND: no coast test of their own).
-  void drawWaterTiles(bool overGlobeLand);
+  /// With `seaFromGlobe`, draw() draws only the tiles all above the sea (setting
+  /// kLandTilesStencilBit where they draw: GlobeRenderer's parts, which test the whole stencil
+  /// value, then skip those pixels); this draws the rest of that frame's tiles, after the
+  /// globe's parts but its land's (GlobeRenderer's frameLandLast_). Without, draw() drew them
+  /// all and this does nothing. `landClassStencil` > 0: the stencil value (in the bits under
+  /// kLandTilesStencilBit) of the globe's land class, the pixels whose samples it found all on
+  /// land; the tiles whose relief moves on screen by at most kGlobeLandShiftPx
+  /// (reliefShiftPx) are drawn only over those, which then decide the coast
+  /// (TERRAIN_GLOBE_LAND: no coast test of their own), the others as before.
+  void drawWaterTiles(int landClassStencil);
+  /// The stencil bit the tiles all above the sea set above the grid's ceiling (draw()): above
+  /// the globe's classes' counts (0-6).
+  static constexpr int kLandTilesStencilBit = 8;
+  /// The most a water tile's relief may move a point on screen off the ellipsoid's point
+  /// behind it, whose class the globe found, for the tile to draw over the land's class
+  /// alone, pixels.
+  static constexpr double kGlobeLandShiftPx = 0.5;
 
   [[nodiscard]] const TerrainStats& stats() const { return stats_; }
 
@@ -167,7 +177,7 @@ class TerrainRenderer {
   /// than it resolves (as GlobeRenderer's own table), and the tiles are few: per vertex there.
   static constexpr double kAerialTableMaxHeightM = 5.0e5;
   /// Whether, where no table serves (above kAerialTableMaxHeightM), the vertices' aerial
-  /// perspective is computed for all the frame's tiles by a compute pass
+  /// perspective is computed for the frame's tiles' vertices the eye may see by a compute pass
   /// (terrain/tile_aerial.comp, on every core) and read by the vertex shader from its buffer
   /// (default on), or computed by the vertex shader itself (on llvmpipe's one vertex thread:
   /// orbit's 23 tiles took ~5 ms of it).
@@ -214,8 +224,9 @@ class TerrainRenderer {
   unsigned prepareFrame(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
                         const std::vector<const terrain::Tile*>& drawn, const glm::dvec3& sunDirectionEcef,
                         bool seaFromGlobe);
-  /// Draws `drawn`: the tiles all above the sea without the coast test (zeroing the stencil
-  /// above the ceiling), then the others, or above the ceiling leaves them to drawWaterTiles.
+  /// Draws `drawn`: the tiles all above the sea without the coast test (setting
+  /// kLandTilesStencilBit above the ceiling), then the others, or above the ceiling leaves them
+  /// to drawWaterTiles.
   void drawFrameTiles(const geo::CameraView& view, const std::vector<const terrain::Tile*>& drawn, unsigned frameBits,
                       const glm::dvec3& sunDirectionEcef, bool seaFromGlobe);
   /// drawTiles' tiles of one variant (`bits`, each tile's own included).
@@ -329,8 +340,21 @@ class TerrainRenderer {
   /// perspective from it) and no shadow map (whose depths are the full grid's); 0 (the full
   /// grid) elsewhere.
   [[nodiscard]] std::size_t tileStrideIndex(const terrain::Tile& tile, const geo::CameraView& view) const;
-  /// Variant bits of one tile on top of a draw's `bits`: kCoarse (tileStrideIndex), and
-  /// kNoNight where the Sun is up everywhere on the tile (a shading draw's only).
+  /// How a vertical offset on `tile` moves a point on screen at most: the sine of the largest
+  /// angle between a vertical on the tile and a ray to it (across), and the pixels a metre
+  /// spans in the smallest pixel the tile can reach at its nearest point. nullopt with the eye
+  /// within the tile's bounding sphere.
+  struct ScreenScale {
+    double across = 1.0, pixelsPerM = 0.0;
+  };
+  [[nodiscard]] std::optional<ScreenScale> tileScreenScale(const terrain::Tile& tile, const geo::CameraView& view) const;
+  /// How far the tile's relief (its heights above and depths below sea level) can move a point
+  /// on screen off the ellipsoid's point behind it, pixels (infinite with the eye within the
+  /// tile's bounding sphere).
+  [[nodiscard]] double reliefShiftPx(const terrain::Tile& tile, const geo::CameraView& view) const;
+  /// Variant bits of one tile on top of a draw's `bits`: kCoarse (tileStrideIndex), kGlobeLand
+  /// (drawWaterTiles: within kGlobeLandShiftPx) and kNoNight where the Sun is up everywhere on
+  /// the tile (a shading draw's only).
   [[nodiscard]] unsigned tileBits(const terrain::Tile& tile, const geo::CameraView& view, unsigned bits,
                                   const glm::dvec3& sunDirectionEcef) const;
   /// The first index and the grid's and the skirts' counts of each stride's mesh in indices_.
@@ -375,6 +399,7 @@ class TerrainRenderer {
   bool coarseStridesOn_ = true;     ///< setCoarseStrides
   bool dayTilesOn_ = true;          ///< setDayTiles
   bool coarseThisFrame_ = false;    ///< whether this frame's tiles may be drawn coarser (tileStrideIndex)
+  int landClassStencil_ = 0;        ///< drawWaterTiles' while it draws, else 0
   gl::Program tileAerialProgram_;     ///< terrain/tile_aerial.comp
   gl::Buffer tileAerial_;             ///< two vec4s a vertex of the frame's tiles
   std::size_t tileAerialBytes_ = 0;

@@ -464,37 +464,43 @@ TEST(TerrainRender, TileAerialBufferKeepsThePerVertexPicture) {
   r.terrain().setCoarseStrides(true);
 }
 
-// Above 20 km the tiles with water come after the globe's parts and draw only over the pixels
-// the globe's classifying draw found land at all four samples (GlobeRenderer's
-// setTilesOverLandClass), with no coast test of their own: the globe's classes decide the
-// coast, whose mixed pixels keep the globe's surface part (anti-aliased by its four samples),
-// and a tile's mesh above sea level beyond the coast stays under the sea's classes. Against
-// the tiles' own test over every class: the same picture but at the coast's pixels, from orbit
-// over the Atlantic, 3000 km over the Aegean (islands, lakes), 300 km straight down on
-// Gibraltar's strait and 30 km over it. Each bound is ~1.3 times what the coast's pixels
-// change (measured: 315, 1153, 156, 286). Without the stencil test the tiles' land spills over
-// the sea (Gibraltar's views: 480 and 680); with the wrong class the tiles draw nowhere and the
-// globe's flat land (no relief, no snow) changes most of the land's pixels (1573 to 13 399).
+// Above 20 km the tiles with water come after the globe's parts; where their relief moves a
+// point on screen by at most half a pixel off the ellipsoid's point behind it
+// (TerrainRenderer::reliefShiftPx), they draw only over the pixels the globe's classifying
+// draw found land at all four samples (GlobeRenderer::setTilesOverLandClass), with no coast
+// test of their own: the globe's classes decide the coast, whose mixed pixels keep the globe's
+// surface part (anti-aliased by its four samples), and a tile's mesh above sea level beyond
+// the coast stays under the sea's classes. Against the tiles' own test over every class: the
+// same picture but at the coast's pixels from orbit over the Atlantic and from 3000 km over the
+// Aegean (islands, lakes; measured 315 and 260 pixels, the bounds ~1.3 times that: with the
+// wrong class the tiles draw nowhere and the globe's flat land changes most of the land's
+// pixels). From 300 km straight down on Gibraltar's strait and from 30 km over it the relief
+// moves points by pixels (the Rif, the Betics): the tiles test the mask themselves, the same
+// picture to the bit (a coastal ridge would otherwise be cut where it stands over the sea).
 TEST(TerrainRender, TilesOverTheGlobesLandClassKeepThePicture) {
   auto ctx = gl::createHeadlessContext();
   if (!gl::driverProfile().stencilExport) GTEST_SKIP() << "needs GL_ARB_shader_stencil_export";
   render::GlobeRenderer r(data::defaultElevation());
   struct Case {
     ViewCase view;
-    int maxOver;  // pixels (of 320 x 180) changed by over 2 %
+    int maxOver;  // pixels (of 320 x 180) changed by over 2 %; 0: none may change at all
   };
   const std::vector<Case> cases{
       {{"atlantic_20000km", {.latDeg = 10.0, .lonDeg = -30.0, .heightM = 2.0e7, .headingDeg = 0.0, .pitchDeg = -90.0, .fovDeg = 45.0, .width = 320, .height = 180}, 40.0, 120.0}, 420},
-      {{"aegean_3000km", {.latDeg = 38.0, .lonDeg = 25.0, .heightM = 3.0e6, .headingDeg = 0.0, .pitchDeg = -90.0, .fovDeg = 45.0, .width = 320, .height = 180}, 35.0, 200.0}, 1500},
-      {{"gibraltar_300km_down", {.latDeg = 36.0, .lonDeg = -5.5, .heightM = 3.0e5, .headingDeg = 0.0, .pitchDeg = -90.0, .fovDeg = 30.0, .width = 320, .height = 180}, 45.0, 160.0}, 220},
-      {kGibraltar30km, 380},
+      {{"aegean_3000km", {.latDeg = 38.0, .lonDeg = 25.0, .heightM = 3.0e6, .headingDeg = 0.0, .pitchDeg = -90.0, .fovDeg = 45.0, .width = 320, .height = 180}, 35.0, 200.0}, 340},
+      {{"gibraltar_300km_down", {.latDeg = 36.0, .lonDeg = -5.5, .heightM = 3.0e5, .headingDeg = 0.0, .pitchDeg = -90.0, .fovDeg = 30.0, .width = 320, .height = 180}, 45.0, 160.0}, 0},
+      {kGibraltar30km, 0},
   };
   for (const auto& [c, maxOver] : cases) {
     const render::FrameInput f = test::frameOf(c.view, c.sunElevationDeg, c.sunAzimuthDeg);
     const test::OffAndOn images = test::renderOffAndOn(r, f, [&r](bool on) { r.setTilesOverLandClass(on); });
     const test::RadianceChange change = test::radianceChange(images.off, images.on, 0.02);
-    std::printf("%s: %d pixels over 2 %%, mean %.5f\n", c.name, change.over, change.mean);
+    std::printf("%s: %d pixels over 2 %%, largest change %.4f, mean %.5f\n", c.name, change.over, change.worst, change.mean);
     if (change.over > maxOver) test::savePng(r, std::string("tiles_over_land_class_") + c.name);
+    if (maxOver == 0) {
+      EXPECT_EQ(change.worst, 0.0) << c.name << ": tiles whose relief moves points by pixels over the land class alone";
+      continue;
+    }
     EXPECT_GT(change.over, 0) << c.name << ": the coast's pixels unchanged (the tiles' own test still in use?)";
     EXPECT_LE(change.over, maxOver) << c.name;
   }
