@@ -151,8 +151,8 @@ void main() {
   float maskFootprintRad = coastFootprintRad(length(vRelative), max(length(dFdx(viewDir)), length(dFdy(viewDir))),
                                              -dot(up, viewDir));
   // Above the ceiling (the globe's sea) the mask decides every pixel of a tile with water (but
-  // with TERRAIN_GLOBE_LAND, where the globe's classes decide); below it, the pixels of the mesh more than a metre under the sea, tested where the view
-  // ray crosses sea level, as the grid tests its surface (the mesh point lies |h| below it, up
+  // with TERRAIN_GLOBE_LAND, where the globe's classes decide); below it, the pixels of the
+  // mesh more than a metre under the sea, tested where the view ray crosses sea level, as the grid tests its surface (the mesh point lies |h| below it, up
   // to a fine cell farther along the ray at oblique views). One lookup for either case:
   // llvmpipe runs both sides of an if for every pixel.
   bool globeSea = uSeaFromGlobe == 1;

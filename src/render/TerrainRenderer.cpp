@@ -526,6 +526,7 @@ void TerrainRenderer::drawTileGroup(const geo::CameraView& view, const std::vect
     }
     if ((bits & kCoverage) == 0) {  // (counted once: drawCovered draws a tile twice)
       stats_.coarseTiles += stride > 0 ? 1 : 0;
+      stats_.globeLandTiles += overLandClass ? 1 : 0;
       stats_.dayTiles += (bits & kNoNight) != 0 ? 1 : 0;
     }
     const StrideIndices& mesh = strideIndices_[stride];
@@ -834,6 +835,7 @@ unsigned TerrainRenderer::prepareFrame(const geo::CameraView& view, const std::v
   // discards would then come from different heights.)
   coarseThisFrame_ = coarseStridesOn_ && seaFromGlobe && aerialBuffer && !shadows_.on;
   stats_.coarseTiles = 0;
+  stats_.globeLandTiles = 0;
   stats_.dayTiles = 0;
   // Single-sampled only: with samples the clip would cut each sample where the discard cuts
   // the pixel (an edge anti-aliased along the -1 m contour: another picture).

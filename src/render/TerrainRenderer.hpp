@@ -64,6 +64,9 @@ struct TerrainStats {
   bool pixelDetail = false;
   /// Drawn tiles drawn from the coarser mesh (every 2nd vertex: tileStrideIndex) in the last frame.
   int coarseTiles = 0;
+  /// Tiles with water drawn over the globe's land class alone in the last frame
+  /// (drawWaterTiles: kGlobeLand).
+  int globeLandTiles = 0;
   /// Drawn tiles shaded without the night lights' lookup in the last frame (the Sun up on all
   /// of each, or in all of the view: tileBits).
   int dayTiles = 0;
