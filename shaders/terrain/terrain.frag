@@ -152,9 +152,10 @@ void main() {
                                              -dot(up, viewDir));
   // Above the ceiling (the globe's sea) the mask decides every pixel of a tile with water (but
   // with TERRAIN_GLOBE_LAND, where the globe's classes decide); below it, the pixels of the
-  // mesh more than a metre under the sea, tested where the view ray crosses sea level, as the grid tests its surface (the mesh point lies |h| below it, up
-  // to a fine cell farther along the ray at oblique views). One lookup for either case:
-  // llvmpipe runs both sides of an if for every pixel.
+  // mesh more than a metre under the sea, tested where the view ray crosses sea level, as the
+  // grid tests its surface (the mesh point lies |h| below it, up to a fine cell farther along
+  // the ray at oblique views). One lookup for either case: llvmpipe runs both sides of an if
+  // for every pixel.
   bool globeSea = uSeaFromGlobe == 1;
   bool maskCoast = uTileHasWater == 1 && landMaskOn();
   bool below = heightM < (globeSea ? 0.0 : -1.0);

@@ -1,13 +1,14 @@
 // A terrain tile's vertex buffer read as storage (terrain::TileVertex, 13 floats a vertex:
 // position, normal, height, latitude, longitude, detail amplitude, morph) and the place of a
-// vertex in the tile's grid. terrain/tile_aerial.comp reads the vertices the eye may see; the terrain's
-// fragments drawn from a coarser mesh (TERRAIN_COARSE: every 2nd vertex,
-// render/TerrainRenderer::tileStrideIndex) read the full grid's normal, height, detail amplitude and
-// aerial perspective where the full grid's triangles would have put them.
+// vertex in the tile's grid. terrain/tile_aerial.comp reads the vertices the eye may see;
+// the terrain's fragments drawn from a coarser mesh (TERRAIN_COARSE: every 2nd vertex,
+// render/TerrainRenderer::tileStrideIndex) read the full grid's normal, height, detail
+// amplitude and aerial perspective where the full grid's triangles would have put them.
 layout(std430, binding = OG_TILE_VERTICES_BINDING) readonly buffer TileVertices { float tileVertices[]; };
 
 const int TILE_GRID_SIDE = OG_TILE_QUADS + 1;  // vertices along a grid row
-const int TILE_VERTEX_COUNT = TILE_GRID_SIDE * TILE_GRID_SIDE + 4 * TILE_GRID_SIDE;  // with the skirts (terrain::kTileVertices)
+// A tile's vertices with its skirts' (terrain::kTileVertices).
+const int TILE_VERTEX_COUNT = TILE_GRID_SIDE * TILE_GRID_SIDE + 4 * TILE_GRID_SIDE;
 
 // terrain::TileVertex in floats: its size, and where its position, normal, info (height,
 // latitude, longitude, detail amplitude) and morph start.

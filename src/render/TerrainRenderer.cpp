@@ -583,16 +583,16 @@ std::size_t TerrainRenderer::tileStrideIndex(const terrain::Tile& t, const geo::
 
 unsigned TerrainRenderer::tileBits(const terrain::Tile& t, const geo::CameraView& view, unsigned bits,
                                    const glm::dvec3& sunDirectionEcef) const {
-  unsigned coarse = tileStrideIndex(t, view) > 0 ? kCoarse : 0u;
-  if (landClassStencil_ > 0 && reliefShiftPx(t, view) <= kGlobeLandShiftPx) coarse |= kGlobeLand;
-  if ((bits & (kNoNight | kCoverage)) != 0 || !dayTilesOn_) return coarse;
+  unsigned own = tileStrideIndex(t, view) > 0 ? kCoarse : 0u;
+  if (landClassStencil_ > 0 && reliefShiftPx(t, view) <= kGlobeLandShiftPx) own |= kGlobeLand;
+  if ((bits & (kNoNight | kCoverage)) != 0 || !dayTilesOn_) return own;
   // terrain.frag's night lights are 0 where the Sun is above a point's horizon: leave their
   // lookup out of tiles whose every vertical (within upConeRad of the middle one) has the Sun
   // at least a degree up (llvmpipe runs it for every pixel of a draw that has it: orbit's
   // terrain pass -10 % of one thread with the terminator in view).
   const double sunFromMiddleRad = std::acos(std::clamp(glm::dot(t.middleUp, glm::normalize(sunDirectionEcef)), -1.0, 1.0));
   const bool sunUpOnTile = sunFromMiddleRad + t.upConeRad + std::numbers::pi / 180.0 < 0.5 * std::numbers::pi;
-  return coarse | (sunUpOnTile ? kNoNight : 0u);
+  return own | (sunUpOnTile ? kNoNight : 0u);
 }
 
 TerrainRenderer::FloorClip TerrainRenderer::floorClip(const geo::CameraView& view, int heightPx) const {
