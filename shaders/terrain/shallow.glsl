@@ -29,12 +29,23 @@ WaterVolume gWater = WaterVolume(false, vec3(0.0));
 // Depth of the sea floor below mean sea level at a point with geodetic normal upE, m, its
 // coast as a footprint of `footprintRad` (radians of arc) sees it (the same coast as the
 // land's: else a bay that only the fine mask holds reads as a floor at the surface); without
-// an elevation layer the sea is deep everywhere.
-float seaFloorDepthM(vec3 upE, float footprintRad) {
+// an elevation layer the sea is deep everywhere. `land`: the land mask's fraction there at
+// that footprint (0 without a mask or a layer); `keepDepth`: the layer's (render/elevation.glsl).
+float seaFloorDepthM(vec3 upE, float footprintRad, out float land, out float keepDepth) {
+  land = 0.0;
+  keepDepth = 0.0;
   if (uElevationSize.x <= 0.0) return 1e4;
-  return max(-elevationAt(latLonOfNormal(upE), footprintRad), 0.0);
+  vec2 latLon = latLonOfNormal(upE);
+  vec2 heightKeep = elevationLayerAt(latLon);
+  keepDepth = heightKeep.y;
+  if (!landMaskOn()) return max(-heightKeep.x, 0.0);
+  land = landFraction(latLon, footprintRad);
+  return max(-constrainByLandFraction(heightKeep.x, heightKeep.y, land), 0.0);  // (elevationAt's)
 }
-float seaFloorDepthM(vec3 upE) { return seaFloorDepthM(upE, 1e9); }
+float seaFloorDepthM(vec3 upE) {
+  float land, keepDepth;
+  return seaFloorDepthM(upE, 1e9, land, keepDepth);
+}
 
 // The width of the nearshore shallows, m. Within the land mask's reach of its coast (its
 // fraction of land above 0: a few 2′ cells) the floor comes from a layer's cells kilometres
@@ -51,17 +62,12 @@ const float WATER_SHALLOWS_WIDTH_M = 500.0;
 // the Sun (irradiances from the sky model, `sunSeen` of its disc) and the sky; the pixel's
 // footprint there `footprintRad` (radians of arc).
 void prepareWaterColumn(vec3 vE, vec3 upE, vec3 sunE, float sunSeen, float footprintRad) {
-  float depthM = 1e4, floorShare = 1.0;  // (seaFloorDepthM, with the mask's fraction at hand)
-  if (uElevationSize.x > 0.0) {
-    vec2 latLon = latLonOfNormal(upE);
-    vec2 heightKeep = elevationLayerAt(latLon);
-    float land = landMaskOn() ? landFraction(latLon, footprintRad) : 0.0;
-    depthM = max(-(landMaskOn() ? constrainByLandFraction(heightKeep.x, heightKeep.y, land) : heightKeep.x), 0.0);
-    // The coast's shallows: their share of the footprint, faded in over the mask's first tenth
-    // of land and out over the banks' marks (no step where either starts).
-    float share = min(WATER_SHALLOWS_WIDTH_M / max(footprintRad * WGS84_A, 1e-3), 1.0);
-    floorShare = mix(1.0, share, smoothstep(0.0, 0.1, land) * (1.0 - smoothstep(0.25, 0.75, heightKeep.y)));
-  }
+  float land, keepDepth;
+  float depthM = seaFloorDepthM(upE, footprintRad, land, keepDepth);
+  // The coast's shallows: their share of the footprint, faded in over the mask's first tenth
+  // of land and out over the banks' marks (no step where either starts).
+  float share = min(WATER_SHALLOWS_WIDTH_M / max(footprintRad * WGS84_A, 1e-3), 1.0);
+  float floorShare = mix(1.0, share, smoothstep(0.0, 0.1, land) * (1.0 - smoothstep(0.25, 0.75, keepDepth)));
   vec3 k = uWaterAttenuation;
   if (depthM > waterMaxPathM(k, WATER_EPSILON)) {
     gWater = WaterVolume(true, uSeaColor);
