@@ -397,9 +397,11 @@ void main() {
     // globe's samples see sea (islets under a pixel). Land as the 2′ mask's coast has it: the
     // pixel's own footprint and the fine level cost a fifth of the globe pass on llvmpipe
     // (run masked wherever any pixel needs them); the 15″ islets and bays it leaves out are
-    // drawn by the globe's samples instead of the terrain.
+    // drawn by the globe's samples instead of the terrain. Where the footprint spans several
+    // 2′ cells, the pyramid's fraction, as the samples have it (landFractionCoarse).
 #ifdef GLOBE_MASK_COAST  // (land at the mask's fraction alone, as samplesSea)
-    if (landFraction(centreLatLon) >= 0.5) depthZ += uGlobeDepthPushM;
+    if (landFractionCoarse(centreLatLon, groundFootprintRad(centreDir, centreT, centreNormal)) >= 0.5)
+      depthZ += uGlobeDepthPushM;
 #else
     if (elevationAt(centreLatLon) > 0.0) depthZ += uGlobeDepthPushM;
 #endif

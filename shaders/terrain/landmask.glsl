@@ -10,9 +10,19 @@
 #include "common/constants.glsl"
 layout(binding = OG_UNIT_LAND_MASK) uniform usampler2D uLandMask;
 layout(binding = OG_UNIT_LAND_MASK_FINE) uniform usampler2D uLandMaskFine;
+// The land fraction's mip pyramid (data::LandFractionMips, render/LandMaskTexture): R8, level 0
+// the area fraction of 2 × 2 cells of the 2′ level; 1×1 where it is not uploaded (no frame so
+// far needed it: landFractionMipsOn() false, the B-spline at every footprint).
+layout(binding = OG_UNIT_LAND_FRACTION) uniform sampler2D uLandFraction;
 
 bool landMaskOn() { return textureSize(uLandMask, 0).y > 1; }
 bool landMaskFineOn() { return textureSize(uLandMaskFine, 0).y > 1; }
+bool landFractionMipsOn() { return textureSize(uLandFraction, 0).y > 1; }
+// LANDMASK_FILTERED_ONLY (a frame whose every footprint weighs only the pyramid) implies that the
+// fine level weighs nothing either.
+#if defined(LANDMASK_FILTERED_ONLY) && !defined(LANDMASK_COARSE_ONLY)
+#define LANDMASK_COARSE_ONLY
+#endif
 
 // No integer division or modulo by a value the compiler cannot see is constant: llvmpipe runs
 // those lane by lane, which made them most of the lookups' cost.
@@ -209,26 +219,65 @@ float coastFootprintRad(float t, float pixelRad, float cosIncidence) {
   return t * pixelRad / (WGS84_A * max(cosIncidence, 0.2));
 }
 
+// The pyramid's weight for a footprint (radians of arc on the ground): 0 up to one 2′ cell, 1
+// from two (data::LandFractionMips::weight); 0 without the pyramid.
+// LANDMASK_FILTERED_ONLY: a frame in which every pixel's footprint spans two cells or more
+// (render::LandMaskTexture::fractionMipsOnly: from ~5000 km up at 1280x720) — the weight is 1
+// wherever it is asked, and the B-spline's and the fine level's lookups compile out.
+#ifdef LANDMASK_FILTERED_ONLY
+float landFractionMipsWeight(float footprintRad) { return 1.0; }
+#else
+float landFractionMipsWeight(float footprintRad) {
+  if (!landFractionMipsOn()) return 0.0;
+  return smoothstep(1.0, 2.0, footprintRad * float(textureSize(uLandMask, 0).y) / PI);
+}
+#endif
+
+// The area fraction of land around (latitude, longitude) radians at the scale of a footprint
+// of `footprintRad`: the pyramid's trilinear lookup at level log2(footprint / 2 cells)
+// (data::LandFractionMips::filtered). Lakes and islets under a pixel fade into their
+// surroundings' class instead of flickering in and out with the pixel's centre.
+float landFractionFiltered(vec2 latLon, float footprintRad) {
+  float lod = log2(footprintRad * float(textureSize(uLandMask, 0).y) / (2.0 * PI));
+  return textureLod(uLandFraction, vec2(latLon.y * (0.5 / PI) + 0.5, latLon.x / PI + 0.5), lod).r;
+}
+
 // The fraction of land as a footprint of `footprintRad` (radians of arc, >= 0) sees it: the
-// fine level where the footprint resolves it, the 2′ level where not, blended between
-// (data::LandMask::landFraction with a footprint).
+// fine level where the footprint resolves it, the 2′ level where not, the pyramid where the
+// footprint spans several 2′ cells, blended between (data::LandFractionMips::landFraction).
 float landFraction(vec2 latLon, float footprintRad) {
+  float m = landFractionMipsWeight(footprintRad);
   float w = landMaskFineWeight(footprintRad);
-  float coarse = 0.0, fine = 0.0;
-  for (int once = 0; once < (w < 1.0 ? 1 : 0); ++once) coarse = landFraction(latLon);  // (as in landMaskBlock)
+  float coarse = 0.0, fine = 0.0, filtered = 0.0;
+  for (int once = 0; once < (m > 0.0 ? 1 : 0); ++once) filtered = landFractionFiltered(latLon, footprintRad);
+  for (int once = 0; once < (w < 1.0 && m < 1.0 ? 1 : 0); ++once) coarse = landFraction(latLon);  // (as in landMaskBlock)
   for (int once = 0; once < (w > 0.0 ? 1 : 0); ++once) fine = landFractionFine(latLon);
-  return mix(coarse, fine, w);
+  return mix(mix(coarse, fine, w), filtered, m);
+}
+
+// landFraction without the fine level (the 2′ level's B-spline and the pyramid), for a test at
+// the pixel's centre that runs for every pixel (globe.frag's depth of the land).
+float landFractionCoarse(vec2 latLon, float footprintRad) {
+  float m = landFractionMipsWeight(footprintRad);
+  float coarse = 0.0, filtered = 0.0;
+  for (int once = 0; once < (m > 0.0 ? 1 : 0); ++once) filtered = landFractionFiltered(latLon, footprintRad);
+  for (int once = 0; once < (m < 1.0 ? 1 : 0); ++once) coarse = landFraction(latLon);
+  return mix(coarse, filtered, m);
 }
 
 // landFraction at a pixel's four samples with the pixel's footprint, the fine level's blocks
 // fetched once for the four (landFractionFine4).
 vec4 landFraction4(vec2 latLon0, vec2 latLon1, vec2 latLon2, vec2 latLon3, float footprintRad) {
+  float m = landFractionMipsWeight(footprintRad);
   float w = landMaskFineWeight(footprintRad);
-  vec4 coarse = vec4(0.0), fine = vec4(0.0);
-  for (int once = 0; once < (w < 1.0 ? 1 : 0); ++once)
+  vec4 coarse = vec4(0.0), fine = vec4(0.0), filtered = vec4(0.0);
+  for (int once = 0; once < (m > 0.0 ? 1 : 0); ++once)
+    filtered = vec4(landFractionFiltered(latLon0, footprintRad), landFractionFiltered(latLon1, footprintRad),
+                    landFractionFiltered(latLon2, footprintRad), landFractionFiltered(latLon3, footprintRad));
+  for (int once = 0; once < (w < 1.0 && m < 1.0 ? 1 : 0); ++once)
     coarse = vec4(landFraction(latLon0), landFraction(latLon1), landFraction(latLon2), landFraction(latLon3));
   for (int once = 0; once < (w > 0.0 ? 1 : 0); ++once) fine = landFractionFine4(latLon0, latLon1, latLon2, latLon3);
-  return mix(coarse, fine, w);
+  return mix(mix(coarse, fine, w), filtered, m);
 }
 
 // A layer height (m) made to agree with the mask: at least / at most 20 m × (fraction − 0.5)

@@ -49,6 +49,7 @@ std::vector<std::string> contractDefines() {
           define("OG_UNIT_IMAGERY_TILES", kUnitImageryTiles),
           define("OG_UNIT_LAND_MASK", kUnitLandMask),
           define("OG_UNIT_LAND_MASK_FINE", kUnitLandMaskFine),
+          define("OG_UNIT_LAND_FRACTION", kUnitLandFraction),
           define("OG_UNIT_OPEN_SEA", kUnitOpenSea),
           define("OG_UNIT_SKY_LOW", kUnitSkyLow),
           define("OG_UNIT_AERIAL_TABLE", kUnitAerialTable),

@@ -38,6 +38,7 @@ enum TextureUnit : unsigned {
   kUnitAerialTable = 25,         ///< render/aerial.glsl uAerialTable (render/AerialTable, seaLevel)
   kUnitTerrainAerialTable = 26,  ///< render/aerial.glsl uTerrainAerialTable (render/AerialTable, terrain)
   kUnitSkyRadialSumsLayers = 27, ///< atmosphere/skymap.glsl SKY_RADIAL_SUMS, the Sun layers' (render/SkyRadialSums)
+  kUnitLandFraction = 28,        ///< terrain/landmask.glsl uLandFraction (render/LandMaskTexture: data::LandFractionMips)
   // Passes of their own, which bind nothing else, reuse unit 0:
   kUnitToneRadiance = 0,         ///< render/tonemap.frag uRadiance (the HDR target)
   kUnitOverlayText = 0,          ///< viewer/text.frag uText (the viewer's text overlay)

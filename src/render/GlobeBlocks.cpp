@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <limits>
 #include <optional>
 
 #include "geo/Wgs84.hpp"
@@ -18,6 +19,10 @@ struct CornerHit {
   glm::dvec3 normal{0.0};
   double latDeg = 0.0, lonDeg = 0.0, cosIncidence = 0.0;
   double distanceM = 0.0;
+  /// How far the lattice bends here: the largest second difference of latitude and of
+  /// longitude (degrees) over the corner's neighbours along either axis of the lattice
+  /// (bendCorners); infinite where a neighbour is missing, misses or lies off the regular lattice.
+  glm::dvec2 bendDeg{std::numeric_limits<double>::infinity()};
 };
 
 // Latitude and longitude (degrees) of a unit geodetic normal.
@@ -39,6 +44,28 @@ CornerHit cornerHit(const geo::CameraView& view, double ndcX, double ndcY) {
   c.cosIncidence = -glm::dot(c.normal, dir);
   c.distanceM = *t;
   return c;
+}
+
+// The corners' bendDeg, for a lattice of `columns` × `rows` corners whose last column and row
+// are regular (a full block's side from the one before) where `lastColumnFull` / `lastRowFull`.
+void bendCorners(std::vector<CornerHit>& corners, int columns, int rows, bool lastColumnFull, bool lastRowFull) {
+  const auto at = [&](int i, int j) -> CornerHit& {
+    return corners[static_cast<std::size_t>(j) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(i)];
+  };
+  const int lastI = lastColumnFull ? columns - 1 : columns - 2, lastJ = lastRowFull ? rows - 1 : rows - 2;
+  for (int j = 1; j < lastJ; ++j)
+    for (int i = 1; i < lastI; ++i) {
+      CornerHit& c = at(i, j);
+      const std::array<const CornerHit*, 4> around{&at(i - 1, j), &at(i + 1, j), &at(i, j - 1), &at(i, j + 1)};
+      if (!c.hit || !std::all_of(around.begin(), around.end(), [](const CornerHit* n) { return n->hit; })) continue;
+      const auto latLon = [&c](const CornerHit* n) {  // longitudes unwrapped next to c's
+        const double lon = n->lonDeg + (n->lonDeg - c.lonDeg > 180.0 ? -360.0 : c.lonDeg - n->lonDeg > 180.0 ? 360.0 : 0.0);
+        return glm::dvec2(n->latDeg, lon);
+      };
+      const glm::dvec2 here(c.latDeg, c.lonDeg);
+      c.bendDeg = glm::max(glm::abs(latLon(around[0]) - 2.0 * here + latLon(around[1])),
+                           glm::abs(latLon(around[2]) - 2.0 * here + latLon(around[3])));
+    }
 }
 
 // Whether every point of the block (its four corners' hull) lies in the open deep sea: within
@@ -82,8 +109,39 @@ bool cornersInSpace(const std::array<const CornerHit*, 4>& corners, const geo::C
   return true;
 }
 
+// What the mask's own fraction (the B-spline of the 2′ cells and the fine level's) makes every
+// point of the box lo ... hi (degrees) for footprints up to `footprintDeg`. Where every
+// pixel's footprint is under a fine cell (globe.frag: the fine level's weight is 1 up to one,
+// with a tenth of margin), the fine cells alone decide, up to 8 times closer to the coast.
+data::LandMaskPyramid::Content maskContent(const data::LandMaskPyramid& pyramid, glm::dvec2 lo, glm::dvec2 hi,
+                                           double footprintDeg) {
+  const data::LandMask& mask = pyramid.mask();
+  const data::LandMaskPyramid::Content content = boxContent(pyramid, lo, hi, mask.cellDeg(), false);
+  const double fineCellDeg = mask.cellDeg() / data::LandMask::kFinePerCell;
+  if (content == data::LandMaskPyramid::Content::Both && mask.hasFineLevel() && footprintDeg < 0.9 * fineCellDeg &&
+      hi.y - lo.y < 64.0 * fineCellDeg && hi.x - lo.x < 64.0 * fineCellDeg)
+    return boxContent(pyramid, lo, hi, fineCellDeg, true);
+  return content;
+}
+
+// Where some pixel's footprint spans more than a 2′ cell, the land fraction's pyramid weighs
+// in (data::LandFractionMips::landFraction): what every point of the box lo ... hi (degrees)
+// is as footprints of footprintLoDeg ... footprintHiDeg see it, from the bytes the pyramid's
+// lookups there can blend and, while the B-spline still weighs (under two cells), the mask's
+// own (maskContent). Both where a point may lie near 0.5 (two bytes of margin).
+data::LandMaskPyramid::Content filteredContent(const data::LandFractionMips& mips, const data::LandMaskPyramid& pyramid,
+                                               glm::dvec2 lo, glm::dvec2 hi, double footprintLoDeg,
+                                               double footprintHiDeg) {
+  const data::LandMaskPyramid::Content filtered =
+      mips.boxContent(lo.x, hi.x, lo.y, hi.y, mips.levelOf(footprintLoDeg), mips.levelOf(footprintHiDeg));
+  // While the B-spline still weighs, the blend is one class where both are.
+  if (filtered == data::LandMaskPyramid::Content::Both || mips.weight(footprintLoDeg) >= 1.0) return filtered;
+  return maskContent(pyramid, lo, hi, footprintHiDeg) == filtered ? filtered : data::LandMaskPyramid::Content::Both;
+}
+
 GlobeBlockClass classifyBlock(const std::array<const CornerHit*, 4>& corners, const data::LandMaskPyramid& pyramid,
-                              const OpenSeaMap* openSea, bool missOk, double pixelRad) {
+                              const data::LandFractionMips* mips, const OpenSeaMap* openSea, bool missOk,
+                              double pixelRad) {
   int misses = 0;
   double minCos = 1.0;
   for (const CornerHit* c : corners) {
@@ -104,23 +162,34 @@ GlobeBlockClass classifyBlock(const std::array<const CornerHit*, 4>& corners, co
     lonHi = std::max(lonHi, lon);
   }
   if (lonHi - lonLo > 30.0 || latHi - latLo > 30.0) return GlobeBlockClass::PerPixel;
-  // Widened by a quarter each way (the footprint's edges bow between the corners) and by the
-  // B-spline's reach: a point's fraction reads the 3 x 3 cells around its nearest centre, the
-  // centre of the cell it lies in (the fine level's 3 x 3 fine cells lie in those cells too).
+  // Widened by how far the footprint's edges may bow out between the corners, and (boxContent)
+  // by the B-spline's reach: a point's fraction reads the 3 x 3 cells around its nearest
+  // centre, the centre of the cell it lies in (the fine level's 3 x 3 fine cells lie in those
+  // cells too). An edge's middle lies a second difference's eighth off its chord, and the
+  // block's inside at most the sum of the two screen axes' (a quadratic through the corners):
+  // per coordinate, twice that from the corners' largest (bendDeg holds the larger axis's),
+  // and a hundredth of the box for what a quadratic misses; a quarter of the box where the
+  // lattice gives no bend (its edge, the limb).
   const data::LandMask& mask = pyramid.mask();
-  const glm::dvec2 margin = 0.25 * glm::dvec2(latHi - latLo, lonHi - lonLo);
+  glm::dvec2 bendDeg(0.0);
+  for (const CornerHit* c : corners) bendDeg = glm::max(bendDeg, c->bendDeg);
+  const glm::dvec2 boxDeg(latHi - latLo, lonHi - lonLo);
+  const glm::dvec2 margin = std::isfinite(bendDeg.x) && std::isfinite(bendDeg.y)
+                                ? 0.01 * boxDeg + 0.5 * bendDeg
+                                : 0.25 * boxDeg;
   const glm::dvec2 lo = glm::dvec2(latLo, lonLo) - margin, hi = glm::dvec2(latHi, lonHi) + margin;
-  data::LandMaskPyramid::Content content = boxContent(pyramid, lo, hi, mask.cellDeg(), false);
-  // Where every pixel's footprint is under a fine cell (globe.frag: the fine level's weight is 1
-  // up to one, with a tenth of margin), the fine cells alone decide, up to 8 times closer to
-  // the coast.
-  const double fineCellDeg = mask.cellDeg() / data::LandMask::kFinePerCell;
-  double footprintDeg = 0.0;
-  for (const CornerHit* c : corners)
-    footprintDeg = std::max(footprintDeg, data::LandMask::coastFootprintDeg(c->distanceM, pixelRad, c->cosIncidence));
-  if (content == data::LandMaskPyramid::Content::Both && mask.hasFineLevel() && footprintDeg < 0.9 * fineCellDeg &&
-      hi.y - lo.y < 64.0 * fineCellDeg && hi.x - lo.x < 64.0 * fineCellDeg)
-    content = boxContent(pyramid, lo, hi, fineCellDeg, true);
+  double footprintDeg = 0.0, smallestFootprintDeg = 1e9;
+  for (const CornerHit* c : corners) {
+    const double f = data::LandMask::coastFootprintDeg(c->distanceM, pixelRad, c->cosIncidence);
+    footprintDeg = std::max(footprintDeg, f);
+    smallestFootprintDeg = std::min(smallestFootprintDeg, f);
+  }
+  // The pixels' footprints (the mean of four samples') between the corners', with a tenth of
+  // margin each way; the pyramid weighs from one cell up.
+  const data::LandMaskPyramid::Content content =
+      mips != nullptr && 1.1 * footprintDeg > mask.cellDeg()
+          ? filteredContent(*mips, pyramid, lo, hi, smallestFootprintDeg / 1.1, 1.1 * footprintDeg)
+          : maskContent(pyramid, lo, hi, footprintDeg);
   switch (content) {
     case data::LandMaskPyramid::Content::Land:
       return GlobeBlockClass::Land;
@@ -138,7 +207,7 @@ GlobeBlockClass classifyBlock(const std::array<const CornerHit*, 4>& corners, co
 
 GlobeBlocks classifyGlobeBlocks(const geo::CameraView& view, int width, int height, const std::array<int, 4>& rect,
                                 const data::LandMaskPyramid& mask, const OpenSeaMap* openSea,
-                                const GlobeSkyOutline* sky) {
+                                const GlobeSkyOutline* sky, const data::LandFractionMips* mips) {
   GlobeBlocks b;
   // The lattice on multiples of kGlobeBlockPx from the frame's corner, rect widened down to it:
   // llvmpipe rasterises and shades blocks of 4 x 4 pixels at multiples of 4, and a block off
@@ -156,6 +225,8 @@ GlobeBlocks classifyGlobeBlocks(const geo::CameraView& view, int width, int heig
       corners[static_cast<std::size_t>(j) * static_cast<std::size_t>(cornerColumns) + static_cast<std::size_t>(i)] =
           cornerHit(view, 2.0 * x / width - 1.0, 2.0 * y / height - 1.0);
     }
+  bendCorners(corners, cornerColumns, b.rows + 1, b.columns * kGlobeBlockPx == b.rect[2],
+              b.rows * kGlobeBlockPx == b.rect[3]);
   // The ellipsoid's outline, a circle of r pixels (angular radius asin(b / |eye|) or more),
   // bulges by r (1 - cos(4 / r)) between two corners 8 pixels apart: 0.06 pixels from r = 128,
   // where a sample lies at least 0.125 pixels inside its block. (A sample that still hit would
@@ -174,7 +245,7 @@ GlobeBlocks classifyGlobeBlocks(const geo::CameraView& view, int width, int heig
         return &corners[static_cast<std::size_t>(j + dj) * static_cast<std::size_t>(cornerColumns) + static_cast<std::size_t>(i + di)];
       };
       const std::array<const CornerHit*, 4> blockCorners{at(0, 0), at(1, 0), at(0, 1), at(1, 1)};
-      GlobeBlockClass c = classifyBlock(blockCorners, mask, openSea, missOk, pixelRad);
+      GlobeBlockClass c = classifyBlock(blockCorners, mask, mips, openSea, missOk, pixelRad);
       if (c == GlobeBlockClass::Miss && spaceOk && cornersInSpace(blockCorners, view, *sky, sunClearRad))
         c = GlobeBlockClass::Space;
       b.classes[static_cast<std::size_t>(j) * static_cast<std::size_t>(b.columns) + static_cast<std::size_t>(i)] = c;

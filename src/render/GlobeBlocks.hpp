@@ -13,6 +13,7 @@
 
 #include <glm/glm.hpp>
 
+#include "data/LandFractionMips.hpp"
 #include "data/LandMaskPyramid.hpp"
 #include "geo/Camera.hpp"
 #include "render/OpenSeaMap.hpp"
@@ -64,10 +65,12 @@ struct GlobeBlocks {
 /// is too round to bulge between two corners onto a sample (a radius over 128 pixels).
 /// With `sky`, Miss blocks whose corners all lie in space (outside the atmosphere's outline,
 /// itself over 128 pixels in radius, and more than the Sun's radius and a block's diagonal from
-/// the Sun) are Space.
+/// the Sun) are Space. With `mips` (the land fraction's pyramid, as the GPU has it uploaded),
+/// blocks whose pixels' footprints span more than a 2′ cell are land or sea where every
+/// lookup the pyramid's blend there can make is (data::LandFractionMips::boxRange).
 GlobeBlocks classifyGlobeBlocks(const geo::CameraView& view, int width, int height, const std::array<int, 4>& rect,
                                 const data::LandMaskPyramid& mask, const OpenSeaMap* openSea,
-                                const GlobeSkyOutline* sky = nullptr);
+                                const GlobeSkyOutline* sky = nullptr, const data::LandFractionMips* mips = nullptr);
 inline constexpr double kMinCosIncidence = 0.1;
 inline constexpr double kMinCosIncidenceOpenSea = 0.25;
 

@@ -197,6 +197,8 @@ GlobeRenderer::GlobeRenderer(std::shared_ptr<const data::LatLonGrid> layer,
     });
   if (landMask_->active())
     maskPyramidFuture_ = std::async(std::launch::async, [&mask] { return std::make_unique<data::LandMaskPyramid>(mask); });
+  if (landMask_->active())
+    fractionMipsFuture_ = std::async(std::launch::async, [&mask] { return std::make_unique<data::LandFractionMips>(mask); });
   stage.emplace("renderer: layer's steepest slope and open sea's blocked cells (waiting)");
   ocean_->setLayerMaxSlope(maxSlope.get());  // the sea's classes (OceanRenderer)
   openSeaBlockedByLayer_ = blocked.get();
@@ -282,10 +284,12 @@ void GlobeRenderer::render(const FrameInput& f) {
   const bool grid = view.position.heightM < kOceanGridMaxHeightM;
   aerialTableFrame_ = aerialTableOn_ && !grid && view.position.heightM < kAerialTableMaxHeightM;
   coarseMaskFrame_ = coarseMaskVariants_ && landMask_->fineLevelUnresolved(view, f.height);
+  prepareFractionMips(view, f.height);
   constantWindFrame_ = constantWindVariants_ && !wind_->hasLayers();
   floorInReachFrame_ = false;  // (drawOcean's, below the ceiling)
   terrain_->setSeaCrestM(patterns_->amplitudeBoundM() + 1.0);  // (+ 1 m: the morph's and chords' rounding)
   terrain_->setCoarseLandMask(coarseMaskFrame_);
+  terrain_->setFilteredLandMask(filteredMaskFrame_);
   // Above the ceiling the globe's sea reads the Sun layers' radial sums: made once, before any of
   // its programs is bound (Atmosphere::bind sets their uniforms).
   if (!grid) atmosphere_->prepareSunLayerSums();
@@ -299,7 +303,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   if (auxiliary_) glClearNamedFramebufferfv(hdr_.fbo.id(), GL_COLOR, 1, clearColor);
   glClearNamedFramebufferfi(hdr_.fbo.id(), GL_DEPTH_STENCIL, 0, clearDepth, 0);
   glEnable(GL_DEPTH_TEST);
-  landMask_->bind();  // gl::kUnitLandMask for every pass (render/elevation.glsl)
+  landMask_->bind(fractionMipsFrame_);  // gl::kUnitLandMask for every pass (render/elevation.glsl)
   if (!grid) classifyGlobe(view, f, grid);
 
   // Terrain over the globe's land (its far fallback), depth-tested; the ocean below is then
@@ -358,16 +362,31 @@ void GlobeRenderer::render(const FrameInput& f) {
   gl::checkErrors("GlobeRenderer::render");
 }
 
+void GlobeRenderer::prepareFractionMips(const geo::CameraView& view, int heightPx) {
+  if (fractionMipsOn_ && !landMask_->fractionMipsUploaded() && landMask_->fractionMipsWeighed(view, heightPx)) {
+    if (fractionMipsFuture_.valid()) fractionMips_ = fractionMipsFuture_.get();
+    if (fractionMips_ != nullptr) landMask_->uploadFractionMips(*fractionMips_);
+  }
+  fractionMipsFrame_ = fractionMipsOn_ && landMask_->fractionMipsUploaded();
+  filteredMaskFrame_ = fractionMipsFrame_ && coarseMaskFrame_ && filteredMaskVariants_ &&
+                       landMask_->fractionMipsOnly(view, heightPx);
+}
+
 const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
   // Sets of variants: above 20 km with the aerial table, without it, below 20 km, and above
   // 20 km without the table nor the land mask's fine level (a frame from ~2100 km up at 720p,
-  // where no pixel resolves it: LANDMASK_COARSE_ONLY); the variants that shade the sea again
+  // where no pixel resolves it: LANDMASK_COARSE_ONLY), and with the land fraction's pyramid
+  // alone (from ~5000 km up: LANDMASK_FILTERED_ONLY); the variants that shade the sea again
   // with the constant wind's uniforms (PATTERN_CONSTANT_WIND), the others whatever the wind.
   const bool tableReader = variant > kClassifyExportLandSea && variant != kBlockFill;  // (classifying: no table)
-  const int set = behind ? 2 : aerialTableFrame_ && tableReader ? 0 : coarseMaskFrame_ ? 3 : 1;
+  const int set = behind                              ? 2
+                  : aerialTableFrame_ && tableReader ? 0
+                  : filteredMaskFrame_               ? 4
+                  : coarseMaskFrame_                 ? 3
+                                                     : 1;
   const bool shadesSea = variant == kGlobePart0 + 2 || variant == kGlobePart0 + 3 || variant == kGlobePart0 + 5 ||
                          variant == kGlobePart0 + 6 || variant == kListedPixels;  // edge, surface, sea, open sea
-  const int windSet = constantWindFrame_ && shadesSea ? 4 : 0;
+  const int windSet = constantWindFrame_ && shadesSea ? kGlobeProgramSets : 0;
   gl::Program& p = globePrograms_[static_cast<std::size_t>((windSet + set) * kGlobeVariants + variant)];
   if (p.id() == 0) {
     // Variants 0-5: GLOBE_PART_CLASSIFY (4) with its step; 6: all steps in one draw; 7-9: the
@@ -395,6 +414,7 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
     if (behind) defines.emplace_back("GLOBE_BEHIND");
     if (set == 0) defines.emplace_back("AERIAL_TABLE");
     if (set == 3) defines.emplace_back("LANDMASK_COARSE_ONLY");
+    if (set == 4) defines.emplace_back("LANDMASK_FILTERED_ONLY");
     if (maskCoastVariants_ && landMask_->active()) defines.emplace_back("GLOBE_MASK_COAST");  // (setMaskCoastVariants remakes the programs)
     if (windSet != 0) defines.emplace_back("PATTERN_CONSTANT_WIND");
     // Above the ceiling the sea's sky filter as the grid's (the 20 km switch): the Sun layers'
@@ -566,7 +586,8 @@ bool GlobeRenderer::uploadClassifyingBlocks(const geo::CameraView& view, const F
     const atmosphere::Parameters& a = atmosphere_->parameters();
     const GlobeSkyOutline sky{a.bottomRadiusM, a.topRadiusM(), glm::normalize(f.sunDirectionEcef), a.sunAngularRadiusRad};
     const GlobeBlocks b = classifyGlobeBlocks(view, f.width, f.height, box, *maskPyramid_,
-                                              openSeaPart_ ? openSeaMap_.get() : nullptr, &sky);
+                                              openSeaPart_ ? openSeaMap_.get() : nullptr, &sky,
+                                              fractionMipsFrame_ ? fractionMips_.get() : nullptr);
     auto append = [&](GlobeBlockClass c) {
       const std::vector<float> t = b.triangles(c, f.width, f.height);
       const std::pair<int, int> range{static_cast<int>(vertices.size() / 2), static_cast<int>(t.size() / 2)};

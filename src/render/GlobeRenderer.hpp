@@ -15,6 +15,7 @@
 
 #include "atmosphere/Parameters.hpp"
 #include "core/Time.hpp"
+#include "data/LandFractionMips.hpp"
 #include "data/LandMaskPyramid.hpp"
 #include "data/LatLonGrid.hpp"
 #include "geo/Camera.hpp"
@@ -261,6 +262,17 @@ class GlobeRenderer {
   void setCoarseMaskVariants(bool on) { coarseMaskVariants_ = on; }
   /// Whether the last frame drew with them.
   [[nodiscard]] bool lastFrameCoarseMask() const { return coarseMaskFrame_; }
+  /// Whether frames in which every pixel's footprint spans two of the land mask's 2′ cells or
+  /// more draw with programs that read only the land fraction's pyramid (LANDMASK_FILTERED_ONLY,
+  /// data::LandFractionMips; on by default, off for comparisons).
+  void setFilteredMaskVariants(bool on) { filteredMaskVariants_ = on; }
+  /// Whether the last frame drew with them.
+  [[nodiscard]] bool lastFrameFilteredMask() const { return filteredMaskFrame_; }
+  /// Whether footprints over a 2′ cell see the land fraction's pyramid (data::LandFractionMips;
+  /// on by default), or the B-spline of the cells at every scale (off: the tests' reference).
+  void setFractionMipsOn(bool on) { fractionMipsOn_ = on; }
+  /// Whether the last frame read the pyramid anywhere (it was on and uploaded).
+  [[nodiscard]] bool lastFrameFractionMips() const { return fractionMipsFrame_; }
   /// Whether, where the land mask decides the coast, the globe's samples are classed by its
   /// fraction alone (GLOBE_MASK_COAST; on by default), or also read the layer's heights, which
   /// change the class only at a fraction of exactly 0.5 (off: for comparisons; the programs
@@ -374,6 +386,12 @@ class GlobeRenderer {
   /// constructor on.
   std::future<std::unique_ptr<data::LandMaskPyramid>> maskPyramidFuture_;
   std::unique_ptr<data::LandMaskPyramid> maskPyramid_;
+  /// The land fraction's pyramid (data::LandFractionMips), likewise; uploaded to landMask_ by
+  /// the first frame whose footprints may weigh it (prepareFractionMips).
+  std::future<std::unique_ptr<data::LandFractionMips>> fractionMipsFuture_;
+  std::unique_ptr<data::LandFractionMips> fractionMips_;
+  /// Waits for the pyramid and uploads it where `view` may weigh it; sets filteredMaskFrame_.
+  void prepareFractionMips(const geo::CameraView& view, int heightPx);
   const gl::Program& globeProgram(bool behind, int variant);
   /// Below the grid's ceiling: the sky into skyLow_, one texel per kSkyLowTexelRad of view (at
   /// most kSkyLowMaxFactor pixels a side), for the sky part to read (globe.frag's
@@ -395,12 +413,17 @@ class GlobeRenderer {
   bool aerialTableFrame_ = false;  ///< this frame's globe reads the table
   /// This frame's programs leave the land mask's fine level out (LandMaskTexture::fineLevelUnresolved).
   bool coarseMaskFrame_ = false;
+  /// This frame's programs read only the land fraction's pyramid (LandMaskTexture::fractionMipsOnly).
+  bool filteredMaskFrame_ = false;
   /// This frame's wind is the constant one (no wind layers): the globe's sea reads its values
   /// from uniforms (PATTERN_CONSTANT_WIND) instead of the wind texture and the tables per pixel.
   bool constantWindFrame_ = false;
   bool constantWindVariants_ = true;  ///< setConstantWindVariants
   bool maskCoastVariants_ = true;     ///< setMaskCoastVariants
   bool coarseMaskVariants_ = true;  ///< setCoarseMaskVariants
+  bool filteredMaskVariants_ = true;  ///< setFilteredMaskVariants
+  bool fractionMipsOn_ = true;        ///< setFractionMipsOn
+  bool fractionMipsFrame_ = false;    ///< this frame binds the pyramid (prepareFractionMips)
   void setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view, const FrameInput& f);
   /// Whether this frame lists its scattered parts (setScatteredPartsListed, one sample, no
   /// auxiliary outputs, not counting the parts' samples).
@@ -413,9 +436,11 @@ class GlobeRenderer {
   gl::Program scatteredList_, scatteredArgs_;
   bool scatteredListed_ = false;  ///< set from gl::driverProfile().software by the constructor
   bool ellipsoidScissorOn_ = true;
-  /// Above 20 km with the aerial table, without, below, above without the mask's fine level.
-  /// By set (globeProgram), and again with the constant wind's uniforms (PATTERN_CONSTANT_WIND).
-  std::array<gl::Program, 8 * kGlobeVariants> globePrograms_;
+  /// Above 20 km with the aerial table, without, below, above without the mask's fine level,
+  /// above with the land fraction's pyramid alone. By set (globeProgram), and again with the
+  /// constant wind's uniforms (PATTERN_CONSTANT_WIND).
+  static constexpr int kGlobeProgramSets = 5;
+  std::array<gl::Program, 2 * kGlobeProgramSets * kGlobeVariants> globePrograms_;
   /// Below 20 km: whether the terrain and the grid left any pixel for the globe (the globe's
   /// draws are conditional on it), and which blocks of pixels hold one.
   UncoveredPixels uncovered_;

@@ -1,6 +1,8 @@
 #include "render/LandMaskTexture.hpp"
 
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <future>
 #include <numbers>
@@ -11,6 +13,7 @@
 #include "core/Error.hpp"
 #include "gl/Probe.hpp"
 #include "gl/Shader.hpp"
+#include "geo/Wgs84.hpp"
 #include "gl/ShaderContract.hpp"
 
 namespace og::render {
@@ -55,7 +58,12 @@ LandMaskTexture::LandMaskTexture(const data::LandMask* mask) {
   glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   active_ = mask != nullptr;
+  cellRad_ = mask != nullptr ? std::numbers::pi / h : 0.0;
   bytes_ = texels.size() * sizeof(std::uint32_t);
+  noMips_ = gl::createTexture(GL_TEXTURE_2D);
+  const std::uint8_t noFraction = 0;
+  glTextureStorage2D(noMips_.id(), 1, GL_R8, 1, 1);
+  glTextureSubImage2D(noMips_.id(), 0, 0, 0, 1, 1, GL_RED, GL_UNSIGNED_BYTE, &noFraction);
   if (fine.valid()) {
     uploadFineLevel(fine.get());
     fineCellRad_ = std::numbers::pi / (8.0 * h);  // landmask.glsl's fineCellRad
@@ -72,6 +80,39 @@ bool LandMaskTexture::fineLevelUnresolved(const geo::CameraView& view, int heigh
   // coastFootprintRad = t pixelRad / (a max(cos, 0.2)) >= t pixelRad / a; 1 % for the floats.
   return geo::smallestGroundFootprintRad(view, heightPx, geo::kHighestGroundM) >=
          1.01 * kFineCellsUnweighted * fineCellRad_;
+}
+
+void LandMaskTexture::uploadFractionMips(const data::LandFractionMips& mips) {
+  if (!active_ || mipsUploaded_) return;
+  mips_ = gl::createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(mips_.id(), mips.levels(), GL_R8, mips.levelWidth(0), mips.levelHeight(0));
+  GLint alignment = 4;
+  glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);  // (rows of any length)
+  for (int level = 0; level < mips.levels(); ++level)
+    glTextureSubImage2D(mips_.id(), level, 0, 0, mips.levelWidth(level), mips.levelHeight(level), GL_RED,
+                        GL_UNSIGNED_BYTE, mips.levelBytes(level).data());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
+  glTextureParameteri(mips_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(mips_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(mips_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);         // longitude wraps
+  glTextureParameteri(mips_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);  // rows clamp
+  bytes_ += mips.bytes();
+  mipsUploaded_ = true;
+}
+
+bool LandMaskTexture::fractionMipsWeighed(const geo::CameraView& view, int heightPx) const {
+  if (!active_ || heightPx <= 0) return false;
+  // The farthest ground a ray meets: over the sea's horizon to the horizon of the highest
+  // ground; the passes' pixel angle is the centre pixel's, 2 tan(fov / 2) / height.
+  const double a = geo::kWgs84SemiMajorM, h = std::max(view.position.heightM, 0.0), top = geo::kHighestGroundM;
+  const double farthestM = std::sqrt(h * (2.0 * a + h)) + std::sqrt(top * (2.0 * a + top));
+  const double largestPixelRad = 2.0 * std::tan(0.5 * view.verticalFovRad) / heightPx;
+  return farthestM * largestPixelRad / (a * 0.2) > 0.99 * cellRad_;
+}
+
+bool LandMaskTexture::fractionMipsOnly(const geo::CameraView& view, int heightPx) const {
+  return mipsUploaded_ && geo::smallestGroundFootprintRad(view, heightPx, geo::kHighestGroundM) >= 1.01 * 2.0 * cellRad_;
 }
 
 LandMaskTexture::FineTexels LandMaskTexture::fineTexels(const data::LandMask& mask) {
@@ -113,9 +154,10 @@ void LandMaskTexture::uploadFineLevel(const FineTexels& f) {
   bytes_ += f.texels.size() * sizeof(std::uint32_t);
 }
 
-void LandMaskTexture::bind() const {
+void LandMaskTexture::bind(bool fractionMips) const {
   glBindTextureUnit(gl::kUnitLandMask, texture_.id());
   glBindTextureUnit(gl::kUnitLandMaskFine, fine_.id());
+  glBindTextureUnit(gl::kUnitLandFraction, fractionMips && mipsUploaded_ ? mips_.id() : noMips_.id());
 }
 
 std::vector<float> LandMaskTexture::probeLandFraction(const std::vector<glm::vec3>& latLonFootprintRad) const {

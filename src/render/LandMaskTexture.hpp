@@ -14,6 +14,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "data/LandFractionMips.hpp"
 #include "data/LandMask.hpp"
 #include "geo/Camera.hpp"
 #include "gl/Objects.hpp"
@@ -25,8 +26,10 @@ class LandMaskTexture {
   /// Needs a current GL context. `mask` nullptr: no mask (the elevation layer's zero contour).
   explicit LandMaskTexture(const data::LandMask* mask);
   /// Binds the mask (or the 1×1 stand-in) to gl::kUnitLandMask, its fine level (or a 1×1
-  /// stand-in) to gl::kUnitLandMaskFine.
-  void bind() const;
+  /// stand-in) to gl::kUnitLandMaskFine, and the land fraction's pyramid where uploaded and
+  /// `fractionMips` (else a 1×1 stand-in: the B-spline at every footprint) to
+  /// gl::kUnitLandFraction.
+  void bind(bool fractionMips = true) const;
   [[nodiscard]] bool active() const { return active_; }
   /// Whether the fine level weighs nothing anywhere in `view` (`heightPx` pixels tall): every
   /// pixel's footprint on the ground (landmask.glsl's coastFootprintRad, at least
@@ -35,6 +38,19 @@ class LandMaskTexture {
   [[nodiscard]] bool fineLevelUnresolved(const geo::CameraView& view, int heightPx) const;
   /// The footprint, in fine cells, from which the fine level's weight is 0 (landMaskFineWeight).
   static constexpr double kFineCellsUnweighted = 3.0;
+  /// Uploads the land fraction's pyramid (R8, its levels as mip levels, on gl::kUnitLandFraction:
+  /// landmask.glsl's landFractionFiltered); until then bind() binds a 1×1 stand-in there, which
+  /// landmask.glsl reads as "no pyramid" (the B-spline at every footprint).
+  void uploadFractionMips(const data::LandFractionMips& mips);
+  [[nodiscard]] bool fractionMipsUploaded() const { return mipsUploaded_; }
+  /// Whether some pixel of `view` (`heightPx` pixels tall) may weigh the pyramid: a footprint
+  /// (coastFootprintRad, from a view distance at most to the horizon of the highest ground) of
+  /// more than one 2′ cell. Such a frame needs uploadFractionMips first.
+  [[nodiscard]] bool fractionMipsWeighed(const geo::CameraView& view, int heightPx) const;
+  /// Whether every pixel's footprint spans two 2′ cells or more (the pyramid's weight is 1
+  /// everywhere) and the pyramid is uploaded: such a frame's programs compile the B-spline and
+  /// the fine level out (LANDMASK_FILTERED_ONLY).
+  [[nodiscard]] bool fractionMipsOnly(const geo::CameraView& view, int heightPx) const;
   [[nodiscard]] std::size_t gpuBytes() const { return bytes_; }
   /// landmask.glsl's landFraction at (latitude, longitude, footprint) radians, evaluated on the
   /// GPU (for tests against data::LandMask::landFraction with a footprint).
@@ -53,7 +69,9 @@ class LandMaskTexture {
 
   gl::Texture texture_;
   gl::Texture fine_;
-  bool active_ = false;
+  gl::Texture mips_, noMips_;
+  bool active_ = false, mipsUploaded_ = false;
+  double cellRad_ = 0.0;      ///< a 2′ cell's side, radians of arc; 0 without a mask
   double fineCellRad_ = 0.0;  ///< a fine cell's side, radians of arc; 0 without a fine level
   std::size_t bytes_ = 0;
 };

@@ -66,6 +66,7 @@ const gl::Program& TerrainRenderer::variant(unsigned bits) {
     if ((bits & kShadowsOff) != 0) defines.emplace_back("SHADOWS_OFF");
     if ((bits & kNoImageryLayers) != 0) defines.emplace_back("IMAGERY_NO_LAYERS");
     if ((bits & kCoarseMask) != 0) defines.emplace_back("LANDMASK_COARSE_ONLY");
+    if ((bits & kFilteredMask) != 0) defines.emplace_back("LANDMASK_FILTERED_ONLY");
     if ((bits & kAerialTable) != 0) defines.emplace_back("TERRAIN_AERIAL_TABLE");
     if ((bits & kAerialBuffer) != 0) defines.emplace_back("TERRAIN_AERIAL_BUFFER");
     if ((bits & kCoverage) != 0) defines.insert(defines.end(), {"TERRAIN_COVERAGE", "TERRAIN_DEPTH_ONLY"});
@@ -827,6 +828,7 @@ unsigned TerrainRenderer::prepareFrame(const geo::CameraView& view, const std::v
   const bool aerialBuffer = tileAerialBufferOn_ && atmosphere_ != nullptr && !drawn.empty() && !aerialTable;
   const unsigned frameBits = (shadows_.on ? 0u : kShadowsOff) | (nightInView ? 0u : kNoNight) |
                              (imageryLayers ? 0u : kNoImageryLayers) | (coarseMask_ ? kCoarseMask : 0u) |
+                             (filteredMask_ ? kFilteredMask : 0u) |
                              (aerialTable ? kAerialTable : 0u) | (aerialBuffer ? kAerialBuffer : 0u) |
                              (skipDetail(view, drawn) ? kNoDetail : 0u);
   stats_.pixelDetail = !drawn.empty() && (frameBits & kNoDetail) == 0;
@@ -879,7 +881,7 @@ void TerrainRenderer::drawFrameTiles(const geo::CameraView& view, const std::vec
     glStencilMask(kLandTilesStencilBit);
   }
   if (!landTiles.empty())  // (the variant is compiled on first use: none over the open sea)
-    drawTiles(view, landTiles, (frameBits & ~kCoarseMask) | kLandOnly, sunDirectionEcef, seaFromGlobe);  // (no mask)
+    drawTiles(view, landTiles, (frameBits & ~(kCoarseMask | kFilteredMask)) | kLandOnly, sunDirectionEcef, seaFromGlobe);  // (no mask)
   glStencilMask(0xff);
   glDisable(GL_STENCIL_TEST);
   drawCovered(view, otherTiles, frameBits, sunDirectionEcef, seaFromGlobe);

@@ -146,6 +146,9 @@ class TerrainRenderer {
   /// (no pixel resolves it: render::LandMaskTexture::fineLevelUnresolved; the globe renderer
   /// sets it each frame).
   void setCoarseLandMask(bool on) { coarseMask_ = on; }
+  /// Whether this frame's every pixel weighs only the land fraction's pyramid
+  /// (LANDMASK_FILTERED_ONLY: GlobeRenderer sets it with setCoarseLandMask).
+  void setFilteredLandMask(bool on) { filteredMask_ = on; }
   /// How far this frame's waves reach above and below sea level, m (TerrainStats's
   /// seaSeenMaxHeightM; the globe renderer sets it each frame).
   void setSeaCrestM(double m) { seaCrestM_ = m; }
@@ -307,7 +310,8 @@ class TerrainRenderer {
   /// Sun is up everywhere in view, geo::sunMayBeDownInView, or on the tile: tileBits); kShadowsOff: no shadow maps this
   /// frame; kNoImageryLayers: no user imagery layer loaded (terrain/imagery.glsl's loops
   /// compiled out); kCoarseMask: no pixel resolves the land mask's fine level
-  /// (LANDMASK_COARSE_ONLY, setCoarseLandMask); kAerialTable: the vertices' aerial perspective
+  /// (LANDMASK_COARSE_ONLY, setCoarseLandMask); kFilteredMask: every pixel reads only the land
+  /// fraction's pyramid (LANDMASK_FILTERED_ONLY, setFilteredLandMask); kAerialTable: the vertices' aerial perspective
   /// from this frame's table (TERRAIN_AERIAL_TABLE, render/AerialTable); kAerialBuffer: from
   /// the tile aerial buffer (TERRAIN_AERIAL_BUFFER, computeTileAerial); kNoDetail: no pixel of
   /// these tiles resolves a detail octave their vertex normals leave out (TERRAIN_NO_DETAIL,
@@ -328,10 +332,11 @@ class TerrainRenderer {
     kAerialBuffer = 256u,
     kNoDetail = 512u,
     kCoarse = 1024u,
-    kGlobeLand = 2048u
+    kGlobeLand = 2048u,
+    kFilteredMask = 4096u
   };
   const gl::Program& variant(unsigned bits);
-  std::array<gl::Program, 4096> variants_;
+  std::array<gl::Program, 8192> variants_;
   /// The stride of the mesh `tile` is drawn from, as an index into terrain::kTileStrides: the
   /// coarsest that lies within kStrideDeviationPx of the full grid, in the smallest pixel the
   /// tile can reach at its nearest point. Its own skirts must also be deeper than its vertical
@@ -413,6 +418,7 @@ class TerrainRenderer {
   std::vector<std::int32_t> tileAerialListed_;  ///< listTileAerialVertices' list
   std::unordered_map<const terrain::Tile*, int> tileFirstVertex_;  ///< this frame's slots in tileAerial_
   bool coarseMask_ = false;  ///< setCoarseLandMask
+  bool filteredMask_ = false;  ///< setFilteredLandMask
   double seaCrestM_ = 30.0;  ///< setSeaCrestM
   bool seaSightTest_ = true;  ///< setSeaSightTest
   bool floorClipOn_ = true;   ///< setFloorClip

@@ -53,7 +53,7 @@ TEST(ShaderContract, EverySamplerOfTheFrameIsNamedInTheContract) {
   std::set<std::string> defined;
   for (const std::string& d : og::gl::contractDefines()) defined.insert(d.substr(0, d.find(' ')));
   for (const std::string& n : named) EXPECT_TRUE(defined.count(n) == 1) << n << " is not in the contract";
-  EXPECT_EQ(named.size(), 28u);  // the land mask, imagery, sky, patterns, open sea, caustics... all of them
+  EXPECT_EQ(named.size(), 29u);  // the land mask, imagery, sky, patterns, open sea, caustics... all of them
   // The frame's units are distinct (tone mapping and the overlay are passes of their own).
   std::set<unsigned> units;
   for (unsigned u : {og::gl::kUnitElevation, og::gl::kUnitWind, og::gl::kUnitAtmTransmittance,
@@ -65,7 +65,7 @@ TEST(ShaderContract, EverySamplerOfTheFrameIsNamedInTheContract) {
                      og::gl::kUnitImageryTiles, og::gl::kUnitOpenSea, og::gl::kUnitSkyRadialSums,
                      og::gl::kUnitCausticCurvature, og::gl::kUnitLandMaskFine, og::gl::kUnitSkyLow,
                      og::gl::kUnitAerialTable, og::gl::kUnitTerrainAerialTable,
-                     og::gl::kUnitSkyRadialSumsLayers})
+                     og::gl::kUnitSkyRadialSumsLayers, og::gl::kUnitLandFraction})
     EXPECT_TRUE(units.insert(u).second) << "unit " << u << " named twice";
   // The uniform blocks too (the per-wind pattern tables).
   static const std::regex namedBlock(R"(layout\s*\(\s*std140\s*,\s*binding\s*=\s*(OG_BLOCK_\w+)\s*\)\s*uniform)");

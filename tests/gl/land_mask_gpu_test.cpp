@@ -4,13 +4,17 @@
 // between, across the antimeridian (where the texels wrap) and at the poles.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "data/LandFractionMips.hpp"
 #include "data/LandMask.hpp"
 #include "geo/Camera.hpp"
 #include "geo/Wgs84.hpp"
@@ -70,6 +74,123 @@ TEST(LandMaskGpu, LandFractionMatchesTheCpuTwin) {
                          << points[static_cast<std::size_t>(worstIndex)].y;
   EXPECT_GT(coastal, 300);     // the points do cross coasts
   EXPECT_GT(fineDiffers, 20);  // and the fine level's own coast
+}
+
+// Where a footprint spans more than a 2′ cell the GPU reads the land fraction's pyramid
+// (landmask.glsl's landFractionFiltered, R8 mip levels, hardware trilinear filtering): it gives
+// the CPU's data::LandFractionMips::landFraction to the filter's 8-bit weights, blended (1.5
+// cells), on the first level (3 cells), between levels (6 cells) and past the last (60 cells),
+// across the antimeridian and at the poles. Before the upload the GPU keeps the B-spline.
+TEST(LandMaskGpu, LandFractionThroughThePyramidMatchesTheCpuTwin) {
+  const auto context = gl::createHeadlessContext();
+  const data::LandMask& mask = data::defaultLandMask();
+  const data::LandFractionMips mips(mask);
+  render::LandMaskTexture texture(&mask);
+  std::vector<glm::dvec2> points;
+  for (double lat = 59.0; lat < 66.0; lat += 0.0731)  // Finland's lakes and coasts
+    for (double lon = 21.0; lon < 31.0; lon += 0.1337) points.emplace_back(lat, lon);
+  for (double lat : {-16.8, 65.3, 71.2})
+    for (double lon = 179.0; lon < 181.0; lon += 0.0437) points.emplace_back(lat, lon > 180.0 ? lon - 360.0 : lon);
+  for (double lon = -180.0; lon < 180.0; lon += 7.3) {
+    points.emplace_back(89.99, lon);
+    points.emplace_back(-89.99, lon);
+  }
+  const double cellDeg = mask.cellDeg();
+  const double footprintsDeg[4] = {1.5 * cellDeg, 3.0 * cellDeg, 6.0 * cellDeg, 60.0 * cellDeg};
+  std::vector<glm::vec3> radians;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    radians.emplace_back(static_cast<float>(points[i].x * kDeg), static_cast<float>(points[i].y * kDeg),
+                         static_cast<float>(footprintsDeg[i % 4] * kDeg));
+  const std::vector<float> before = texture.probeLandFraction(radians);
+  texture.uploadFractionMips(mips);
+  ASSERT_TRUE(texture.fractionMipsUploaded());
+  const std::vector<float> gpu = texture.probeLandFraction(radians);
+  ASSERT_EQ(gpu.size(), points.size());
+  int between = 0, changed = 0, splineWorse = 0;
+  double worst = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double lat = static_cast<double>(radians[i].x) / kDeg, lon = static_cast<double>(radians[i].y) / kDeg;
+    const double footprint = static_cast<double>(radians[i].z) / kDeg;
+    const double cpu = static_cast<double>(mips.landFraction(lat, lon, footprint));
+    between += cpu > 0.05 && cpu < 0.95 ? 1 : 0;
+    worst = std::max(worst, std::abs(static_cast<double>(gpu[i]) - cpu));
+    changed += std::abs(static_cast<double>(before[i]) - cpu) > 0.1 ? 1 : 0;
+    splineWorse += std::abs(static_cast<double>(before[i]) - static_cast<double>(mask.landFraction(lat, lon, footprint))) > 1e-2 ? 1 : 0;
+  }
+  // llvmpipe's filter weighs texels and levels in 1/256ths: under 1 % off.
+  EXPECT_LT(worst, 1e-2);
+  EXPECT_GT(between, 1000);  // the points do cross coasts and lakes
+  EXPECT_GT(changed, 300);   // and the pyramid is not the B-spline there
+  EXPECT_EQ(splineWorse, 0);  // (before the upload: the B-spline)
+}
+
+// The pyramid is uploaded for a view only where some pixel may weigh it (a footprint over a
+// cell, at the farthest ground a ray can meet and the grazing floor of 0.2) and read alone
+// (LANDMASK_FILTERED_ONLY) only where every pixel's footprint spans two cells: at the nearest
+// ground, the passes' pixel angle. Checked against every pixel's footprint over whole views
+// just past each threshold, looking down and obliquely.
+TEST(LandMaskGpu, PyramidUploadedAndReadAloneOnlyWhereTheFootprintsSaySo) {
+  const auto context = gl::createHeadlessContext();
+  const data::LandMask& mask = data::defaultLandMask();
+  render::LandMaskTexture texture(&mask);
+  const double cellRad = mask.cellDeg() * kDeg;
+  const int width = 1280, height = 720;
+  auto viewAt = [&](double h, double pitch) {
+    geo::CameraPose pose;
+    pose.position = {36.0, -5.5, h};
+    pose.pitchDeg = pitch;
+    return geo::makeCameraView(pose, width, height);
+  };
+  auto threshold = [&](double pitch, auto&& predicate) {
+    double lo = 1.0, hi = 1e8;
+    while (hi - lo > 0.001 * lo) {
+      const double mid = std::sqrt(lo * hi);
+      (predicate(viewAt(mid, pitch)) ? hi : lo) = mid;
+    }
+    return hi;
+  };
+  // The footprints in cells of every fourth pixel each way and the frame's corners: the least
+  // at the highest ground with the pixel's own angle (the terrain's, from its neighbours' rays),
+  // the most at the ellipsoid with the grazing floor and the passes' largest angle (the globe's,
+  // the centre pixel's).
+  auto footprints = [&](const geo::CameraView& view) {
+    const double pixelRad = 2.0 * std::tan(0.5 * view.verticalFovRad) / height;
+    double least = 1e9, most = 0.0;
+    for (int y = 0; y <= height; y += 4)
+      for (int x = 0; x <= width; x += 4) {
+        auto ray = [&](int i, int j) { return view.rayDirection(2.0 * i / width - 1.0, 2.0 * j / height - 1.0); };
+        const glm::dvec3 dir = ray(x, y);
+        const double ownRad = std::max(std::acos(std::min(glm::dot(dir, ray(x + 1, y)), 1.0)),
+                                       std::acos(std::min(glm::dot(dir, ray(x, y + 1)), 1.0)));
+        if (const std::optional<double> t = geo::intersectEllipsoid(view.positionEcef, dir, geo::kHighestGroundM))
+          least = std::min(least, *t * ownRad / geo::kWgs84SemiMajorM / cellRad);
+        if (const std::optional<double> t = geo::intersectEllipsoid(view.positionEcef, dir)) {
+          const double cosIncidence = -glm::dot(geo::ellipsoidNormalAt(view.positionEcef + *t * dir), dir);
+          most = std::max(most, *t * pixelRad / (geo::kWgs84SemiMajorM * std::max(cosIncidence, 0.2)) / cellRad);
+        }
+      }
+    return std::pair{least, most};
+  };
+  // The upload's bound (mountains beyond the sea's horizon) does not depend on the pitch:
+  // ~7 km at 720 rows; the horizon's pixels there are half a cell wide.
+  const double weighed = threshold(-5.0, [&](const geo::CameraView& v) { return texture.fractionMipsWeighed(v, height); });
+  EXPECT_GT(weighed, 3000.0);
+  for (double pitch : {-90.0, -5.0, 5.0}) {
+    EXPECT_FALSE(texture.fractionMipsWeighed(viewAt(0.99 * weighed, pitch), height)) << pitch;
+    EXPECT_LT(footprints(viewAt(0.99 * weighed, pitch)).second, 1.0) << pitch;
+    EXPECT_TRUE(texture.fractionMipsWeighed(viewAt(1.01 * weighed, pitch), height)) << pitch;
+  }
+  EXPECT_GT(footprints(viewAt(1.01 * weighed, -5.0)).second, 0.3) << "not needlessly early";
+  EXPECT_FALSE(texture.fractionMipsOnly(viewAt(2.0e7, -90.0), height));  // (not before the upload)
+  texture.uploadFractionMips(data::LandFractionMips(mask));
+  for (double pitch : {-90.0, -60.0}) {
+    const double alone = threshold(pitch, [&](const geo::CameraView& v) { return texture.fractionMipsOnly(v, height); });
+    // 45° field, 720 rows: ~9000 km (the nearest ground's pixel: 2 cells, 7.4 km).
+    const auto [least, most] = footprints(viewAt(1.001 * alone, pitch));
+    EXPECT_GE(least, 2.0) << pitch;
+    EXPECT_LT(least, 4.0) << pitch << ": not needlessly strict";
+    EXPECT_FALSE(texture.fractionMipsOnly(viewAt(0.99 * alone, pitch), height)) << pitch;
+  }
 }
 
 // Every pass finds the place under a pixel through latLonOfNormal (geo/ellipsoid.glsl). Its

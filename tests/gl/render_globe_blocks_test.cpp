@@ -3,6 +3,7 @@
 // is the per-pixel classification's.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -13,6 +14,7 @@
 
 #include "data/Elevation.hpp"
 #include "data/LandMask.hpp"
+#include "data/LandFractionMips.hpp"
 #include "data/LandMaskPyramid.hpp"
 #include "geo/Sun.hpp"
 #include "geo/Wgs84.hpp"
@@ -39,6 +41,13 @@ constexpr std::array<View, 4> kViews{{{"gibraltar-30km", 35.6, -5.6, 3.0e4, 0, -
                                       {"limb-400km", 20, -40, 4.0e5, 90, -15},
                                       {"bahamas-300km", 24.5, -77.5, 3.0e5, 0, -90}}};
 constexpr int kWidth = 320, kHeight = 180;
+// From higher up, where pixels span several 2′ cells and the land fraction's pyramid decides
+// (data::LandFractionMips): Finland's lakes from 1500 km (the B-spline still weighs at the
+// nearest pixels), the Great Lakes obliquely from 4000 km (the pyramid's levels blend) and
+// orbit (every pixel on the pyramid, its last level).
+constexpr std::array<View, 3> kHighViews{{{"finland-1500km", 62.0, 26.0, 1.5e6, 0, -90},
+                                          {"great-lakes-4000km", 40.0, -84.0, 4.0e6, 0, -60},
+                                          {"orbit-20000km", 10, -30, 2.0e7, 0, -90}}};
 
 render::FrameInput frameOf(const View& v) {
   render::FrameInput f;
@@ -63,6 +72,7 @@ TEST(GlobeBlocks, FilledBlocksHoldTheirClassAtEverySample) {
   // of test points is likely to hit: this checks the classes, the pyramid and the fine level.)
   const data::LandMask& mask = data::defaultLandMask();
   const data::LandMaskPyramid pyramid(mask);
+  const data::LandFractionMips mips(mask);
   // The renderer's open-sea map (GlobeRenderer's constructor and bindOpenSeaMap): an open-sea
   // block's samples must lie on a floor deeper than the water's reach.
   const data::LatLonGrid& layer = data::defaultElevation();
@@ -71,21 +81,28 @@ TEST(GlobeBlocks, FilledBlocksHoldTheirClassAtEverySample) {
   render::addBlockedByMask(mask, blocked);
   const render::OpenSeaMap openSea = render::makeOpenSeaMap(std::move(blocked));
   int openBlocks = 0;
-  for (const View& v : kViews) {
+  std::vector<View> views(kViews.begin(), kViews.end());
+  views.insert(views.end(), kHighViews.begin(), kHighViews.end());
+  for (const View& v : views) {
     const geo::CameraView view = geo::makeCameraView(frameOf(v).camera, kWidth, kHeight);
     // A rect off the blocks' lattice (the globe's scissor box): the lattice stays on multiples
     // of the block's side from the frame's corner (llvmpipe's 4 x 4 blocks), widened to it.
     // (Its right column and top row partial.)
     const std::array<int, 4> asked{3, 5, kWidth - 7, kHeight - 5};
-    const render::GlobeBlocks blocks = render::classifyGlobeBlocks(view, kWidth, kHeight, asked, pyramid, &openSea);
+    const render::GlobeBlocks blocks =
+        render::classifyGlobeBlocks(view, kWidth, kHeight, asked, pyramid, &openSea, nullptr, &mips);
     EXPECT_EQ(blocks.rect, (std::array<int, 4>{0, 0, kWidth - 4, kHeight})) << v.name;
     const int right = blocks.rect[0] + blocks.rect[2], top = blocks.rect[1] + blocks.rect[3];
     const double pixelRad = 2.0 * std::tan(0.5 * view.verticalFovRad) / kHeight;
-    int filled = 0, onGlobe = 0, wrong = 0, shallow = 0;
+    int filled = 0, onGlobe = 0, wrong = 0, shallow = 0, samples = 0, onPyramid = 0, nearHalf = 0;
     for (int by = 0; by < blocks.rows; ++by)
       for (int bx = 0; bx < blocks.columns; ++bx) {
         const render::GlobeBlockClass c = blocks.classes[static_cast<std::size_t>(by * blocks.columns + bx)];
-        onGlobe += c == render::GlobeBlockClass::Miss || c == render::GlobeBlockClass::Space ? 0 : 1;
+        // (Blocks whose centre sees the globe: from orbit at this size the outline is too tight
+        // for Miss blocks, and the sky's are classed per pixel.)
+        const glm::dvec3 centre = view.rayDirection(2.0 * (blocks.rect[0] + (bx + 0.5) * render::kGlobeBlockPx) / kWidth - 1.0,
+                                                    2.0 * (blocks.rect[1] + (by + 0.5) * render::kGlobeBlockPx) / kHeight - 1.0);
+        onGlobe += geo::intersectEllipsoid(view.positionEcef, centre).has_value() ? 1 : 0;
         if (c != render::GlobeBlockClass::Land && c != render::GlobeBlockClass::Sea &&
             c != render::GlobeBlockClass::OpenSea)
           continue;
@@ -103,12 +120,17 @@ TEST(GlobeBlocks, FilledBlocksHoldTheirClassAtEverySample) {
                                                        2.0 * (y + 0.5 + kOffsets[k][1]) / kHeight - 1.0);
               const std::optional<double> t = geo::intersectEllipsoid(view.positionEcef, dir);
               ASSERT_TRUE(t.has_value()) << v.name << " pixel " << x << ", " << y;
+              ++samples;
               const glm::dvec3 p = view.positionEcef + *t * dir;
               at[k] = geo::ecefToGeodetic(p);
               footprintDeg += 0.25 * data::LandMask::coastFootprintDeg(*t, pixelRad, -glm::dot(geo::ellipsoidNormalAt(p), dir));
             }
             for (const geo::Geodetic& g : at) {
-              const bool land = mask.landFraction(g.latitudeDeg, g.longitudeDeg, footprintDeg) >= 0.5f;
+              const float fraction = mips.landFraction(g.latitudeDeg, g.longitudeDeg, footprintDeg);
+              const bool land = fraction >= 0.5f;
+              onPyramid += mips.weight(footprintDeg) > 0.0 ? 1 : 0;
+              // (within the GPU's filtering of the pyramid's bytes, blocks keep their margin)
+              nearHalf += std::abs(fraction - 0.5f) < 2.0f / 255.0f ? 1 : 0;
               wrong += land != (c == render::GlobeBlockClass::Land) ? 1 : 0;
               if (c == render::GlobeBlockClass::OpenSea)
                 shallow += double{layer.sample(g.latitudeDeg, g.longitudeDeg)} > -reachM ? 1 : 0;
@@ -116,8 +138,14 @@ TEST(GlobeBlocks, FilledBlocksHoldTheirClassAtEverySample) {
           }
       }
     EXPECT_EQ(wrong, 0) << v.name;
+    EXPECT_EQ(nearHalf, 0) << v.name;
+    const bool high = std::any_of(kHighViews.begin(), kHighViews.end(), [&v](const View& h) { return h.name == v.name; });
+    if (high) {
+      EXPECT_GT(onPyramid, samples / 2) << v.name << ": the pyramid decides";
+    }
     EXPECT_EQ(shallow, 0) << v.name << ": open-sea blocks over a floor the water shows";
-    EXPECT_GT(filled, onGlobe / 4) << v.name << ": " << filled << " of " << onGlobe << " blocks on the globe filled";
+    // (From high up at 320 x 180 a block spans hundreds of kilometres: fewer are one class.)
+    EXPECT_GT(filled, onGlobe / (high ? 8 : 4)) << v.name << ": " << filled << " of " << onGlobe << " blocks on the globe filled";
   }
   EXPECT_GT(openBlocks, 50) << "the open sea's blocks (the Atlantic's limb)";
 }
@@ -134,7 +162,11 @@ TEST(GlobeRender, BlocksClassedOnTheCpuKeepThePicture) {
         path == 1 ? std::optional<test::ScopedEnv>(std::in_place, "OCEANGLOBE_STENCIL_EXPORT", "0") : std::nullopt;
     auto ctx = gl::createHeadlessContext();
     render::GlobeRenderer r(data::defaultElevation());
-    for (const View& v : kViews) {
+    std::vector<View> views(kViews.begin(), kViews.end());
+    // The pyramid's blocks (not orbit's: at this size its coasts' pixels are shaded otherwise by
+    // the land/sea split, which the blocks turn on, with the pyramid or without).
+    views.insert(views.end(), kHighViews.begin(), kHighViews.end() - 1);
+    for (const View& v : views) {
       const std::string name = std::string(v.name) + (path == 1 ? " (draws per step)" : "");
       const render::FrameInput f = frameOf(v);
       r.setGlobeBlocks(false);
@@ -144,7 +176,10 @@ TEST(GlobeRender, BlocksClassedOnTheCpuKeepThePicture) {
       r.render(f);
       const io::ImageRgba8 blocks = r.display();
       const auto& counts = r.globeBlockCounts();
-      EXPECT_GT(counts[1] + counts[2] + counts[3], 100) << name << ": the blocks are in use";
+      // (From 4000 km at this size a block spans ~500 km: a third as many fill; without the
+      // pyramid, whose lakes fade, a tenth.)
+      const bool high = v.h > 1.0e6;
+      EXPECT_GT(counts[1] + counts[2] + counts[3], high ? 80 : 100) << name << ": the blocks are in use";
       // Above the limb from 400 km: blocks in space, not drawn at all.
       if (std::string(v.name) == "limb-400km") {
         EXPECT_GT(counts[static_cast<std::size_t>(render::GlobeBlockClass::Space)], 50) << name << ": space's blocks";
@@ -258,4 +293,60 @@ TEST(GlobeRender, FineCoastLeftOutFromHighUpKeepsThePicture) {
     r.render(frameOf(v));
     EXPECT_FALSE(r.lastFrameCoarseMask()) << v.name;
   }
+}
+
+// From high up every pixel's footprint spans two 2′ cells or more and the programs read only the
+// land fraction's pyramid (LANDMASK_FILTERED_ONLY): the same picture as the programs that weigh
+// the B-spline too (its weight is 0 at every pixel there), from orbit and from just above the
+// threshold (~2900 km at 180 rows) over coasts and lakes. Lower, the frame keeps the B-spline.
+TEST(GlobeRender, PyramidAloneFromHighUpKeepsThePicture) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  const std::array<View, 2> high{{{"orbit-20000km", 10, -30, 2.0e7, 0, -90},
+                                  {"finland-3000km", 62.0, 26.0, 3.0e6, 0, -80}}};
+  for (const View& v : high) {
+    const render::FrameInput f = frameOf(v);
+    const test::OffAndOn images = test::renderOffAndOn(r, f, [&r](bool on) { r.setFilteredMaskVariants(on); });
+    EXPECT_TRUE(r.lastFrameFilteredMask()) << v.name;
+    const test::RadianceChange change = test::radianceChange(images.off, images.on, 1e-5);
+    std::printf("%s: %d pixels changed, largest relative change %.2e\n", v.name, change.over, change.worst);
+    EXPECT_EQ(change.over, 0) << v.name << " (largest relative change " << change.worst << ")";
+    if (change.over > 0) test::savePng(r, std::string("globe_filtered_mask_") + v.name);
+  }
+  r.render(frameOf(kHighViews[0]));  // Finland from 1500 km: the nearest pixels weigh the B-spline
+  EXPECT_FALSE(r.lastFrameFilteredMask());
+  EXPECT_TRUE(r.lastFrameFractionMips());
+}
+
+// Lakes and islets under a pixel: with the B-spline of the 2′ cells they stand in a pixel at
+// full strength wherever its centre falls on them, and a camera moved by half a pixel makes
+// them blink; the pyramid's fraction fades them into their surroundings. Over Finland's lakes
+// from 3000 km, two frames half a pixel apart differ in fewer pixels with the pyramid than
+// without, and the blocks the CPU can class as land are many more.
+TEST(GlobeRender, LakesUnderAPixelBlinkLessThroughThePyramid) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  render::FrameInput a = frameOf({"finland-3000km", 62.0, 26.0, 3.0e6, 0, -90});
+  const geo::CameraView view = geo::makeCameraView(a.camera, kWidth, kHeight);
+  // Half a pixel of ground below the eye, eastwards.
+  const double halfPixelM = 0.5 * 3.0e6 * 2.0 * std::tan(0.5 * view.verticalFovRad) / kHeight;
+  render::FrameInput b = a;
+  b.camera.position.longitudeDeg += halfPixelM / (geo::kWgs84SemiMajorM * std::cos(62.0 * 3.14159265358979 / 180.0)) * 180.0 / 3.14159265358979;
+  std::array<double, 2> blink{}, land{};
+  for (int on = 0; on < 2; ++on) {
+    r.setFractionMipsOn(on == 1);
+    r.render(a);
+    EXPECT_EQ(r.lastFrameFractionMips(), on == 1);
+    const io::ImageRgbaF first = r.radiance();
+    r.render(b);
+    const io::ImageRgbaF second = r.radiance();
+    blink[static_cast<std::size_t>(on)] = test::radianceChange(first, second, 0.25).over;
+    const auto& counts = r.globeBlockCounts();
+    land[static_cast<std::size_t>(on)] = counts[static_cast<std::size_t>(render::GlobeBlockClass::Land)];
+  }
+  std::printf("pixels changed by over 25 %%: %g with the B-spline, %g with the pyramid; land blocks %g, %g\n", blink[0],
+              blink[1], land[0], land[1]);
+  // (1444 and 1057 pixels: the imagery's own half-pixel shift stays in both.)
+  EXPECT_LT(blink[1], 0.8 * blink[0]);
+  EXPECT_GT(land[1], 2.0 * land[0]);  // blocks of land the lakes had made mixed (66 and 260)
 }
