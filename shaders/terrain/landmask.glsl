@@ -19,9 +19,12 @@ bool landMaskOn() { return textureSize(uLandMask, 0).y > 1; }
 bool landMaskFineOn() { return textureSize(uLandMaskFine, 0).y > 1; }
 bool landFractionMipsOn() { return textureSize(uLandFraction, 0).y > 1; }
 // LANDMASK_FILTERED_ONLY (a frame whose every footprint weighs only the pyramid) implies that the
-// fine level weighs nothing either.
+// fine level weighs nothing either, and that the pyramid is compiled in (LANDMASK_PYRAMID).
 #if defined(LANDMASK_FILTERED_ONLY) && !defined(LANDMASK_COARSE_ONLY)
 #define LANDMASK_COARSE_ONLY
+#endif
+#if defined(LANDMASK_FILTERED_ONLY) && !defined(LANDMASK_PYRAMID)
+#define LANDMASK_PYRAMID
 #endif
 
 // No integer division or modulo by a value the compiler cannot see is constant: llvmpipe runs
@@ -221,10 +224,16 @@ float coastFootprintRad(float t, float pixelRad, float cosIncidence) {
 
 // The pyramid's weight for a footprint (radians of arc on the ground): 0 up to one 2′ cell, 1
 // from two (data::LandFractionMips::weight); 0 without the pyramid.
+// Compiled in only with LANDMASK_PYRAMID (a frame some pixel of which may weigh it:
+// render::LandMaskTexture::fractionMipsWeighed, from ~7 km up at 1280x720, for the globe's and
+// the terrain's programs): llvmpipe runs its lookups, masked, for every pixel whatever the
+// weight, +2-5 % of a frame. Without it the weight is the constant 0 and they compile out.
 // LANDMASK_FILTERED_ONLY: a frame in which every pixel's footprint spans two cells or more
-// (render::LandMaskTexture::fractionMipsOnly: from ~5000 km up at 1280x720) — the weight is 1
+// (render::LandMaskTexture::fractionMipsOnly: from ~11 000 km up at 1280x720) — the weight is 1
 // wherever it is asked, and the B-spline's and the fine level's lookups compile out.
-#ifdef LANDMASK_FILTERED_ONLY
+#if !defined(LANDMASK_PYRAMID)
+float landFractionMipsWeight(float footprintRad) { return 0.0; }
+#elif defined(LANDMASK_FILTERED_ONLY)
 float landFractionMipsWeight(float footprintRad) { return 1.0; }
 #else
 float landFractionMipsWeight(float footprintRad) {

@@ -290,6 +290,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   terrain_->setSeaCrestM(patterns_->amplitudeBoundM() + 1.0);  // (+ 1 m: the morph's and chords' rounding)
   terrain_->setCoarseLandMask(coarseMaskFrame_);
   terrain_->setFilteredLandMask(filteredMaskFrame_);
+  terrain_->setLandFractionPyramid(fractionMipsFrame_);
   // Above the ceiling the globe's sea reads the Sun layers' radial sums: made once, before any of
   // its programs is bound (Atmosphere::bind sets their uniforms).
   if (!grid) atmosphere_->prepareSunLayerSums();
@@ -363,11 +364,12 @@ void GlobeRenderer::render(const FrameInput& f) {
 }
 
 void GlobeRenderer::prepareFractionMips(const geo::CameraView& view, int heightPx) {
-  if (fractionMipsOn_ && !landMask_->fractionMipsUploaded() && landMask_->fractionMipsWeighed(view, heightPx)) {
+  const bool weighed = fractionMipsOn_ && landMask_->fractionMipsWeighed(view, heightPx);
+  if (weighed && !landMask_->fractionMipsUploaded()) {
     if (fractionMipsFuture_.valid()) fractionMips_ = fractionMipsFuture_.get();
     if (fractionMips_ != nullptr) landMask_->uploadFractionMips(*fractionMips_);
   }
-  fractionMipsFrame_ = fractionMipsOn_ && landMask_->fractionMipsUploaded();
+  fractionMipsFrame_ = weighed && landMask_->fractionMipsUploaded();
   filteredMaskFrame_ = fractionMipsFrame_ && coarseMaskFrame_ && filteredMaskVariants_ &&
                        landMask_->fractionMipsOnly(view, heightPx);
 }
@@ -376,14 +378,16 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
   // Sets of variants: above 20 km with the aerial table, without it, below 20 km, and above
   // 20 km without the table nor the land mask's fine level (a frame from ~2100 km up at 720p,
   // where no pixel resolves it: LANDMASK_COARSE_ONLY), and with the land fraction's pyramid
-  // alone (from ~5000 km up: LANDMASK_FILTERED_ONLY); the variants that shade the sea again
+  // alone (from ~11 000 km up: LANDMASK_FILTERED_ONLY); the first four again with the pyramid
+  // where some pixel may weigh it (LANDMASK_PYRAMID); the variants that shade the sea again
   // with the constant wind's uniforms (PATTERN_CONSTANT_WIND), the others whatever the wind.
   const bool tableReader = variant > kClassifyExportLandSea && variant != kBlockFill;  // (classifying: no table)
-  const int set = behind                              ? 2
-                  : aerialTableFrame_ && tableReader ? 0
-                  : filteredMaskFrame_               ? 4
-                  : coarseMaskFrame_                 ? 3
-                                                     : 1;
+  const int baseSet = behind                              ? 2
+                      : aerialTableFrame_ && tableReader ? 0
+                      : filteredMaskFrame_               ? 4
+                      : coarseMaskFrame_                 ? 3
+                                                         : 1;
+  const int set = fractionMipsFrame_ && baseSet != 4 ? baseSet + 5 : baseSet;
   const bool shadesSea = variant == kGlobePart0 + 2 || variant == kGlobePart0 + 3 || variant == kGlobePart0 + 5 ||
                          variant == kGlobePart0 + 6 || variant == kListedPixels;  // edge, surface, sea, open sea
   const int windSet = constantWindFrame_ && shadesSea ? kGlobeProgramSets : 0;
@@ -411,10 +415,11 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
       static constexpr std::array<int, 6> kPart{1, 2, 3, 7, 6, 5};
       defines.push_back("GLOBE_PART " + std::to_string(kPart.at(static_cast<std::size_t>(variant - kGlobePart0 - 1))));
     }
-    if (behind) defines.emplace_back("GLOBE_BEHIND");
-    if (set == 0) defines.emplace_back("AERIAL_TABLE");
-    if (set == 3) defines.emplace_back("LANDMASK_COARSE_ONLY");
-    if (set == 4) defines.emplace_back("LANDMASK_FILTERED_ONLY");
+    if (behind) defines.emplace_back("GLOBE_BEHIND");  // (baseSet 2)
+    if (baseSet == 0) defines.emplace_back("AERIAL_TABLE");
+    if (baseSet == 3) defines.emplace_back("LANDMASK_COARSE_ONLY");
+    if (baseSet == 4) defines.emplace_back("LANDMASK_FILTERED_ONLY");
+    if (set > 4) defines.emplace_back("LANDMASK_PYRAMID");
     if (maskCoastVariants_ && landMask_->active()) defines.emplace_back("GLOBE_MASK_COAST");  // (setMaskCoastVariants remakes the programs)
     if (windSet != 0) defines.emplace_back("PATTERN_CONSTANT_WIND");
     // Above the ceiling the sea's sky filter as the grid's (the 20 km switch): the Sun layers'

@@ -271,7 +271,8 @@ class GlobeRenderer {
   /// Whether footprints over a 2′ cell see the land fraction's pyramid (data::LandFractionMips;
   /// on by default), or the B-spline of the cells at every scale (off: the tests' reference).
   void setFractionMipsOn(bool on) { fractionMipsOn_ = on; }
-  /// Whether the last frame read the pyramid anywhere (it was on and uploaded).
+  /// Whether the last frame's programs read the pyramid (it was on, and some pixel may weigh it:
+  /// LandMaskTexture::fractionMipsWeighed).
   [[nodiscard]] bool lastFrameFractionMips() const { return fractionMipsFrame_; }
   /// Whether, where the land mask decides the coast, the globe's samples are classed by its
   /// fraction alone (GLOBE_MASK_COAST; on by default), or also read the layer's heights, which
@@ -423,7 +424,8 @@ class GlobeRenderer {
   bool coarseMaskVariants_ = true;  ///< setCoarseMaskVariants
   bool filteredMaskVariants_ = true;  ///< setFilteredMaskVariants
   bool fractionMipsOn_ = true;        ///< setFractionMipsOn
-  bool fractionMipsFrame_ = false;    ///< this frame binds the pyramid (prepareFractionMips)
+  /// This frame's globe and terrain read the pyramid (LANDMASK_PYRAMID; prepareFractionMips).
+  bool fractionMipsFrame_ = false;
   void setGlobeUniforms(const gl::Program& globe, const geo::CameraView& view, const FrameInput& f);
   /// Whether this frame lists its scattered parts (setScatteredPartsListed, one sample, no
   /// auxiliary outputs, not counting the parts' samples).
@@ -437,9 +439,10 @@ class GlobeRenderer {
   bool scatteredListed_ = false;  ///< set from gl::driverProfile().software by the constructor
   bool ellipsoidScissorOn_ = true;
   /// Above 20 km with the aerial table, without, below, above without the mask's fine level,
-  /// above with the land fraction's pyramid alone. By set (globeProgram), and again with the
-  /// constant wind's uniforms (PATTERN_CONSTANT_WIND).
-  static constexpr int kGlobeProgramSets = 5;
+  /// above with the land fraction's pyramid alone, and the first four again with the pyramid
+  /// (LANDMASK_PYRAMID). By set (globeProgram), and again with the constant wind's uniforms
+  /// (PATTERN_CONSTANT_WIND).
+  static constexpr int kGlobeProgramSets = 9;
   std::array<gl::Program, 2 * kGlobeProgramSets * kGlobeVariants> globePrograms_;
   /// Below 20 km: whether the terrain and the grid left any pixel for the globe (the globe's
   /// draws are conditional on it), and which blocks of pixels hold one.

@@ -164,7 +164,7 @@ std::vector<float> LandMaskTexture::probeLandFraction(const std::vector<glm::vec
   if (latLonFootprintRad.empty()) return {};
   std::vector<glm::vec4> values;
   for (const glm::vec3& p : latLonFootprintRad) values.emplace_back(p.x, p.y, p.z, 0.0f);
-  gl::Program probe({{GL_COMPUTE_SHADER, "terrain/landmask_probe.comp"}});
+  gl::Program probe({{GL_COMPUTE_SHADER, "terrain/landmask_probe.comp"}}, {"LANDMASK_PYRAMID"});
   bind();
   gl::runProbe(probe, values, static_cast<int>(values.size()), "LandMaskTexture::probeLandFraction");
   std::vector<float> out;

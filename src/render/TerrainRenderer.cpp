@@ -56,7 +56,7 @@ TerrainRenderer::TerrainRenderer(std::shared_ptr<const data::LatLonGrid> elevati
 }
 
 const gl::Program& TerrainRenderer::variant(unsigned bits) {
-  gl::Program& p = variants_.at(bits);
+  gl::Program& p = variants_[bits];
   if (p.id() == 0) {
     std::vector<std::string> defines;
     if ((bits & kLandOnly) != 0) defines.emplace_back("TERRAIN_LAND_ONLY");
@@ -67,6 +67,7 @@ const gl::Program& TerrainRenderer::variant(unsigned bits) {
     if ((bits & kNoImageryLayers) != 0) defines.emplace_back("IMAGERY_NO_LAYERS");
     if ((bits & kCoarseMask) != 0) defines.emplace_back("LANDMASK_COARSE_ONLY");
     if ((bits & kFilteredMask) != 0) defines.emplace_back("LANDMASK_FILTERED_ONLY");
+    if ((bits & kPyramid) != 0) defines.emplace_back("LANDMASK_PYRAMID");
     if ((bits & kAerialTable) != 0) defines.emplace_back("TERRAIN_AERIAL_TABLE");
     if ((bits & kAerialBuffer) != 0) defines.emplace_back("TERRAIN_AERIAL_BUFFER");
     if ((bits & kCoverage) != 0) defines.insert(defines.end(), {"TERRAIN_COVERAGE", "TERRAIN_DEPTH_ONLY"});
@@ -828,7 +829,7 @@ unsigned TerrainRenderer::prepareFrame(const geo::CameraView& view, const std::v
   const bool aerialBuffer = tileAerialBufferOn_ && atmosphere_ != nullptr && !drawn.empty() && !aerialTable;
   const unsigned frameBits = (shadows_.on ? 0u : kShadowsOff) | (nightInView ? 0u : kNoNight) |
                              (imageryLayers ? 0u : kNoImageryLayers) | (coarseMask_ ? kCoarseMask : 0u) |
-                             (filteredMask_ ? kFilteredMask : 0u) |
+                             (filteredMask_ ? kFilteredMask : 0u) | (pyramid_ ? kPyramid : 0u) |
                              (aerialTable ? kAerialTable : 0u) | (aerialBuffer ? kAerialBuffer : 0u) |
                              (skipDetail(view, drawn) ? kNoDetail : 0u);
   stats_.pixelDetail = !drawn.empty() && (frameBits & kNoDetail) == 0;
@@ -881,7 +882,7 @@ void TerrainRenderer::drawFrameTiles(const geo::CameraView& view, const std::vec
     glStencilMask(kLandTilesStencilBit);
   }
   if (!landTiles.empty())  // (the variant is compiled on first use: none over the open sea)
-    drawTiles(view, landTiles, (frameBits & ~(kCoarseMask | kFilteredMask)) | kLandOnly, sunDirectionEcef, seaFromGlobe);  // (no mask)
+    drawTiles(view, landTiles, (frameBits & ~(kCoarseMask | kFilteredMask | kPyramid)) | kLandOnly, sunDirectionEcef, seaFromGlobe);  // (no mask)
   glStencilMask(0xff);
   glDisable(GL_STENCIL_TEST);
   drawCovered(view, otherTiles, frameBits, sunDirectionEcef, seaFromGlobe);

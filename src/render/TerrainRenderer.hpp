@@ -149,6 +149,9 @@ class TerrainRenderer {
   /// Whether this frame's every pixel weighs only the land fraction's pyramid
   /// (LANDMASK_FILTERED_ONLY: GlobeRenderer sets it with setCoarseLandMask).
   void setFilteredLandMask(bool on) { filteredMask_ = on; }
+  /// Whether this frame's programs read the land fraction's pyramid where a pixel spans several
+  /// 2′ cells (LANDMASK_PYRAMID: GlobeRenderer sets it where some pixel may).
+  void setLandFractionPyramid(bool on) { pyramid_ = on; }
   /// How far this frame's waves reach above and below sea level, m (TerrainStats's
   /// seaSeenMaxHeightM; the globe renderer sets it each frame).
   void setSeaCrestM(double m) { seaCrestM_ = m; }
@@ -311,7 +314,8 @@ class TerrainRenderer {
   /// frame; kNoImageryLayers: no user imagery layer loaded (terrain/imagery.glsl's loops
   /// compiled out); kCoarseMask: no pixel resolves the land mask's fine level
   /// (LANDMASK_COARSE_ONLY, setCoarseLandMask); kFilteredMask: every pixel reads only the land
-  /// fraction's pyramid (LANDMASK_FILTERED_ONLY, setFilteredLandMask); kAerialTable: the vertices' aerial perspective
+  /// fraction's pyramid (LANDMASK_FILTERED_ONLY, setFilteredLandMask); kPyramid: the pyramid is
+  /// compiled in (LANDMASK_PYRAMID, setLandFractionPyramid); kAerialTable: the vertices' aerial perspective
   /// from this frame's table (TERRAIN_AERIAL_TABLE, render/AerialTable); kAerialBuffer: from
   /// the tile aerial buffer (TERRAIN_AERIAL_BUFFER, computeTileAerial); kNoDetail: no pixel of
   /// these tiles resolves a detail octave their vertex normals leave out (TERRAIN_NO_DETAIL,
@@ -333,10 +337,11 @@ class TerrainRenderer {
     kNoDetail = 512u,
     kCoarse = 1024u,
     kGlobeLand = 2048u,
-    kFilteredMask = 4096u
+    kFilteredMask = 4096u,
+    kPyramid = 8192u
   };
   const gl::Program& variant(unsigned bits);
-  std::array<gl::Program, 8192> variants_;
+  std::unordered_map<unsigned, gl::Program> variants_;  ///< by bits (a few dozen are ever used)
   /// The stride of the mesh `tile` is drawn from, as an index into terrain::kTileStrides: the
   /// coarsest that lies within kStrideDeviationPx of the full grid, in the smallest pixel the
   /// tile can reach at its nearest point. Its own skirts must also be deeper than its vertical
@@ -419,6 +424,7 @@ class TerrainRenderer {
   std::unordered_map<const terrain::Tile*, int> tileFirstVertex_;  ///< this frame's slots in tileAerial_
   bool coarseMask_ = false;  ///< setCoarseLandMask
   bool filteredMask_ = false;  ///< setFilteredLandMask
+  bool pyramid_ = false;       ///< setLandFractionPyramid
   double seaCrestM_ = 30.0;  ///< setSeaCrestM
   bool seaSightTest_ = true;  ///< setSeaSightTest
   bool floorClipOn_ = true;   ///< setFloorClip
