@@ -316,6 +316,13 @@ TEST(GlobeRender, PyramidAloneFromHighUpKeepsThePicture) {
   r.render(frameOf(kHighViews[0]));  // Finland from 1500 km: the nearest pixels weigh the B-spline
   EXPECT_FALSE(r.lastFrameFilteredMask());
   EXPECT_TRUE(r.lastFrameFractionMips());
+  // At sea level at 1280 x 720 no pixel can (at 320 x 180 the horizon's may, beyond which the
+  // highest ground could stand): the programs leave the pyramid out (LANDMASK_PYRAMID).
+  render::FrameInput sea = frameOf({"gibraltar-2m", 36.0, -5.6, 2.0, 200, 0});
+  sea.width = 1280;
+  sea.height = 720;
+  r.render(sea);
+  EXPECT_FALSE(r.lastFrameFractionMips());
 }
 
 // Lakes and islets under a pixel: with the B-spline of the 2′ cells they stand in a pixel at
