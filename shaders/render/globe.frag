@@ -398,7 +398,8 @@ void main() {
     // pixel's own footprint and the fine level cost a fifth of the globe pass on llvmpipe
     // (run masked wherever any pixel needs them); the 15″ islets and bays it leaves out are
     // drawn by the globe's samples instead of the terrain. Where the footprint spans several
-    // 2′ cells, the pyramid's fraction, as the samples have it (landFractionCoarse).
+    // 2′ cells, the pyramid's fraction (landFractionCoarse, at the centre ray's footprint; the
+    // samples take their mean's, within a hair of it).
 #ifdef GLOBE_MASK_COAST  // (land at the mask's fraction alone, as samplesSea)
     if (landFractionCoarse(centreLatLon, groundFootprintRad(centreDir, centreT, centreNormal)) >= 0.5)
       depthZ += uGlobeDepthPushM;

@@ -11,8 +11,8 @@
 layout(binding = OG_UNIT_LAND_MASK) uniform usampler2D uLandMask;
 layout(binding = OG_UNIT_LAND_MASK_FINE) uniform usampler2D uLandMaskFine;
 // The land fraction's mip pyramid (data::LandFractionMips, render/LandMaskTexture): R8, level 0
-// the area fraction of 2 × 2 cells of the 2′ level; 1×1 where it is not uploaded (no frame so
-// far needed it: landFractionMipsOn() false, the B-spline at every footprint).
+// the area fraction of 2 × 2 cells of the 2′ level; 1×1 in frames that do not read it
+// (LandMaskTexture::bind: landFractionMipsOn() false, the B-spline at every footprint).
 layout(binding = OG_UNIT_LAND_FRACTION) uniform sampler2D uLandFraction;
 
 bool landMaskOn() { return textureSize(uLandMask, 0).y > 1; }

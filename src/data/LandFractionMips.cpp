@@ -42,7 +42,8 @@ void levelZeroRow(const LandMask& mask, int r, std::size_t& block, std::vector<s
     for (int b = 0; b < stride; ++b)
       for (unsigned v = refined[b]; v != 0; v &= v - 1) {
         const int column = 8 * b + std::countr_zero(v);
-        if (block >= mask.blocks().size()) throw InternalError("LandFractionMips: fewer blocks than refined cells");
+        if (block >= mask.blocks().size() || column >= mask.width())
+          throw InternalError("LandFractionMips: fewer blocks than refined cells, or refined padding bits");
         const int fine = std::popcount(mask.blocks()[block++]);
         auto& s = sums[static_cast<std::size_t>(column / 2)];
         s = static_cast<std::uint16_t>(s + fine - ((row[b] >> (column % 8)) & 1u) * 64);
@@ -53,8 +54,10 @@ void levelZeroRow(const LandMask& mask, int r, std::size_t& block, std::vector<s
 }  // namespace
 
 LandFractionMips::LandFractionMips(const LandMask& mask) : mask_(mask) {
-  if (!mask.global() || mask.width() % 2 != 0 || mask.height() % 2 != 0)
-    throw InternalError("LandFractionMips: needs a global mask of even width and height, not " +
+  // (The GPU's texture spans 180° W ... 180° E and 90° S ... 90° N.)
+  if (!mask.global() || mask.width() % 2 != 0 || mask.height() % 2 != 0 || std::abs(mask.westDeg() + 180.0) > 1e-9 ||
+      std::abs(mask.southDeg() + 90.0) > 1e-9 || std::abs(mask.height() * mask.cellDeg() - 180.0) > 1e-6)
+    throw InternalError("LandFractionMips: needs a global mask from 180° W and 90° S of even width and height, not " +
                         std::to_string(mask.width()) + " x " + std::to_string(mask.height()));
   Level first;
   first.width = mask.width() / 2;
@@ -70,24 +73,64 @@ LandFractionMips::LandFractionMips(const LandMask& mask) : mask_(mask) {
   if (block != mask.blocks().size()) throw InternalError("LandFractionMips: more blocks than refined cells");
   setBoxBits(first);
   levels_.push_back(std::move(first));
-  // Each coarser level the rounded mean of the 2 x 2 texels under it (the GPU reads these bytes,
-  // so the CPU's lookups see what it sees).
-  while (levels() < kMaxLevels && levels_.back().width % 2 == 0 && levels_.back().height % 2 == 0) {
-    const Level& fine = levels_.back();
-    Level coarse;
-    coarse.width = fine.width / 2;
-    coarse.height = fine.height / 2;
-    coarse.bytes.resize(static_cast<std::size_t>(coarse.width) * static_cast<std::size_t>(coarse.height));
-    const auto at = [&fine](int x, int y) {
-      return static_cast<unsigned>(fine.bytes[static_cast<std::size_t>(y) * static_cast<std::size_t>(fine.width) + static_cast<std::size_t>(x)]);
-    };
-    for (int y = 0; y < coarse.height; ++y)
-      for (int x = 0; x < coarse.width; ++x)
-        coarse.bytes[static_cast<std::size_t>(y) * static_cast<std::size_t>(coarse.width) + static_cast<std::size_t>(x)] =
-            static_cast<std::uint8_t>((at(2 * x, 2 * y) + at(2 * x + 1, 2 * y) + at(2 * x, 2 * y + 1) + at(2 * x + 1, 2 * y + 1) + 2u) / 4u);
+  // Each coarser level GL's next mip size (half, rounded down) and the rounded mean of the
+  // texels under each of its texels (the GPU reads these bytes, so the CPU's lookups see what
+  // it sees).
+  while (levels() < kMaxLevels && levels_.back().width >= 2 && levels_.back().height >= 2) {
+    Level coarse = halved(levels_.back());
     setBoxBits(coarse);
     levels_.push_back(std::move(coarse));
   }
+}
+
+namespace {
+
+// Where coarse texel i of `coarse` over the same span as `fine` texels lies among them: the
+// fine texels first ... first + weights.size() - 1 and how much of each it covers (summing to
+// fine / coarse: 2 for an even side, a little over where halving rounded down).
+struct Overlap {
+  int first = 0;
+  std::vector<double> weights;
+};
+Overlap overlapOf(int i, int fine, int coarse) {
+  const double lo = static_cast<double>(i) * fine / coarse, hi = static_cast<double>(i + 1) * fine / coarse;
+  Overlap o;
+  o.first = static_cast<int>(std::floor(lo));
+  for (int f = o.first; f < std::min(static_cast<int>(std::ceil(hi)), fine); ++f)
+    o.weights.push_back(std::min(hi, f + 1.0) - std::max(lo, static_cast<double>(f)));
+  return o;
+}
+
+}  // namespace
+
+LandFractionMips::Level LandFractionMips::halved(const Level& fine) {
+  // The area mean over each coarse texel's span: with even sides the 2 x 2 texels under it;
+  // where a side is odd (the 2′ mask's 675 rows at 16′) GL's texels still span the globe
+  // evenly, so the mean weighs the fine rows by their overlap.
+  Level coarse;
+  coarse.width = fine.width / 2;
+  coarse.height = fine.height / 2;
+  coarse.bytes.resize(static_cast<std::size_t>(coarse.width) * static_cast<std::size_t>(coarse.height));
+  std::vector<Overlap> columns;
+  for (int x = 0; x < coarse.width; ++x) columns.push_back(overlapOf(x, fine.width, coarse.width));
+  for (int y = 0; y < coarse.height; ++y) {
+    const Overlap rows = overlapOf(y, fine.height, coarse.height);
+    for (int x = 0; x < coarse.width; ++x) {
+      const Overlap& cols = columns[static_cast<std::size_t>(x)];
+      double sum = 0.0, area = 0.0;
+      for (std::size_t j = 0; j < rows.weights.size(); ++j)
+        for (std::size_t i = 0; i < cols.weights.size(); ++i) {
+          const double w = rows.weights[j] * cols.weights[i];
+          const std::size_t at = static_cast<std::size_t>(rows.first + static_cast<int>(j)) * static_cast<std::size_t>(fine.width) +
+                                 static_cast<std::size_t>(cols.first + static_cast<int>(i));
+          sum += w * fine.bytes[at];
+          area += w;
+        }
+      coarse.bytes[static_cast<std::size_t>(y) * static_cast<std::size_t>(coarse.width) + static_cast<std::size_t>(x)] =
+          static_cast<std::uint8_t>(std::floor(sum / area + 0.5));
+    }
+  }
+  return coarse;
 }
 
 std::uint8_t LandFractionMips::texel(int level, int column, int row) const {
@@ -188,6 +231,7 @@ LandMaskPyramid::Content LandFractionMips::boxContent(double latLoDeg, double la
     // Each row's columns as at most two runs (the wrap), 64 texels a word.
     const int first = ((c0 % l.width) + l.width) % l.width, count = c1 - c0 + 1;
     const int run0 = std::min(count, l.width - first);
+    if (r0 > r1 || count <= 0) return LandMaskPyramid::Content::Both;  // (no texel: nothing known)
     for (int r = r0; r <= r1 && (land || water); ++r) {
       const std::size_t at = static_cast<std::size_t>(r) * static_cast<std::size_t>(l.wordsPerRow);
       for (const std::vector<std::uint64_t>* bits : {&l.notLand, &l.notWater}) {

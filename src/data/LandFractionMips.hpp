@@ -21,13 +21,15 @@ namespace og::data {
 
 class LandFractionMips {
  public:
-  /// Needs a global mask with an even number of columns and rows (InternalError otherwise).
-  /// One pass over the packed cells and the refined blocks (~20 ms for the global 2′ mask).
+  /// Needs a global mask from 180° W and 90° S with an even number of columns and rows
+  /// (InternalError otherwise). One pass over the packed cells and the refined blocks (~55 ms
+  /// for the global 2′ mask, on one core).
   explicit LandFractionMips(const LandMask& mask);
 
-  /// Levels: level 0 holds 2 × 2 cells a texel; each level halves both sides while both stay
-  /// even, at most kMaxLevels of them.
-  static constexpr int kMaxLevels = 4;
+  /// Levels: level 0 holds 2 × 2 cells a texel; each next level is GL's next mip size (both
+  /// sides halved, rounded down) while both sides are 2 or more, at most kMaxLevels of them
+  /// (the 2′ mask: 4′ to 64′, 5400 × 2700 down to 337 × 168).
+  static constexpr int kMaxLevels = 5;
   [[nodiscard]] int levels() const { return static_cast<int>(levels_.size()); }
   [[nodiscard]] int levelWidth(int level) const { return levels_[static_cast<std::size_t>(level)].width; }
   [[nodiscard]] int levelHeight(int level) const { return levels_[static_cast<std::size_t>(level)].height; }
@@ -35,6 +37,8 @@ class LandFractionMips {
   [[nodiscard]] const std::vector<std::uint8_t>& levelBytes(int level) const {
     return levels_[static_cast<std::size_t>(level)].bytes;
   }
+  /// Texel (column, row) of `level`, 0-255: columns wrap, rows clamp (GL's REPEAT and
+  /// CLAMP_TO_EDGE).
   [[nodiscard]] std::uint8_t texel(int level, int column, int row) const;
 
   /// The pyramid's weight against the B-spline for a footprint of `footprintDeg` (degrees of
@@ -44,7 +48,9 @@ class LandFractionMips {
   /// 2 cells), before the lookup clamps it to [0, levels() - 1].
   [[nodiscard]] double levelOf(double footprintDeg) const;
   /// The trilinear lookup at (latitude, longitude) degrees and mip level `lod` (clamped to the
-  /// levels), as GL's LINEAR_MIPMAP_LINEAR with the columns wrapping and the rows clamped: [0, 1].
+  /// levels), as GL's LINEAR_MIPMAP_LINEAR with the columns wrapping and the rows clamped
+  /// (OpenGL 4.5 core, §8.14.2 and §8.14.3: texel centres at (i + ½) / size, the levels d and
+  /// d + 1 around the lod blended by its fraction): [0, 1].
   [[nodiscard]] float filtered(double latitudeDeg, double longitudeDeg, double lod) const;
   /// The fraction of land as a footprint of `footprintDeg` sees it: the mask's own
   /// (LandMask::landFraction, the fine level and the B-spline) up to one cell, the pyramid's from
@@ -62,6 +68,7 @@ class LandFractionMips {
                                                     double lodLo, double lodHi) const;
 
   [[nodiscard]] const LandMask& mask() const { return mask_; }
+  /// The levels' bytes (what the GPU texture holds), without boxContent's bit planes.
   [[nodiscard]] std::size_t bytes() const;
 
  private:
@@ -74,6 +81,7 @@ class LandFractionMips {
     std::vector<std::uint64_t> notLand, notWater;
   };
   static void setBoxBits(Level& l);
+  static Level halved(const Level& fine);
   [[nodiscard]] float bilinear(int level, double latitudeDeg, double longitudeDeg) const;
   const LandMask& mask_;
   std::vector<Level> levels_;

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <limits>
+#include <numbers>
 #include <optional>
 
 #include "geo/Wgs84.hpp"
@@ -139,6 +139,39 @@ data::LandMaskPyramid::Content filteredContent(const data::LandFractionMips& mip
   return maskContent(pyramid, lo, hi, footprintHiDeg) == filtered ? filtered : data::LandMaskPyramid::Content::Both;
 }
 
+// The box (latitude, longitude degrees: low and high corners) that holds every point of a
+// block whose corners all hit, its longitudes unwrapped next to the first corner's; none where
+// it spans over 30° (classed per pixel).
+std::optional<std::array<glm::dvec2, 2>> footprintBox(const std::array<const CornerHit*, 4>& corners) {
+  // The corners' box, longitudes unwrapped next to the first corner's.
+  double latLo = 90.0, latHi = -90.0, lonLo = 1e9, lonHi = -1e9;
+  for (const CornerHit* c : corners) {
+    double lon = c->lonDeg;
+    lon += lon - corners[0]->lonDeg > 180.0 ? -360.0 : (corners[0]->lonDeg - lon > 180.0 ? 360.0 : 0.0);
+    latLo = std::min(latLo, c->latDeg);
+    latHi = std::max(latHi, c->latDeg);
+    lonLo = std::min(lonLo, lon);
+    lonHi = std::max(lonHi, lon);
+  }
+  if (lonHi - lonLo > 30.0 || latHi - latLo > 30.0) return std::nullopt;
+  // Widened by how far the footprint's edges may bow out between the corners, and (boxContent)
+  // by the B-spline's reach: a point's fraction reads the 3 x 3 cells around its nearest
+  // centre, the centre of the cell it lies in (the fine level's 3 x 3 fine cells lie in those
+  // cells too). An edge's middle lies a second difference's eighth off its chord, and the
+  // block's inside at most the sum of the two screen axes' (a quadratic through the corners):
+  // per coordinate a quarter of the corners' largest (bendDeg holds the larger axis's), taken
+  // four times over (curvature that is not constant across the neighbours' stencil), and a
+  // hundredth of the box; a quarter of the box where the lattice gives no bend (its edge, the
+  // limb).
+  glm::dvec2 bendDeg(0.0);
+  for (const CornerHit* c : corners) bendDeg = glm::max(bendDeg, c->bendDeg);
+  const glm::dvec2 boxDeg(latHi - latLo, lonHi - lonLo);
+  const glm::dvec2 margin = std::isfinite(bendDeg.x) && std::isfinite(bendDeg.y)
+                                ? 0.01 * boxDeg + bendDeg
+                                : 0.25 * boxDeg;
+  return std::array<glm::dvec2, 2>{glm::dvec2(latLo, lonLo) - margin, glm::dvec2(latHi, lonHi) + margin};
+}
+
 GlobeBlockClass classifyBlock(const std::array<const CornerHit*, 4>& corners, const data::LandMaskPyramid& pyramid,
                               const data::LandFractionMips* mips, const OpenSeaMap* openSea, bool missOk,
                               double pixelRad) {
@@ -151,33 +184,10 @@ GlobeBlockClass classifyBlock(const std::array<const CornerHit*, 4>& corners, co
   if (misses == 4 && missOk) return GlobeBlockClass::Miss;
   for (const CornerHit* c : corners)
     if (!c->hit || c->cosIncidence < kMinCosIncidence || std::abs(c->latDeg) > 88.0) return GlobeBlockClass::PerPixel;
-  // The corners' box, longitudes unwrapped next to the first corner's.
-  double latLo = 90.0, latHi = -90.0, lonLo = 1e9, lonHi = -1e9;
-  for (const CornerHit* c : corners) {
-    double lon = c->lonDeg;
-    lon += lon - corners[0]->lonDeg > 180.0 ? -360.0 : (corners[0]->lonDeg - lon > 180.0 ? 360.0 : 0.0);
-    latLo = std::min(latLo, c->latDeg);
-    latHi = std::max(latHi, c->latDeg);
-    lonLo = std::min(lonLo, lon);
-    lonHi = std::max(lonHi, lon);
-  }
-  if (lonHi - lonLo > 30.0 || latHi - latLo > 30.0) return GlobeBlockClass::PerPixel;
-  // Widened by how far the footprint's edges may bow out between the corners, and (boxContent)
-  // by the B-spline's reach: a point's fraction reads the 3 x 3 cells around its nearest
-  // centre, the centre of the cell it lies in (the fine level's 3 x 3 fine cells lie in those
-  // cells too). An edge's middle lies a second difference's eighth off its chord, and the
-  // block's inside at most the sum of the two screen axes' (a quadratic through the corners):
-  // per coordinate, twice that from the corners' largest (bendDeg holds the larger axis's),
-  // and a hundredth of the box for what a quadratic misses; a quarter of the box where the
-  // lattice gives no bend (its edge, the limb).
+  const std::optional<std::array<glm::dvec2, 2>> box = footprintBox(corners);
+  if (!box) return GlobeBlockClass::PerPixel;
   const data::LandMask& mask = pyramid.mask();
-  glm::dvec2 bendDeg(0.0);
-  for (const CornerHit* c : corners) bendDeg = glm::max(bendDeg, c->bendDeg);
-  const glm::dvec2 boxDeg(latHi - latLo, lonHi - lonLo);
-  const glm::dvec2 margin = std::isfinite(bendDeg.x) && std::isfinite(bendDeg.y)
-                                ? 0.01 * boxDeg + 0.5 * bendDeg
-                                : 0.25 * boxDeg;
-  const glm::dvec2 lo = glm::dvec2(latLo, lonLo) - margin, hi = glm::dvec2(latHi, lonHi) + margin;
+  const glm::dvec2 lo = (*box)[0], hi = (*box)[1];
   double footprintDeg = 0.0, smallestFootprintDeg = 1e9;
   for (const CornerHit* c : corners) {
     const double f = data::LandMask::coastFootprintDeg(c->distanceM, pixelRad, c->cosIncidence);

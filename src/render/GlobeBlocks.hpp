@@ -67,7 +67,7 @@ struct GlobeBlocks {
 /// itself over 128 pixels in radius, and more than the Sun's radius and a block's diagonal from
 /// the Sun) are Space. With `mips` (the land fraction's pyramid, as the GPU has it uploaded),
 /// blocks whose pixels' footprints span more than a 2′ cell are land or sea where every
-/// lookup the pyramid's blend there can make is (data::LandFractionMips::boxRange).
+/// lookup the pyramid's blend there can make is (data::LandFractionMips::boxContent).
 GlobeBlocks classifyGlobeBlocks(const geo::CameraView& view, int width, int height, const std::array<int, 4>& rect,
                                 const data::LandMaskPyramid& mask, const OpenSeaMap* openSea,
                                 const GlobeSkyOutline* sky = nullptr, const data::LandFractionMips* mips = nullptr);

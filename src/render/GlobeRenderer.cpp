@@ -304,7 +304,9 @@ void GlobeRenderer::render(const FrameInput& f) {
   if (auxiliary_) glClearNamedFramebufferfv(hdr_.fbo.id(), GL_COLOR, 1, clearColor);
   glClearNamedFramebufferfi(hdr_.fbo.id(), GL_DEPTH_STENCIL, 0, clearDepth, 0);
   glEnable(GL_DEPTH_TEST);
-  landMask_->bind(fractionMipsFrame_);  // gl::kUnitLandMask for every pass (render/elevation.glsl)
+  // gl::kUnitLandMask, its fine level and (in frames that read it) the pyramid, for every pass
+  // (render/elevation.glsl)
+  landMask_->bind(fractionMipsFrame_);
   if (!grid) classifyGlobe(view, f, grid);
 
   // Terrain over the globe's land (its far fallback), depth-tested; the ocean below is then
@@ -374,7 +376,7 @@ void GlobeRenderer::prepareFractionMips(const geo::CameraView& view, int heightP
                        landMask_->fractionMipsOnly(view, heightPx);
 }
 
-const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
+int GlobeRenderer::programSet(bool behind, int variant) const {
   // Sets of variants: above 20 km with the aerial table, without it, below 20 km, and above
   // 20 km without the table nor the land mask's fine level (a frame from ~2100 km up at 720p,
   // where no pixel resolves it: LANDMASK_COARSE_ONLY), and with the land fraction's pyramid
@@ -382,12 +384,16 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
   // where some pixel may weigh it (LANDMASK_PYRAMID); the variants that shade the sea again
   // with the constant wind's uniforms (PATTERN_CONSTANT_WIND), the others whatever the wind.
   const bool tableReader = variant > kClassifyExportLandSea && variant != kBlockFill;  // (classifying: no table)
-  const int baseSet = behind                              ? 2
-                      : aerialTableFrame_ && tableReader ? 0
-                      : filteredMaskFrame_               ? 4
-                      : coarseMaskFrame_                 ? 3
-                                                         : 1;
-  const int set = fractionMipsFrame_ && baseSet != 4 ? baseSet + 5 : baseSet;
+  const int set = behind                              ? 2
+                  : aerialTableFrame_ && tableReader ? 0
+                  : filteredMaskFrame_               ? 4
+                  : coarseMaskFrame_                 ? 3
+                                                     : 1;
+  return fractionMipsFrame_ && set != 4 ? set + 5 : set;
+}
+
+const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
+  const int set = programSet(behind, variant), baseSet = set > 4 ? set - 5 : set;
   const bool shadesSea = variant == kGlobePart0 + 2 || variant == kGlobePart0 + 3 || variant == kGlobePart0 + 5 ||
                          variant == kGlobePart0 + 6 || variant == kListedPixels;  // edge, surface, sea, open sea
   const int windSet = constantWindFrame_ && shadesSea ? kGlobeProgramSets : 0;

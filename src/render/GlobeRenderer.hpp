@@ -394,6 +394,8 @@ class GlobeRenderer {
   /// Waits for the pyramid and uploads it where `view` may weigh it; sets filteredMaskFrame_.
   void prepareFractionMips(const geo::CameraView& view, int heightPx);
   const gl::Program& globeProgram(bool behind, int variant);
+  /// The set of globePrograms_ `variant` draws from this frame (kGlobeProgramSets of them).
+  [[nodiscard]] int programSet(bool behind, int variant) const;
   /// Below the grid's ceiling: the sky into skyLow_, one texel per kSkyLowTexelRad of view (at
   /// most kSkyLowMaxFactor pixels a side), for the sky part to read (globe.frag's
   /// GLOBE_PART_SKY_LOW). False, drawing nothing, where a texel would hold fewer than

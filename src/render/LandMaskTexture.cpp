@@ -165,7 +165,7 @@ std::vector<float> LandMaskTexture::probeLandFraction(const std::vector<glm::vec
   std::vector<glm::vec4> values;
   for (const glm::vec3& p : latLonFootprintRad) values.emplace_back(p.x, p.y, p.z, 0.0f);
   gl::Program probe({{GL_COMPUTE_SHADER, "terrain/landmask_probe.comp"}}, {"LANDMASK_PYRAMID"});
-  bind();
+  bind(true);
   gl::runProbe(probe, values, static_cast<int>(values.size()), "LandMaskTexture::probeLandFraction");
   std::vector<float> out;
   for (const glm::vec4& v : values) out.push_back(v.x);

@@ -29,7 +29,7 @@ class LandMaskTexture {
   /// stand-in) to gl::kUnitLandMaskFine, and the land fraction's pyramid where uploaded and
   /// `fractionMips` (else a 1×1 stand-in: the B-spline at every footprint) to
   /// gl::kUnitLandFraction.
-  void bind(bool fractionMips = true) const;
+  void bind(bool fractionMips) const;
   [[nodiscard]] bool active() const { return active_; }
   /// Whether the fine level weighs nothing anywhere in `view` (`heightPx` pixels tall): every
   /// pixel's footprint on the ground (landmask.glsl's coastFootprintRad, at least

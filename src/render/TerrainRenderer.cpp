@@ -449,7 +449,9 @@ void TerrainRenderer::drawCovered(const geo::CameraView& view, const std::vector
     return;
   }
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  drawTiles(view, tiles, kCoverage, sunDirectionEcef, seaFromGlobe);
+  // (its discards are the coast's: the frame's land-mask variant, as the one-pass draw's)
+  drawTiles(view, tiles, kCoverage | (frameBits & (kCoarseMask | kFilteredMask | kPyramid)), sunDirectionEcef,
+            seaFromGlobe);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   drawTiles(view, tiles, frameBits | kAfterCoverage, sunDirectionEcef, seaFromGlobe, GL_EQUAL);
   glDepthFunc(GL_GREATER);  // as draw() leaves it

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -117,8 +118,10 @@ TEST(LandMaskGpu, LandFractionThroughThePyramidMatchesTheCpuTwin) {
     changed += std::abs(static_cast<double>(before[i]) - cpu) > 0.1 ? 1 : 0;
     splineWorse += std::abs(static_cast<double>(before[i]) - static_cast<double>(mask.landFraction(lat, lon, footprint))) > 1e-2 ? 1 : 0;
   }
-  // llvmpipe's filter weighs texels and levels in 1/256ths: under 1 % off.
-  EXPECT_LT(worst, 1e-2);
+  // llvmpipe's filter weighs texels and levels in 1/256ths; the globe's blocks leave 2.5 bytes
+  // of margin (LandFractionMips::kLandByte, kWaterByte) for it.
+  std::printf("worst difference %.5f (%.2f bytes)\n", worst, 255.0 * worst);
+  EXPECT_LT(worst, 2.0 / 255.0);
   EXPECT_GT(between, 1000);  // the points do cross coasts and lakes
   EXPECT_GT(changed, 300);   // and the pyramid is not the B-spline there
   EXPECT_EQ(splineWorse, 0);  // (before the upload: the B-spline)

@@ -23,7 +23,8 @@ using Content = og::data::LandMaskPyramid::Content;
 namespace {
 
 // A global 32 × 16 mask (11.25° cells) with land at columns 4-19 of rows 3-12, a lake cell at
-// (10, 7) and one refined water cell at (20, 8) holding 16 land fine cells.
+// (10, 7), a refined water cell at (20, 8) holding 16 land fine cells, and refined land cells
+// at (19, 8) and (19, 9) holding 60 and 1 (blocks row-major: (19, 8), (20, 8), (19, 9)).
 LandMask testMask() {
   std::vector<std::uint8_t> cells(32 * 16, 0);
   for (int r = 3; r <= 12; ++r)
@@ -31,8 +32,13 @@ LandMask testMask() {
   cells[7 * 32 + 10] = 0;
   LandMask m(32, 16, -180.0, -90.0, 11.25, cells);
   std::vector<std::uint8_t> refined(m.packedBits().size(), 0);
-  refined[static_cast<std::size_t>(8 * m.bytesPerRow() + 20 / 8)] = 1u << (20 % 8);
-  m.setFineLevel(refined, {0xFFFFull});  // (the block's two southern rows of fine cells)
+  const auto refine = [&](int c, int r) {
+    refined[static_cast<std::size_t>(r * m.bytesPerRow() + c / 8)] |= static_cast<std::uint8_t>(1u << (c % 8));
+  };
+  refine(19, 8);
+  refine(20, 8);
+  refine(19, 9);
+  m.setFineLevel(refined, {0x0FFFFFFFFFFFFFFFull, 0xFFFFull, 0x1ull});
   return m;
 }
 
@@ -55,7 +61,9 @@ TEST(LandFractionMips, LevelsAreAreaFractionsAndTheirMeans) {
       EXPECT_EQ(mips.texel(0, c, r), static_cast<int>(std::lround(255.0 * f))) << c << ", " << r;
     }
   EXPECT_EQ(mips.texel(0, 5, 3), 191);  // the lake: three land cells of four
-  EXPECT_EQ(mips.texel(0, 10, 4), 16);  // the refined cell: 16 land fine cells of 256
+  EXPECT_EQ(mips.texel(0, 10, 4), 16);  // the refined water cell: 16 land fine cells of 256
+  // Cells 18-19 × 8-9: two land cells, and the refined land ones' 60 and 1 fine cells.
+  EXPECT_EQ(mips.texel(0, 9, 4), static_cast<int>(std::lround(255.0 * (128 + 60 + 1) / 256.0)));
   for (int level = 1; level < mips.levels(); ++level)
     for (int r = 0; r < mips.levelHeight(level); ++r)
       for (int c = 0; c < mips.levelWidth(level); ++c) {
@@ -63,6 +71,22 @@ TEST(LandFractionMips, LevelsAreAreaFractionsAndTheirMeans) {
                         mips.texel(level - 1, 2 * c, 2 * r + 1) + mips.texel(level - 1, 2 * c + 1, 2 * r + 1);
         EXPECT_EQ(mips.texel(level, c, r), (sum + 2) / 4) << level << ": " << c << ", " << r;
       }
+  // A level whose side is odd halves to GL's size (rounded down), its texels the area mean of
+  // what they span: the whole globe's mean stays the first level's within the bytes' rounding.
+  std::vector<std::uint8_t> oddCells(24 * 12, 0);  // 12 x 6, 6 x 3, then 3 x 1: rows 3 -> 1
+  for (std::size_t i = 0; i < oddCells.size(); i += 3) oddCells[i] = 1;
+  const LandMask odd(24, 12, -180.0, -90.0, 15.0, oddCells);
+  const LandFractionMips oddMips(odd);
+  ASSERT_EQ(oddMips.levels(), 3);
+  EXPECT_EQ(oddMips.levelWidth(2), 3);
+  EXPECT_EQ(oddMips.levelHeight(2), 1);
+  const auto mean = [&oddMips](int level) {
+    double sum = 0.0;
+    for (std::uint8_t b : oddMips.levelBytes(level)) sum += b;
+    return sum / static_cast<double>(oddMips.levelBytes(level).size());
+  };
+  EXPECT_NEAR(mean(1), mean(0), 0.5);
+  EXPECT_NEAR(mean(2), mean(0), 0.5);
   // A regional mask or an odd one has no pyramid.
   const LandMask regional(4, 4, 0.0, 0.0, 1.0, std::vector<std::uint8_t>(16, 1));
   EXPECT_THROW(LandFractionMips{regional}, og::InternalError);
@@ -129,21 +153,36 @@ TEST(LandFractionMips, BoxContentHoldsForEveryLookupInTheBox) {
   // of the range is over kLandByte / 255 (land) or under kWaterByte / 255 (water).
   const LandMask& m = og::data::defaultLandMask();
   const LandFractionMips mips(m);
-  EXPECT_EQ(mips.levels(), 3);  // 5400 x 2700, 2700 x 1350, 1350 x 675
+  EXPECT_EQ(mips.levels(), 5);  // 5400 x 2700 down to 337 x 168 (4′ to 64′)
+  EXPECT_EQ(mips.levelHeight(3), 337);
+  // Level 0 is the refined cells' fine counts: at random texels of the whole globe.
+  std::mt19937 pick(3);
+  for (int k = 0; k < 2000; ++k) {
+    const int c = static_cast<int>(pick() % 5400u), r = static_cast<int>(pick() % 2700u);
+    int fine = 0;
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) fine += std::popcount(m.block(2 * c + i, 2 * r + j));
+    ASSERT_EQ(mips.texel(0, c, r), (fine * 255 + 128) / 256) << c << ", " << r;
+  }
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   int named = 0, wrong = 0;
-  for (int box = 0; box < 3000; ++box) {
-    const bool finland = box % 2 == 0;
-    const double lat0 = finland ? 60.0 + 5.0 * unit(rng) : 35.0 + 2.0 * unit(rng);
-    const double lon0 = finland ? 22.0 + 8.0 * unit(rng) : -7.0 + 3.0 * unit(rng);
+  for (int box = 0; box < 4000; ++box) {
+    // Finland's lakes, Gibraltar's coasts, Fiji across the antimeridian (the rows' two runs),
+    // and within a texel of the poles (the rows' clamp).
+    const int where = box % 4;
+    const double lat0 = where == 0 ? 60.0 + 5.0 * unit(rng) : where == 1 ? 35.0 + 2.0 * unit(rng)
+                        : where == 2 ? -18.0 + 2.0 * unit(rng) : (box % 8 == 3 ? 89.5 : -90.4) + 0.6 * unit(rng);
+    const double lon0 = where == 0 ? 22.0 + 8.0 * unit(rng) : where == 1 ? -7.0 + 3.0 * unit(rng)
+                        : where == 2 ? 178.5 + 1.5 * unit(rng) : -180.0 + 360.0 * unit(rng);
     const double side = 0.05 + 1.5 * unit(rng);
     const double lod0 = 3.5 * unit(rng) - 0.5, lod1 = lod0 + 1.2 * unit(rng);
-    const Content c = mips.boxContent(lat0, lat0 + side, lon0, lon0 + side, lod0, lod1);
+    const Content c = mips.boxContent(lat0, std::min(lat0 + side, 90.0), lon0, lon0 + side, lod0, lod1);
     if (c == Content::Both) continue;
     ++named;
     for (int k = 0; k < 40; ++k) {
-      const float f = mips.filtered(lat0 + side * unit(rng), lon0 + side * unit(rng), lod0 + (lod1 - lod0) * unit(rng));
+      const float f = mips.filtered(std::min(lat0 + side * unit(rng), 90.0), lon0 + side * unit(rng),
+                                    lod0 + (lod1 - lod0) * unit(rng));
       wrong += c == Content::Land ? (f < LandFractionMips::kLandByte / 255.0f ? 1 : 0)
                                   : (f > LandFractionMips::kWaterByte / 255.0f ? 1 : 0);
     }
