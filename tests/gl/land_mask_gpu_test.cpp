@@ -30,6 +30,16 @@ namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
+// The probe's inputs: each point (latitude, longitude degrees) with the footprints in turn, in
+// radians as the shader takes them.
+std::vector<glm::vec3> probeInputs(const std::vector<glm::dvec2>& points, const std::vector<double>& footprintsDeg) {
+  std::vector<glm::vec3> radians;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    radians.emplace_back(static_cast<float>(points[i].x * kDeg), static_cast<float>(points[i].y * kDeg),
+                         static_cast<float>(footprintsDeg[i % footprintsDeg.size()] * kDeg));
+  return radians;
+}
+
 TEST(LandMaskGpu, LandFractionMatchesTheCpuTwin) {
   const auto context = gl::createHeadlessContext();
   const data::LandMask& mask = data::defaultLandMask();
@@ -49,11 +59,7 @@ TEST(LandMaskGpu, LandFractionMatchesTheCpuTwin) {
   }
   // Footprints in turn: the fine level, blended (two fine cells), the coarse level.
   const double fineCellDeg = mask.cellDeg() / data::LandMask::kFinePerCell;
-  const double footprintsDeg[3] = {0.0, 2.0 * fineCellDeg, 1.0};
-  std::vector<glm::vec3> radians;
-  for (std::size_t i = 0; i < points.size(); ++i)
-    radians.emplace_back(static_cast<float>(points[i].x * kDeg), static_cast<float>(points[i].y * kDeg),
-                         static_cast<float>(footprintsDeg[i % 3] * kDeg));
+  const std::vector<glm::vec3> radians = probeInputs(points, {0.0, 2.0 * fineCellDeg, 1.0});
   const std::vector<float> gpu = texture.probeLandFraction(radians);
   ASSERT_EQ(gpu.size(), points.size());
   int coastal = 0, fineDiffers = 0, worstIndex = 0;
@@ -97,11 +103,8 @@ TEST(LandMaskGpu, LandFractionThroughThePyramidMatchesTheCpuTwin) {
     points.emplace_back(-89.99, lon);
   }
   const double cellDeg = mask.cellDeg();
-  const double footprintsDeg[4] = {1.5 * cellDeg, 3.0 * cellDeg, 6.0 * cellDeg, 60.0 * cellDeg};
-  std::vector<glm::vec3> radians;
-  for (std::size_t i = 0; i < points.size(); ++i)
-    radians.emplace_back(static_cast<float>(points[i].x * kDeg), static_cast<float>(points[i].y * kDeg),
-                         static_cast<float>(footprintsDeg[i % 4] * kDeg));
+  const std::vector<glm::vec3> radians =
+      probeInputs(points, {1.5 * cellDeg, 3.0 * cellDeg, 6.0 * cellDeg, 60.0 * cellDeg});
   const std::vector<float> before = texture.probeLandFraction(radians);
   texture.uploadFractionMips(mips);
   ASSERT_TRUE(texture.fractionMipsUploaded());

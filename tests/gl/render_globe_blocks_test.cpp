@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,6 +49,22 @@ constexpr int kWidth = 320, kHeight = 180;
 constexpr std::array<View, 3> kHighViews{{{"finland-1500km", 62.0, 26.0, 1.5e6, 0, -90},
                                           {"great-lakes-4000km", 40.0, -84.0, 4.0e6, 0, -60},
                                           {"orbit-20000km", 10, -30, 2.0e7, 0, -90}}};
+
+render::FrameInput frameOf(const View& v);
+
+// Programs that leave out code no pixel of a frame weighs keep its picture: each view rendered
+// with them off and on (`set`), the frame using them (`used`), no pixel changed by over 1e-5.
+void expectSamePicture(render::GlobeRenderer& r, const std::vector<View>& views, const std::function<void(bool)>& set,
+                       const std::function<bool()>& used, const std::string& pngPrefix) {
+  for (const View& v : views) {
+    const test::OffAndOn images = test::renderOffAndOn(r, frameOf(v), set);
+    EXPECT_TRUE(used()) << v.name;
+    const test::RadianceChange change = test::radianceChange(images.off, images.on, 1e-5);
+    std::printf("%s: %d pixels changed, largest relative change %.2e\n", v.name, change.over, change.worst);
+    EXPECT_EQ(change.over, 0) << v.name << " (largest relative change " << change.worst << ")";
+    if (change.over > 0) test::savePng(r, pngPrefix + v.name);
+  }
+}
 
 render::FrameInput frameOf(const View& v) {
   render::FrameInput f;
@@ -291,15 +308,8 @@ TEST(GlobeRender, FineCoastLeftOutFromHighUpKeepsThePicture) {
   const std::array<View, 3> high{{{"orbit-20000km", 10, -30, 2.0e7, 0, -90},
                                   {"gibraltar-700km", 33.0, -5.5, 7.0e5, 0, -60},
                                   {"norway-1500km", 55.0, 5.0, 1.5e6, 20, -50}}};
-  for (const View& v : high) {
-    const render::FrameInput f = frameOf(v);
-    const test::OffAndOn images = test::renderOffAndOn(r, f, [&r](bool on) { r.setCoarseMaskVariants(on); });
-    EXPECT_TRUE(r.lastFrameCoarseMask()) << v.name;
-    const test::RadianceChange change = test::radianceChange(images.off, images.on, 1e-5);
-    std::printf("%s: %d pixels changed, largest relative change %.2e\n", v.name, change.over, change.worst);
-    EXPECT_EQ(change.over, 0) << v.name << " (largest relative change " << change.worst << ")";
-    if (change.over > 0) test::savePng(r, std::string("globe_coarse_mask_") + v.name);
-  }
+  expectSamePicture(r, {high.begin(), high.end()}, [&r](bool on) { r.setCoarseMaskVariants(on); },
+                    [&r] { return r.lastFrameCoarseMask(); }, "globe_coarse_mask_");
   for (const View& v : kViews) {  // 30-400 km
     r.render(frameOf(v));
     EXPECT_FALSE(r.lastFrameCoarseMask()) << v.name;
@@ -315,15 +325,8 @@ TEST(GlobeRender, PyramidAloneFromHighUpKeepsThePicture) {
   render::GlobeRenderer r(data::defaultElevation());
   const std::array<View, 2> high{{{"orbit-20000km", 10, -30, 2.0e7, 0, -90},
                                   {"finland-3000km", 62.0, 26.0, 3.0e6, 0, -80}}};
-  for (const View& v : high) {
-    const render::FrameInput f = frameOf(v);
-    const test::OffAndOn images = test::renderOffAndOn(r, f, [&r](bool on) { r.setFilteredMaskVariants(on); });
-    EXPECT_TRUE(r.lastFrameFilteredMask()) << v.name;
-    const test::RadianceChange change = test::radianceChange(images.off, images.on, 1e-5);
-    std::printf("%s: %d pixels changed, largest relative change %.2e\n", v.name, change.over, change.worst);
-    EXPECT_EQ(change.over, 0) << v.name << " (largest relative change " << change.worst << ")";
-    if (change.over > 0) test::savePng(r, std::string("globe_filtered_mask_") + v.name);
-  }
+  expectSamePicture(r, {high.begin(), high.end()}, [&r](bool on) { r.setFilteredMaskVariants(on); },
+                    [&r] { return r.lastFrameFilteredMask(); }, "globe_filtered_mask_");
   r.render(frameOf(kHighViews[0]));  // Finland from 1500 km: the nearest pixels weigh the B-spline
   EXPECT_FALSE(r.lastFrameFilteredMask());
   EXPECT_TRUE(r.lastFrameFractionMips());
