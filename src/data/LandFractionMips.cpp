@@ -105,7 +105,7 @@ Overlap overlapOf(int i, int fine, int coarse) {
 
 LandFractionMips::Level LandFractionMips::halved(const Level& fine) {
   // The area mean over each coarse texel's span: with even sides the 2 x 2 texels under it;
-  // where a side is odd (the 2′ mask's 675 rows at 16′) GL's texels still span the globe
+  // where a side is odd (the 2′ mask's 1350 × 675 at 16′, 675 × 337 at 32′) GL's texels still span the globe
   // evenly, so the mean weighs the fine rows by their overlap.
   Level coarse;
   coarse.width = fine.width / 2;

@@ -1,7 +1,7 @@
 #pragma once
 // The land fraction filtered over a footprint of several cells: a mip pyramid of a global
 // LandMask's area fraction of land (level 0: 2 × 2 cells, 4′ for the 2′ mask; each level the
-// mean of the 2 × 2 below), as bytes (255 = all land). A refined cell counts its 15″ fine cells
+// area mean of what its texels span at GL's next mip size), as bytes (255 = all land). A refined cell counts its 15″ fine cells
 // (LandMask::block), so a coastal cell is the share of it the shorelines give to land.
 //
 // Where a pixel's footprint on the ground spans more than a cell, the B-spline of the 3 × 3
@@ -61,8 +61,8 @@ class LandFractionMips {
   /// What every trilinear lookup at a level in [lodLo, lodHi] at a point of the box latLo ...
   /// latHi, lonLo ... lonHi (degrees; longitudes may run past ±180°) returns: Land where all
   /// the texels they can blend (those within a texel of the box, at every level the lookups
-  /// blend) are kLandByte or more, Water where all are kWaterByte or less, else Both. Two bytes
-  /// of margin each side of 0.5 for the GPU's filtering weights.
+  /// blend) are kLandByte or more, Water where all are kWaterByte or less, else Both: 2.5 bytes
+  /// of margin each side of 0.5 (127.5) for the GPU's filtering weights.
   static constexpr std::uint8_t kLandByte = 130, kWaterByte = 125;
   [[nodiscard]] LandMaskPyramid::Content boxContent(double latLoDeg, double latHiDeg, double lonLoDeg, double lonHiDeg,
                                                     double lodLo, double lodHi) const;

@@ -128,7 +128,7 @@ data::LandMaskPyramid::Content maskContent(const data::LandMaskPyramid& pyramid,
 // in (data::LandFractionMips::landFraction): what every point of the box lo ... hi (degrees)
 // is as footprints of footprintLoDeg ... footprintHiDeg see it, from the bytes the pyramid's
 // lookups there can blend and, while the B-spline still weighs (under two cells), the mask's
-// own (maskContent). Both where a point may lie near 0.5 (two bytes of margin).
+// own (maskContent). Both where a point may lie near 0.5 (2.5 bytes of margin).
 data::LandMaskPyramid::Content filteredContent(const data::LandFractionMips& mips, const data::LandMaskPyramid& pyramid,
                                                glm::dvec2 lo, glm::dvec2 hi, double footprintLoDeg,
                                                double footprintHiDeg) {

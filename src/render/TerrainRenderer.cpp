@@ -444,7 +444,7 @@ void TerrainRenderer::drawCovered(const geo::CameraView& view, const std::vector
   // the first draw would only add its cost there too.
   GLint samples = 0;
   glGetIntegerv(GL_SAMPLES, &samples);
-  if (seaFromGlobe || samples > 1) {
+  if (seaFromGlobe || samples > 1 || !coveragePassOn_) {
     drawTiles(view, tiles, frameBits, sunDirectionEcef, seaFromGlobe);
     return;
   }

@@ -152,6 +152,9 @@ class TerrainRenderer {
   /// Whether this frame's programs read the land fraction's pyramid where a pixel spans several
   /// 2′ cells (LANDMASK_PYRAMID: GlobeRenderer sets it where some pixel may).
   void setLandFractionPyramid(bool on) { pyramid_ = on; }
+  /// Whether tiles with water draw first their coast's discards alone, then their shading where
+  /// those left the depth (drawCovered; on by default), or in one pass (off: the tests' reference).
+  void setCoveragePass(bool on) { coveragePassOn_ = on; }
   /// How far this frame's waves reach above and below sea level, m (TerrainStats's
   /// seaSeenMaxHeightM; the globe renderer sets it each frame).
   void setSeaCrestM(double m) { seaCrestM_ = m; }
@@ -425,6 +428,7 @@ class TerrainRenderer {
   bool coarseMask_ = false;  ///< setCoarseLandMask
   bool filteredMask_ = false;  ///< setFilteredLandMask
   bool pyramid_ = false;       ///< setLandFractionPyramid
+  bool coveragePassOn_ = true;  ///< setCoveragePass
   double seaCrestM_ = 30.0;  ///< setSeaCrestM
   bool seaSightTest_ = true;  ///< setSeaSightTest
   bool floorClipOn_ = true;   ///< setFloorClip

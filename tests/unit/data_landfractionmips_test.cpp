@@ -72,21 +72,28 @@ TEST(LandFractionMips, LevelsAreAreaFractionsAndTheirMeans) {
         EXPECT_EQ(mips.texel(level, c, r), (sum + 2) / 4) << level << ": " << c << ", " << r;
       }
   // A level whose side is odd halves to GL's size (rounded down), its texels the area mean of
-  // what they span: the whole globe's mean stays the first level's within the bytes' rounding.
-  std::vector<std::uint8_t> oddCells(24 * 12, 0);  // 12 x 6, 6 x 3, then 3 x 1: rows 3 -> 1
-  for (std::size_t i = 0; i < oddCells.size(); i += 3) oddCells[i] = 1;
-  const LandMask odd(24, 12, -180.0, -90.0, 15.0, oddCells);
+  // what they span: a 28 x 14 mask (14 x 7, then 7 x 3: each coarse row spans 7/3 of a fine
+  // one), rows unlike each other.
+  std::vector<std::uint8_t> oddCells(28 * 14, 0);
+  for (int r = 0; r < 14; ++r)
+    for (int c = 0; c < 28; ++c) oddCells[static_cast<std::size_t>(r * 28 + c)] = (c + 3 * r) % 5 < 2 + r % 3 ? 1 : 0;
+  const LandMask odd(28, 14, -180.0, -90.0, 180.0 / 14.0, oddCells);
   const LandFractionMips oddMips(odd);
-  ASSERT_EQ(oddMips.levels(), 3);
-  EXPECT_EQ(oddMips.levelWidth(2), 3);
-  EXPECT_EQ(oddMips.levelHeight(2), 1);
-  const auto mean = [&oddMips](int level) {
+  ASSERT_EQ(oddMips.levels(), 3);  // (then 3 x 1: the next would be 1 wide)
+  EXPECT_EQ(oddMips.levelWidth(1), 7);
+  EXPECT_EQ(oddMips.levelHeight(1), 3);
+  for (int c = 0; c < 7; ++c) {
+    // Coarse row 0: fine rows 0 and 1 whole and a third of row 2, fine columns 2c and 2c + 1.
     double sum = 0.0;
-    for (std::uint8_t b : oddMips.levelBytes(level)) sum += b;
-    return sum / static_cast<double>(oddMips.levelBytes(level).size());
-  };
-  EXPECT_NEAR(mean(1), mean(0), 0.5);
-  EXPECT_NEAR(mean(2), mean(0), 0.5);
+    for (int i = 0; i < 2; ++i)
+      sum += oddMips.texel(0, 2 * c + i, 0) + oddMips.texel(0, 2 * c + i, 1) + oddMips.texel(0, 2 * c + i, 2) / 3.0;
+    EXPECT_EQ(oddMips.texel(1, c, 0), static_cast<int>(std::floor(sum / (2.0 * 7.0 / 3.0) + 0.5))) << c;
+    // Coarse row 1: two thirds of row 2, row 3 and two thirds of row 4.
+    sum = 0.0;
+    for (int i = 0; i < 2; ++i)
+      sum += (2.0 * oddMips.texel(0, 2 * c + i, 2) + 2.0 * oddMips.texel(0, 2 * c + i, 4)) / 3.0 + oddMips.texel(0, 2 * c + i, 3);
+    EXPECT_EQ(oddMips.texel(1, c, 1), static_cast<int>(std::floor(sum / (2.0 * 7.0 / 3.0) + 0.5))) << c;
+  }
   // A regional mask or an odd one has no pyramid.
   const LandMask regional(4, 4, 0.0, 0.0, 1.0, std::vector<std::uint8_t>(16, 1));
   EXPECT_THROW(LandFractionMips{regional}, og::InternalError);
