@@ -11,9 +11,9 @@
 #include <glm/vec4.hpp>
 
 #include "core/Error.hpp"
+#include "geo/Wgs84.hpp"
 #include "gl/Probe.hpp"
 #include "gl/Shader.hpp"
-#include "geo/Wgs84.hpp"
 #include "gl/ShaderContract.hpp"
 
 namespace og::render {
