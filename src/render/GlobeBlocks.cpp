@@ -46,6 +46,11 @@ CornerHit cornerHit(const geo::CameraView& view, double ndcX, double ndcY) {
   return c;
 }
 
+// A longitude (degrees) unwrapped to lie within 180° of `refDeg`.
+double lonNextTo(double lonDeg, double refDeg) {
+  return lonDeg + (lonDeg - refDeg > 180.0 ? -360.0 : refDeg - lonDeg > 180.0 ? 360.0 : 0.0);
+}
+
 // The corners' bendDeg, for a lattice of `columns` × `rows` corners whose last column and row
 // are regular (a full block's side from the one before) where `lastColumnFull` / `lastRowFull`.
 void bendCorners(std::vector<CornerHit>& corners, int columns, int rows, bool lastColumnFull, bool lastRowFull) {
@@ -58,10 +63,7 @@ void bendCorners(std::vector<CornerHit>& corners, int columns, int rows, bool la
       CornerHit& c = at(i, j);
       const std::array<const CornerHit*, 4> around{&at(i - 1, j), &at(i + 1, j), &at(i, j - 1), &at(i, j + 1)};
       if (!c.hit || !std::all_of(around.begin(), around.end(), [](const CornerHit* n) { return n->hit; })) continue;
-      const auto latLon = [&c](const CornerHit* n) {  // longitudes unwrapped next to c's
-        const double lon = n->lonDeg + (n->lonDeg - c.lonDeg > 180.0 ? -360.0 : c.lonDeg - n->lonDeg > 180.0 ? 360.0 : 0.0);
-        return glm::dvec2(n->latDeg, lon);
-      };
+      const auto latLon = [&c](const CornerHit* n) { return glm::dvec2(n->latDeg, lonNextTo(n->lonDeg, c.lonDeg)); };
       const glm::dvec2 here(c.latDeg, c.lonDeg);
       c.bendDeg = glm::max(glm::abs(latLon(around[0]) - 2.0 * here + latLon(around[1])),
                            glm::abs(latLon(around[2]) - 2.0 * here + latLon(around[3])));
@@ -146,8 +148,7 @@ std::optional<std::array<glm::dvec2, 2>> footprintBox(const std::array<const Cor
   // The corners' box, longitudes unwrapped next to the first corner's.
   double latLo = 90.0, latHi = -90.0, lonLo = 1e9, lonHi = -1e9;
   for (const CornerHit* c : corners) {
-    double lon = c->lonDeg;
-    lon += lon - corners[0]->lonDeg > 180.0 ? -360.0 : (corners[0]->lonDeg - lon > 180.0 ? 360.0 : 0.0);
+    const double lon = lonNextTo(c->lonDeg, corners[0]->lonDeg);
     latLo = std::min(latLo, c->latDeg);
     latHi = std::max(latHi, c->latDeg);
     lonLo = std::min(lonLo, lon);

@@ -187,7 +187,7 @@ GlobeRenderer::GlobeRenderer(std::shared_ptr<const data::LatLonGrid> layer,
   stage.emplace("renderer: land mask texture");
   const data::LandMask& mask = data::defaultLandMask();
   landMask_ = std::make_unique<LandMaskTexture>(mask.refines(elevation) ? &mask : nullptr);
-  if (landMask_->active())
+  if (landMask_->active()) {  // (on helper threads from here on)
     maskBlocked_ = std::async(std::launch::async, [&mask] {
       std::vector<unsigned char> coarse(static_cast<std::size_t>(OpenSeaMap::kWidth) * OpenSeaMap::kHeight, 0);
       std::vector<unsigned char> fine = coarse;
@@ -195,10 +195,9 @@ GlobeRenderer::GlobeRenderer(std::shared_ptr<const data::LatLonGrid> layer,
       addBlockedByMask(mask, fine, true);
       return std::pair{std::move(coarse), std::move(fine)};
     });
-  if (landMask_->active())
     maskPyramidFuture_ = std::async(std::launch::async, [&mask] { return std::make_unique<data::LandMaskPyramid>(mask); });
-  if (landMask_->active())
     fractionMipsFuture_ = std::async(std::launch::async, [&mask] { return std::make_unique<data::LandFractionMips>(mask); });
+  }
   stage.emplace("renderer: layer's steepest slope and open sea's blocked cells (waiting)");
   ocean_->setLayerMaxSlope(maxSlope.get());  // the sea's classes (OceanRenderer)
   openSeaBlockedByLayer_ = blocked.get();

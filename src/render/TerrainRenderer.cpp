@@ -450,8 +450,7 @@ void TerrainRenderer::drawCovered(const geo::CameraView& view, const std::vector
   }
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   // (its discards are the coast's: the frame's land-mask variant, as the one-pass draw's)
-  drawTiles(view, tiles, kCoverage | (frameBits & (kCoarseMask | kFilteredMask | kPyramid)), sunDirectionEcef,
-            seaFromGlobe);
+  drawTiles(view, tiles, kCoverage | (frameBits & kLandMaskBits), sunDirectionEcef, seaFromGlobe);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   drawTiles(view, tiles, frameBits | kAfterCoverage, sunDirectionEcef, seaFromGlobe, GL_EQUAL);
   glDepthFunc(GL_GREATER);  // as draw() leaves it
@@ -559,11 +558,11 @@ std::optional<TerrainRenderer::ScreenScale> TerrainRenderer::tileScreenScale(con
   const double across = facing + t.upConeRad + toEdge >= 0.5 * std::numbers::pi ? 1.0 : std::sin(facing + t.upConeRad + toEdge);
   // The smallest pixel the tile can reach: the one farthest off the axis its sphere reaches.
   const double offAxisRad = std::acos(std::clamp(glm::dot(toCentre, view.forward) / centreM, -1.0, 1.0)) + toEdge;
-  return ScreenScale{across, 1.0 / (geo::smallestPixelAngleRad(view, params_.heightPx, offAxisRad) * (centreM - t.boundRadiusM))};
+  return ScreenScale{across, 1.0 / (geo::smallestPixelAngleRad(view, params_.heightPx, offAxisRad) * (centreM - t.boundRadiusM)),
+                     centreM};
 }
 
-double TerrainRenderer::reliefShiftPx(const terrain::Tile& t, const geo::CameraView& view) const {
-  const std::optional<ScreenScale> s = tileScreenScale(t, view);
+double TerrainRenderer::reliefShiftPx(const terrain::Tile& t, const std::optional<ScreenScale>& s) {
   if (!s) return std::numeric_limits<double>::infinity();
   // A point of the tile at height h (or depth) lies |h| along its vertical from its foot on the
   // ellipsoid, which the ray through it passes within that much of on screen.
@@ -571,12 +570,15 @@ double TerrainRenderer::reliefShiftPx(const terrain::Tile& t, const geo::CameraV
 }
 
 std::size_t TerrainRenderer::tileStrideIndex(const terrain::Tile& t, const geo::CameraView& view) const {
-  if (!coarseThisFrame_) return 0;
-  const std::optional<ScreenScale> s = tileScreenScale(t, view);
-  if (!s) return 0;
+  return coarseThisFrame_ ? tileStrideIndex(t, view, tileScreenScale(t, view)) : 0;
+}
+
+std::size_t TerrainRenderer::tileStrideIndex(const terrain::Tile& t, const geo::CameraView& view,
+                                             const std::optional<ScreenScale>& s) const {
+  if (!coarseThisFrame_ || !s) return 0;
   // terrain/tile_vertex.glsl's morph weight is 0 within half the morph scale of the eye.
   const double morph = morphScale(t, view);
-  if (morph > 0.0 && glm::length(t.boundCentreEcef - view.positionEcef) + t.boundRadiusM > 0.5 * morph) return 0;
+  if (morph > 0.0 && s->centreM + t.boundRadiusM > 0.5 * morph) return 0;
   for (std::size_t k = std::size(terrain::kTileStrides) - 1; k >= 1; --k) {
     const terrain::Tile::StrideDeviation& d = t.strideDeviation[k - 1];
     const double shiftM = d.verticalM * s->across + d.horizontalM;
@@ -587,8 +589,10 @@ std::size_t TerrainRenderer::tileStrideIndex(const terrain::Tile& t, const geo::
 
 unsigned TerrainRenderer::tileBits(const terrain::Tile& t, const geo::CameraView& view, unsigned bits,
                                    const glm::dvec3& sunDirectionEcef) const {
-  unsigned own = tileStrideIndex(t, view) > 0 ? kCoarse : 0u;
-  if (landClassStencil_ > 0 && reliefShiftPx(t, view) <= kGlobeLandShiftPx) own |= kGlobeLand;
+  const std::optional<ScreenScale> scale =
+      coarseThisFrame_ || landClassStencil_ > 0 ? tileScreenScale(t, view) : std::nullopt;  // (once a tile)
+  unsigned own = tileStrideIndex(t, view, scale) > 0 ? kCoarse : 0u;
+  if (landClassStencil_ > 0 && reliefShiftPx(t, scale) <= kGlobeLandShiftPx) own |= kGlobeLand;
   if ((bits & (kNoNight | kCoverage)) != 0 || !dayTilesOn_) return own;
   // terrain.frag's night lights are 0 where the Sun is above a point's horizon: leave their
   // lookup out of tiles whose every vertical (within upConeRad of the middle one) has the Sun
@@ -884,7 +888,7 @@ void TerrainRenderer::drawFrameTiles(const geo::CameraView& view, const std::vec
     glStencilMask(kLandTilesStencilBit);
   }
   if (!landTiles.empty())  // (the variant is compiled on first use: none over the open sea)
-    drawTiles(view, landTiles, (frameBits & ~(kCoarseMask | kFilteredMask | kPyramid)) | kLandOnly, sunDirectionEcef, seaFromGlobe);  // (no mask)
+    drawTiles(view, landTiles, (frameBits & ~kLandMaskBits) | kLandOnly, sunDirectionEcef, seaFromGlobe);  // (no mask)
   glStencilMask(0xff);
   glDisable(GL_STENCIL_TEST);
   drawCovered(view, otherTiles, frameBits, sunDirectionEcef, seaFromGlobe);

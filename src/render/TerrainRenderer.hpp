@@ -343,6 +343,9 @@ class TerrainRenderer {
     kFilteredMask = 4096u,
     kPyramid = 8192u
   };
+  /// The bits that choose the land mask's code (the coast's tests read it; tiles all above the
+  /// sea drop them).
+  static constexpr unsigned kLandMaskBits = kCoarseMask | kFilteredMask | kPyramid;
   const gl::Program& variant(unsigned bits);
   std::unordered_map<unsigned, gl::Program> variants_;  ///< by bits (a few dozen are ever used)
   /// The stride of the mesh `tile` is drawn from, as an index into terrain::kTileStrides: the
@@ -358,16 +361,19 @@ class TerrainRenderer {
   [[nodiscard]] std::size_t tileStrideIndex(const terrain::Tile& tile, const geo::CameraView& view) const;
   /// How a vertical offset on `tile` moves a point on screen at most: the sine of the largest
   /// angle between a vertical on the tile and a ray to it (across), and the pixels a metre
-  /// spans in the smallest pixel the tile can reach at its nearest point. nullopt with the eye
-  /// within the tile's bounding sphere.
+  /// spans in the smallest pixel the tile can reach at its nearest point; and the distance from
+  /// the eye to the tile's bounding sphere's centre, m. nullopt with the eye within that sphere.
   struct ScreenScale {
-    double across = 1.0, pixelsPerM = 0.0;
+    double across = 1.0, pixelsPerM = 0.0, centreM = 0.0;
   };
   [[nodiscard]] std::optional<ScreenScale> tileScreenScale(const terrain::Tile& tile, const geo::CameraView& view) const;
+  /// tileStrideIndex with the tile's screen scale `scale` (tileScreenScale) already at hand.
+  [[nodiscard]] std::size_t tileStrideIndex(const terrain::Tile& tile, const geo::CameraView& view,
+                                            const std::optional<ScreenScale>& scale) const;
   /// How far the tile's relief (its heights above and depths below sea level) can move a point
-  /// on screen off the ellipsoid's point behind it, pixels (infinite with the eye within the
-  /// tile's bounding sphere).
-  [[nodiscard]] double reliefShiftPx(const terrain::Tile& tile, const geo::CameraView& view) const;
+  /// on screen off the ellipsoid's point behind it, pixels, by its screen scale `scale`
+  /// (infinite with the eye within the tile's bounding sphere: nullopt).
+  [[nodiscard]] static double reliefShiftPx(const terrain::Tile& tile, const std::optional<ScreenScale>& scale);
   /// Variant bits of one tile on top of a draw's `bits`: kCoarse (tileStrideIndex), kGlobeLand
   /// (drawWaterTiles: within kGlobeLandShiftPx) and kNoNight where the Sun is up everywhere on
   /// the tile (a shading draw's only).
