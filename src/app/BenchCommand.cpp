@@ -64,7 +64,10 @@ std::vector<BenchView> benchViews() {
           {"coast-2m-deep", pose(20, -40, 2.0, 270, -10)},
           // Terrain: the Himalaya towards the horizon, and the Strait of Gibraltar's coasts.
           {"mountain-15km", pose(27.3, 86.9, 15000.0, 10, -2)},
-          {"coast-30km", pose(35.6, -5.6, 30000.0, 0, -30)}};
+          {"coast-30km", pose(35.6, -5.6, 30000.0, 0, -30)},
+          // The demo flight's descent above the grid's ceiling (config/flythrough.toml): the
+          // globe's deep sea off Portugal, within a degree of its shelf and seamounts.
+          {"offshore-40km", pose(38.0, -12.0, 40000.0, 74, -30)}};
 }
 
 struct BenchOptions {
@@ -248,7 +251,7 @@ Run addBenchCommand(CLI::App& parent) {
   cmd->add_option("--view", o->views, "only these views (repeatable; default: all)")
       ->check(CLI::IsMember({"orbit-20000km", "limb-400km", "sea-2m-horizon", "sea-4m", "sea-1km",
                              "sea-8km", "coast-2m-bank", "coast-2m-deep", "mountain-15km",
-                             "coast-30km"}));
+                             "coast-30km", "offshore-40km"}));
   cmd->add_option("--samples", o->samples,
                   "samples per pixel: auto (default), 1, 2, 4 or 8; several (--samples 1 4) time each "
                   "case at each count, frames interleaved so that machine load hits all alike");

@@ -72,6 +72,10 @@ enum StorageBinding : unsigned {
 /// GLSL: OG_TILE_QUADS): terrain/tile_grid.glsl finds a vertex's place in the grid from it.
 inline constexpr unsigned kTerrainTileQuads = 32;
 
+/// Cells per degree of the open-sea map (render/OpenSeaMap::kCellsPerDeg; GLSL:
+/// OG_OPEN_SEA_CELLS_PER_DEG): render/open_sea_map.glsl finds a point's texel from it.
+inline constexpr unsigned kOpenSeaCellsPerDeg = 8;
+
 /// The contract as "NAME value" #define bodies, in full double precision.
 std::vector<std::string> contractDefines();
 

@@ -162,9 +162,17 @@ GlobeRenderer::GlobeRenderer(std::shared_ptr<const data::LatLonGrid> layer,
   auto maxSlope = std::async(std::launch::async, [layer] { return layerMaxSlope(*layer); });
   const double reachM = ocean::waterMaxPathM(ocean::jerlovWater(ocean::kDefaultWater).attenuationPerM,
                                              ocean::kWaterEpsilon);
-  // The open sea's floor must lie beyond the water's reach (shallow.glsl's prepareWaterColumn),
-  // with a margin for the shader's float arithmetic.
-  auto blocked = std::async(std::launch::async, [layer, reachM] { return blockedByLayer(*layer, 1.5 * reachM); });
+  // The open-sea map from the layer and the land mask where it decides the coast (as
+  // LandMaskTexture below), with its texels: made on a helper thread, uploaded by the first
+  // frame that needs it (bindOpenSeaMap). The open sea's floor must lie beyond the water's
+  // reach (shallow.glsl's prepareWaterColumn), with a margin for the shader's float arithmetic.
+  openSeaFuture_ = std::async(std::launch::async, [layer, reachM] {
+    const data::LandMask& mask = data::defaultLandMask();
+    auto map = std::make_unique<OpenSeaMap>(
+        makeRendererOpenSeaMap(blockedByLayer(*layer, 1.5 * reachM), mask.refines(*layer) ? &mask : nullptr));
+    std::vector<std::uint16_t> texels = openSeaTexels(*map);
+    return std::pair{std::move(map), std::move(texels)};
+  });
   std::optional<core::startup::Scope> stage(std::in_place, "renderer: elevation texture");
   elevation_ = elevationTexture(elevation);
   glTextureParameteri(elevation_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -188,19 +196,11 @@ GlobeRenderer::GlobeRenderer(std::shared_ptr<const data::LatLonGrid> layer,
   const data::LandMask& mask = data::defaultLandMask();
   landMask_ = std::make_unique<LandMaskTexture>(mask.refines(elevation) ? &mask : nullptr);
   if (landMask_->active()) {  // (on helper threads from here on)
-    maskBlocked_ = std::async(std::launch::async, [&mask] {
-      std::vector<unsigned char> coarse(static_cast<std::size_t>(OpenSeaMap::kWidth) * OpenSeaMap::kHeight, 0);
-      std::vector<unsigned char> fine = coarse;
-      addBlockedByMask(mask, coarse);
-      addBlockedByMask(mask, fine, true);
-      return std::pair{std::move(coarse), std::move(fine)};
-    });
     maskPyramidFuture_ = std::async(std::launch::async, [&mask] { return std::make_unique<data::LandMaskPyramid>(mask); });
     fractionMipsFuture_ = std::async(std::launch::async, [&mask] { return std::make_unique<data::LandFractionMips>(mask); });
   }
-  stage.emplace("renderer: layer's steepest slope and open sea's blocked cells (waiting)");
+  stage.emplace("renderer: layer's steepest slope (waiting)");
   ocean_->setLayerMaxSlope(maxSlope.get());  // the sea's classes (OceanRenderer)
-  openSeaBlockedByLayer_ = blocked.get();
   stage.reset();
   maxSamples_ = gl::maxSamples(GL_RGBA32F);
   blocksOn_ = gl::driverProfile().software;
@@ -643,17 +643,11 @@ void GlobeRenderer::drawBlockFill(const geo::CameraView& view, const FrameInput&
 
 void GlobeRenderer::bindOpenSeaMap() {
   if (openSeaTexture_ == nullptr) {
-    // Made on the first frame that needs it, the land mask's share on a helper thread since
-    // the constructor: not start-up's.
-    const core::startup::Scope stage("renderer: open sea and land clearance maps");
-    if (maskBlocked_.valid()) maskBlockedCells_ = maskBlocked_.get();  // kept should what follows throw
-    const auto& [coarse, fine] = maskBlockedCells_;
-    std::vector<unsigned char> blocked = openSeaBlockedByLayer_;
-    for (std::size_t i = 0; i < blocked.size() && i < coarse.size(); ++i) blocked[i] |= coarse[i];
-    auto map = std::make_unique<OpenSeaMap>(makeOpenSeaMap(std::move(blocked)));
-    if (!fine.empty()) map->landClearanceRad = makeOpenSeaMap(fine).clearanceRad;
+    // Made on a helper thread since the constructor, uploaded on the first frame that needs it.
+    const core::startup::Scope stage("renderer: open sea and land clearance maps (waiting, upload)");
+    auto [map, texels] = openSeaFuture_.get();
+    openSeaTexture_ = std::make_unique<OpenSeaTexture>(texels);
     openSeaMap_ = std::move(map);
-    openSeaTexture_ = std::make_unique<OpenSeaTexture>(*openSeaMap_);
   }
   openSeaTexture_->bind();
 }

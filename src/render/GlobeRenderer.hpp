@@ -461,11 +461,10 @@ class GlobeRenderer {
   std::unique_ptr<TerrainRenderer> terrain_;
   std::unique_ptr<ImageryTextures> imagery_;
   std::unique_ptr<LandMaskTexture> landMask_;
-  std::vector<unsigned char> openSeaBlockedByLayer_;  ///< the layer's share, from the constructor
-  /// The land mask's blocked cells (OpenSeaMap): without and with its fine cells, made on a
-  /// helper thread from the constructor on (two passes over its ~29 M cells, ~100 ms).
-  std::future<std::pair<std::vector<unsigned char>, std::vector<unsigned char>>> maskBlocked_;
-  std::pair<std::vector<unsigned char>, std::vector<unsigned char>> maskBlockedCells_;  ///< its result (empty: no mask)
+  /// The open-sea map (makeRendererOpenSeaMap) and its texels, made on a helper thread from the
+  /// constructor on (the layer's blocked cells, two passes over the mask's ~29 M cells, two
+  /// distance transforms of 4 M cells).
+  std::future<std::pair<std::unique_ptr<OpenSeaMap>, std::vector<std::uint16_t>>> openSeaFuture_;
   std::unique_ptr<OpenSeaMap> openSeaMap_;
   std::unique_ptr<OpenSeaTexture> openSeaTexture_;
   bool openSeaPart_ = true;

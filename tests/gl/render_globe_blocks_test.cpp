@@ -254,6 +254,28 @@ TEST(GlobeRender, ScatteredPartsShadedFromAListKeepThePicture) {
   }
 }
 
+// West of Portugal, where the demo flight comes down (150 km and 40 km up), the deep sea lies
+// within a degree of the shelf and of seamounts: with the open-sea map's 7.5′ cells (1° cells
+// gave it no radius there) most of the frame's sea goes to the open sea's part, without the
+// water column, and the picture is the same as with every sea pixel in the sea's part.
+TEST(GlobeRender, OpenSeaOffTheShelfKeepsThePicture) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  r.setCountPartSamples(true);
+  const std::vector<View> views{{"demo-flight-40km", 38.0, -12.0, 4.0e4, 74, -30},
+                                {"demo-flight-150km", 37.8, -13.2, 1.5e5, 70, -22}};
+  for (const View& v : views) {
+    const test::OffAndOn images = test::renderOffAndOn(r, frameOf(v), [&r](bool on) { r.setOpenSeaPart(on); });
+    std::uint64_t open = 0;
+    for (const auto& [name, samples] : r.partSamples()) open += name == "open sea" ? samples : 0;
+    std::printf("%s: %.0f %% of the pixels in the open sea's part\n", v.name, 100.0 * static_cast<double>(open) / (kWidth * kHeight));
+    EXPECT_GT(open, static_cast<std::uint64_t>(kWidth * kHeight / 3)) << v.name;
+    const test::RadianceChange change = test::radianceChange(images.off, images.on, 1e-5);
+    EXPECT_EQ(change.over, 0) << v.name << " (largest relative change " << change.worst << ")";
+    if (change.over > 0) test::savePng(r, std::string("globe_open_sea_") + v.name);
+  }
+}
+
 // With the constant wind (no wind layers) the globe's sea reads the wind, its direction's sine
 // and cosine and the whole sea's slope and Jacobian variances from uniforms the CPU computed
 // from the same tables (PATTERN_CONSTANT_WIND) instead of the one-cell wind texture and the

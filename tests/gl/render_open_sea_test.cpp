@@ -11,6 +11,8 @@
 #include <tuple>
 #include <vector>
 
+#include <glm/gtc/packing.hpp>
+
 #include "data/Elevation.hpp"
 #include "data/LandMask.hpp"
 #include "geo/Sun.hpp"
@@ -46,10 +48,20 @@ std::pair<double, double> moved(double latDeg, double lonDeg, double angle, doub
   return {lat2 / kDeg, std::remainder(lon2 / kDeg, 360.0)};
 }
 
-// Every point within a cell's clearance of random points of that cell passes `isOpen`; and the
-// map is not empty (at least `minOpenCells` cells with a clearance).
+constexpr double kCell = render::OpenSeaMap::kCellDeg;
+
+// The map's index of the cell holding (lat, lon) degrees.
+std::size_t cellAt(double latDeg, double lonDeg) {
+  const auto row = static_cast<std::size_t>(std::floor((latDeg + 90.0) / kCell));
+  const auto col = static_cast<std::size_t>(std::floor((lonDeg + 180.0) / kCell));
+  return row * render::OpenSeaMap::kWidth + col;
+}
+
+// Every point within a cell's clearance of random points of that cell passes `isOpen`, for a
+// random seventh of the cells with a clearance (all of them: 25 M lookups); and the map is not
+// empty (at least `minOpenDeg2` square degrees of cells with a clearance).
 template <class IsOpen>
-void expectClearanceHolds(const render::OpenSeaMap& map, IsOpen&& isOpen, int minOpenCells) {
+void expectClearanceHolds(const render::OpenSeaMap& map, IsOpen&& isOpen, double minOpenDeg2) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   int open = 0, bad = 0;
@@ -58,8 +70,9 @@ void expectClearanceHolds(const render::OpenSeaMap& map, IsOpen&& isOpen, int mi
       const double c = map.clearanceRad[static_cast<std::size_t>(row) * render::OpenSeaMap::kWidth + static_cast<std::size_t>(col)];
       if (c <= 0.0) continue;
       ++open;
+      if (rng() % 7 != 0) continue;
       for (int k = 0; k < 6; ++k) {
-        const double lat = -90.0 + row + unit(rng), lon = -180.0 + col + unit(rng);
+        const double lat = -90.0 + (row + unit(rng)) * kCell, lon = -180.0 + (col + unit(rng)) * kCell;
         // Out to the clearance's edge, in any direction.
         const auto [qLat, qLon] = moved(lat, lon, c * (k < 3 ? 1.0 : unit(rng)), 2.0 * std::numbers::pi * unit(rng));
         if (!isOpen(qLat, qLon)) {
@@ -68,7 +81,7 @@ void expectClearanceHolds(const render::OpenSeaMap& map, IsOpen&& isOpen, int mi
       }
     }
   EXPECT_EQ(bad, 0);
-  EXPECT_GE(open, minOpenCells);
+  EXPECT_GE(open * kCell * kCell, minOpenDeg2);
 }
 }  // namespace
 
@@ -78,9 +91,9 @@ TEST(OpenSeaMap, ClearanceHoldsNoLandNoShallowFloor) {
   expectClearanceHolds(map, [&](double lat, double lon) { return static_cast<double>(layer.sample(lat, lon)) <= -kMinDepthM; },
                        20000);
   // The island and its shelf are blocked, and the sea 20° west of it is open by more than 5°.
-  EXPECT_EQ(map.blocked[static_cast<std::size_t>(100) * 360 + 150], 1);  // 10° N, 30° W
-  EXPECT_EQ(map.blocked[static_cast<std::size_t>(100) * 360 + 155], 1);  // on the shelf
-  EXPECT_GT(map.clearanceRad[static_cast<std::size_t>(100) * 360 + 120], 5.0 * kDeg);  // 10° N, 60° W
+  EXPECT_EQ(map.blocked[cellAt(10.5, -29.5)], 1);
+  EXPECT_EQ(map.blocked[cellAt(10.5, -24.5)], 1);  // on the shelf
+  EXPECT_GT(map.clearanceRad[cellAt(10.5, -59.5)], 5.0 * kDeg);
 }
 
 TEST(OpenSeaMap, ClearanceHoldsAgainstTheLandMask) {
@@ -92,13 +105,13 @@ TEST(OpenSeaMap, ClearanceHoldsAgainstTheLandMask) {
   render::addBlockedByMask(mask, blocked);
   const render::OpenSeaMap map = render::makeOpenSeaMap(std::move(blocked));
   expectClearanceHolds(map, [&](double lat, double lon) { return mask.landFraction(lat, lon) == 0.0f; }, 20000);
-  EXPECT_EQ(map.blocked[static_cast<std::size_t>(90 + 51) * 360 + 180], 1);  // London
-  EXPECT_GT(map.clearanceRad[static_cast<std::size_t>(90) * 360 + 180 - 140], 5.0 * kDeg);  // 0° N, 140° W
+  EXPECT_EQ(map.blocked[cellAt(51.5, -0.1)], 1);  // London
+  EXPECT_GT(map.clearanceRad[cellAt(0.5, -139.5)], 5.0 * kDeg);
 }
 
 // The land clearance (the projected grid's sea classes): around land alone, the mask's fine
 // cells included, so that no islet or spit only the 15" level holds is ever within a cell's
-// radius (the coast test keeps the sea off it there). Some 1° cells are blocked for such land
+// radius (the coast test keeps the sea off it there). Some cells are blocked for such land
 // alone.
 TEST(OpenSeaMap, LandClearanceHoldsAgainstTheMasksFineCells) {
   const data::LandMask& mask = data::defaultLandMask();
@@ -112,9 +125,61 @@ TEST(OpenSeaMap, LandClearanceHoldsAgainstTheMasksFineCells) {
     EXPECT_TRUE(fine[i] || !coarse[i]) << i;
     fineOnly += fine[i] && !coarse[i] ? 1 : 0;
   }
-  EXPECT_GT(fineOnly, 0) << "no 1° cell blocked for its fine land alone";
+  EXPECT_GT(fineOnly, 0) << "no cell blocked for its fine land alone";
   const render::OpenSeaMap map = render::makeOpenSeaMap(std::move(fine));
   expectClearanceHolds(map, [&](double lat, double lon) { return mask.landFraction(lat, lon, 0.0) == 0.0f; }, 20000);
+}
+
+// The two-pass chessboard distances (render::chessboardDistances) against their definition
+// taken the long way: per row the distance along it (wrapping), then the smallest over the
+// rows within the cap of the larger of that and the rows between. Scattered cells, a band
+// across the antimeridian, cells at both poles.
+TEST(OpenSeaMap, ChessboardDistancesMatchTheirDefinition) {
+  constexpr int kW = render::OpenSeaMap::kWidth, kH = render::OpenSeaMap::kHeight, kCap = 9;
+  std::vector<unsigned char> blocked(static_cast<std::size_t>(kW) * kH, 0);
+  std::mt19937 rng(11);
+  for (int k = 0; k < 20000; ++k) blocked[rng() % blocked.size()] = 1;
+  for (int r = 700; r < 720; ++r) blocked[static_cast<std::size_t>(r) * kW + kW - 1] = 1;  // at the seam
+  blocked[5] = blocked[blocked.size() - 9] = 1;
+  const std::vector<std::uint8_t> d = render::chessboardDistances(blocked, kCap);
+  std::vector<int> along(blocked.size(), kCap);
+  for (int r = 0; r < kH; ++r)
+    for (int c = 0; c < kW; ++c)
+      for (int dc = 0; dc <= kCap; ++dc)
+        if (blocked[static_cast<std::size_t>(r) * kW + static_cast<std::size_t>((c + dc) % kW)] ||
+            blocked[static_cast<std::size_t>(r) * kW + static_cast<std::size_t>((c - dc + kW) % kW)]) {
+          along[static_cast<std::size_t>(r) * kW + static_cast<std::size_t>(c)] = dc;
+          break;
+        }
+  int bad = 0, atCap = 0;
+  for (int r = 0; r < kH; ++r)
+    for (int c = 0; c < kW; ++c) {
+      int expected = kCap;
+      for (int rr = std::max(0, r - kCap); rr <= std::min(kH - 1, r + kCap); ++rr)
+        expected = std::min(expected, std::max(along[static_cast<std::size_t>(rr) * kW + static_cast<std::size_t>(c)], std::abs(rr - r)));
+      const int got = d[static_cast<std::size_t>(r) * kW + static_cast<std::size_t>(c)];
+      atCap += expected == kCap ? 1 : 0;
+      if (got != expected && ++bad <= 5) ADD_FAILURE() << "cell (" << r << ", " << c << "): " << got << ", expected " << expected;
+    }
+  EXPECT_EQ(bad, 0);
+  EXPECT_GT(atCap, 1000);  // the cap is reached too
+}
+
+// The texture's half floats never widen a clearance, and keep it within 0.1 % (or a
+// subnormal half's step, 6e-8 rad).
+TEST(OpenSeaMap, TexelsRoundTheClearanceDown) {
+  const render::OpenSeaMap map = render::makeOpenSeaMap(render::blockedByLayer(islandWorld(), kMinDepthM));
+  const std::vector<std::uint16_t> texels = render::openSeaTexels(map);
+  ASSERT_EQ(texels.size(), 2 * map.clearanceRad.size());
+  int open = 0;
+  for (std::size_t i = 0; i < map.clearanceRad.size(); ++i) {
+    const float c = map.clearanceRad[i], t = glm::unpackHalf1x16(texels[2 * i]);
+    ASSERT_LE(t, c) << i;
+    ASSERT_GE(t, 0.999f * c - 6e-8f) << i;  // (radii of 1e-19 rad: cells whose box reaches a pole)
+    ASSERT_EQ(texels[2 * i + 1], 0u) << "no land clearance without a mask";
+    open += c > 0.0f ? 1 : 0;
+  }
+  EXPECT_GT(open, 1000000);
 }
 
 TEST(OpenSeaMap, ARegionalLayerHasNoOpenSea) {
@@ -294,7 +359,9 @@ TEST(GlobeRender, ScissorToTheGlobeLeavesThePictureUnchanged) {
 // antimeridian.
 TEST(OpenSeaMap, BlockedCellsAreThoseOfOneBoxPerTexel) {
   const auto perTexel = [](const data::LatLonGrid& layer, double minDepthM) {
-    std::vector<unsigned char> blocked(static_cast<std::size_t>(360) * 180, 0);
+    constexpr int kW = render::OpenSeaMap::kWidth, kH = render::OpenSeaMap::kHeight;
+    constexpr double kPerDeg = render::OpenSeaMap::kCellsPerDeg;
+    std::vector<unsigned char> blocked(static_cast<std::size_t>(kW) * kH, 0);
     for (int r = 0; r < layer.height; ++r) {
       const double lat = layer.lat0Deg + r * layer.dLatDeg;
       const double latLo = r == 0 ? -90.0 : lat - layer.dLatDeg;
@@ -303,12 +370,12 @@ TEST(OpenSeaMap, BlockedCellsAreThoseOfOneBoxPerTexel) {
         if (static_cast<double>(layer.at(c, r)) <= -minDepthM) continue;
         double lon = std::fmod(layer.lon0Deg + c * layer.dLonDeg + 180.0, 360.0);
         lon = (lon < 0.0 ? lon + 360.0 : lon) - 180.0;
-        const int r0 = std::clamp(static_cast<int>(std::floor(latLo + 90.0)), 0, 179);
-        const int r1 = std::clamp(static_cast<int>(std::floor(latHi + 90.0)), 0, 179);
-        const int c0 = static_cast<int>(std::floor(lon - layer.dLonDeg + 180.0));
-        const int c1 = std::min(static_cast<int>(std::floor(lon + layer.dLonDeg + 180.0)), c0 + 359);
+        const int r0 = std::clamp(static_cast<int>(std::floor((latLo + 90.0) * kPerDeg)), 0, kH - 1);
+        const int r1 = std::clamp(static_cast<int>(std::floor((latHi + 90.0) * kPerDeg)), 0, kH - 1);
+        const int c0 = static_cast<int>(std::floor((lon - layer.dLonDeg + 180.0) * kPerDeg));
+        const int c1 = std::min(static_cast<int>(std::floor((lon + layer.dLonDeg + 180.0) * kPerDeg)), c0 + kW - 1);
         for (int rr = r0; rr <= r1; ++rr)
-          for (int cc = c0; cc <= c1; ++cc) blocked[static_cast<std::size_t>(rr) * 360 + static_cast<std::size_t>((cc % 360 + 360) % 360)] = 1;
+          for (int cc = c0; cc <= c1; ++cc) blocked[static_cast<std::size_t>(rr) * kW + static_cast<std::size_t>((cc % kW + kW) % kW)] = 1;
       }
     }
     return blocked;
