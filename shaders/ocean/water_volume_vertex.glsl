@@ -105,7 +105,7 @@ float landClearanceM(vec2 latLon) { return 6.3e6 * openSeaMapAt(latLon).g; }
 float seaClassLandWithin(vec2 latLon, float reachM) {
   if (uElevationSize.x <= 0.0) return 0.0;  // no layer: sea everywhere (seaAt)
   if (landMaskOn()) {
-    if (reachM < landClearanceM(latLon)) return 0.0;  // no land that near (one fetch, 1° cells)
+    if (reachM < landClearanceM(latLon)) return 0.0;  // no land that near (one fetch, 7.5′ cells)
     float cellM = WGS84_A * PI / float(textureSize(uLandMask, 0).y);
     float perCell = reachM / (cellM * max(cos(latLon.x), 1e-3));
     return landFraction(latLon) + 1.4143 * perCell >= 0.5 ? 1.0 : 0.0;

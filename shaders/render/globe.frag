@@ -311,15 +311,16 @@ int samplesOnSea(PixelRays rays) {
 }
 
 // Whether all four of a pixel's samples lie in the open deep sea: within the clearance radius
-// (render/OpenSeaMap) of the 1° cell under the pixel-centre ray's hit (geodetic normal
+// (render/OpenSeaMap) of the 7.5′ cell under the pixel-centre ray's hit (geodetic normal
 // nCentre at latLon, radians). The radius holds for every point of the cell, so the samples'
 // largest angle from nCentre is compared with it, with a 10 % margin (the shading point, the
-// samples' mean ray, lies among them; float rounding).
+// samples' mean ray, lies among them; float rounding), as chords: the angle from a float dot
+// product near 1 is lost in its rounding at the smallest radii (one free cell, ~2e-3 cos φ rad).
 bool inOpenSea(PixelRays rays, vec3 nCentre, vec2 latLon) {
   float clearance = openSeaMapAt(latLon).r;
-  float minDot = 1.0;
-  for (int i = 0; i < 4; ++i) minDot = min(minDot, dot(ellipsoidNormal(rays.dirs[i], rays.ts[i]), nCentre));
-  return uOpenSeaOn != 0 && rays.nHit == 4 && minDot > cos(0.9 * clearance);
+  float maxChord = 0.0;
+  for (int i = 0; i < 4; ++i) maxChord = max(maxChord, distance(ellipsoidNormal(rays.dirs[i], rays.ts[i]), nCentre));
+  return uOpenSeaOn != 0 && rays.nHit == 4 && maxChord < 2.0 * sin(0.45 * clearance);
 }
 
 // The classifying draws (GlobeRenderer::classifyGlobe): each keeps the pixels that pass its step,

@@ -71,7 +71,7 @@ void bendCorners(std::vector<CornerHit>& corners, int columns, int rows, bool la
 }
 
 // Whether every point of the block (its four corners' hull) lies in the open deep sea: within
-// 0.9 of the clearance of the 1° cell under its mean normal (the per-pixel test's margin). Not
+// 0.9 of the clearance of the map's cell under its mean normal (the per-pixel test's margin). Not
 // the per-pixel test itself (each pixel's own cell and centre), but as strict: a block it
 // passes is open deep sea at every pixel, which either part shades alike.
 bool blockInOpenSea(const std::array<const CornerHit*, 4>& corners, const OpenSeaMap& openSea) {

@@ -61,7 +61,7 @@ struct GlobeBlocks {
 /// a quarter and by the B-spline's reach of a cell) are all that class, none refined; open
 /// sea when, besides, its corners' cosine is at least kMinCosIncidenceOpenSea (the per-pixel
 /// test's 0.2 at the pixel centre, with a margin) and they lie within 0.9 of `openSea`'s
-/// clearance of its centre's 1° cell (nullptr: none is). Miss where the ellipsoid's outline
+/// clearance of its centre's cell (nullptr: none is). Miss where the ellipsoid's outline
 /// is too round to bulge between two corners onto a sample (a radius over 128 pixels).
 /// With `sky`, Miss blocks whose corners all lie in space (outside the atmosphere's outline,
 /// itself over 128 pixels in radius, and more than the Sun's radius and a block's diagonal from

@@ -171,6 +171,8 @@ GlobeRenderer::GlobeRenderer(std::shared_ptr<const data::LatLonGrid> layer,
     auto map = std::make_unique<OpenSeaMap>(
         makeRendererOpenSeaMap(blockedByLayer(*layer, 1.5 * reachM), mask.refines(*layer) ? &mask : nullptr));
     std::vector<std::uint16_t> texels = openSeaTexels(*map);
+    map->blocked = {};  // (20 MiB the renderer does not read: the texture holds the land's)
+    map->landClearanceRad = {};
     return std::pair{std::move(map), std::move(texels)};
   });
   std::optional<core::startup::Scope> stage(std::in_place, "renderer: elevation texture");
@@ -645,6 +647,7 @@ void GlobeRenderer::bindOpenSeaMap() {
   if (openSeaTexture_ == nullptr) {
     // Made on a helper thread since the constructor, uploaded on the first frame that needs it.
     const core::startup::Scope stage("renderer: open sea and land clearance maps (waiting, upload)");
+    if (!openSeaFuture_.valid()) throw InternalError("the open-sea map failed on an earlier frame");
     auto [map, texels] = openSeaFuture_.get();
     openSeaTexture_ = std::make_unique<OpenSeaTexture>(texels);
     openSeaMap_ = std::move(map);

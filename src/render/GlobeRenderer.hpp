@@ -294,7 +294,8 @@ class GlobeRenderer {
   [[nodiscard]] std::uint32_t listedPixelCount() const;
   /// The last frame's pixels per sky texel along a side (1: the sky per pixel).
   [[nodiscard]] int lastSkyLowFactor() const { return lastSkyLowFactor_; }
-  /// The coarse open-sea map (made on the first frame above 20 km; nullptr before).
+  /// The open-sea map, its clearanceRad alone (its blocked cells and land clearance are
+  /// dropped after the upload); nullptr before the first frame that binds it.
   [[nodiscard]] const OpenSeaMap* openSeaMap() const { return openSeaMap_.get(); }
 
  private:
@@ -360,7 +361,8 @@ class GlobeRenderer {
   /// almost all of those pixels, over the globe's part, which ran for nothing before them.
   bool frameLandLast_ = false;
   bool floorInReachFrame_ = false;  ///< lastFrameFloorInReach
-  /// The open-sea map on its texture unit (made on first use).
+  /// The open-sea map on its texture unit (made on a helper thread since the constructor,
+  /// uploaded on first use).
   void bindOpenSeaMap();
   /// Enables the scissor test on globeScissor's box (when setGlobeScissor is on); the box (the
   /// whole frame without it).

@@ -92,8 +92,8 @@ void addBlockedByMask(const data::LandMask& mask, std::vector<unsigned char>& bl
   const std::vector<std::uint8_t>& bits = withFine.empty() ? mask.packedBits() : withFine;
   const double cell = mask.cellDeg();
   // Columns as bits, 64 a word: a mask row's reach into each cell row it meets, OR-ed by words.
-  constexpr int kWords = (kW + 63) / 64;
-  std::vector<std::uint64_t> rowBits(static_cast<std::size_t>(kWords) * kH, 0), columns(kWords);
+  constexpr std::size_t kWords = (kW + 63) / 64;
+  std::vector<std::uint64_t> rowBits(kWords * static_cast<std::size_t>(kH), 0), columns(kWords);
   for (int r = 0; r < mask.height(); ++r) {
     const std::uint8_t* row = bits.data() + static_cast<std::size_t>(r) * bytesPerRow;
     std::fill(columns.begin(), columns.end(), 0);
@@ -123,11 +123,13 @@ void addBlockedByMask(const data::LandMask& mask, std::vector<unsigned char>& bl
     const int r0 = std::clamp(rowOf(mask.southDeg() + (r - 2) * cell), 0, kH - 1);
     const int r1 = std::clamp(rowOf(mask.southDeg() + (r + 3) * cell), 0, kH - 1);
     for (int cr = r0; cr <= r1; ++cr)
-      for (int w = 0; w < kWords; ++w) rowBits[static_cast<std::size_t>(cr) * kWords + static_cast<std::size_t>(w)] |= columns[static_cast<std::size_t>(w)];
+      for (std::size_t w = 0; w < kWords; ++w) rowBits[static_cast<std::size_t>(cr) * kWords + w] |= columns[w];
   }
-  for (int cr = 0; cr < kH; ++cr)
+  for (int cr = 0; cr < kH; ++cr) {
+    const std::uint64_t* bitRow = &rowBits[static_cast<std::size_t>(cr) * kWords];
     for (int c = 0; c < kW; ++c)
-      if ((rowBits[static_cast<std::size_t>(cr) * kWords + static_cast<std::size_t>(c / 64)] >> (c % 64)) & 1u) blocked[index(c, cr)] = 1;
+      if ((bitRow[c / 64] >> (c % 64)) & 1u) blocked[index(c, cr)] = 1;
+  }
 }
 
 std::vector<std::uint8_t> chessboardDistances(const std::vector<unsigned char>& blocked, int cap) {
@@ -161,6 +163,8 @@ std::vector<std::uint8_t> chessboardDistances(const std::vector<unsigned char>& 
   }
   return d;
 }
+
+static_assert(OpenSeaMap::kMaxRings + 1 <= 255, "chessboardDistances holds distances in bytes");
 
 OpenSeaMap makeOpenSeaMap(std::vector<unsigned char> blocked) {
   if (blocked.size() != static_cast<std::size_t>(kW) * kH)

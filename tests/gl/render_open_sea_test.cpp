@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -163,23 +164,41 @@ TEST(OpenSeaMap, ChessboardDistancesMatchTheirDefinition) {
     }
   EXPECT_EQ(bad, 0);
   EXPECT_GT(atCap, 1000);  // the cap is reached too
+  // The renderer's cap (kMaxRings + 1, near a byte's end): one cell blocked near the seam, the
+  // distances max(rows, columns round the shorter way) up to it.
+  std::fill(blocked.begin(), blocked.end(), 0);
+  constexpr int kRow = 900, kColumn = 3, kBigCap = render::OpenSeaMap::kMaxRings + 1;
+  blocked[static_cast<std::size_t>(kRow) * kW + kColumn] = 1;
+  const std::vector<std::uint8_t> far = render::chessboardDistances(blocked, kBigCap);
+  bad = 0;
+  for (int r = 0; r < kH; ++r)
+    for (int c = 0; c < kW; ++c) {
+      const int dc = std::abs(c - kColumn), expected = std::min(kBigCap, std::max(std::abs(r - kRow), std::min(dc, kW - dc)));
+      const int got = far[static_cast<std::size_t>(r) * kW + static_cast<std::size_t>(c)];
+      if (got != expected && ++bad <= 5) ADD_FAILURE() << "one cell: (" << r << ", " << c << "): " << got << ", expected " << expected;
+    }
+  EXPECT_EQ(bad, 0);
 }
 
 // The texture's half floats never widen a clearance, and keep it within 0.1 % (or a
 // subnormal half's step, 6e-8 rad).
 TEST(OpenSeaMap, TexelsRoundTheClearanceDown) {
-  const render::OpenSeaMap map = render::makeOpenSeaMap(render::blockedByLayer(islandWorld(), kMinDepthM));
+  // The renderer's map (the island world with the GSHHG mask): both radii in the texels.
+  const render::OpenSeaMap map =
+      render::makeRendererOpenSeaMap(render::blockedByLayer(islandWorld(), kMinDepthM), &data::defaultLandMask());
   const std::vector<std::uint16_t> texels = render::openSeaTexels(map);
   ASSERT_EQ(texels.size(), 2 * map.clearanceRad.size());
-  int open = 0;
-  for (std::size_t i = 0; i < map.clearanceRad.size(); ++i) {
-    const float c = map.clearanceRad[i], t = glm::unpackHalf1x16(texels[2 * i]);
-    ASSERT_LE(t, c) << i;
-    ASSERT_GE(t, 0.999f * c - 6e-8f) << i;  // (radii of 1e-19 rad: cells whose box reaches a pole)
-    ASSERT_EQ(texels[2 * i + 1], 0u) << "no land clearance without a mask";
-    open += c > 0.0f ? 1 : 0;
-  }
-  EXPECT_GT(open, 1000000);
+  ASSERT_EQ(map.landClearanceRad.size(), map.clearanceRad.size());
+  std::array<int, 2> open{0, 0};
+  for (std::size_t i = 0; i < map.clearanceRad.size(); ++i)
+    for (std::size_t k = 0; k < 2; ++k) {
+      const float c = (k == 0 ? map.clearanceRad : map.landClearanceRad)[i], t = glm::unpackHalf1x16(texels[2 * i + k]);
+      ASSERT_LE(t, c) << i << " " << k;
+      ASSERT_GE(t, 0.999f * c - 6e-8f) << i << " " << k;  // (radii of 1e-19 rad: cells whose box reaches a pole)
+      open[k] += c > 0.0f ? 1 : 0;
+    }
+  EXPECT_GT(open[0], 1000000);
+  EXPECT_GT(open[1], open[0]) << "the land clearance ignores the shelves";
 }
 
 TEST(OpenSeaMap, ARegionalLayerHasNoOpenSea) {
@@ -251,7 +270,7 @@ TEST(GlobeRender, OpenSeaPartMatchesTheSurfacePart) {
   ASSERT_NE(r.openSeaMap(), nullptr);
   int open = 0;
   for (float c : r.openSeaMap()->clearanceRad) open += c > 0.0f ? 1 : 0;
-  EXPECT_GT(open, 10000);  // the part is in use
+  EXPECT_GT(open * kCell * kCell, 10000.0);  // square degrees: the part is in use
 }
 
 TEST(GlobeRender, LandAndSeaPartsMatchTheSurfacePart) {
