@@ -115,6 +115,23 @@ std::string pixelSharesLine(const char* title, const char* key,
   return line;
 }
 
+/// `--breakdown`: the globe's blocks of pixels (render/GlobeBlocks) by the class the CPU gave
+/// them above the grid's ceiling, as "    globe blocks: per-pixel N ..." and into `breakdown`
+/// ("globe_blocks"); empty where none were classed (below 20 km, or on a GPU).
+std::string globeBlocksLine(const std::array<int, render::kGlobeBlockClasses>& counts, nlohmann::json& breakdown) {
+  static constexpr std::array<const char*, render::kGlobeBlockClasses> kNames{"per-pixel", "land", "sea",
+                                                                               "open sea",  "miss", "space"};
+  if (std::all_of(counts.begin(), counts.end(), [](int n) { return n == 0; })) return {};
+  std::string line = "    globe blocks:";
+  nlohmann::json values = nlohmann::json::object();
+  for (std::size_t k = 0; k < kNames.size(); ++k) {
+    values[kNames.at(k)] = counts.at(k);
+    line += std::string(" ") + kNames.at(k) + " " + std::to_string(counts.at(k));
+  }
+  breakdown["globe_blocks"] = values;
+  return line;
+}
+
 /// The sea's classes (OceanRenderer::classSamples) named; none where the sea was not classified.
 std::vector<std::pair<std::string, std::uint64_t>> seaClassSamples(const render::OceanRenderer& ocean) {
   if (ocean.classesDrawn() == 0) return {};
@@ -421,6 +438,8 @@ Run addBenchCommand(CLI::App& parent) {
                 pixelSharesLine("globe parts", "globe_part_pixels_percent", renderers[k]->partSamples(), pixelSamples,
                                 report["cases"].back())})
             if (!o->json && !shares.empty()) std::printf("%s\n", shares.c_str());
+          const std::string blocks = globeBlocksLine(renderers[k]->globeBlockCounts(), report["cases"].back());
+          if (!o->json && !blocks.empty()) std::printf("%s\n", blocks.c_str());
         }
       }
     }

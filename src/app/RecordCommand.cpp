@@ -407,6 +407,18 @@ void printRecordBreakdown(const std::vector<FramePasses>& frames, nlohmann::json
   }
 }
 
+/// bench --record --breakdown --json: each timed frame's camera height (m) and passes (ms), in
+/// the order rendered (every --frames-th frame of the path).
+nlohmann::json framePassesJson(const std::vector<FramePasses>& frames) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const FramePasses& f : frames) {
+    nlohmann::json passes = nlohmann::json::object();
+    for (const auto& [name, ms] : f.passesMs) passes[name] = ms;
+    out.push_back({{"height_m", f.heightM}, {"passes_ms", passes}});
+  }
+  return out;
+}
+
 }  // namespace
 
 int benchRecord(const std::string& pathFile, const std::vector<std::pair<int, int>>& sizes,
@@ -464,7 +476,10 @@ int benchRecord(const std::string& pathFile, const std::vector<std::pair<int, in
         std::printf("%10s %7d %7lld %14.2f %16.2f %9.0f%%\n", size.c_str(), count,
                     static_cast<long long>(withVideo.rendered), renderFps, videoFps,
                     100.0 * videoFps / renderFps);
-      if (timerMode) printRecordBreakdown(renderOnly.framePasses, report["record"].back()["passes_by_height"], json);
+      if (timerMode) {
+        printRecordBreakdown(renderOnly.framePasses, report["record"].back()["passes_by_height"], json);
+        report["record"].back()["passes_by_frame"] = framePassesJson(renderOnly.framePasses);
+      }
     }
   }
   if (json) std::printf("%s\n", report.dump(2).c_str());

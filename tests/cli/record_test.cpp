@@ -15,6 +15,8 @@
 #include <sstream>
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 #include "io/Image.hpp"
 #include "support/RunBinary.hpp"
 
@@ -269,4 +271,12 @@ TEST(Record, BenchBreakdownByHeight) {
   EXPECT_NE(lowBand.find("\"ocean\":"), std::string::npos) << lowBand;
   EXPECT_EQ(highBand.find("\"ocean\":"), std::string::npos) << highBand;
   EXPECT_NE(highBand.find("\"globe\":"), std::string::npos) << highBand;
+  // And frame by frame, in the order rendered: heights falling from 400 km.
+  const nlohmann::json report = nlohmann::json::parse(r.out);
+  const nlohmann::json& frames = report.at("record").at(0).at("passes_by_frame");
+  ASSERT_GE(frames.size(), 9u) << r.out;
+  EXPECT_DOUBLE_EQ(frames.front().at("height_m").get<double>(), 400000.0);
+  for (std::size_t i = 1; i < frames.size(); ++i)
+    EXPECT_LT(frames[i].at("height_m").get<double>(), frames[i - 1].at("height_m").get<double>()) << i;
+  EXPECT_TRUE(frames.back().at("passes_ms").contains("ocean")) << frames.back();
 }
