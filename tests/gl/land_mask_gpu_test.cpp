@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cmath>
+#include <initializer_list>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -40,6 +41,26 @@ std::vector<glm::vec3> probeInputs(const std::vector<glm::dvec2>& points, const 
   return radians;
 }
 
+// A probe input back in degrees, as the shader was given it (floats).
+struct ProbedDegrees {
+  double lat, lon, footprint;
+};
+ProbedDegrees probedDegrees(const glm::vec3& radians) {
+  return {static_cast<double>(radians.x) / kDeg, static_cast<double>(radians.y) / kDeg, static_cast<double>(radians.z) / kDeg};
+}
+
+// Rows across the antimeridian at `latitudes` (longitudes lonLo ... lonHi degrees, stepDeg
+// apart, those past 180° wrapped), then rows 0.01° from both poles, 7.3° apart.
+void appendSeamAndPoles(std::vector<glm::dvec2>& points, std::initializer_list<double> latitudes, double lonLo,
+                        double lonHi, double stepDeg) {
+  for (double lat : latitudes)
+    for (double lon = lonLo; lon < lonHi; lon += stepDeg) points.emplace_back(lat, lon > 180.0 ? lon - 360.0 : lon);
+  for (double lon = -180.0; lon < 180.0; lon += 7.3) {
+    points.emplace_back(89.99, lon);
+    points.emplace_back(-89.99, lon);
+  }
+}
+
 TEST(LandMaskGpu, LandFractionMatchesTheCpuTwin) {
   const auto context = gl::createHeadlessContext();
   const data::LandMask& mask = data::defaultLandMask();
@@ -51,12 +72,7 @@ TEST(LandMaskGpu, LandFractionMatchesTheCpuTwin) {
   // side), and rows at the poles.
   for (double lat = 35.7; lat < 36.3; lat += 0.0123)
     for (double lon = -6.0; lon < -5.0; lon += 0.0171) points.emplace_back(lat, lon);
-  for (double lat : {-16.8, -16.2, 71.2})
-    for (double lon = 179.5; lon < 180.5; lon += 0.0137) points.emplace_back(lat, lon > 180.0 ? lon - 360.0 : lon);
-  for (double lon = -180.0; lon < 180.0; lon += 7.3) {
-    points.emplace_back(89.99, lon);
-    points.emplace_back(-89.99, lon);
-  }
+  appendSeamAndPoles(points, {-16.8, -16.2, 71.2}, 179.5, 180.5, 0.0137);
   // Footprints in turn: the fine level, blended (two fine cells), the coarse level.
   const double fineCellDeg = mask.cellDeg() / data::LandMask::kFinePerCell;
   const std::vector<glm::vec3> radians = probeInputs(points, {0.0, 2.0 * fineCellDeg, 1.0});
@@ -66,8 +82,8 @@ TEST(LandMaskGpu, LandFractionMatchesTheCpuTwin) {
   double worst = 0.0;
   for (std::size_t i = 0; i < points.size(); ++i) {
     // The CPU at the GPU's float position (what the shader was given).
-    const double lat = static_cast<double>(radians[i].x) / kDeg, lon = static_cast<double>(radians[i].y) / kDeg;
-    const double cpu = static_cast<double>(mask.landFraction(lat, lon, static_cast<double>(radians[i].z) / kDeg));
+    const auto [lat, lon, footprint] = probedDegrees(radians[i]);
+    const double cpu = static_cast<double>(mask.landFraction(lat, lon, footprint));
     if (cpu > 0.0 && cpu < 1.0) ++coastal;
     if (i % 3 == 0 && std::abs(cpu - static_cast<double>(mask.landFraction(lat, lon))) > 0.1) ++fineDiffers;
     const double diff = std::abs(static_cast<double>(gpu[i]) - cpu);
@@ -96,12 +112,7 @@ TEST(LandMaskGpu, LandFractionThroughThePyramidMatchesTheCpuTwin) {
   std::vector<glm::dvec2> points;
   for (double lat = 59.0; lat < 66.0; lat += 0.0731)  // Finland's lakes and coasts
     for (double lon = 21.0; lon < 31.0; lon += 0.1337) points.emplace_back(lat, lon);
-  for (double lat : {-16.8, 65.3, 71.2})
-    for (double lon = 179.0; lon < 181.0; lon += 0.0437) points.emplace_back(lat, lon > 180.0 ? lon - 360.0 : lon);
-  for (double lon = -180.0; lon < 180.0; lon += 7.3) {
-    points.emplace_back(89.99, lon);
-    points.emplace_back(-89.99, lon);
-  }
+  appendSeamAndPoles(points, {-16.8, 65.3, 71.2}, 179.0, 181.0, 0.0437);
   const double cellDeg = mask.cellDeg();
   const std::vector<glm::vec3> radians =
       probeInputs(points, {1.5 * cellDeg, 3.0 * cellDeg, 6.0 * cellDeg, 20.0 * cellDeg, 60.0 * cellDeg});
@@ -113,8 +124,7 @@ TEST(LandMaskGpu, LandFractionThroughThePyramidMatchesTheCpuTwin) {
   int between = 0, changed = 0, splineWorse = 0;
   double worst = 0.0;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const double lat = static_cast<double>(radians[i].x) / kDeg, lon = static_cast<double>(radians[i].y) / kDeg;
-    const double footprint = static_cast<double>(radians[i].z) / kDeg;
+    const auto [lat, lon, footprint] = probedDegrees(radians[i]);
     const double cpu = static_cast<double>(mips.landFraction(lat, lon, footprint));
     between += cpu > 0.05 && cpu < 0.95 ? 1 : 0;
     worst = std::max(worst, std::abs(static_cast<double>(gpu[i]) - cpu));
