@@ -161,8 +161,10 @@ vec3 shadeLand(vec3 albedo, float muS, vec3 sunIrr, vec3 skyIrr) {
 // whitecap coverage of the local wind's Jacobian statistics (Dupuy 2012), the same lighting
 // code as the projected grid (ocean/lighting.glsl), so the switch between the two is invisible.
 float gSeaFoam = 0.0;  // whitecap coverage of the last shadeSea (the auxiliary output)
+vec2 gSeaSigma2 = vec2(0.0);  // and its slope variances along and across the wind
 vec3 shadeSea(vec3 v, vec3 n, float footprintRad) {
   vec2 w = localWind(latLonOfNormal(n));  // speed, azimuth (PATTERN_CONSTANT_WIND: uniforms)
+  gSeaSigma2 = seaSlopeVarianceTotal(w.x);
   vec3 wind = windDirectionEcef(windAzimuthSinCos(w), n);
   float foam = whitecapCoverage(vec2(1.0, seaJacobianVarianceTotal(w.x)));
   gSeaFoam = foam;
@@ -171,7 +173,7 @@ vec3 shadeSea(vec3 v, vec3 n, float footprintRad) {
 #else
   prepareWaterColumn(v, n, uSunDir, 1.0, footprintRad);  // the floor through the water (terrain/shallow.glsl)
 #endif
-  return seaRadianceWithFoam(v, n, wind, seaSlopeVarianceTotal(w.x), n, uSunDir, foam);
+  return seaRadianceWithFoam(v, n, wind, gSeaSigma2, n, uSunDir, foam);
 }
 
 // Light leaving the globe's surface at distance t along dir, towards the viewer; `sea` says
@@ -459,7 +461,7 @@ void main() {
 // surfaceRadiance with a constant for which they are, so that only the land's or the sea's
 // code is compiled in (and no per-sample coast test); the open deep sea's part also without
 // the water column (deeper than the water's reach there: shadeSea).
-void main() {
+void shadeClassPixel() {
   PixelRays rays = traceRays();
   vec3 hitDir = vec3(0.0);
   float hitT = 0.0;
@@ -472,6 +474,30 @@ void main() {
   fragRadiance = vec4(throughAerialPerspective(surface, hitDir, hitT, 4.0) * 0.25, 1.0);
   fragAux = vec4(foam * 0.25, 0.0, 0.0, 0.0);
 }
+#ifdef GLOBE_LATTICE
+// The open sea's part at the points of a lattice every OPEN_SEA_LATTICE_PX pixels (render/
+// OpenSeaLattice: listed by the CPU around its open-sea blocks), each shaded as a pixel centred
+// there; the radiance into the lattice's texel, the whitecaps in alpha, or -1 where the glint's
+// lobe is too narrow for the lattice (a calm sea: its slopes' standard deviation, across the
+// wind, under OPEN_SEA_LATTICE_MIN_LOBE_PX half-pixel turns of the reflection, whose Gaussian
+// in pixels is then under that many pixels wide and the lattice's linear interpolation of it
+// off by over ~1/200 of its peak; the Sun's disc, which widens it, left out).
+const float OPEN_SEA_LATTICE_PX = 4.0;
+const float OPEN_SEA_LATTICE_MIN_LOBE_PX = 20.0;
+void main() {
+  uint i = (gl_WorkGroupID.y * GLOBE_PIXELS_ROW + gl_WorkGroupID.x) * GLOBE_PIXELS_GROUP + gl_LocalInvocationID.x;
+  if (i >= uCount) return;
+  ivec2 point = ivec2(uPixels[i] & 0xffffu, uPixels[i] >> 16);
+  vNdc = vec2(point) * (OPEN_SEA_LATTICE_PX * uPixelNdc) - 1.0;
+  shadeClassPixel();
+  // The reflection turns twice as far as the facet; a pixel turns the view by about its angle.
+  float pixelRad = uPixelNdc.y * uTanHalfFov.y;
+  bool wide = sqrt(min(gSeaSigma2.x, gSeaSigma2.y)) >= OPEN_SEA_LATTICE_MIN_LOBE_PX * 0.5 * pixelRad;
+  imageStore(uRadianceImage, point, vec4(fragRadiance.rgb, wide ? fragAux.r : -1.0));
+}
+#else
+void main() { shadeClassPixel(); }
+#endif
 #elif GLOBE_PART == GLOBE_PART_SKY && defined(GLOBE_SKY_LOW)
 // The sky below the ceiling (no ray of the pixel on the globe): the lower-resolution pass's sky;
 // only pixels near the Sun's disc trace their four rays, for its coverage and the transmittance

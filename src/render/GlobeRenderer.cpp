@@ -396,7 +396,8 @@ int GlobeRenderer::programSet(bool behind, int variant) const {
 const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
   const int set = programSet(behind, variant), baseSet = set > 4 ? set - 5 : set;
   const bool shadesSea = variant == kGlobePart0 + 2 || variant == kGlobePart0 + 3 || variant == kGlobePart0 + 5 ||
-                         variant == kGlobePart0 + 6 || variant == kListedPixels;  // edge, surface, sea, open sea
+                         variant == kGlobePart0 + 6 || variant == kListedPixels ||
+                         variant == kOpenSeaLattice;  // edge, surface, sea, open sea
   const int windSet = constantWindFrame_ && shadesSea ? kGlobeProgramSets : 0;
   gl::Program& p = globePrograms_[static_cast<std::size_t>((windSet + set) * kGlobeVariants + variant)];
   if (p.id() == 0) {
@@ -413,6 +414,8 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
       defines.emplace_back("GLOBE_PART 9");
     } else if (variant == kListedPixels) {
       defines.insert(defines.end(), {"GLOBE_PART 2", "GLOBE_COMPUTE"});
+    } else if (variant == kOpenSeaLattice) {
+      defines.insert(defines.end(), {"GLOBE_PART 5", "GLOBE_COMPUTE", "GLOBE_LATTICE"});
     } else if (variant == kSkyLowPass) {
       defines.emplace_back("GLOBE_PART 8");
     } else if (variant == kSkyLowPart || variant == kSkyLowSunPart) {
@@ -438,7 +441,7 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
     const bool blocks =
         behind ? variant >= kClassifyExport && variant <= kClassifyExportLandSea
                : variant <= kClassifyExportLandSea || variant == kBlockFill;
-    if (variant == kListedPixels)
+    if (variant == kListedPixels || variant == kOpenSeaLattice)
       p = gl::Program({{GL_COMPUTE_SHADER, "render/globe.frag"}}, defines);
     else
       p = gl::Program({{GL_VERTEX_SHADER, blocks ? "render/blocks.vert" : "render/fullscreen.vert"},
@@ -589,6 +592,7 @@ bool GlobeRenderer::uploadClassifyingBlocks(const geo::CameraView& view, const F
   }
   blockRanges_ = {};
   blockCounts_ = {};
+  openSeaLattice_.clear();
   if (grid) return false;
   if (maskPyramidFuture_.valid()) maskPyramid_ = maskPyramidFuture_.get();
   std::vector<float> vertices;
@@ -610,6 +614,7 @@ bool GlobeRenderer::uploadClassifyingBlocks(const geo::CameraView& view, const F
     blockRanges_.perPixel = append(GlobeBlockClass::PerPixel);
     blockRanges_.miss = append(GlobeBlockClass::Miss);
     blockRanges_.fills = {append(GlobeBlockClass::Land), append(GlobeBlockClass::Sea), append(GlobeBlockClass::OpenSea)};
+    if (openSeaPart_ && openSeaLatticeOn_) openSeaLattice_.prepare(b, f.width, f.height);
   } else {
     vertices = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};  // fullscreen.vert's triangle
     blockRanges_.perPixel = {0, 3};
@@ -688,8 +693,9 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
     static constexpr std::array<const char*, 6> kPassNames{"globe sky",  "globe edge", "globe surface",
                                                            "globe land", "globe sea",  "globe open sea"};
     const char* pass = kPassNames.at(static_cast<std::size_t>(parts[k] - kGlobePart0 - 1));
-    if (timer_ != nullptr) timer_->mark(pass);
     glStencilFunc(GL_EQUAL, count, 0xff);
+    if (parts[k] == kGlobePart0 + 6) shadeOpenSeaLattice(view, f);
+    if (timer_ != nullptr) timer_->mark(pass);
     const bool readsSkyLow = skyLow && parts[k] == kGlobePart0 + 1;
     const gl::Program& globe = globeProgram(grid, readsSkyLow ? kSkyLowPart : parts[k]);
     setGlobeUniforms(globe, view, f);
@@ -715,6 +721,19 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   glDisable(GL_SCISSOR_TEST);
   glDepthMask(grid ? GL_FALSE : GL_TRUE);  // as the caller had it
   if (grid) glEndConditionalRender();
+}
+
+void GlobeRenderer::shadeOpenSeaLattice(const geo::CameraView& view, const FrameInput& f) {
+  if (openSeaLattice_.empty()) return;
+  if (timer_ != nullptr) timer_->mark("globe open sea lattice");
+  const gl::Program& shade = globeProgram(false, kOpenSeaLattice);
+  setGlobeUniforms(shade, view, f);
+  openSeaLattice_.shade(shade, f.exposure);
+  const auto draw = [this] { openSeaLattice_.drawInterpolated(); };
+  if (!countPartSamples_)
+    draw();
+  else
+    partSamples_.emplace_back("open sea lattice", gl::queryResult(GL_SAMPLES_PASSED, draw));
 }
 
 std::optional<std::array<int, 4>> sunDiscScissor(const geo::CameraView& view, int width, int height,

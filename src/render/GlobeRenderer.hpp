@@ -33,6 +33,7 @@
 #include "render/LandMaskTexture.hpp"
 #include "render/OceanPatterns.hpp"
 #include "render/OceanRenderer.hpp"
+#include "render/OpenSeaLattice.hpp"
 #include "render/OpenSeaMap.hpp"
 #include "render/TerrainRenderer.hpp"
 #include "render/UncoveredPixels.hpp"
@@ -197,6 +198,14 @@ class GlobeRenderer {
   /// Above 20 km, pixels in the open deep sea (render/OpenSeaMap) go to a part of their own
   /// (render/globe.frag); false shades them with the rest of the surface (the tests' reference).
   void setOpenSeaPart(bool on) { openSeaPart_ = on; }
+  /// Above 20 km, the open sea's blocks shaded at a lattice every 4 pixels and interpolated
+  /// where that holds (render/OpenSeaLattice; default on); off: per pixel (the tests' reference).
+  void setOpenSeaLattice(bool on) { openSeaLatticeOn_ = on; }
+  /// The open sea's blocks the last frame listed for the lattice and how many it interpolated
+  /// (reads the flags back: tests).
+  [[nodiscard]] std::pair<std::size_t, std::size_t> openSeaLatticeBlocks() const {
+    return {openSeaLattice_.listedBlocks(), openSeaLattice_.interpolatedBlocks()};
+  }
   /// From 20 km to kAerialTableMaxHeightM the globe's parts read the aerial perspective to sea
   /// level from a table made per frame (render/AerialTable; default on); off: from the
   /// atmosphere's tables per pixel (tests).
@@ -328,11 +337,13 @@ class GlobeRenderer {
   /// the sky part that reads it (GLOBE_SKY_LOW); 16 the depth of blocks classed on the CPU
   /// (GLOBE_PART_BLOCK_FILL); 17 the edge part as a compute shader over listed pixels
   /// (GLOBE_COMPUTE); 18 the sky part with the Sun's disc (GLOBE_SKY_SUN_DISC: 15 leaves it
-  /// out), drawn over the Sun's box only (drawSunDisc). `variant` in [0, kGlobeVariants). Above
+  /// out), drawn over the Sun's box only (drawSunDisc); 19 the open sea's part as a compute
+  /// shader at the lattice's points (GLOBE_LATTICE, render/OpenSeaLattice). `variant` in [0, kGlobeVariants). Above
   /// the ceiling the classifying variants draw the triangles of blocksVao_ (render/blocks.vert),
   /// below it the one draw (6, 7) render/UncoveredPixels' blocks.
-  static constexpr int kGlobeVariants = 19;
+  static constexpr int kGlobeVariants = 20;
   static constexpr int kSkyLowPass = 14, kSkyLowPart = 15, kBlockFill = 16, kListedPixels = 17, kSkyLowSunPart = 18;
+  static constexpr int kOpenSeaLattice = 19;
   static constexpr int kClassifyExport = 6, kClassifyExportLandSea = 7;
   /// Part k (1 sky ... 6 open sea) is variant kGlobePart0 + k.
   static constexpr int kGlobePart0 = 7;
@@ -346,6 +357,9 @@ class GlobeRenderer {
   /// (kSkyLowSunPart) over the sky just drawn without it: scissored to sunDiscScissor's box, or
   /// over the whole screen where that has none or setSunDiscBox(false).
   void drawSunDisc(const geo::CameraView& view, const FrameInput& f, bool grid);
+  /// Above the ceiling, before the open sea's part (its stencil test set): the lattice's
+  /// points shaded, its blocks checked and drawn interpolated (render/OpenSeaLattice).
+  void shadeOpenSeaLattice(const geo::CameraView& view, const FrameInput& f);
   /// Whether this frame splits the land and the sea off the surface part (landSeaParts_ and
   /// the split pays): their classifying step costs four elevation lookups a pixel, which a
   /// view mostly of the open deep sea (the limb over the Atlantic) does not win back. From an
@@ -470,6 +484,8 @@ class GlobeRenderer {
   std::unique_ptr<OpenSeaMap> openSeaMap_;
   std::unique_ptr<OpenSeaTexture> openSeaTexture_;
   bool openSeaPart_ = true;
+  OpenSeaLattice openSeaLattice_;  ///< this frame's lattice over the open sea's blocks
+  bool openSeaLatticeOn_ = true;
   bool landSeaParts_ = true;
   bool landAfterTiles_ = true;
   bool tilesOverLandClass_ = true;  ///< setTilesOverLandClass

@@ -1,0 +1,122 @@
+#include "render/OpenSeaLattice.hpp"
+
+#include <algorithm>
+
+#include "gl/ShaderContract.hpp"
+#include "render/GlobeBlocks.hpp"
+
+namespace og::render {
+
+static_assert(OpenSeaLattice::kBlockPx == kGlobeBlockPx, "the lattice's blocks are GlobeBlocks'");
+static_assert(OpenSeaLattice::kBlockPx == 2 * OpenSeaLattice::kLatticePx, "a block spans two lattice spacings");
+
+namespace {
+constexpr std::uint32_t packed(int x, int y) {
+  return static_cast<std::uint32_t>(x) | static_cast<std::uint32_t>(y) << 16;
+}
+constexpr GLuint kGroup = 64;         // the shaders' work groups
+constexpr GLuint kGroupsARow = 4096;  // render/globe_pixels.glsl's GLOBE_PIXELS_ROW
+
+// Uploads a list as the shaders' storage block: a count, three words (globe_pixels.glsl's
+// dispatch arguments, unused here), then the entries.
+void upload(gl::Buffer& buffer, std::size_t& capacity, const std::vector<std::uint32_t>& entries) {
+  std::vector<std::uint32_t> block{static_cast<std::uint32_t>(entries.size()), 0, 0, 0};
+  block.insert(block.end(), entries.begin(), entries.end());
+  gl::ensureBufferCapacity(buffer, capacity, block.size() * sizeof(std::uint32_t), GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferSubData(buffer.id(), 0, static_cast<GLsizeiptr>(block.size() * sizeof(std::uint32_t)), block.data());
+}
+}  // namespace
+
+void OpenSeaLattice::prepare(const GlobeBlocks& blocks, int width, int height) {
+  clear();
+  ensureTargets(width, height);
+  std::fill(listed_.begin(), listed_.end(), std::uint8_t{0});
+  const int x0 = blocks.rect[0] / kBlockPx, y0 = blocks.rect[1] / kBlockPx;  // (multiples of the block)
+  for (int j = 0; j < blocks.rows; ++j)
+    for (int i = 0; i < blocks.columns; ++i) {
+      const std::size_t index = static_cast<std::size_t>(j) * static_cast<std::size_t>(blocks.columns) + static_cast<std::size_t>(i);
+      if (blocks.classes[index] != GlobeBlockClass::OpenSea) continue;
+      const int bx = x0 + i, by = y0 + j;
+      blocks_.push_back(packed(bx, by));
+      for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a) {
+          const int px = 2 * bx + a, py = 2 * by + b;
+          std::uint8_t& seen = listed_[static_cast<std::size_t>(py) * static_cast<std::size_t>(latticeColumns_) + static_cast<std::size_t>(px)];
+          if (seen == 0) points_.push_back(packed(px, py));
+          seen = 1;
+        }
+    }
+}
+
+void OpenSeaLattice::ensureTargets(int width, int height) {
+  const int columns = (width + kBlockPx - 1) / kBlockPx, rows = (height + kBlockPx - 1) / kBlockPx;
+  if (columns == blockColumns_ && rows == blockRows_) return;
+  blockColumns_ = columns, blockRows_ = rows;
+  latticeColumns_ = 2 * columns + 1, latticeRows_ = 2 * rows + 1;
+  listed_.assign(static_cast<std::size_t>(latticeColumns_) * static_cast<std::size_t>(latticeRows_), 0);
+  lattice_ = gl::createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(lattice_.id(), 1, GL_RGBA32F, latticeColumns_, latticeRows_);
+  glTextureParameteri(lattice_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(lattice_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(lattice_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(lattice_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  flags_ = gl::createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(flags_.id(), 1, GL_R8UI, blockColumns_, blockRows_);
+  glTextureParameteri(flags_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // (an integer texture is
+  glTextureParameteri(flags_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);  // incomplete otherwise)
+}
+
+void OpenSeaLattice::shade(const gl::Program& shade, double exposure) {
+  if (empty()) return;
+  upload(pointsBuffer_, pointsBytes_, points_);
+  upload(blocksBuffer_, blocksBytes_, blocks_);
+  // The points, as globe.frag's listed pixels: rows of at most kGroupsARow groups.
+  const auto groups = static_cast<GLuint>((points_.size() + kGroup - 1) / kGroup);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kGlobePixelsBinding, pointsBuffer_.id());
+  glBindImageTexture(0, lattice_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  shade.use();
+  glDispatchCompute(std::min(groups, kGroupsARow), (groups + kGroupsARow - 1) / kGroupsARow, 1);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  // The blocks' flags: 0 (per pixel) unless the check passes one.
+  if (check_.id() == 0) {  // (compiled on first use, as the globe's variants are)
+    check_ = gl::Program({{GL_COMPUTE_SHADER, "render/open_sea_lattice.comp"}});
+    interpolate_ = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "render/open_sea_lattice.frag"}});
+  }
+  const GLubyte zero = 0;
+  glClearTexImage(flags_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, &zero);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kOpenSeaBlocksBinding, blocksBuffer_.id());
+  glBindImageTexture(0, lattice_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+  glBindImageTexture(1, flags_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
+  check_.set("uExposure", static_cast<float>(exposure));
+  check_.set("uMaxLevels", kMaxLevels);
+  check_.use();
+  glDispatchCompute(static_cast<GLuint>((blocks_.size() + kGroup - 1) / kGroup), 1, 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+  glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
+}
+
+void OpenSeaLattice::drawInterpolated() {
+  if (empty()) return;
+  glBindTextureUnit(gl::kUnitOpenSeaLattice, lattice_.id());
+  glBindTextureUnit(gl::kUnitOpenSeaBlocks, flags_.id());
+  GLint writeMask = 0;
+  glGetIntegerv(GL_STENCIL_WRITEMASK, &writeMask);
+  glStencilMask(0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_ZERO);
+  interpolate_.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glStencilMask(static_cast<GLuint>(writeMask));
+}
+
+std::size_t OpenSeaLattice::interpolatedBlocks() const {
+  if (empty()) return 0;
+  std::vector<std::uint8_t> flags(static_cast<std::size_t>(blockColumns_) * static_cast<std::size_t>(blockRows_));
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(flags_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, static_cast<GLsizei>(flags.size()), flags.data());
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  return static_cast<std::size_t>(std::count(flags.begin(), flags.end(), std::uint8_t{1}));
+}
+
+}  // namespace og::render
