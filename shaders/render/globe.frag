@@ -475,24 +475,24 @@ void shadeClassPixel() {
   fragAux = vec4(foam * 0.25, 0.0, 0.0, 0.0);
 }
 #ifdef GLOBE_LATTICE
-// The open sea's part at the points of a lattice every OPEN_SEA_LATTICE_PX pixels (render/
-// OpenSeaLattice: listed by the CPU around its open-sea blocks), each shaded as a pixel centred
-// there; the radiance into the lattice's texel, the whitecaps in alpha, or -1 where the glint's
+// The sea's or the open sea's part at the points of a lattice every SEA_LATTICE_PX pixels
+// (render/SeaLattice: listed by the CPU around its sea and open-sea blocks), each shaded as a
+// pixel centred there; the radiance into the lattice's texel, the whitecaps in alpha, or -1 where the glint's
 // lobe is too narrow for the lattice (a calm sea: its slopes' standard deviation, across the
-// wind, under OPEN_SEA_LATTICE_MIN_LOBE_PX half-pixel turns of the reflection, whose Gaussian
+// wind, under SEA_LATTICE_MIN_LOBE_PX half-pixel turns of the reflection, whose Gaussian
 // in pixels is then under that many pixels wide and the lattice's linear interpolation of it
 // off by over ~1/200 of its peak; the Sun's disc, which widens it, left out).
-const float OPEN_SEA_LATTICE_PX = 4.0;
-const float OPEN_SEA_LATTICE_MIN_LOBE_PX = 20.0;
+const float SEA_LATTICE_PX = 4.0;
+const float SEA_LATTICE_MIN_LOBE_PX = 20.0;
 void main() {
   uint i = (gl_WorkGroupID.y * GLOBE_PIXELS_ROW + gl_WorkGroupID.x) * GLOBE_PIXELS_GROUP + gl_LocalInvocationID.x;
   if (i >= uCount) return;
   ivec2 point = ivec2(uPixels[i] & 0xffffu, uPixels[i] >> 16);
-  vNdc = vec2(point) * (OPEN_SEA_LATTICE_PX * uPixelNdc) - 1.0;
+  vNdc = vec2(point) * (SEA_LATTICE_PX * uPixelNdc) - 1.0;
   shadeClassPixel();
   // The reflection turns twice as far as the facet; a pixel turns the view by about its angle.
   float pixelRad = uPixelNdc.y * uTanHalfFov.y;
-  bool wide = sqrt(min(gSeaSigma2.x, gSeaSigma2.y)) >= OPEN_SEA_LATTICE_MIN_LOBE_PX * 0.5 * pixelRad;
+  bool wide = sqrt(min(gSeaSigma2.x, gSeaSigma2.y)) >= SEA_LATTICE_MIN_LOBE_PX * 0.5 * pixelRad;
   imageStore(uRadianceImage, point, vec4(fragRadiance.rgb, wide ? fragAux.r : -1.0));
 }
 #else

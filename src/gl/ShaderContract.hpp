@@ -39,8 +39,8 @@ enum TextureUnit : unsigned {
   kUnitTerrainAerialTable = 26,  ///< render/aerial.glsl uTerrainAerialTable (render/AerialTable, terrain)
   kUnitSkyRadialSumsLayers = 27, ///< atmosphere/skymap.glsl SKY_RADIAL_SUMS, the Sun layers' (render/SkyRadialSums)
   kUnitLandFraction = 28,        ///< terrain/landmask.glsl uLandFraction (render/LandMaskTexture: data::LandFractionMips)
-  kUnitOpenSeaLattice = 29,      ///< render/open_sea_lattice.frag uLattice (render/OpenSeaLattice)
-  kUnitOpenSeaBlocks = 30,       ///< render/open_sea_lattice.frag uBlockInterpolated
+  kUnitSeaLattice = 29,          ///< render/sea_lattice.frag uLattice (render/SeaLattice)
+  kUnitSeaLatticeBlocks = 30,    ///< render/sea_lattice.frag uBlockInterpolated
   // Passes of their own, which bind nothing else, reuse unit 0:
   kUnitToneRadiance = 0,         ///< render/tonemap.frag uRadiance (the HDR target)
   kUnitOverlayText = 0,          ///< viewer/text.frag uText (the viewer's text overlay)
@@ -68,7 +68,7 @@ enum StorageBinding : unsigned {
   kUncoveredBlocksBinding = 2,     ///< render/uncovered_blocks.glsl UncoveredBlocks (render/UncoveredPixels)
   kUncoveredTrianglesBinding = 3,  ///< render/uncovered_blocks.comp UncoveredTriangles (render/UncoveredPixels)
   kTileAerialListBinding = 3,      ///< terrain/tile_aerial.comp TileAerialList (TerrainRenderer::computeTileAerial)
-  kOpenSeaBlocksBinding = 3,       ///< render/open_sea_lattice.comp OpenSeaBlocks (render/OpenSeaLattice)
+  kSeaLatticeBlocksBinding = 3,    ///< render/sea_lattice.comp SeaLatticeBlocks (render/SeaLattice)
 };
 
 /// Quads along a terrain tile's edge (terrain::kTileQuads, asserted by render/TerrainRenderer;

@@ -397,7 +397,7 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
   const int set = programSet(behind, variant), baseSet = set > 4 ? set - 5 : set;
   const bool shadesSea = variant == kGlobePart0 + 2 || variant == kGlobePart0 + 3 || variant == kGlobePart0 + 5 ||
                          variant == kGlobePart0 + 6 || variant == kListedPixels ||
-                         variant == kOpenSeaLattice;  // edge, surface, sea, open sea
+                         variant == kOpenSeaLatticePoints || variant == kSeaLatticePoints;  // edge, surface, sea, open sea
   const int windSet = constantWindFrame_ && shadesSea ? kGlobeProgramSets : 0;
   gl::Program& p = globePrograms_[static_cast<std::size_t>((windSet + set) * kGlobeVariants + variant)];
   if (p.id() == 0) {
@@ -414,8 +414,9 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
       defines.emplace_back("GLOBE_PART 9");
     } else if (variant == kListedPixels) {
       defines.insert(defines.end(), {"GLOBE_PART 2", "GLOBE_COMPUTE"});
-    } else if (variant == kOpenSeaLattice) {
-      defines.insert(defines.end(), {"GLOBE_PART 5", "GLOBE_COMPUTE", "GLOBE_LATTICE"});
+    } else if (variant == kOpenSeaLatticePoints || variant == kSeaLatticePoints) {
+      defines.insert(defines.end(), {variant == kSeaLatticePoints ? "GLOBE_PART 6" : "GLOBE_PART 5", "GLOBE_COMPUTE",
+                                     "GLOBE_LATTICE"});
     } else if (variant == kSkyLowPass) {
       defines.emplace_back("GLOBE_PART 8");
     } else if (variant == kSkyLowPart || variant == kSkyLowSunPart) {
@@ -441,7 +442,7 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
     const bool blocks =
         behind ? variant >= kClassifyExport && variant <= kClassifyExportLandSea
                : variant <= kClassifyExportLandSea || variant == kBlockFill;
-    if (variant == kListedPixels || variant == kOpenSeaLattice)
+    if (variant == kListedPixels || variant == kOpenSeaLatticePoints || variant == kSeaLatticePoints)
       p = gl::Program({{GL_COMPUTE_SHADER, "render/globe.frag"}}, defines);
     else
       p = gl::Program({{GL_VERTEX_SHADER, blocks ? "render/blocks.vert" : "render/fullscreen.vert"},
@@ -592,7 +593,7 @@ bool GlobeRenderer::uploadClassifyingBlocks(const geo::CameraView& view, const F
   }
   blockRanges_ = {};
   blockCounts_ = {};
-  openSeaLattice_.clear();
+  seaLattice_.clear();
   if (grid) return false;
   if (maskPyramidFuture_.valid()) maskPyramid_ = maskPyramidFuture_.get();
   std::vector<float> vertices;
@@ -614,7 +615,8 @@ bool GlobeRenderer::uploadClassifyingBlocks(const geo::CameraView& view, const F
     blockRanges_.perPixel = append(GlobeBlockClass::PerPixel);
     blockRanges_.miss = append(GlobeBlockClass::Miss);
     blockRanges_.fills = {append(GlobeBlockClass::Land), append(GlobeBlockClass::Sea), append(GlobeBlockClass::OpenSea)};
-    if (openSeaPart_ && openSeaLatticeOn_) openSeaLattice_.prepare(b, f.width, f.height);
+    // (The sea's part only where the land's and the sea's are split off: frameLandSea_.)
+    if (seaLatticeOn_) seaLattice_.prepare(b, f.width, f.height, landSeaParts_);
   } else {
     vertices = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};  // fullscreen.vert's triangle
     blockRanges_.perPixel = {0, 3};
@@ -681,6 +683,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   if (countPartSamples_ && !landOnly) partSamples_.clear();
   const bool listed = listsScatteredParts();
   std::vector<int> listedCounts;
+  bool latticeShaded = false;
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const int count = partStencilCount(parts[k], grid);
     if ((parts[k] == kGlobePart0 + 4) != landOnly && which != GlobeParts::all) continue;
@@ -694,7 +697,10 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
                                                            "globe land", "globe sea",  "globe open sea"};
     const char* pass = kPassNames.at(static_cast<std::size_t>(parts[k] - kGlobePart0 - 1));
     glStencilFunc(GL_EQUAL, count, 0xff);
-    if (parts[k] == kGlobePart0 + 6) shadeOpenSeaLattice(view, f);
+    if (parts[k] == kGlobePart0 + 5 || parts[k] == kGlobePart0 + 6) {
+      drawSeaLattice(view, f, !latticeShaded, parts[k] == kGlobePart0 + 5 ? "sea lattice" : "open sea lattice");
+      latticeShaded = true;
+    }
     if (timer_ != nullptr) timer_->mark(pass);
     const bool readsSkyLow = skyLow && parts[k] == kGlobePart0 + 1;
     const gl::Program& globe = globeProgram(grid, readsSkyLow ? kSkyLowPart : parts[k]);
@@ -723,17 +729,22 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   if (grid) glEndConditionalRender();
 }
 
-void GlobeRenderer::shadeOpenSeaLattice(const geo::CameraView& view, const FrameInput& f) {
-  if (openSeaLattice_.empty()) return;
-  if (timer_ != nullptr) timer_->mark("globe open sea lattice");
-  const gl::Program& shade = globeProgram(false, kOpenSeaLattice);
-  setGlobeUniforms(shade, view, f);
-  openSeaLattice_.shade(shade, f.exposure);
-  const auto draw = [this] { openSeaLattice_.drawInterpolated(); };
+void GlobeRenderer::drawSeaLattice(const geo::CameraView& view, const FrameInput& f, bool first, const char* name) {
+  if (seaLattice_.empty()) return;
+  if (timer_ != nullptr) timer_->mark("globe sea lattice");
+  if (first)
+    seaLattice_.shade(
+        [&](bool sea) -> const gl::Program& {
+          const gl::Program& p = globeProgram(false, sea ? kSeaLatticePoints : kOpenSeaLatticePoints);
+          setGlobeUniforms(p, view, f);
+          return p;
+        },
+        f.exposure);
+  const auto draw = [this] { seaLattice_.drawInterpolated(); };
   if (!countPartSamples_)
     draw();
   else
-    partSamples_.emplace_back("open sea lattice", gl::queryResult(GL_SAMPLES_PASSED, draw));
+    partSamples_.emplace_back(name, gl::queryResult(GL_SAMPLES_PASSED, draw));
 }
 
 std::optional<std::array<int, 4>> sunDiscScissor(const geo::CameraView& view, int width, int height,

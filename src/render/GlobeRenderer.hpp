@@ -33,7 +33,7 @@
 #include "render/LandMaskTexture.hpp"
 #include "render/OceanPatterns.hpp"
 #include "render/OceanRenderer.hpp"
-#include "render/OpenSeaLattice.hpp"
+#include "render/SeaLattice.hpp"
 #include "render/OpenSeaMap.hpp"
 #include "render/TerrainRenderer.hpp"
 #include "render/UncoveredPixels.hpp"
@@ -198,13 +198,14 @@ class GlobeRenderer {
   /// Above 20 km, pixels in the open deep sea (render/OpenSeaMap) go to a part of their own
   /// (render/globe.frag); false shades them with the rest of the surface (the tests' reference).
   void setOpenSeaPart(bool on) { openSeaPart_ = on; }
-  /// Above 20 km, the open sea's blocks shaded at a lattice every 4 pixels and interpolated
-  /// where that holds (render/OpenSeaLattice; default on); off: per pixel (the tests' reference).
-  void setOpenSeaLattice(bool on) { openSeaLatticeOn_ = on; }
-  /// The open sea's blocks the last frame listed for the lattice and how many it interpolated
+  /// Above 20 km, the sea's and the open sea's blocks shaded at a lattice every 4 pixels and
+  /// interpolated where that holds (render/SeaLattice; default on); off: per pixel (the tests'
+  /// reference).
+  void setSeaLattice(bool on) { seaLatticeOn_ = on; }
+  /// The sea's blocks the last frame listed for the lattice and how many it interpolated
   /// (reads the flags back: tests).
-  [[nodiscard]] std::pair<std::size_t, std::size_t> openSeaLatticeBlocks() const {
-    return {openSeaLattice_.listedBlocks(), openSeaLattice_.interpolatedBlocks()};
+  [[nodiscard]] std::pair<std::size_t, std::size_t> seaLatticeBlocks() const {
+    return {seaLattice_.listedBlocks(), seaLattice_.interpolatedBlocks()};
   }
   /// From 20 km to kAerialTableMaxHeightM the globe's parts read the aerial perspective to sea
   /// level from a table made per frame (render/AerialTable; default on); off: from the
@@ -337,13 +338,14 @@ class GlobeRenderer {
   /// the sky part that reads it (GLOBE_SKY_LOW); 16 the depth of blocks classed on the CPU
   /// (GLOBE_PART_BLOCK_FILL); 17 the edge part as a compute shader over listed pixels
   /// (GLOBE_COMPUTE); 18 the sky part with the Sun's disc (GLOBE_SKY_SUN_DISC: 15 leaves it
-  /// out), drawn over the Sun's box only (drawSunDisc); 19 the open sea's part as a compute
-  /// shader at the lattice's points (GLOBE_LATTICE, render/OpenSeaLattice). `variant` in [0, kGlobeVariants). Above
+  /// out), drawn over the Sun's box only (drawSunDisc); 19 and 20 the open sea's and the sea's
+  /// parts as compute shaders at the lattice's points (GLOBE_LATTICE, render/SeaLattice).
+  /// `variant` in [0, kGlobeVariants). Above
   /// the ceiling the classifying variants draw the triangles of blocksVao_ (render/blocks.vert),
   /// below it the one draw (6, 7) render/UncoveredPixels' blocks.
-  static constexpr int kGlobeVariants = 20;
+  static constexpr int kGlobeVariants = 21;
   static constexpr int kSkyLowPass = 14, kSkyLowPart = 15, kBlockFill = 16, kListedPixels = 17, kSkyLowSunPart = 18;
-  static constexpr int kOpenSeaLattice = 19;
+  static constexpr int kOpenSeaLatticePoints = 19, kSeaLatticePoints = 20;
   static constexpr int kClassifyExport = 6, kClassifyExportLandSea = 7;
   /// Part k (1 sky ... 6 open sea) is variant kGlobePart0 + k.
   static constexpr int kGlobePart0 = 7;
@@ -357,9 +359,11 @@ class GlobeRenderer {
   /// (kSkyLowSunPart) over the sky just drawn without it: scissored to sunDiscScissor's box, or
   /// over the whole screen where that has none or setSunDiscBox(false).
   void drawSunDisc(const geo::CameraView& view, const FrameInput& f, bool grid);
-  /// Above the ceiling, before the open sea's part (its stencil test set): the lattice's
-  /// points shaded, its blocks checked and drawn interpolated (render/OpenSeaLattice).
-  void shadeOpenSeaLattice(const geo::CameraView& view, const FrameInput& f);
+  /// Above the ceiling, before the sea's or the open sea's part (its stencil test set): the
+  /// lattice's points shaded and its blocks checked (before the first of the two), and the
+  /// part's blocks that passed drawn interpolated (render/SeaLattice); `name`: the draw's in
+  /// partSamples_.
+  void drawSeaLattice(const geo::CameraView& view, const FrameInput& f, bool first, const char* name);
   /// Whether this frame splits the land and the sea off the surface part (landSeaParts_ and
   /// the split pays): their classifying step costs four elevation lookups a pixel, which a
   /// view mostly of the open deep sea (the limb over the Atlantic) does not win back. From an
@@ -484,8 +488,8 @@ class GlobeRenderer {
   std::unique_ptr<OpenSeaMap> openSeaMap_;
   std::unique_ptr<OpenSeaTexture> openSeaTexture_;
   bool openSeaPart_ = true;
-  OpenSeaLattice openSeaLattice_;  ///< this frame's lattice over the open sea's blocks
-  bool openSeaLatticeOn_ = true;
+  SeaLattice seaLattice_;  ///< this frame's lattice over the sea's blocks
+  bool seaLatticeOn_ = true;
   bool landSeaParts_ = true;
   bool landAfterTiles_ = true;
   bool tilesOverLandClass_ = true;  ///< setTilesOverLandClass

@@ -1,4 +1,4 @@
-#include "render/OpenSeaLattice.hpp"
+#include "render/SeaLattice.hpp"
 
 #include <algorithm>
 
@@ -7,8 +7,8 @@
 
 namespace og::render {
 
-static_assert(OpenSeaLattice::kBlockPx == kGlobeBlockPx, "the lattice's blocks are GlobeBlocks'");
-static_assert(OpenSeaLattice::kBlockPx == 2 * OpenSeaLattice::kLatticePx, "a block spans two lattice spacings");
+static_assert(SeaLattice::kBlockPx == kGlobeBlockPx, "the lattice's blocks are GlobeBlocks'");
+static_assert(SeaLattice::kBlockPx == 2 * SeaLattice::kLatticePx, "a block spans two lattice spacings");
 
 namespace {
 constexpr std::uint32_t packed(int x, int y) {
@@ -27,33 +27,35 @@ void upload(gl::Buffer& buffer, std::size_t& capacity, const std::vector<std::ui
 }
 }  // namespace
 
-void OpenSeaLattice::prepare(const GlobeBlocks& blocks, int width, int height) {
+void SeaLattice::prepare(const GlobeBlocks& blocks, int width, int height, bool sea) {
   clear();
   ensureTargets(width, height);
-  std::fill(listed_.begin(), listed_.end(), std::uint8_t{0});
+  std::fill(pointMarks_.begin(), pointMarks_.end(), std::uint8_t{0});
+  const auto markAt = [&](int x, int y) -> std::uint8_t& {
+    return pointMarks_[static_cast<std::size_t>(y) * static_cast<std::size_t>(latticeColumns_) + static_cast<std::size_t>(x)];
+  };
   const int x0 = blocks.rect[0] / kBlockPx, y0 = blocks.rect[1] / kBlockPx;  // (multiples of the block)
   for (int j = 0; j < blocks.rows; ++j)
     for (int i = 0; i < blocks.columns; ++i) {
-      const std::size_t index = static_cast<std::size_t>(j) * static_cast<std::size_t>(blocks.columns) + static_cast<std::size_t>(i);
-      if (blocks.classes[index] != GlobeBlockClass::OpenSea) continue;
+      const GlobeBlockClass c =
+          blocks.classes[static_cast<std::size_t>(j) * static_cast<std::size_t>(blocks.columns) + static_cast<std::size_t>(i)];
+      if (c != GlobeBlockClass::OpenSea && (c != GlobeBlockClass::Sea || !sea)) continue;
       const int bx = x0 + i, by = y0 + j;
       blocks_.push_back(packed(bx, by));
       for (int b = 0; b < 3; ++b)
-        for (int a = 0; a < 3; ++a) {
-          const int px = 2 * bx + a, py = 2 * by + b;
-          std::uint8_t& seen = listed_[static_cast<std::size_t>(py) * static_cast<std::size_t>(latticeColumns_) + static_cast<std::size_t>(px)];
-          if (seen == 0) points_.push_back(packed(px, py));
-          seen = 1;
-        }
+        for (int a = 0; a < 3; ++a) markAt(2 * bx + a, 2 * by + b) |= c == GlobeBlockClass::Sea ? 2 : 1;
     }
+  for (int y = 0; y < latticeRows_; ++y)
+    for (int x = 0; x < latticeColumns_; ++x)
+      if (const std::uint8_t m = markAt(x, y); m != 0) points_[m >= 2 ? 1 : 0].push_back(packed(x, y));
 }
 
-void OpenSeaLattice::ensureTargets(int width, int height) {
+void SeaLattice::ensureTargets(int width, int height) {
   const int columns = (width + kBlockPx - 1) / kBlockPx, rows = (height + kBlockPx - 1) / kBlockPx;
   if (columns == blockColumns_ && rows == blockRows_) return;
   blockColumns_ = columns, blockRows_ = rows;
   latticeColumns_ = 2 * columns + 1, latticeRows_ = 2 * rows + 1;
-  listed_.assign(static_cast<std::size_t>(latticeColumns_) * static_cast<std::size_t>(latticeRows_), 0);
+  pointMarks_.assign(static_cast<std::size_t>(latticeColumns_) * static_cast<std::size_t>(latticeRows_), 0);
   lattice_ = gl::createTexture(GL_TEXTURE_2D);
   glTextureStorage2D(lattice_.id(), 1, GL_RGBA32F, latticeColumns_, latticeRows_);
   glTextureParameteri(lattice_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -66,25 +68,34 @@ void OpenSeaLattice::ensureTargets(int width, int height) {
   glTextureParameteri(flags_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);  // incomplete otherwise)
 }
 
-void OpenSeaLattice::shade(const gl::Program& shade, double exposure) {
-  if (empty()) return;
-  upload(pointsBuffer_, pointsBytes_, points_);
-  upload(blocksBuffer_, blocksBytes_, blocks_);
-  // The points, as globe.frag's listed pixels: rows of at most kGroupsARow groups.
-  const auto groups = static_cast<GLuint>((points_.size() + kGroup - 1) / kGroup);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kGlobePixelsBinding, pointsBuffer_.id());
-  glBindImageTexture(0, lattice_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  shade.use();
+void SeaLattice::shadePoints(const std::vector<std::uint32_t>& points, const gl::Program& program) {
+  // As globe.frag's listed pixels: rows of at most kGroupsARow groups.
+  const auto groups = static_cast<GLuint>((points.size() + kGroup - 1) / kGroup);
+  program.use();
   glDispatchCompute(std::min(groups, kGroupsARow), (groups + kGroupsARow - 1) / kGroupsARow, 1);
+}
+
+void SeaLattice::shade(const std::function<const gl::Program&(bool sea)>& program, double exposure) {
+  if (empty()) return;
+  glBindImageTexture(0, lattice_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  for (const bool sea : {false, true}) {
+    const std::vector<std::uint32_t>& points = points_[sea ? 1 : 0];
+    if (points.empty()) continue;
+    const gl::Program& p = program(sea);
+    upload(pointsBuffer_[sea ? 1 : 0], pointsBytes_[sea ? 1 : 0], points);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kGlobePixelsBinding, pointsBuffer_[sea ? 1 : 0].id());
+    shadePoints(points, p);
+  }
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  upload(blocksBuffer_, blocksBytes_, blocks_);
   // The blocks' flags: 0 (per pixel) unless the check passes one.
   if (check_.id() == 0) {  // (compiled on first use, as the globe's variants are)
-    check_ = gl::Program({{GL_COMPUTE_SHADER, "render/open_sea_lattice.comp"}});
-    interpolate_ = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "render/open_sea_lattice.frag"}});
+    check_ = gl::Program({{GL_COMPUTE_SHADER, "render/sea_lattice.comp"}});
+    interpolate_ = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "render/sea_lattice.frag"}});
   }
   const GLubyte zero = 0;
   glClearTexImage(flags_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, &zero);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kOpenSeaBlocksBinding, blocksBuffer_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kSeaLatticeBlocksBinding, blocksBuffer_.id());
   glBindImageTexture(0, lattice_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
   glBindImageTexture(1, flags_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
   check_.set("uExposure", static_cast<float>(exposure));
@@ -96,10 +107,10 @@ void OpenSeaLattice::shade(const gl::Program& shade, double exposure) {
   glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
 }
 
-void OpenSeaLattice::drawInterpolated() {
+void SeaLattice::drawInterpolated() {
   if (empty()) return;
-  glBindTextureUnit(gl::kUnitOpenSeaLattice, lattice_.id());
-  glBindTextureUnit(gl::kUnitOpenSeaBlocks, flags_.id());
+  glBindTextureUnit(gl::kUnitSeaLattice, lattice_.id());
+  glBindTextureUnit(gl::kUnitSeaLatticeBlocks, flags_.id());
   GLint writeMask = 0;
   glGetIntegerv(GL_STENCIL_WRITEMASK, &writeMask);
   glStencilMask(0xff);
@@ -110,7 +121,7 @@ void OpenSeaLattice::drawInterpolated() {
   glStencilMask(static_cast<GLuint>(writeMask));
 }
 
-std::size_t OpenSeaLattice::interpolatedBlocks() const {
+std::size_t SeaLattice::interpolatedBlocks() const {
   if (empty()) return 0;
   std::vector<std::uint8_t> flags(static_cast<std::size_t>(blockColumns_) * static_cast<std::size_t>(blockRows_));
   glPixelStorei(GL_PACK_ALIGNMENT, 1);

@@ -1,5 +1,5 @@
 #version 450 core
-// Which of the open sea's blocks of 8 x 8 pixels the lattice may shade (render/OpenSeaLattice):
+// Which of the sea's blocks of 8 x 8 pixels the lattice may shade (render/SeaLattice):
 // a block's nine lattice points (every 4 pixels, render/globe.frag's GLOBE_LATTICE) against
 // what its four corners alone interpolate bilinearly at the other five, in display levels (the
 // frame's exposure, the tone curve and sRGB, 0-255). Where those stay within uMaxLevels the
@@ -11,9 +11,9 @@
 layout(local_size_x = 64) in;
 layout(binding = 0, rgba32f) uniform readonly image2D uLattice;
 layout(binding = 1, r8ui) uniform writeonly uimage2D uBlockInterpolated;
-layout(std430, binding = OG_OPEN_SEA_BLOCKS_BINDING) readonly buffer OpenSeaBlocks {
+layout(std430, binding = OG_SEA_LATTICE_BLOCKS_BINDING) readonly buffer SeaLatticeBlocks {
   uint uBlockCount;
-  uint uUnused[3];  // (render/OpenSeaLattice lays its lists out as globe_pixels.glsl's)
+  uint uUnused[3];  // (render/SeaLattice lays its lists out as globe_pixels.glsl's)
   uint uBlocks[];  // x | y << 16, in blocks from the frame's lower-left corner
 };
 uniform float uExposure;
