@@ -1,6 +1,8 @@
 #version 450 core
-// HDR radiance -> 8-bit sRGB for PNG output and the window. Multisampled radiance is tone
-// mapped per sample and then averaged: averaging linear HDR first lets a bright sample (sky)
+// HDR radiance -> 8-bit sRGB for PNG output and the window (render/GlobeRenderer's display
+// target, GL_SRGB8_ALPHA8: with one sample its store encodes sRGB, GL_FRAMEBUFFER_SRGB on;
+// with several, written as encoded here). Multisampled radiance is tone mapped per sample and
+// then averaged: averaging linear HDR first lets a bright sample (sky)
 // dominate the pixel, so bright-dark edges step again after the tone curve.
 #include "common/color.glsl"
 #ifdef TONEMAP_MULTISAMPLE
@@ -19,6 +21,6 @@ void main() {
   fragColor = vec4(linearToSrgb(sum / float(n)), 1.0);
 #else
   vec4 hdr = texelFetch(uRadiance, p, 0);
-  fragColor = vec4(linearToSrgb(toneMap(hdr.rgb, uExposure)), 1.0);
+  fragColor = vec4(toneMap(hdr.rgb, uExposure), 1.0);  // (the sRGB target's store encodes it)
 #endif
 }
