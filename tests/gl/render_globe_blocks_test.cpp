@@ -198,13 +198,7 @@ TEST(GlobeRender, BlocksClassedOnTheCpuKeepThePicture) {
     views.insert(views.end(), kHighViews.begin(), kHighViews.end() - 1);
     for (const View& v : views) {
       const std::string name = std::string(v.name) + (path == 1 ? " (draws per step)" : "");
-      const render::FrameInput f = frameOf(v);
-      r.setGlobeBlocks(false);
-      r.render(f);
-      const io::ImageRgba8 reference = r.display();
-      r.setGlobeBlocks(true);
-      r.render(f);
-      const io::ImageRgba8 blocks = r.display();
+      const test::DisplayOffAndOn images = test::displayOffAndOn(r, frameOf(v), [&r](bool on) { r.setGlobeBlocks(on); });
       const auto& counts = r.globeBlockCounts();
       // (From 4000 km at this size a block spans ~500 km: a third as many fill; without the
       // pyramid, whose lakes fade, a tenth.)
@@ -214,18 +208,12 @@ TEST(GlobeRender, BlocksClassedOnTheCpuKeepThePicture) {
       if (std::string(v.name) == "limb-400km") {
         EXPECT_GT(counts[static_cast<std::size_t>(render::GlobeBlockClass::Space)], 50) << name << ": space's blocks";
       }
-      int over2 = 0, maxDiff = 0;
-      for (std::size_t i = 0; i < blocks.pixels.size(); i += 4) {
-        int d = 0;
-        for (std::size_t c = 0; c < 3; ++c) d = std::max(d, std::abs(int{blocks.pixels[i + c]} - int{reference.pixels[i + c]}));
-        over2 += d > 2 ? 1 : 0;
-        maxDiff = std::max(maxDiff, d);
-      }
-      EXPECT_LE(over2, 3) << name << " (largest difference " << maxDiff << " levels)";
-      if (over2 > 3) {
+      const test::LevelChange change = test::levelChange(images.on, images.off, 2);
+      EXPECT_LE(change.over, 3) << name << " (largest difference " << change.worst << " levels)";
+      if (change.over > 3) {
         const std::string prefix = std::string(OG_TEST_OUT_DIR) + "/globe_blocks_" + v.name + (path == 1 ? "_steps" : "");
-        io::writePng(prefix + "_off.png", reference);
-        io::writePng(prefix + "_on.png", blocks);
+        io::writePng(prefix + "_off.png", images.off);
+        io::writePng(prefix + "_on.png", images.on);
       }
     }
   }
@@ -308,27 +296,17 @@ TEST(GlobeRender, SeaLatticeKeepsThePicture) {
     f.wind = geo::Wind::blowingTowards(c.windMs, 60.0);
     r.setWindLayers(c.layers ? std::make_shared<data::WindLayers>(data::WindLayers::load({"default"}, {}, std::nullopt))
                              : nullptr);
-    r.setSeaLattice(false);
-    r.render(f);
-    const io::ImageRgba8 off = r.display();
-    r.setSeaLattice(true);
-    r.render(f);
-    const io::ImageRgba8 on = r.display();
+    const test::DisplayOffAndOn images = test::displayOffAndOn(r, f, [&r](bool on) { r.setSeaLattice(on); });
     const auto [listed, interpolated] = r.seaLatticeBlocks();
-    int worst = 0, changed = 0;
-    for (std::size_t i = 0; i < on.pixels.size(); ++i) {
-      const int d = std::abs(int{on.pixels[i]} - int{off.pixels[i]});
-      worst = std::max(worst, d);
-      changed += d > 0 ? 1 : 0;
-    }
+    const test::LevelChange change = test::levelChange(images.on, images.off, 0);
     const double share = listed > 0 ? static_cast<double>(interpolated) / static_cast<double>(listed) : 0.0;
-    std::printf("%s: %zu of %zu blocks interpolated; %d channels changed, by at most %d levels\n", c.view.name,
-                interpolated, listed, changed, worst);
+    std::printf("%s: %zu of %zu blocks interpolated; %d pixels changed, by at most %d levels\n", c.view.name,
+                interpolated, listed, change.over, change.worst);
     EXPECT_GT(listed, 50u) << c.view.name;
     if (c.windMs >= 1.0) EXPECT_GE(share, c.interpolatedShare) << c.view.name;
     else EXPECT_LE(share, c.interpolatedShare) << c.view.name << ": the calm sea's narrow glint";
-    EXPECT_LE(worst, 1) << c.view.name;
-    if (worst > 1) test::savePng(r, std::string("globe_sea_lattice_") + c.view.name);
+    EXPECT_LE(change.worst, 1) << c.view.name;
+    if (change.worst > 1) test::savePng(r, std::string("globe_sea_lattice_") + c.view.name);
   }
 }
 
