@@ -360,10 +360,10 @@ void GlobeRenderer::render(const FrameInput& f) {
   tonemap.set("uExposure", static_cast<float>(f.exposure));
   glBindTextureUnit(gl::kUnitToneRadiance, hdr_.color.id());
   tonemap.use();
-  // One sample: the store encodes sRGB (llvmpipe's vector code: the shader's pow() was 3.3 ms
-  // of 9.3 at 1280 x 720, one thread). Several: the shader encodes each before the average,
-  // written as it is. Off again after: read-backs and blits take the bytes as stored.
-  if (hdr_.samples == 1) glEnable(GL_FRAMEBUFFER_SRGB);
+  // The store encodes sRGB (llvmpipe's vector code: the shader's pow() was 3.3 ms of 9.3 at
+  // 1280 x 720, one thread; several samples are averaged encoded, then decoded for it: tonemap.frag).
+  // Off again after: read-backs and blits take the bytes as stored.
+  glEnable(GL_FRAMEBUFFER_SRGB);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDisable(GL_FRAMEBUFFER_SRGB);
   glDisable(GL_SCISSOR_TEST);
