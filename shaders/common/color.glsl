@@ -9,9 +9,3 @@ vec3 linearToSrgb(vec3 c) {
   c = clamp(c, 0.0, 1.0);
   return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
 }
-
-// The inverse of linearToSrgb on [0, 1].
-vec3 srgbToLinear(vec3 s) {
-  s = clamp(s, 0.0, 1.0);
-  return mix(s / 12.92, pow((s + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), s));
-}

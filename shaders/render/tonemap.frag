@@ -1,7 +1,7 @@
 #version 450 core
 // HDR radiance -> 8-bit sRGB for PNG output and the window (render/GlobeRenderer's display
 // target, GL_SRGB8_ALPHA8, whose store encodes sRGB: GL_FRAMEBUFFER_SRGB on for this draw).
-// Multisampled radiance is tone mapped and encoded per sample, then averaged: averaging linear HDR first lets a bright sample (sky)
+// Multisampled radiance is tone mapped per sample, then averaged: averaging linear HDR first lets a bright sample (sky)
 // dominate the pixel, so bright-dark edges step again after the tone curve.
 #include "common/color.glsl"
 #ifdef TONEMAP_MULTISAMPLE
@@ -16,10 +16,8 @@ void main() {
 #ifdef TONEMAP_MULTISAMPLE
   int n = textureSamples(uRadiance);
   vec3 sum = vec3(0.0);
-  for (int i = 0; i < n; ++i) sum += linearToSrgb(toneMap(texelFetch(uRadiance, p, i).rgb, uExposure));
-  // The average of the encoded samples, handed to the store's encoder as the one-sample path's
-  // values are (a pixel whose samples agree gets the same bytes either way).
-  fragColor = vec4(srgbToLinear(sum / float(n)), 1.0);
+  for (int i = 0; i < n; ++i) sum += toneMap(texelFetch(uRadiance, p, i).rgb, uExposure);
+  fragColor = vec4(sum / float(n), 1.0);  // (the sRGB target's store encodes it)
 #else
   vec4 hdr = texelFetch(uRadiance, p, 0);
   fragColor = vec4(toneMap(hdr.rgb, uExposure), 1.0);  // (the sRGB target's store encodes it)

@@ -361,8 +361,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   glBindTextureUnit(gl::kUnitToneRadiance, hdr_.color.id());
   tonemap.use();
   // The store encodes sRGB (llvmpipe's vector code: the shader's pow() was 3.3 ms of 9.3 at
-  // 1280 x 720, one thread; several samples are averaged encoded, then decoded for it: tonemap.frag).
-  // Off again after: read-backs and blits take the bytes as stored.
+  // 1280 x 720, one thread). Off again after: read-backs and blits take the bytes as stored.
   glEnable(GL_FRAMEBUFFER_SRGB);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDisable(GL_FRAMEBUFFER_SRGB);
