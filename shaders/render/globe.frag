@@ -461,8 +461,10 @@ void main() {
 // surfaceRadiance with a constant for which they are, so that only the land's or the sea's
 // code is compiled in (and no per-sample coast test); the open deep sea's part also without
 // the water column (deeper than the water's reach there: shadeSea).
+int gClassRaysHit = 4;  // shadeClassPixel's rays that hit the ellipsoid (the lattice's)
 void shadeClassPixel() {
   PixelRays rays = traceRays();
+  gClassRaysHit = rays.nHit;
   vec3 hitDir = vec3(0.0);
   float hitT = 0.0;
   for (int i = 0; i < 4; ++i) {
@@ -477,23 +479,58 @@ void shadeClassPixel() {
 #ifdef GLOBE_LATTICE
 // The sea's or the open sea's part at the points of a lattice every SEA_LATTICE_PX pixels
 // (render/SeaLattice: listed by the CPU around its sea and open-sea blocks), each shaded as a
-// pixel centred there; the radiance into the lattice's texel, the whitecaps in alpha, or -1 where the glint's
-// lobe is too narrow for the lattice (a calm sea: its slopes' standard deviation, across the
-// wind, under SEA_LATTICE_MIN_LOBE_PX half-pixel turns of the reflection, whose Gaussian
-// in pixels is then under that many pixels wide and the lattice's linear interpolation of it
-// off by over ~1/200 of its peak; the Sun's disc, which widens it, left out).
+// pixel centred there: the radiance into the lattice's texel, the whitecaps in alpha, or -1
+// where the lattice cannot stand for the pixels around the point (render/sea_lattice.comp then
+// leaves its blocks per pixel):
+//  * a ray of the point misses the ellipsoid (a partial block's point past the frame's edge
+//    off the limb), or the radiance is not finite;
+//  * the glint's lobe is too narrow: the slopes' standard deviation across the wind under
+//    SEA_LATTICE_MIN_LOBE_PX half-turns of the reflection a pixel, the Gaussian of the glint
+//    then under that many pixels wide and the lattice's linear interpolation of it off by over
+//    ~1/200 of its peak (a calm sea; the Sun's disc, which widens it, left out). A pixel turns
+//    the reflection by the view's turn plus twice the normal's (the ground's arc a pixel,
+//    widened at grazing incidence: ~8 times the view's near the limb from 400 km);
+//  * the sea's part: the floor within the water's reach and its depth not linear over the
+//    lattice's spacing (its second difference over half the spacing on either side above
+//    SEA_LATTICE_MAX_FLOOR_BEND_M): a shoal or the coast's lift narrower than the spacing,
+//    which the check between the lattice's points could miss.
 const float SEA_LATTICE_PX = 4.0;
 const float SEA_LATTICE_MIN_LOBE_PX = 20.0;
+const float SEA_LATTICE_MAX_FLOOR_BEND_M = 0.5;
+vec3 latticeRay(vec2 ndc) { return normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp); }
+// The floor's depth along a ray of the frame (m; deep where it misses).
+float latticeFloorDepthM(vec2 ndc) {
+  vec3 dir = latticeRay(ndc);
+  float t = intersectEllipsoid(dir);
+  return t < 0.0 ? 1e4 : seaFloorDepthM(ellipsoidNormal(dir, t));
+}
+bool floorBendsWithinReach(vec2 ndc) {
+#if GLOBE_PART == GLOBE_PART_SEA
+  vec2 halfStep = 0.5 * SEA_LATTICE_PX * uPixelNdc;
+  float d = latticeFloorDepthM(ndc);
+  float dx0 = latticeFloorDepthM(ndc - vec2(halfStep.x, 0.0)), dx1 = latticeFloorDepthM(ndc + vec2(halfStep.x, 0.0));
+  float dy0 = latticeFloorDepthM(ndc - vec2(0.0, halfStep.y)), dy1 = latticeFloorDepthM(ndc + vec2(0.0, halfStep.y));
+  float reach = waterMaxPathM(uWaterAttenuation, WATER_EPSILON);
+  bool within = min(d, min(min(dx0, dx1), min(dy0, dy1))) < reach;
+  return within && max(abs(dx0 + dx1 - 2.0 * d), abs(dy0 + dy1 - 2.0 * d)) > SEA_LATTICE_MAX_FLOOR_BEND_M;
+#else
+  return false;  // (the open sea's floor is beyond reach)
+#endif
+}
 void main() {
   uint i = (gl_WorkGroupID.y * GLOBE_PIXELS_ROW + gl_WorkGroupID.x) * GLOBE_PIXELS_GROUP + gl_LocalInvocationID.x;
   if (i >= uCount) return;
   ivec2 point = ivec2(uPixels[i] & 0xffffu, uPixels[i] >> 16);
   vNdc = vec2(point) * (SEA_LATTICE_PX * uPixelNdc) - 1.0;
   shadeClassPixel();
-  // The reflection turns twice as far as the facet; a pixel turns the view by about its angle.
-  float pixelRad = uPixelNdc.y * uTanHalfFov.y;
-  bool wide = sqrt(min(gSeaSigma2.x, gSeaSigma2.y)) >= SEA_LATTICE_MIN_LOBE_PX * 0.5 * pixelRad;
-  imageStore(uRadianceImage, point, vec4(fragRadiance.rgb, wide ? fragAux.r : -1.0));
+  vec3 dir = latticeRay(vNdc);
+  float t = intersectEllipsoid(dir);
+  vec3 n = ellipsoidNormal(dir, max(t, 0.0));
+  float turnRad = uPixelNdc.y * uTanHalfFov.y + 2.0 * groundFootprintRad(dir, max(t, 0.0), n);
+  bool wide = sqrt(min(gSeaSigma2.x, gSeaSigma2.y)) >= SEA_LATTICE_MIN_LOBE_PX * 0.5 * turnRad;
+  bool finite = !any(isnan(fragRadiance.rgb)) && !any(isinf(fragRadiance.rgb));
+  bool usable = gClassRaysHit == 4 && t >= 0.0 && finite && wide && !floorBendsWithinReach(vNdc);
+  imageStore(uRadianceImage, point, usable ? vec4(fragRadiance.rgb, fragAux.r) : vec4(0.0, 0.0, 0.0, -1.0));
 }
 #else
 void main() { shadeClassPixel(); }

@@ -112,23 +112,6 @@ inline DisplayOffAndOn displayOffAndOn(render::GlobeRenderer& r, const render::F
   return images;
 }
 
-/// How two display images of the same size differ: the largest difference of a pixel's colour
-/// channels (levels of 255) and how many pixels differ by more than `bound` levels.
-struct LevelChange {
-  int worst = 0, over = 0;
-};
-inline LevelChange levelChange(const io::ImageRgba8& a, const io::ImageRgba8& b, int bound) {
-  LevelChange c;
-  const std::size_t n = std::min(a.pixels.size(), b.pixels.size());
-  for (std::size_t i = 0; i + 3 < n; i += 4) {
-    int d = 0;
-    for (std::size_t k = 0; k < 3; ++k) d = std::max(d, std::abs(int{a.pixels[i + k]} - int{b.pixels[i + k]}));
-    c.worst = std::max(c.worst, d);
-    c.over += d > bound ? 1 : 0;
-  }
-  return c;
-}
-
 /// How two radiance images of the same size differ per pixel: the largest relative change of
 /// its first `channels` channels, |a - b| / max(|a|, floor), the worst and mean over the image
 /// and how many pixels change by more than `bound`.
