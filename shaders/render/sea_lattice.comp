@@ -4,9 +4,11 @@
 // what its four corners alone interpolate bilinearly at the other five, in display levels (the
 // frame's exposure, the tone curve and sRGB, 0-255). Where those stay within uMaxLevels the
 // lattice's own interpolation, at half the spacing, errs about four times less (a smooth
-// radiance's error grows as the spacing's square): the block is interpolated. A point the
-// lattice marked (alpha < 0: a calm sea's narrow glint) keeps the block per pixel, as does a
-// block none of whose points was listed (the flags are cleared to 0 every frame).
+// radiance's error grows as the spacing's square), and within uMaxRelative of the radiance
+// itself (an EXR's linear values, regraded, or another exposure): the block is interpolated.
+// A point the lattice marked (alpha < 0: globe.frag's GLOBE_LATTICE says why) keeps the block
+// per pixel, as does a block none of whose points was listed (the flags are cleared to 0
+// every frame).
 #include "common/color.glsl"
 layout(local_size_x = 64) in;
 layout(binding = 0, rgba32f) uniform readonly image2D uLattice;
@@ -18,6 +20,7 @@ layout(std430, binding = OG_SEA_LATTICE_BLOCKS_BINDING) readonly buffer SeaLatti
 };
 uniform float uExposure;
 uniform float uMaxLevels;
+uniform float uMaxRelative;
 
 vec3 displayLevels(vec3 radiance) { return 255.0 * linearToSrgb(toneMap(radiance, uExposure)); }
 
@@ -36,10 +39,12 @@ void main() {
   const int mids[5] = int[5](1, 3, 4, 5, 7);
   vec4 predicted[5] = vec4[5](0.5 * (v[0] + v[2]), 0.5 * (v[0] + v[6]), 0.25 * (v[0] + v[2] + v[6] + v[8]),
                               0.5 * (v[2] + v[8]), 0.5 * (v[6] + v[8]));
-  float worst = 0.0;
+  float worst = 0.0, worstRelative = 0.0;
   for (int m = 0; m < 5; ++m) {
     vec3 d = abs(displayLevels(predicted[m].rgb) - displayLevels(v[mids[m]].rgb));
     worst = max(worst, max(d.r, max(d.g, d.b)));
+    vec3 r = abs(predicted[m].rgb - v[mids[m]].rgb) / max(v[mids[m]].rgb, vec3(1e-4));
+    worstRelative = max(worstRelative, max(r.r, max(r.g, r.b)));
   }
-  imageStore(uBlockInterpolated, block, uvec4(ok && worst <= uMaxLevels ? 1u : 0u));
+  imageStore(uBlockInterpolated, block, uvec4(ok && worst <= uMaxLevels && worstRelative <= uMaxRelative ? 1u : 0u));
 }

@@ -72,6 +72,25 @@ int fullMipLevels(int size) {
   return levels;
 }
 
+RenderTarget createViewTarget(const RenderTarget& of, GLenum viewFormat) {
+  RenderTarget t;
+  t.width = of.width;
+  t.height = of.height;
+  GLuint view = 0;
+  glGenTextures(1, &view);  // (a view needs a name never bound: glCreateTextures' are)
+  glTextureView(view, GL_TEXTURE_2D, of.color.id(), viewFormat, 0, 1, 0, 1);
+  t.color = Texture(view);
+  t.fbo = createFramebuffer();
+  glNamedFramebufferTexture(t.fbo.id(), GL_COLOR_ATTACHMENT0, t.color.id(), 0);
+  const GLenum status = glCheckNamedFramebufferStatus(t.fbo.id(), GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "view framebuffer incomplete (0x%04x)", status);
+    throw InternalError(buf);
+  }
+  return t;
+}
+
 RenderTarget createRenderTarget(int width, int height, GLenum colorFormat, bool withDepth,
                                 int samples, GLenum auxiliaryFormat) {
   RenderTarget t;

@@ -100,6 +100,11 @@ struct RenderTarget {
   int samples = 1;
 };
 
+/// A single-sample colour-only target whose colour is a view of `of`'s colour in `viewFormat`
+/// (glTextureView: the same bytes, e.g. a GL_SRGB8_ALPHA8 target's as GL_RGBA8, which no driver
+/// decodes when read back or blitted from). Throws og::InternalError if incomplete.
+RenderTarget createViewTarget(const RenderTarget& of, GLenum viewFormat);
+
 /// colorFormat e.g. GL_RGBA32F (HDR radiance) or GL_RGBA8 (display). samples must not exceed
 /// maxSamples(colorFormat). Throws og::InternalError if the framebuffer is incomplete.
 /// auxiliaryFormat != 0 adds a second colour attachment of that format (same samples), and

@@ -225,8 +225,10 @@ void GlobeRenderer::ensureTargets(int width, int height, int requested, bool aux
   }
   hdr_ = gl::createRenderTarget(width, height, GL_RGBA32F, true, samples, auxiliary ? GL_R32F : 0);
   auxiliary_ = auxiliary;
-  // sRGB-encoded bytes: the single-sample tone map has the store encode them (below).
+  // sRGB-encoded bytes: the tone map has the store encode them (below); read back and blitted
+  // through a GL_RGBA8 view of them, which no driver decodes.
   ldr_ = gl::createRenderTarget(width, height, GL_SRGB8_ALPHA8, false);
+  ldrBytes_ = gl::createViewTarget(ldr_, GL_RGBA8);
   resolved_ = {};
   requestedSamples_ = requested;
   if (hdr_.samples != samples)
@@ -620,8 +622,10 @@ bool GlobeRenderer::uploadClassifyingBlocks(const geo::CameraView& view, const F
     blockRanges_.perPixel = append(GlobeBlockClass::PerPixel);
     blockRanges_.miss = append(GlobeBlockClass::Miss);
     blockRanges_.fills = {append(GlobeBlockClass::Land), append(GlobeBlockClass::Sea), append(GlobeBlockClass::OpenSea)};
-    // (The sea's part only where the land's and the sea's are split off: frameLandSea_.)
-    if (seaLatticeOn_) seaLattice_.prepare(b, f.width, f.height, landSeaParts_);
+    // The sea's blocks only where the frame splits the land's and the sea's parts off (with
+    // blocks, landSeaParts_ alone decides: frameLandSea_, set after this). Not with the
+    // auxiliary outputs, whose whitecaps the check does not weigh.
+    if (seaLatticeOn_ && !auxiliary_) seaLattice_.prepare(b, f.width, f.height, landSeaParts_);
   } else {
     vertices = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};  // fullscreen.vert's triangle
     blockRanges_.perPixel = {0, 3};
@@ -703,7 +707,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
     const char* pass = kPassNames.at(static_cast<std::size_t>(parts[k] - kGlobePart0 - 1));
     glStencilFunc(GL_EQUAL, count, 0xff);
     if (parts[k] == kGlobePart0 + 5 || parts[k] == kGlobePart0 + 6) {
-      drawSeaLattice(view, f, !latticeShaded, parts[k] == kGlobePart0 + 5 ? "sea lattice" : "open sea lattice");
+      drawSeaLattice(view, f, !latticeShaded, parts[k] == kGlobePart0 + 5);
       latticeShaded = true;
     }
     if (timer_ != nullptr) timer_->mark(pass);
@@ -734,7 +738,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   if (grid) glEndConditionalRender();
 }
 
-void GlobeRenderer::drawSeaLattice(const geo::CameraView& view, const FrameInput& f, bool first, const char* name) {
+void GlobeRenderer::drawSeaLattice(const geo::CameraView& view, const FrameInput& f, bool first, bool seaPart) {
   if (seaLattice_.empty()) return;
   if (timer_ != nullptr) timer_->mark("globe sea lattice");
   if (first)
@@ -745,11 +749,19 @@ void GlobeRenderer::drawSeaLattice(const geo::CameraView& view, const FrameInput
           return p;
         },
         f.exposure);
-  const auto draw = [this] { seaLattice_.drawInterpolated(); };
+  // Over the part's blocks the CPU classed (its other pixels have no flag), not the whole box.
+  const auto [firstVertex, vertices] = blockRanges_.fills.at(seaPart ? 1 : 2);
+  const auto draw = [&] {
+    seaLattice_.drawInterpolated([&] {
+      glBindVertexArray(blocksVao_.id());
+      glDrawArrays(GL_TRIANGLES, firstVertex, vertices);
+      glBindVertexArray(emptyVao_.id());
+    });
+  };
   if (!countPartSamples_)
     draw();
   else
-    partSamples_.emplace_back(name, gl::queryResult(GL_SAMPLES_PASSED, draw));
+    partSamples_.emplace_back(seaPart ? "sea lattice" : "open sea lattice", gl::queryResult(GL_SAMPLES_PASSED, draw));
 }
 
 std::optional<std::array<int, 4>> sunDiscScissor(const geo::CameraView& view, int width, int height,
@@ -942,7 +954,7 @@ io::ImageRgbaF GlobeRenderer::radiance() const {
 }
 
 io::ImageRgba8 GlobeRenderer::display() const {
-  return {ldr_.width, ldr_.height, gl::readRgba8(ldr_.fbo.id(), ldr_.width, ldr_.height)};
+  return {ldrBytes_.width, ldrBytes_.height, gl::readRgba8(ldrBytes_.fbo.id(), ldrBytes_.width, ldrBytes_.height)};
 }
 
 std::vector<float> GlobeRenderer::depth() const {

@@ -162,7 +162,7 @@ class GlobeRenderer {
   [[nodiscard]] int samples() const { return hdr_.samples; }
 
   /// The tone-mapped display target of the last render() (for blitting to a window).
-  [[nodiscard]] GLuint displayFramebuffer() const { return ldr_.fbo.id(); }
+  [[nodiscard]] GLuint displayFramebuffer() const { return ldrBytes_.fbo.id(); }
 
   /// Blocks until the GPU has finished the last frame (for timing).
   static void finish();
@@ -361,9 +361,9 @@ class GlobeRenderer {
   void drawSunDisc(const geo::CameraView& view, const FrameInput& f, bool grid);
   /// Above the ceiling, before the sea's or the open sea's part (its stencil test set): the
   /// lattice's points shaded and its blocks checked (before the first of the two), and the
-  /// part's blocks that passed drawn interpolated (render/SeaLattice); `name`: the draw's in
-  /// partSamples_.
-  void drawSeaLattice(const geo::CameraView& view, const FrameInput& f, bool first, const char* name);
+  /// part's blocks that passed drawn interpolated (render/SeaLattice); `seaPart`: the sea's
+  /// part, else the open sea's.
+  void drawSeaLattice(const geo::CameraView& view, const FrameInput& f, bool first, bool seaPart);
   /// Whether this frame splits the land and the sea off the surface part (landSeaParts_ and
   /// the split pays): their classifying step costs four elevation lookups a pixel, which a
   /// view mostly of the open deep sea (the limb over the Atlantic) does not win back. From an
@@ -500,7 +500,8 @@ class GlobeRenderer {
   std::unique_ptr<WindTextures> wind_;
   std::unique_ptr<OceanPatterns> patterns_;
   gl::RenderTarget hdr_;
-  gl::RenderTarget ldr_;
+  gl::RenderTarget ldr_;       ///< the display target, GL_SRGB8_ALPHA8 (the tone map writes it)
+  gl::RenderTarget ldrBytes_;  ///< a GL_RGBA8 view of its bytes (read-back, the viewer's blit)
   int maxSamples_ = 1;        ///< what the device offers for the HDR target
   int requestedSamples_ = 0;  ///< FrameInput::samples that hdr_ was made for
   bool auxiliary_ = false;    ///< hdr_ has the auxiliary attachment

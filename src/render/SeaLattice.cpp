@@ -77,13 +77,13 @@ void SeaLattice::shadePoints(const std::vector<std::uint32_t>& points, const gl:
 
 void SeaLattice::shade(const std::function<const gl::Program&(bool sea)>& program, double exposure) {
   if (empty()) return;
-  glBindImageTexture(0, lattice_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   for (const bool sea : {false, true}) {
     const std::vector<std::uint32_t>& points = points_[sea ? 1 : 0];
     if (points.empty()) continue;
     const gl::Program& p = program(sea);
     upload(pointsBuffer_[sea ? 1 : 0], pointsBytes_[sea ? 1 : 0], points);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kGlobePixelsBinding, pointsBuffer_[sea ? 1 : 0].id());
+    glBindImageTexture(0, lattice_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     shadePoints(points, p);
   }
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -91,7 +91,7 @@ void SeaLattice::shade(const std::function<const gl::Program&(bool sea)>& progra
   // The blocks' flags: 0 (per pixel) unless the check passes one.
   if (check_.id() == 0) {  // (compiled on first use, as the globe's variants are)
     check_ = gl::Program({{GL_COMPUTE_SHADER, "render/sea_lattice.comp"}});
-    interpolate_ = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "render/sea_lattice.frag"}});
+    interpolate_ = gl::Program({{GL_VERTEX_SHADER, "render/blocks.vert"}, {GL_FRAGMENT_SHADER, "render/sea_lattice.frag"}});
   }
   const GLubyte zero = 0;
   glClearTexImage(flags_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, &zero);
@@ -100,14 +100,17 @@ void SeaLattice::shade(const std::function<const gl::Program&(bool sea)>& progra
   glBindImageTexture(1, flags_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
   check_.set("uExposure", static_cast<float>(exposure));
   check_.set("uMaxLevels", kMaxLevels);
+  check_.set("uMaxRelative", kMaxRelative);
   check_.use();
   glDispatchCompute(static_cast<GLuint>((blocks_.size() + kGroup - 1) / kGroup), 1, 1);
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  // (The fragments' lookups, and interpolatedBlocks' read-back.)
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  shaded_ = true;
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
   glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
 }
 
-void SeaLattice::drawInterpolated() {
+void SeaLattice::drawInterpolated(const std::function<void()>& drawBlocks) {
   if (empty()) return;
   glBindTextureUnit(gl::kUnitSeaLattice, lattice_.id());
   glBindTextureUnit(gl::kUnitSeaLatticeBlocks, flags_.id());
@@ -116,13 +119,13 @@ void SeaLattice::drawInterpolated() {
   glStencilMask(0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_ZERO);
   interpolate_.use();
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  drawBlocks();
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glStencilMask(static_cast<GLuint>(writeMask));
 }
 
 std::size_t SeaLattice::interpolatedBlocks() const {
-  if (empty()) return 0;
+  if (empty() || !shaded_) return 0;
   std::vector<std::uint8_t> flags(static_cast<std::size_t>(blockColumns_) * static_cast<std::size_t>(blockRows_));
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glGetTextureImage(flags_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, static_cast<GLsizei>(flags.size()), flags.data());

@@ -31,22 +31,27 @@ class SeaLattice {
   /// for the block to be interpolated: the lattice's own interpolation, at half that spacing,
   /// is then off by about a quarter of it.
   static constexpr float kMaxLevels = 0.5f;
+  /// And the largest relative difference there, of any channel of the radiance (an EXR's
+  /// values, which another grade may show): the lattice's own about a quarter of it.
+  static constexpr float kMaxRelative = 0.02f;
 
   /// Lists the lattice points and the blocks of `blocks`' open-sea class, and with `sea` of its
   /// sea class too, in a frame of `width` x `height` pixels (none: empty()).
   void prepare(const GlobeBlocks& blocks, int width, int height, bool sea);
   /// Lists nothing (a frame without such blocks).
-  void clear() { blocks_.clear(), points_[0].clear(), points_[1].clear(); }
+  void clear() { blocks_.clear(), points_[0].clear(), points_[1].clear(), shaded_ = false; }
   [[nodiscard]] bool empty() const { return blocks_.empty(); }
   /// Shades the listed points with the programs `program(sea)` returns (globe.frag's
   /// GLOBE_LATTICE for the sea's part or the open sea's, in use with their uniforms set), then
   /// flags the blocks it may interpolate at the frame's `exposure`.
   void shade(const std::function<const gl::Program&(bool sea)>& program, double exposure);
   /// Draws the flagged blocks' pixels that pass the caller's stencil test, and zeroes their
-  /// stencil values so the part drawn next leaves them (the stencil test must be on). Leaves
-  /// the program changed.
-  void drawInterpolated();
-  /// The blocks prepare listed, and how many of them shade flagged (reads them back: tests).
+  /// stencil values so the part drawn next leaves them (the stencil test must be on):
+  /// `drawBlocks` draws the part's blocks (render/blocks.vert's triangles, its vertex array
+  /// bound) with the program in use. Leaves the program changed.
+  void drawInterpolated(const std::function<void()>& drawBlocks);
+  /// The blocks prepare listed, and how many of them this frame's shade flagged (reads them
+  /// back: tests; 0 where it did not run).
   [[nodiscard]] std::size_t listedBlocks() const { return blocks_.size(); }
   [[nodiscard]] std::size_t interpolatedBlocks() const;
 
@@ -61,6 +66,7 @@ class SeaLattice {
   gl::Buffer pointsBuffer_[2], blocksBuffer_;
   std::size_t pointsBytes_[2] = {0, 0}, blocksBytes_ = 0;
   gl::Program check_, interpolate_;
+  bool shaded_ = false;  ///< shade ran since prepare
 };
 
 }  // namespace og::render
