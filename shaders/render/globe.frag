@@ -78,7 +78,7 @@
 #ifdef GLOBE_COMPUTE
 // The general part over a list of pixels (render/globe_pixels.glsl): a work group of 64, each
 // invocation a pixel, whose centre and outputs stand in for the fragment's.
-layout(local_size_x = 64) in;
+layout(local_size_x = OG_GLOBE_PIXELS_GROUP) in;
 #include "render/globe_pixels.glsl"
 layout(binding = 0, rgba32f) uniform writeonly image2D uRadianceImage;  // the HDR target
 vec2 vNdc;

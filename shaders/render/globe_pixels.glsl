@@ -12,5 +12,5 @@ layout(std430, binding = OG_GLOBE_PIXELS_BINDING) buffer GlobePixels {
   uint uArgs[3];
   uint uPixels[];
 };
-const uint GLOBE_PIXELS_GROUP = 64u;  // the compute shader's work group
-const uint GLOBE_PIXELS_ROW = 4096u;
+const uint GLOBE_PIXELS_GROUP = OG_GLOBE_PIXELS_GROUP;  // the compute shader's work group
+const uint GLOBE_PIXELS_ROW = OG_GLOBE_PIXELS_ROW;

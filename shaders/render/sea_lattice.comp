@@ -10,7 +10,7 @@
 // per pixel, as does a block none of whose points was listed (the flags are cleared to 0
 // every frame).
 #include "common/color.glsl"
-layout(local_size_x = 64) in;
+layout(local_size_x = OG_GLOBE_PIXELS_GROUP) in;
 layout(binding = 0, rgba32f) uniform readonly image2D uLattice;
 layout(binding = 1, r8ui) uniform writeonly uimage2D uBlockInterpolated;
 layout(std430, binding = OG_SEA_LATTICE_BLOCKS_BINDING) readonly buffer SeaLatticeBlocks {

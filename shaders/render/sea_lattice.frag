@@ -1,8 +1,9 @@
 #version 450 core
-// The sea's pixels of the blocks render/sea_lattice.comp passed, drawn before the sea's and
-// the open sea's parts over their pixels: the lattice's radiance (every 4 pixels,
+// The sea's pixels of the blocks render/sea_lattice.comp passed, drawn over the sea's and the
+// open sea's blocks before their parts: the lattice's radiance (every 4 pixels,
 // render/globe.frag's GLOBE_LATTICE) interpolated bilinearly by the sampler at the pixel's
-// centre; the others are discarded and left to the part (render/SeaLattice). No early fragment tests: a discarded pixel keeps its stencil value.
+// centre; the others are discarded and left to the part (render/SeaLattice). No early
+// fragment tests: a discarded pixel keeps its stencil value.
 #include "render/outputs.glsl"
 layout(binding = OG_UNIT_SEA_LATTICE) uniform sampler2D uLattice;  // radiance, whitecaps
 layout(binding = OG_UNIT_SEA_LATTICE_BLOCKS) uniform usampler2D uBlockInterpolated;

@@ -1,8 +1,9 @@
 #version 450 core
 // HDR radiance -> 8-bit sRGB for PNG output and the window (render/GlobeRenderer's display
 // target, GL_SRGB8_ALPHA8, whose store encodes sRGB: GL_FRAMEBUFFER_SRGB on for this draw).
-// Multisampled radiance is tone mapped per sample, then averaged: averaging linear HDR first lets a bright sample (sky)
-// dominate the pixel, so bright-dark edges step again after the tone curve.
+// Multisampled radiance is tone mapped per sample, then averaged: averaging linear HDR first
+// lets a bright sample (sky) dominate the pixel, so bright-dark edges step again after the
+// tone curve.
 #include "common/color.glsl"
 #ifdef TONEMAP_MULTISAMPLE
 layout(binding = OG_UNIT_TONE_RADIANCE) uniform sampler2DMS uRadiance;

@@ -39,6 +39,8 @@ std::vector<std::string> contractDefines() {
           define("OG_TILE_QUADS", kTerrainTileQuads),
           define("OG_OPEN_SEA_CELLS_PER_DEG", kOpenSeaCellsPerDeg),
           define("OG_GLOBE_PIXELS_BINDING", kGlobePixelsBinding),
+          define("OG_GLOBE_PIXELS_GROUP", kGlobePixelsGroup),
+          define("OG_GLOBE_PIXELS_ROW", kGlobePixelsRow),
           define("OG_UNCOVERED_BLOCKS_BINDING", kUncoveredBlocksBinding),
           define("OG_UNCOVERED_TRIANGLES_BINDING", kUncoveredTrianglesBinding),
           define("OG_SEA_LATTICE_BLOCKS_BINDING", kSeaLatticeBlocksBinding),

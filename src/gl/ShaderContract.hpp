@@ -54,8 +54,8 @@ enum UniformBlockBinding : unsigned {
 /// Binding points of shader storage blocks that several programs share (GLSL: OG_<NAME>); under 8,
 /// the least GL 4.5 guarantees (render/OceanRenderer's own passes use 3-7, and 2 for the grid's
 /// near-land flags, which GlobeRenderer binds again for its pixels, render/UncoveredPixels for
-/// its blocks (with 3 for their triangles) and TerrainRenderer::computeTileAerial for its tiles
-/// (with 3 for its vertices);
+/// its blocks (with 3 for their triangles), TerrainRenderer::computeTileAerial for its tiles
+/// (with 3 for its vertices) and render/SeaLattice for its points (with 3 for its blocks);
 /// gl::runProbe's test probes bind 0 for their run: the terrain binds its buffer again at each
 /// draw).
 enum StorageBinding : unsigned {
@@ -74,6 +74,13 @@ enum StorageBinding : unsigned {
 /// Quads along a terrain tile's edge (terrain::kTileQuads, asserted by render/TerrainRenderer;
 /// GLSL: OG_TILE_QUADS): terrain/tile_grid.glsl finds a vertex's place in the grid from it.
 inline constexpr unsigned kTerrainTileQuads = 32;
+
+/// The globe's listed pixels (render/globe_pixels.glsl, GlobeRenderer::shadeScatteredParts) and
+/// the sea lattice's points and blocks (render/SeaLattice): a compute work group's
+/// invocations, and the most groups a row of a dispatch (GLSL: OG_GLOBE_PIXELS_GROUP,
+/// OG_GLOBE_PIXELS_ROW).
+inline constexpr unsigned kGlobePixelsGroup = 64;
+inline constexpr unsigned kGlobePixelsRow = 4096;
 
 /// Cells per degree of the open-sea map (render/OpenSeaMap::kCellsPerDeg; GLSL:
 /// OG_OPEN_SEA_CELLS_PER_DEG): render/open_sea_map.glsl finds a point's texel from it.

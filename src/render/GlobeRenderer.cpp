@@ -404,7 +404,8 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
   const int set = programSet(behind, variant), baseSet = set > 4 ? set - 5 : set;
   const bool shadesSea = variant == kGlobePart0 + 2 || variant == kGlobePart0 + 3 || variant == kGlobePart0 + 5 ||
                          variant == kGlobePart0 + 6 || variant == kListedPixels ||
-                         variant == kOpenSeaLatticePoints || variant == kSeaLatticePoints;  // edge, surface, sea, open sea
+                         variant == kOpenSeaLatticePoints ||
+                         variant == kSeaLatticePoints;  // the edge, the surface, the seas, the listed, the lattice's
   const int windSet = constantWindFrame_ && shadesSea ? kGlobeProgramSets : 0;
   gl::Program& p = globePrograms_[static_cast<std::size_t>((windSet + set) * kGlobeVariants + variant)];
   if (p.id() == 0) {

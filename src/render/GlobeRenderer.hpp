@@ -170,7 +170,7 @@ class GlobeRenderer {
   /// Times the passes of every following frame on `timer` (nullptr: none): "globe" (its
   /// classifying draws and set-up), its parts ("globe sky", "globe land", "globe sea", "globe
   /// open sea", "globe edge", "globe surface", or the last two as "globe edge and surface
-  /// (listed)"), "terrain shadows", "terrain", "ocean waves" (the FFTs), "ocean" and the sea's
+  /// (listed)"), "globe sea lattice" (render/SeaLattice's points, check and draws), "terrain shadows", "terrain", "ocean waves" (the FFTs), "ocean" and the sea's
   /// steps, "tone mapping".
   void setPassTimer(gl::PassTimer* timer) {
     timer_ = timer;
@@ -234,7 +234,8 @@ class GlobeRenderer {
   void setCountPartSamples(bool on) { countPartSamples_ = on; }
   /// The globe parts of the last frame that counted them and the samples each shaded
   /// (setCountPartSamples), in the order they were drawn: "sky", "edge", "surface", "land",
-  /// "sea", "open sea".
+  /// "sea lattice", "sea", "open sea lattice", "open sea" (the lattice's: render/SeaLattice's
+  /// interpolated pixels of the part after it).
   [[nodiscard]] const std::vector<std::pair<std::string, std::uint64_t>>& partSamples() const { return partSamples_; }
   /// Above 20 km the globe pass is scissored to the rectangle around the globe, its atmosphere
   /// and the Sun (globeScissor); false draws it over the whole screen (the tests' reference).
@@ -340,9 +341,9 @@ class GlobeRenderer {
   /// (GLOBE_COMPUTE); 18 the sky part with the Sun's disc (GLOBE_SKY_SUN_DISC: 15 leaves it
   /// out), drawn over the Sun's box only (drawSunDisc); 19 and 20 the open sea's and the sea's
   /// parts as compute shaders at the lattice's points (GLOBE_LATTICE, render/SeaLattice).
-  /// `variant` in [0, kGlobeVariants). Above
-  /// the ceiling the classifying variants draw the triangles of blocksVao_ (render/blocks.vert),
-  /// below it the one draw (6, 7) render/UncoveredPixels' blocks.
+  /// `variant` in [0, kGlobeVariants). Above the ceiling the classifying variants draw the
+  /// triangles of blocksVao_ (render/blocks.vert), below it the one draw (6, 7)
+  /// render/UncoveredPixels' blocks.
   static constexpr int kGlobeVariants = 21;
   static constexpr int kSkyLowPass = 14, kSkyLowPart = 15, kBlockFill = 16, kListedPixels = 17, kSkyLowSunPart = 18;
   static constexpr int kOpenSeaLatticePoints = 19, kSeaLatticePoints = 20;

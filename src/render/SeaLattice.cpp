@@ -1,6 +1,7 @@
 #include "render/SeaLattice.hpp"
 
 #include <algorithm>
+#include <array>
 
 #include "gl/ShaderContract.hpp"
 #include "render/GlobeBlocks.hpp"
@@ -14,16 +15,17 @@ namespace {
 constexpr std::uint32_t packed(int x, int y) {
   return static_cast<std::uint32_t>(x) | static_cast<std::uint32_t>(y) << 16;
 }
-constexpr GLuint kGroup = 64;         // the shaders' work groups
-constexpr GLuint kGroupsARow = 4096;  // render/globe_pixels.glsl's GLOBE_PIXELS_ROW
+constexpr GLuint kGroup = gl::kGlobePixelsGroup;       // the shaders' work groups
+constexpr GLuint kGroupsARow = gl::kGlobePixelsRow;     // render/globe_pixels.glsl's rows of groups
 
 // Uploads a list as the shaders' storage block: a count, three words (globe_pixels.glsl's
 // dispatch arguments, unused here), then the entries.
 void upload(gl::Buffer& buffer, std::size_t& capacity, const std::vector<std::uint32_t>& entries) {
-  std::vector<std::uint32_t> block{static_cast<std::uint32_t>(entries.size()), 0, 0, 0};
-  block.insert(block.end(), entries.begin(), entries.end());
-  gl::ensureBufferCapacity(buffer, capacity, block.size() * sizeof(std::uint32_t), GL_DYNAMIC_STORAGE_BIT);
-  glNamedBufferSubData(buffer.id(), 0, static_cast<GLsizeiptr>(block.size() * sizeof(std::uint32_t)), block.data());
+  const std::array<std::uint32_t, 4> head{static_cast<std::uint32_t>(entries.size()), 0, 0, 0};
+  const std::size_t entryBytes = entries.size() * sizeof(std::uint32_t);
+  gl::ensureBufferCapacity(buffer, capacity, sizeof head + entryBytes, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferSubData(buffer.id(), 0, sizeof head, head.data());
+  glNamedBufferSubData(buffer.id(), sizeof head, static_cast<GLsizeiptr>(entryBytes), entries.data());
 }
 }  // namespace
 
