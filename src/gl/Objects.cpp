@@ -72,6 +72,17 @@ int fullMipLevels(int size) {
   return levels;
 }
 
+namespace {
+// Throws og::InternalError "<what> incomplete (0x....)" unless `fbo` is complete.
+void requireComplete(const Framebuffer& fbo, const char* what) {
+  const GLenum status = glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER);
+  if (status == GL_FRAMEBUFFER_COMPLETE) return;
+  char buf[64];
+  std::snprintf(buf, sizeof buf, " incomplete (0x%04x)", status);
+  throw InternalError(std::string(what) + buf);
+}
+}  // namespace
+
 RenderTarget createViewTarget(const RenderTarget& of, GLenum viewFormat) {
   RenderTarget t;
   t.width = of.width;
@@ -82,12 +93,7 @@ RenderTarget createViewTarget(const RenderTarget& of, GLenum viewFormat) {
   t.color = Texture(view);
   t.fbo = createFramebuffer();
   glNamedFramebufferTexture(t.fbo.id(), GL_COLOR_ATTACHMENT0, t.color.id(), 0);
-  const GLenum status = glCheckNamedFramebufferStatus(t.fbo.id(), GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "view framebuffer incomplete (0x%04x)", status);
-    throw InternalError(buf);
-  }
+  requireComplete(t.fbo, "view framebuffer");
   return t;
 }
 
@@ -133,12 +139,7 @@ RenderTarget createRenderTarget(int width, int height, GLenum colorFormat, bool 
     glGetTextureLevelParameteriv(t.color.id(), 0, GL_TEXTURE_SAMPLES, &allocated);
     t.samples = static_cast<int>(allocated);
   }
-  const GLenum status = glCheckNamedFramebufferStatus(t.fbo.id(), GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "framebuffer incomplete (0x%04x)", status);
-    throw InternalError(buf);
-  }
+  requireComplete(t.fbo, "framebuffer");
   return t;
 }
 

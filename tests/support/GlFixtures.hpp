@@ -79,37 +79,34 @@ inline std::vector<double> luminance(const io::ImageRgbaF& im) {
   return y;
 }
 
-/// The radiance of frame `f` rendered with a feature off, then on (`set` switches it): for tests
-/// that a speed-up keeps the picture.
-struct OffAndOn {
-  io::ImageRgbaF off, on;
+/// Frame `f` rendered with a feature off, then on (`set` switches it), each read back by
+/// `read(r)`: for tests that a speed-up keeps the picture.
+template <class Image>
+struct OffAndOnImages {
+  Image off, on;
 };
-inline OffAndOn renderOffAndOn(render::GlobeRenderer& r, const render::FrameInput& f,
-                               const std::function<void(bool)>& set) {
-  OffAndOn images;
-  set(false);
-  r.render(f);
-  images.off = r.radiance();
-  set(true);
-  r.render(f);
-  images.on = r.radiance();
+template <class Read>
+auto renderedOffAndOn(render::GlobeRenderer& r, const render::FrameInput& f, const std::function<void(bool)>& set,
+                      Read read) {
+  OffAndOnImages<decltype(read(r))> images;
+  for (const bool on : {false, true}) {
+    set(on);
+    r.render(f);
+    (on ? images.on : images.off) = read(r);
+  }
   return images;
 }
-
-/// The display image (8-bit sRGB) of frame `f` rendered with a feature off, then on.
-struct DisplayOffAndOn {
-  io::ImageRgba8 off, on;
-};
+/// The radiance (linear floats).
+using OffAndOn = OffAndOnImages<io::ImageRgbaF>;
+inline OffAndOn renderOffAndOn(render::GlobeRenderer& r, const render::FrameInput& f,
+                               const std::function<void(bool)>& set) {
+  return renderedOffAndOn(r, f, set, [](const render::GlobeRenderer& g) { return g.radiance(); });
+}
+/// The display image (8-bit sRGB).
+using DisplayOffAndOn = OffAndOnImages<io::ImageRgba8>;
 inline DisplayOffAndOn displayOffAndOn(render::GlobeRenderer& r, const render::FrameInput& f,
                                        const std::function<void(bool)>& set) {
-  DisplayOffAndOn images;
-  set(false);
-  r.render(f);
-  images.off = r.display();
-  set(true);
-  r.render(f);
-  images.on = r.display();
-  return images;
+  return renderedOffAndOn(r, f, set, [](const render::GlobeRenderer& g) { return g.display(); });
 }
 
 /// How two radiance images of the same size differ per pixel: the largest relative change of
