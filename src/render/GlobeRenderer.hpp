@@ -33,8 +33,8 @@
 #include "render/LandMaskTexture.hpp"
 #include "render/OceanPatterns.hpp"
 #include "render/OceanRenderer.hpp"
-#include "render/SeaLattice.hpp"
 #include "render/OpenSeaMap.hpp"
+#include "render/SeaLattice.hpp"
 #include "render/TerrainRenderer.hpp"
 #include "render/UncoveredPixels.hpp"
 #include "render/WindTextures.hpp"
@@ -170,8 +170,8 @@ class GlobeRenderer {
   /// Times the passes of every following frame on `timer` (nullptr: none): "globe" (its
   /// classifying draws and set-up), its parts ("globe sky", "globe land", "globe sea", "globe
   /// open sea", "globe edge", "globe surface", or the last two as "globe edge and surface
-  /// (listed)"), "globe sea lattice" (render/SeaLattice's points, check and draws), "terrain shadows", "terrain", "ocean waves" (the FFTs), "ocean" and the sea's
-  /// steps, "tone mapping".
+  /// (listed)"), "globe sea lattice" (render/SeaLattice's points, check and draws), "terrain
+  /// shadows", "terrain", "ocean waves" (the FFTs), "ocean" and the sea's steps, "tone mapping".
   void setPassTimer(gl::PassTimer* timer) {
     timer_ = timer;
     terrain_->setPassTimer(timer);
