@@ -490,22 +490,36 @@ void shadeClassPixel() {
 //    ~1/200 of its peak (a calm sea; the Sun's disc, which widens it, left out). A pixel turns
 //    the reflection by the view's turn plus twice the normal's (the ground's arc a pixel,
 //    widened at grazing incidence: ~8 times the view's near the limb from 400 km);
-//  * the sea's part: the floor within the water's reach and its depth not linear over the
-//    lattice's spacing (its second difference over half the spacing on either side above
-//    SEA_LATTICE_MAX_FLOOR_BEND_M): a shoal or the coast's lift narrower than the spacing,
-//    which the check between the lattice's points could miss.
+//  * the sea's part, where the elevation layer's cells are narrower than two spacings on the
+//    ground (a fine bathymetry from high up): the floor within the water's reach and its depth
+//    not linear over the spacing (its second difference over half the spacing on either side
+//    above SEA_LATTICE_MAX_FLOOR_BEND_M), a shoal the check between the points could miss.
 const float SEA_LATTICE_PX = 4.0;
 const float SEA_LATTICE_MIN_LOBE_PX = 20.0;
 const float SEA_LATTICE_MAX_FLOOR_BEND_M = 0.5;
 vec3 latticeRay(vec2 ndc) { return normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp); }
-// The floor's depth along a ray of the frame (m; deep where it misses).
+// The ground's arc a pixel (rad) at distance t along dir (normal n there), widened at grazing
+// incidence down to the CPU's sea blocks' least cosine (render/GlobeBlocks' kMinCosIncidence):
+// groundFootprintRad's widening stops at 0.2.
+float latticeArcRad(vec3 dir, float t, vec3 n) {
+  return t * uPixelNdc.y * uTanHalfFov.y / (WGS84_A * max(dot(n, -dir), 0.1));
+}
+// The floor's depth along a ray of the frame (m; deep where it misses), its coast as the
+// shading's (prepareWaterColumn: the land mask's lift at the pixel's footprint).
 float latticeFloorDepthM(vec2 ndc) {
   vec3 dir = latticeRay(ndc);
   float t = intersectEllipsoid(dir);
-  return t < 0.0 ? 1e4 : seaFloorDepthM(ellipsoidNormal(dir, t));
+  if (t < 0.0) return 1e4;
+  vec3 n = ellipsoidNormal(dir, t);
+  float land, keepDepth;
+  return seaFloorDepthM(n, groundFootprintRad(dir, t, n), land, keepDepth);
 }
-bool floorBendsWithinReach(vec2 ndc) {
+bool floorBendsWithinReach(vec2 ndc, vec3 dir, float t, vec3 n) {
 #if GLOBE_PART == GLOBE_PART_SEA
+  // A layer whose cells span two spacings or more on the ground bends no narrower than that:
+  // the check between the points sees it (the embedded 5′ layer from up to ~1000 km at 720p).
+  float cellRad = min(uElevationMap.w, uElevationMap.z * max(length(n.xy), 1e-3));
+  if (uElevationSize.x <= 0.0 || cellRad >= 2.0 * SEA_LATTICE_PX * latticeArcRad(dir, t, n)) return false;
   vec2 halfStep = 0.5 * SEA_LATTICE_PX * uPixelNdc;
   float d = latticeFloorDepthM(ndc);
   float dx0 = latticeFloorDepthM(ndc - vec2(halfStep.x, 0.0)), dx1 = latticeFloorDepthM(ndc + vec2(halfStep.x, 0.0));
@@ -526,10 +540,10 @@ void main() {
   vec3 dir = latticeRay(vNdc);
   float t = intersectEllipsoid(dir);
   vec3 n = ellipsoidNormal(dir, max(t, 0.0));
-  float turnRad = uPixelNdc.y * uTanHalfFov.y + 2.0 * groundFootprintRad(dir, max(t, 0.0), n);
+  float turnRad = uPixelNdc.y * uTanHalfFov.y + 2.0 * latticeArcRad(dir, max(t, 0.0), n);
   bool wide = sqrt(min(gSeaSigma2.x, gSeaSigma2.y)) >= SEA_LATTICE_MIN_LOBE_PX * 0.5 * turnRad;
   bool finite = !any(isnan(fragRadiance.rgb)) && !any(isinf(fragRadiance.rgb));
-  bool usable = gClassRaysHit == 4 && t >= 0.0 && finite && wide && !floorBendsWithinReach(vNdc);
+  bool usable = gClassRaysHit == 4 && t >= 0.0 && finite && wide && !floorBendsWithinReach(vNdc, dir, max(t, 0.0), n);
   imageStore(uRadianceImage, point, usable ? vec4(fragRadiance.rgb, fragAux.r) : vec4(0.0, 0.0, 0.0, -1.0));
 }
 #else

@@ -5,7 +5,7 @@
 // of lanes (8 at 256 bits): listed, 64 of them share a work group's vectors.
 // uArgs: glDispatchComputeIndirect's groups, written from uCount by render/globe_list_args.comp,
 // in rows of at most GLOBE_PIXELS_ROW groups (GL guarantees 65535 a dimension; a 4K frame's
-// pixels need more): group (x, y) holds pixels from (y * GLOBE_PIXELS_ROW + x) * 64 on.
+// pixels need more): group (x, y) holds pixels from (y * GLOBE_PIXELS_ROW + x) * GLOBE_PIXELS_GROUP on.
 // A pixel is packed as x | y << 16.
 layout(std430, binding = OG_GLOBE_PIXELS_BINDING) buffer GlobePixels {
   uint uCount;

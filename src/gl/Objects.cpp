@@ -91,6 +91,7 @@ RenderTarget createViewTarget(const RenderTarget& of, GLenum viewFormat) {
   glGenTextures(1, &view);  // (a view needs a name never bound: glCreateTextures' are)
   glTextureView(view, GL_TEXTURE_2D, of.color.id(), viewFormat, 0, 1, 0, 1);
   t.color = Texture(view);
+  checkErrors("gl::createViewTarget (glTextureView)");
   t.fbo = createFramebuffer();
   glNamedFramebufferTexture(t.fbo.id(), GL_COLOR_ATTACHMENT0, t.color.id(), 0);
   requireComplete(t.fbo, "view framebuffer");

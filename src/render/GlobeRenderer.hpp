@@ -161,7 +161,9 @@ class GlobeRenderer {
   /// Samples per pixel of the last render() (after clamping; the driver may round up).
   [[nodiscard]] int samples() const { return hdr_.samples; }
 
-  /// The tone-mapped display target of the last render() (for blitting to a window).
+  /// The tone-mapped display target of the last render(), its sRGB-encoded bytes (a GL_RGBA8
+  /// view: for blitting to a window or reading back, not for drawing into, which would store
+  /// unencoded values).
   [[nodiscard]] GLuint displayFramebuffer() const { return ldrBytes_.fbo.id(); }
 
   /// Blocks until the GPU has finished the last frame (for timing).

@@ -289,7 +289,9 @@ TEST(Multisampling, ToneMappingIsPerSampleBeforeAveraging) {
   gl::RenderTarget hdr = gl::createRenderTarget(kSize, kSize, GL_RGBA32F, true, 4);
   ASSERT_EQ(hdr.samples, 4);
   gl::RenderTarget linear = gl::createRenderTarget(kSize, kSize, GL_RGBA32F, true);
-  gl::RenderTarget ldr = gl::createRenderTarget(kSize, kSize, GL_RGBA8, false);
+  // The display target as GlobeRenderer has it: sRGB bytes the store encodes, read through a view.
+  gl::RenderTarget ldr = gl::createRenderTarget(kSize, kSize, GL_SRGB8_ALPHA8, false);
+  const gl::RenderTarget ldrBytes = gl::createViewTarget(ldr, GL_RGBA8);
   gl::Program solid({{GL_VERTEX_SHADER, "render/solid.vert"}, {GL_FRAGMENT_SHADER, "render/solid.frag"}});
   gl::Program perSample({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "render/tonemap.frag"}},
                         {"TONEMAP_MULTISAMPLE"});
@@ -319,8 +321,10 @@ TEST(Multisampling, ToneMappingIsPerSampleBeforeAveraging) {
     tonemap.set("uExposure", 10.0f);
     glBindTextureUnit(0, texture);
     tonemap.use();
+    glEnable(GL_FRAMEBUFFER_SRGB);
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    const std::vector<std::uint8_t> px = gl::readRgba8(ldr.fbo.id(), kSize, kSize);
+    glDisable(GL_FRAMEBUFFER_SRGB);
+    const std::vector<std::uint8_t> px = gl::readRgba8(ldrBytes.fbo.id(), kSize, kSize);
     int n = 0, bright = 0;
     for (std::size_t i = 0; i < px.size(); i += 4) {
       n += px[i] > 40 && px[i] < 240 ? 1 : 0;
