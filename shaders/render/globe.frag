@@ -108,6 +108,9 @@ uniform float uNear;       // near plane, m
 uniform float uGlobeDepthPushM;  // the classifying draws' depth over land: GlobeRenderer::kGlobeDepthPushM
 uniform vec3 uSunDir;      // unit, ECEF axes
 
+// The unit ray through normalised device position `ndc` (geo::CameraView::rayDirection).
+vec3 viewRay(vec2 ndc) { return normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp); }
+
 // Below 20 km (GLOBE_BEHIND) the projected-grid pass draws the sea: the globe leaves its sea
 // samples to it (and shades the grid's horizon gaps); above, it shades the sea itself. A
 // constant, not a uniform: llvmpipe runs both sides of every `if`, so each variant compiles
@@ -261,7 +264,7 @@ PixelRays traceRays() {
   rays.nHit = 0;
   for (int i = 0; i < 4; ++i) {
     vec2 ndc = vNdc + offsets[i] * uPixelNdc;
-    rays.dirs[i] = normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp);
+    rays.dirs[i] = viewRay(ndc);
     rays.ts[i] = PART_ALL_MISS ? -1.0 : intersectEllipsoid(rays.dirs[i]);
     rays.nHit += rays.ts[i] >= 0.0 ? 1 : 0;
   }
@@ -338,7 +341,7 @@ void main() {
   PixelRays rays = traceRays();
 #ifdef GLOBE_CLASSIFY_CENTRE
   // The pixel-centre ray: its hit decides the open sea and gives the depth.
-  vec3 centreDir = normalize(uForward + vNdc.x * uTanHalfFov.x * uRight + vNdc.y * uTanHalfFov.y * uUp);
+  vec3 centreDir = viewRay(vNdc);
   float centreT = rays.nHit > 0 ? intersectEllipsoid(centreDir) : -1.0;
   vec3 centreNormal = ellipsoidNormal(centreDir, max(centreT, 0.0));
   vec2 centreLatLon = latLonOfNormal(centreNormal);
@@ -426,7 +429,7 @@ void main() {
 // (there by the 2′ mask at the centre; a block the 15″ cells decide by its own class).
 uniform int uBlockLand;  // 1: the blocks are land
 void main() {
-  vec3 centreDir = normalize(uForward + vNdc.x * uTanHalfFov.x * uRight + vNdc.y * uTanHalfFov.y * uUp);
+  vec3 centreDir = viewRay(vNdc);
   float centreT = max(intersectEllipsoid(centreDir), 0.0);
   float depthZ = centreT * dot(centreDir, uForward);
   if (uBlockLand != 0) depthZ += uGlobeDepthPushM;
@@ -446,7 +449,7 @@ uniform float uSkyLowFactor;
 uniform vec2 uFrameSize;  // the full frame, pixels
 void main() {
   vec2 ndc = gl_FragCoord.xy * uSkyLowFactor / uFrameSize * 2.0 - 1.0;
-  vec3 dir = normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp);
+  vec3 dir = viewRay(ndc);
   float R = uAtmosphere.bottomRadius;
   float r = R + uCamAltitude;
   float mu = max(dot(dir, uCamUp), -sqrt(uCamAltitude * (2.0 * R + uCamAltitude)) / r + 1e-5);
@@ -497,22 +500,23 @@ void shadeClassPixel() {
 const float SEA_LATTICE_PX = 4.0;
 const float SEA_LATTICE_MIN_LOBE_PX = 20.0;
 const float SEA_LATTICE_MAX_FLOOR_BEND_M = 0.5;
-vec3 latticeRay(vec2 ndc) { return normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp); }
 // The ground's arc a pixel (rad) at distance t along dir (normal n there), widened at grazing
 // incidence down to the CPU's sea blocks' least cosine (render/GlobeBlocks' kMinCosIncidence):
 // groundFootprintRad's widening stops at 0.2.
 float latticeArcRad(vec3 dir, float t, vec3 n) {
   return t * uPixelNdc.y * uTanHalfFov.y / (WGS84_A * max(dot(n, -dir), 0.1));
 }
-// The floor's depth along a ray of the frame (m; deep where it misses), its coast as the
-// shading's (prepareWaterColumn: the land mask's lift at the pixel's footprint).
-float latticeFloorDepthM(vec2 ndc) {
-  vec3 dir = latticeRay(ndc);
-  float t = intersectEllipsoid(dir);
-  if (t < 0.0) return 1e4;
-  vec3 n = ellipsoidNormal(dir, t);
+// The floor's depth where the ray `dir` meets the ellipsoid at t (normal n there; m, deep where
+// it misses: t < 0), its coast as the shading's (prepareWaterColumn: the land mask's lift at
+// the pixel's footprint); and along the frame's ray through `ndc`.
+float latticeFloorDepthM(vec3 dir, float t, vec3 n) {
   float land, keepDepth;
-  return seaFloorDepthM(n, groundFootprintRad(dir, t, n), land, keepDepth);
+  return t < 0.0 ? 1e4 : seaFloorDepthM(n, groundFootprintRad(dir, t, n), land, keepDepth);
+}
+float latticeFloorDepthM(vec2 ndc) {
+  vec3 dir = viewRay(ndc);
+  float t = intersectEllipsoid(dir);
+  return latticeFloorDepthM(dir, t, ellipsoidNormal(dir, max(t, 0.0)));
 }
 bool floorBendsWithinReach(vec2 ndc, vec3 dir, float t, vec3 n) {
 #if GLOBE_PART == GLOBE_PART_SEA
@@ -521,7 +525,7 @@ bool floorBendsWithinReach(vec2 ndc, vec3 dir, float t, vec3 n) {
   float cellRad = min(uElevationMap.w, uElevationMap.z * max(length(n.xy), 1e-3));
   if (uElevationSize.x <= 0.0 || cellRad >= 2.0 * SEA_LATTICE_PX * latticeArcRad(dir, t, n)) return false;
   vec2 halfStep = 0.5 * SEA_LATTICE_PX * uPixelNdc;
-  float d = latticeFloorDepthM(ndc);
+  float d = latticeFloorDepthM(dir, t, n);
   float dx0 = latticeFloorDepthM(ndc - vec2(halfStep.x, 0.0)), dx1 = latticeFloorDepthM(ndc + vec2(halfStep.x, 0.0));
   float dy0 = latticeFloorDepthM(ndc - vec2(0.0, halfStep.y)), dy1 = latticeFloorDepthM(ndc + vec2(0.0, halfStep.y));
   float reach = waterMaxPathM(uWaterAttenuation, WATER_EPSILON);
@@ -537,13 +541,13 @@ void main() {
   ivec2 point = ivec2(uPixels[i] & 0xffffu, uPixels[i] >> 16);
   vNdc = vec2(point) * (SEA_LATTICE_PX * uPixelNdc) - 1.0;
   shadeClassPixel();
-  vec3 dir = latticeRay(vNdc);
+  vec3 dir = viewRay(vNdc);
   float t = intersectEllipsoid(dir);
   vec3 n = ellipsoidNormal(dir, max(t, 0.0));
   float turnRad = uPixelNdc.y * uTanHalfFov.y + 2.0 * latticeArcRad(dir, max(t, 0.0), n);
   bool wide = sqrt(min(gSeaSigma2.x, gSeaSigma2.y)) >= SEA_LATTICE_MIN_LOBE_PX * 0.5 * turnRad;
   bool finite = !any(isnan(fragRadiance.rgb)) && !any(isinf(fragRadiance.rgb));
-  bool usable = gClassRaysHit == 4 && t >= 0.0 && finite && wide && !floorBendsWithinReach(vNdc, dir, max(t, 0.0), n);
+  bool usable = gClassRaysHit == 4 && t >= 0.0 && finite && wide && !floorBendsWithinReach(vNdc, dir, t, n);
   imageStore(uRadianceImage, point, usable ? vec4(fragRadiance.rgb, fragAux.r) : vec4(0.0, 0.0, 0.0, -1.0));
 }
 #else
@@ -560,7 +564,7 @@ void main() { shadeClassPixel(); }
 void main() {
   vec3 radiance = 4.0 * textureLod(uSkyLow, gl_FragCoord.xy * uSkyLowScale, 0.0).rgb;
 #ifdef GLOBE_SKY_SUN_DISC  // drawn again over the Sun's box only (GlobeRenderer::drawSunDisc)
-  vec3 centreDir = normalize(uForward + vNdc.x * uTanHalfFov.x * uRight + vNdc.y * uTanHalfFov.y * uUp);
+  vec3 centreDir = viewRay(vNdc);
   // A pixel spans at most this angle (its diagonal at the centre of the frame), rad
   // (render::sunDiscScissor's cone).
   float pixelRad = length(uPixelNdc * uTanHalfFov);

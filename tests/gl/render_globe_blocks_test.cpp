@@ -276,8 +276,8 @@ TEST(GlobeRender, OpenSeaOffTheShelfKeepsThePicture) {
 // the constant wind and the embedded month of winds (one frame 326 pixels wide: a last block
 // of 6, whose points lie past the frame's edge), the Bahamas' banks (also at 160 x 90 from 300
 // and 600 km, where the layer's 5′ cells are narrower than two lattice spacings), Portugal's
-// coast and the limb; the radiance within 2 %. Most blocks are interpolated there, and their pixels are drawn from the lattice (the
-// interpolating draw's samples); over a calm sea (0.3 m/s, the glint a few pixels wide) the
+// coast and the limb; the radiance within 2 %. Most blocks are interpolated there, and their
+// pixels are drawn from the lattice (the interpolating draw's samples); over a calm sea (0.3 m/s, the glint a few pixels wide) the
 // lattice's points mark the narrow lobe and its blocks stay per pixel. (At 320 x 180 a block
 // spans 4 times the angle it does at 1280 x 720, where more pass.)
 TEST(GlobeRender, SeaLatticeKeepsThePicture) {
