@@ -46,15 +46,69 @@ in vec4 vRadianceTerms[SEA_RADIANCE_VEC4S];
 SEA_IN vec3 vTransmittance;  // aerial perspective, per vertex (ocean/grid.vert)
 SEA_IN vec3 vInscatter;
 #endif
+#ifdef OCEAN_COMPUTE
+// A deferred class's pass as a compute shader (OCEANGLOBE_SEA=compute: render/OceanRenderer::
+// drawDeferred): work groups of 8 x 8 pixels over the frame, an invocation a pixel, shading
+// those of the class (the stencil's value, or the surface buffer's where the driver cannot
+// export stencil values) into the HDR target's image. Where the water volume needs the slopes'
+// change to the next pixel (a fragment's dFdx, dFdy), the group's pixels exchange their slopes
+// in shared memory, every pixel of a group with one of the class computing its own as a
+// fragment quad's helpers do. For GPUs whose compute units outnumber their pixel shaders'
+// (docs/performance.md, "Thirty-second session").
+#ifndef OCEAN_DEFERRED
+#error "the compute pass shades the deferred sea"
+#endif
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 0, rgba32f) uniform writeonly image2D uRadianceImage;
+#ifndef SEA_CLASS_IN_SURFACE
+layout(binding = OG_UNIT_SEA_STENCIL) uniform usampler2D uSeaStencil;  // the classes
+#endif
+uniform int uSeaClass;  // the class shaded (1..5)
+vec4 fragRadiance, fragAux;
+ivec2 gSeaPixel = ivec2(0);
+bool gSeaOfClass = false;  // this invocation's pixel is the class's (else it only lends its slopes)
+shared vec2 sSeaSlope[64];
+shared uint sSeaAnyOfClass;
+#define SEA_PIXEL gSeaPixel
+#else
+#define SEA_PIXEL ivec2(gl_FragCoord.xy)
+#endif
 #include "ocean/sea_surface.glsl"
+#ifdef OCEAN_COMPUTE
+// The pixel's class: 0 where no sea was drawn.
+uint seaClassAt(ivec2 pixel) {
+#ifdef SEA_CLASS_IN_SURFACE
+  return texelFetch(uSeaSurface, ivec3(pixel, 5), 0).w;
+#else
+  return texelFetch(uSeaStencil, pixel, 0).r;
+#endif
+}
+// The change of `slope` to the next pixel in x and in y, within the pixel's 2 x 2 quad (as
+// llvmpipe's dFdx, dFdy: the quad's row and column differences). Reached by every invocation
+// of the group; zero without the water volume, their only reader.
+void groupSlopeDerivatives(vec2 slope, out vec2 dx, out vec2 dy) {
+#ifdef OCEAN_NO_WATER_VOLUME
+  dx = vec2(0.0);
+  dy = vec2(0.0);
+#else
+  uvec2 l = gl_LocalInvocationID.xy, q = l & ~1u;
+  sSeaSlope[8u * l.y + l.x] = slope;
+  memoryBarrierShared();
+  barrier();
+  dx = sSeaSlope[8u * l.y + q.x + 1u] - sSeaSlope[8u * l.y + q.x];
+  dy = sSeaSlope[8u * (q.y + 1u) + l.x] - sSeaSlope[8u * q.y + l.x];
+#endif
+}
+#else
 #include "render/outputs.glsl"
+#endif
 
 uniform mat3 uEcefToOcean;
 uniform vec3 uSunDirEcef;
 
 vec3 oceanSurfaceRadiance(vec3 relative, vec3 radiance);  // aerial perspective (the pass)
 
-void main() {
+void shadeSeaPixel() {
 #ifdef OCEAN_DEFERRED
   float footprint;
   vec2 floorSlope;
@@ -92,7 +146,13 @@ void main() {
 #endif
   // The resolved slopes' change to the next pixel, taken while the pixel's quad is whole
   // (before the coast test's discard: derivatives of discarded neighbours are undefined on GPUs).
+#ifdef OCEAN_COMPUTE
+  vec2 dSlopeDx, dSlopeDy;
+  groupSlopeDerivatives(sea.meanSlope, dSlopeDx, dSlopeDy);
+  if (!gSeaOfClass) return;
+#else
   vec2 dSlopeDx = dFdx(sea.meanSlope), dSlopeDy = dFdy(sea.meanSlope);
+#endif
   KEEP_SEA_SAMPLES(vRelative)  // no sea over land (ocean/coast.glsl)
 #ifdef OCEAN_VALIDATION_CONSTANT_BRDF
   sea.covariance = vec3(patternTable(PATTERN_COUNT, wind.x).xy, 0.0);  // the paper's constant BRDF
@@ -140,6 +200,30 @@ void main() {
   fragAux = vec4(foam, 0.0, 0.0, 0.0);
 #endif
 }
+
+#ifdef OCEAN_COMPUTE
+void main() {
+  ivec2 size = imageSize(uRadianceImage), at = ivec2(gl_GlobalInvocationID.xy);
+  gSeaPixel = min(at, size - 1);
+  gSeaOfClass = all(lessThan(at, size)) && seaClassAt(gSeaPixel) == uint(uSeaClass);
+#ifdef OCEAN_NO_WATER_VOLUME
+  if (!gSeaOfClass) return;  // no neighbour needs its slopes
+#else
+  // A group without a pixel of the class returns as one (the derivatives' barrier).
+  if (gl_LocalInvocationIndex == 0u) sSeaAnyOfClass = 0u;
+  memoryBarrierShared();
+  barrier();
+  if (gSeaOfClass) sSeaAnyOfClass = 1u;
+  memoryBarrierShared();
+  barrier();
+  if (sSeaAnyOfClass == 0u) return;
+#endif
+  shadeSeaPixel();
+  if (gSeaOfClass) imageStore(uRadianceImage, gSeaPixel, fragRadiance);
+}
+#else
+void main() { shadeSeaPixel(); }
+#endif
 
 #if defined(OCEAN_SIMPLE_SKY) || defined(OCEAN_RADIANCE_TERMS)  // (the terms carry it)
 vec3 oceanSurfaceRadiance(vec3 relative, vec3 radiance) { return radiance; }

@@ -28,6 +28,7 @@ const int SEA_SURFACE_LAYERS = 6;
 
 uint seaHalves(float a, float b) { return packHalf2x16(vec2(a, b)); }
 
+#ifndef OCEAN_COMPUTE  // (screen derivatives: the grid's fragments)
 // Gradient of the floor's depth (m per m of the ocean frame's x and y) in the pixel's grid
 // triangle, where the vertices' depths are interpolated linearly: from the screen derivatives
 // of the depth and of the position (taken while the pixel's quad is whole). 0 where the
@@ -39,6 +40,7 @@ vec2 floorDepthSlope(vec2 oceanXY, float depthM) {
   return abs(det) > 1e-12 * max(dot(toScreen[0], toScreen[0]) + dot(toScreen[1], toScreen[1]), 1e-30)
              ? perPixel * inverse(toScreen) : vec2(0.0);
 }
+#endif
 
 // The values the sea's shading reads where the grid's vertices do not exist in its pass, with
 // their neutral values where the program has no such varyings.
@@ -105,7 +107,7 @@ vec3 seaRayDirection(ivec2 pixel) {
 // Reads the pixel's values into the globals the forward pass has as varyings (ocean/ocean.frag
 // declares them with SEA_IN empty): returns the footprint (m) and the floor's depth gradient.
 void readSeaSurface(out float footprintM, out vec2 floorSlope) {
-  ivec2 p = ivec2(gl_FragCoord.xy);
+  ivec2 p = SEA_PIXEL;  // (ocean/ocean.frag)
   uvec4 s0 = texelFetch(uSeaSurface, ivec3(p, 0), 0), s1 = texelFetch(uSeaSurface, ivec3(p, 1), 0);
   uvec4 s2 = texelFetch(uSeaSurface, ivec3(p, 2), 0), s3 = texelFetch(uSeaSurface, ivec3(p, 3), 0);
   vRelative = uintBitsToFloat(s0.x) * seaRayDirection(p);

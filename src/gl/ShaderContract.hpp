@@ -41,6 +41,7 @@ enum TextureUnit : unsigned {
   kUnitLandFraction = 28,        ///< terrain/landmask.glsl uLandFraction (render/LandMaskTexture: data::LandFractionMips)
   kUnitSeaLattice = 29,          ///< render/sea_lattice.frag uLattice (render/SeaLattice)
   kUnitSeaLatticeBlocks = 30,    ///< render/sea_lattice.frag uBlockInterpolated
+  kUnitSeaStencil = 31,          ///< ocean/ocean.frag OCEAN_COMPUTE uSeaStencil: the classes (OceanRenderer::drawDeferred)
   // Passes of their own, which bind nothing else, reuse unit 0:
   kUnitToneRadiance = 0,         ///< render/tonemap.frag uRadiance (the HDR target)
   kUnitOverlayText = 0,          ///< viewer/text.frag uText (the viewer's text overlay)

@@ -129,12 +129,13 @@ std::vector<std::string> oceanDefines(const Atmosphere* atmosphere, ValidationMo
   if (mode == ValidationMode::BrdfOnly) d.emplace_back("OCEAN_VALIDATION_BRDF_ONLY");
   return d;
 }
-// OCEANGLOBE_SEA: unset (""), "forward" (for comparisons) or "deferred".
+// OCEANGLOBE_SEA: unset (""), "forward" (for comparisons), "deferred" or "compute" (deferred,
+// its classes shaded by compute shaders).
 std::string seaPathAsked() {
   const char* e = std::getenv("OCEANGLOBE_SEA");
   const std::string asked = e != nullptr ? e : "";
-  if (asked.empty() || asked == "forward" || asked == "deferred") return asked;
-  throw InputError("OCEANGLOBE_SEA: '" + asked + "' is not forward or deferred");
+  if (asked.empty() || asked == "forward" || asked == "deferred" || asked == "compute") return asked;
+  throw InputError("OCEANGLOBE_SEA: '" + asked + "' is not forward, deferred or compute");
 }
 
 // Whether the sea may be drawn deferred (OceanRenderer::setDeferred): unless it is asked forward.
@@ -150,7 +151,8 @@ OceanRenderer::OceanRenderer(const Atmosphere* atmosphere, ValidationMode mode)
       mode_(mode),
       defines_(oceanDefines(atmosphere, mode)),
       deferred_(deferredAllowed()),
-      deferredWithoutExport_(seaPathAsked() == "deferred"),
+      deferredWithoutExport_(seaPathAsked() == "deferred" || seaPathAsked() == "compute"),
+      computeShading_(seaPathAsked() == "compute"),
       vao_(gl::createVertexArray()),
       indices_(gl::createBuffer()) {}
 
@@ -184,6 +186,63 @@ const gl::Program& OceanRenderer::deferredProgram(unsigned features) {
   d.emplace_back("OCEAN_DEFERRED");
   p = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}}, d);
   return p;
+}
+
+const gl::Program& OceanRenderer::deferredComputeProgram(unsigned features) {
+  gl::Program& p = programs().deferredComputeVariants.at(features);
+  if (p.id() != 0) return p;
+  std::vector<std::string> d = featureDefines(features & ~kFeatureCoastTest);
+  d.emplace_back("OCEAN_DEFERRED");
+  d.emplace_back("OCEAN_COMPUTE");
+  if (!gl::driverProfile().stencilExport) d.emplace_back("SEA_CLASS_IN_SURFACE");
+  p = gl::Program({{GL_COMPUTE_SHADER, "ocean/ocean.frag"}}, d);
+  return p;
+}
+
+GLuint OceanRenderer::classesShadedByCompute(GLuint target) const {
+  if (!computeShading_ || countClassSamples_ || target == 0) return 0;
+  const auto attachment = [target](GLenum a, GLenum what) {
+    GLint v = 0;
+    glGetNamedFramebufferAttachmentParameteriv(target, a, what, &v);
+    return v;
+  };
+  // A single-sampled RGBA32F texture (the HDR target), without the auxiliary channels (--aov).
+  if (attachment(GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE) != GL_TEXTURE ||
+      attachment(GL_COLOR_ATTACHMENT1, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE) != GL_NONE)
+    return 0;
+  const auto texture = static_cast<GLuint>(attachment(GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME));
+  GLint format = 0, samples = 0;
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_SAMPLES, &samples);
+  return format == GL_RGBA32F && samples == 0 ? texture : 0;
+}
+
+void OceanRenderer::dispatchClass(const gl::Program& p, int seaClass, GLuint image, GLuint depthStencil) const {
+  GLint width = 0, height = 0;
+  glGetTextureLevelParameteriv(image, 0, GL_TEXTURE_WIDTH, &width);
+  glGetTextureLevelParameteriv(image, 0, GL_TEXTURE_HEIGHT, &height);
+  // The classes from the stencil: the depth-stencil texture read as its stencil, unfiltered
+  // (an integer texture is incomplete otherwise); its state put back after.
+  GLint mode = 0, minFilter = 0, magFilter = 0;
+  glGetTextureParameteriv(depthStencil, GL_DEPTH_STENCIL_TEXTURE_MODE, &mode);
+  glGetTextureParameteriv(depthStencil, GL_TEXTURE_MIN_FILTER, &minFilter);
+  glGetTextureParameteriv(depthStencil, GL_TEXTURE_MAG_FILTER, &magFilter);
+  glTextureParameteri(depthStencil, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_STENCIL_INDEX);
+  glTextureParameteri(depthStencil, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(depthStencil, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glBindTextureUnit(gl::kUnitSeaStencil, depthStencil);
+  glBindImageTexture(0, image, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  p.set("uSeaClass", seaClass);
+  // The surface pass's writes and the stencil before the reads; the image's writes before the
+  // target's next users.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glDispatchCompute(static_cast<GLuint>((width + 7) / 8), static_cast<GLuint>((height + 7) / 8), 1);
+  glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindTextureUnit(gl::kUnitSeaStencil, 0);
+  glTextureParameteri(depthStencil, GL_DEPTH_STENCIL_TEXTURE_MODE, mode);
+  glTextureParameteri(depthStencil, GL_TEXTURE_MIN_FILTER, minFilter);
+  glTextureParameteri(depthStencil, GL_TEXTURE_MAG_FILTER, magFilter);
 }
 
 double OceanRenderer::farthestSeaAngleRad(const geo::CameraView& view) {
@@ -437,6 +496,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
                     ? 1
                     : 0;
   lastDeferred_ = false;
+  lastClassesByCompute_ = false;
   lastSurfaceCompact_ = false;
   lastRadianceTerms_ = false;
   lastCoversScreen_ = false;
@@ -841,8 +901,11 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
   glDisable(GL_DEPTH_TEST);
   glDepthMask(GL_FALSE);
-  if (!exportsStencil && seaVisible) classesIntoStencil();
-  // The shading: a full-screen pass per class present, only its pixels.
+  // The shading: a full-screen pass per class present, only its pixels; or a compute dispatch
+  // into the target's image, which reads the classes where they are.
+  const GLuint image = classesShadedByCompute(static_cast<GLuint>(target));
+  lastClassesByCompute_ = image != 0;
+  if (!exportsStencil && seaVisible && image == 0) classesIntoStencil();
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glStencilMask(0);
   surface_.bindForReading();
@@ -853,9 +916,13 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
     if (rows.at(2 * k + 1) < rows.at(2 * k)) continue;  // no pixel of this class
     if (timer_ != nullptr) timer_->mark(kClassPass.at(k));
     if (classes) classesDrawn_ |= 1u << k;
-    const gl::Program& p = deferredProgram(perClass.at(k));
+    const gl::Program& p = image != 0 ? deferredComputeProgram(perClass.at(k)) : deferredProgram(perClass.at(k));
     prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, perClass.at(k), margin);
     p.use();
+    if (image != 0) {
+      dispatchClass(p, static_cast<int>(k + 1), image, depthStencil);
+      continue;
+    }
     glStencilFunc(GL_EQUAL, static_cast<GLint>(k + 1), 0xff);
     const auto draw = [] { glDrawArrays(GL_TRIANGLES, 0, 3); };
     if (countClassSamples_ && classes)

@@ -140,6 +140,8 @@ class OceanRenderer {
   [[nodiscard]] bool lastDrawOneBin() const { return programSet_ == 1; }
   /// Whether the last draw was deferred.
   [[nodiscard]] bool lastDrawDeferred() const { return lastDeferred_; }
+  /// Whether the last deferred draw shaded its classes by compute shaders (OCEANGLOBE_SEA=compute).
+  [[nodiscard]] bool lastClassesByCompute() const { return lastClassesByCompute_; }
   /// Whether the last deferred draw's surface buffer had the compact layout (SEA_SURFACE_COMPACT).
   [[nodiscard]] bool lastSurfaceCompact() const { return lastSurfaceCompact_; }
   /// Grid cell size in pixels (the paper's ~8 px); smaller = finer geometry, slower.
@@ -337,6 +339,15 @@ class OceanRenderer {
   glm::vec4 layOutGridOnBlocks(int width, int height);
   /// The deferred sea's shading program for `features` (coast test excluded), compiled on first use.
   const gl::Program& deferredProgram(unsigned features);
+  /// ocean.frag OCEAN_DEFERRED compiled as a compute shader (OCEAN_COMPUTE) with `features`.
+  const gl::Program& deferredComputeProgram(unsigned features);
+  /// The texture of `target`'s colour where the deferred classes are shaded by compute shaders
+  /// (OCEANGLOBE_SEA=compute, a single-sampled RGBA32F texture, no auxiliary channels, the
+  /// classes' samples not counted); 0: by full-screen draws.
+  [[nodiscard]] GLuint classesShadedByCompute(GLuint target) const;
+  /// Shades class `seaClass` (1..kSeaClasses) with `p` (deferredComputeProgram, in use) into
+  /// `image`, the classes read from `depthStencil`'s stencil or the surface buffer.
+  void dispatchClass(const gl::Program& p, int seaClass, GLuint image, GLuint depthStencil) const;
   /// How far from land (m along the sea) the terrain's shadows can fall on the sea's surface or
   /// on the floor seen through it: the casters' height over the tangent of the Sun's elevation
   /// (the longest shadow on the sea), plus, with the water volume, how far from its pixel the
@@ -370,6 +381,10 @@ class OceanRenderer {
   /// Deferred also where the driver cannot export stencil values (NVIDIA's): only when asked,
   /// OCEANGLOBE_SEA=deferred, until measured on such a GPU (docs/performance.md, "Tenth session").
   bool deferredWithoutExport_;
+  /// The deferred classes shaded by compute shaders (OCEANGLOBE_SEA=compute; classesShadedByCompute):
+  /// for GPUs whose pixel shaders are few (the H200's: docs/performance.md, "Thirty-second session");
+  /// slower on llvmpipe (sea-4m's open sea 105 -> 175 ms of one thread).
+  bool computeShading_;
   /// The programs that read the wave patterns, each compiled on first use: set 1 with
   /// PATTERN_ONE_BIN and PATTERN_CONSTANT_WIND (a constant wind along one of the patterns'
   /// direction bins: one bin's lookups, the wind, its bin and the tables' values as uniforms;
@@ -379,6 +394,7 @@ class OceanRenderer {
     std::array<gl::Program, 32> variants;    ///< by feature bits
     gl::Program classify;                    ///< ocean/sea_classify.frag
     std::array<gl::Program, 16> deferredVariants;  ///< ocean.frag OCEAN_DEFERRED, by feature bits
+    std::array<gl::Program, 16> deferredComputeVariants;  ///< the same with OCEAN_COMPUTE
     std::array<gl::Program, 8> surfaceVariants;    ///< sea_surface.frag: volume, coast, classes bits
     std::array<gl::Program, 8> gridComputeVariants;  ///< grid_vertices.comp, as surfaceVariants
     /// grid_vertices.comp with the radiance terms, by feature bits (kFeatureRadianceTerms's aside)
@@ -402,6 +418,7 @@ class OceanRenderer {
   std::size_t gridNearLandBytes_ = 0;
   SeaSurfaceBuffer surface_;
   bool lastDeferred_ = false;
+  bool lastClassesByCompute_ = false;  ///< lastClassesByCompute
   bool lastSurfaceCompact_ = false;
   unsigned classesDrawn_ = 0;  ///< classesDrawn()
   bool countClassSamples_ = false;

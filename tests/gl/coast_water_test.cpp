@@ -418,7 +418,7 @@ data::LatLonGrid shadowingIsland(bool shelving) {
 }
 
 // Bit k of OceanRenderer::classesDrawn: class k + 1 of ocean/sea_classify.frag.
-constexpr unsigned kClassOpenSea = 1, kClassShadows = 2, kClassFloor = 4, kClassFloorShadows = 8;
+constexpr unsigned kClassOpenSea = 1, kClassShadows = 2, kClassFloor = 4, kClassFloorShadows = 8, kClassCoast = 16;
 
 // Samples per class (open sea, shadows, floor, floor with shadows, coast) as "n n n n n", for
 // failure messages.
@@ -692,6 +692,52 @@ TEST(CoastWater, DeferredSeaWithoutStencilExportDrawsTheSameClasses) {
     const test::Comparison c = test::compareRgb(copied, exported, 0);
     if (c.maxDiff != 0) io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".diff.png"), c.diff);
     EXPECT_EQ(c.maxDiff, 0) << name << ": " << c.describe();
+  }
+}
+
+// OCEANGLOBE_SEA=compute: the deferred classes shaded by compute shaders (for GPUs whose pixel
+// shaders are few), the water volume's slope derivatives exchanged in the work group's shared
+// memory, the classes read from the stencil or, without stencil export, from the surface
+// buffer: the picture of the full-screen passes. Over the shelf (floor and coast classes), the
+// island's bank in its shadow and the open Atlantic; on llvmpipe bit-identical (a GPU may
+// contract its arithmetic differently in the two stages: 1 level allowed). Mutations: the
+// derivatives set to 0 change the shelf by up to 7 levels, taken from the next quad by 5; the
+// classes unread leave the sea black (255).
+TEST(CoastWater, DeferredSeaByComputeDrawsTheSamePicture) {
+  const bool exports = gl::createHeadlessContext()->info().profile.stencilExport;
+  const std::vector<std::tuple<std::string, data::LatLonGrid, render::FrameInput, unsigned>> views{
+      {"compute_shelf", shelf(), classView({kLat - 2.2 / 111.2, kLon, 20.0}, 10.0, -15.0, 40.0, 20.0),
+       kClassFloor | kClassCoast},
+      {"compute_island_bank", shadowingIsland(true),
+       classView({kLat - 1.0 / 110.8, kLon + 8.0 / (111.3 * std::cos(kLat * M_PI / 180.0)), 200.0}, 200.0, -25.0, 3.0,
+                 250.0),
+       kClassFloorShadows},
+      {"compute_open_atlantic", data::defaultElevation(), classView({20.0, -40.0, 4.0}, 270.0, -10.0, 30.0, 250.0),
+       0u}};  // (one class, unrecorded: no floor or coast in the frame)
+  for (const bool exportStencil : {true, false}) {
+    if (exportStencil && !exports) continue;
+    const std::optional<test::ScopedEnv> noExport =
+        exportStencil ? std::nullopt : std::optional<test::ScopedEnv>(std::in_place, "OCEANGLOBE_STENCIL_EXPORT", "0");
+    for (const auto& [name, grid, f, mustDraw] : views) {
+      SCOPED_TRACE(name + (exportStencil ? " (stencil exported)" : " (classes in the surface buffer)"));
+      auto drawn = [&](const char* path) {
+        const test::ScopedEnv sea("OCEANGLOBE_SEA", path);
+        auto ctx = gl::createHeadlessContext();
+        render::GlobeRenderer r(grid);
+        r.render(f);
+        EXPECT_TRUE(r.ocean().lastDrawDeferred());
+        EXPECT_EQ(r.ocean().lastClassesByCompute(), std::string(path) == "compute");
+        EXPECT_EQ(r.ocean().classesDrawn() & mustDraw, mustDraw) << r.ocean().classesDrawn();
+        return r.display();
+      };
+      const io::ImageRgba8 fragments = drawn("deferred"), computed = drawn("compute");
+      const test::Comparison c = test::compareRgb(computed, fragments, 1);
+      if (c.maxDiff > 1) {
+        io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".png"), computed);
+        io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".diff.png"), c.diff);
+      }
+      EXPECT_LE(c.maxDiff, 1) << name << ": " << c.describe();
+    }
   }
 }
 
