@@ -928,6 +928,7 @@ void GlobeRenderer::drawOcean(const geo::CameraView& view, const FrameInput& f) 
                                              ocean::kWaterEpsilon);
   lighting.floorInReach = ts.tiles == 0 || ts.seaSeenMaxHeightM > -0.5 * reachM;
   floorInReachFrame_ = lighting.floorInReach;
+  causticsSeenFrame_ = false;
   lighting.classes = f.oceanClasses;
   // Waves fade out on the way up so the grid meets the orbit model at the switch.
   const double h = view.position.heightM;
@@ -935,11 +936,19 @@ void GlobeRenderer::drawOcean(const geo::CameraView& view, const FrameInput& f) 
   const double amplitude = 1.0 - x * x * (3.0 - 2.0 * x);
   if (f.oceanModel == OceanModel::Bruneton) {
     if (timer_ != nullptr) timer_->mark("ocean waves");
-    // Only the patterns some pixel resolves (all for the water volume's caustics).
-    patterns_->update(f.simulationTimeS, lighting.floorInReach ? ocean::kPatternCount
-                                         : OceanPatterns::resolvedPatternCount(
-                                               patterns_->patterns().params,
-                                               OceanPatterns::finestSeaFootprintM(view, f.height)));
+    // The caustics are looked up at a blur of at least twice the floor's footprint, itself at
+    // least the sea's (ocean/water_volume.glsl's causticGain), and only where that is under
+    // their patterns' tiles: from a few hundred metres up none is (their map unmade, 7.7 ms
+    // of the demo's 1-20 km frames, docs/performance.md). Only the patterns some pixel
+    // resolves, all where the caustics are seen.
+    const ocean::WavePatternParams& params = patterns_->patterns().params;
+    const double finestM = OceanPatterns::finestSeaFootprintM(view, f.height);
+    lighting.causticsSeen = lighting.floorInReach &&
+                            (causticsAlwaysMade_ || OceanPatterns::resolvedPatternCount(params, 2.0 * finestM) >
+                                                        ocean::kPatternCount - kCausticPatterns);
+    causticsSeenFrame_ = lighting.causticsSeen;
+    patterns_->update(f.simulationTimeS, lighting.causticsSeen ? ocean::kPatternCount
+                                                               : OceanPatterns::resolvedPatternCount(params, finestM));
   }
   if (timer_ != nullptr) timer_->mark("ocean");
   glDepthFunc(GL_GREATER);

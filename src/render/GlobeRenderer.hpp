@@ -303,6 +303,12 @@ class GlobeRenderer {
   /// Whether the last frame drew the sea with its water volume (a floor within the water's
   /// reach under sea in view: TerrainStats::seaSeenMaxHeightM; false above 20 km).
   [[nodiscard]] bool lastFrameFloorInReach() const { return floorInReachFrame_; }
+  /// Whether the last frame made the caustics' map (a floor in reach, and its footprint under
+  /// the caustic patterns' tiles somewhere: OceanLighting::causticsSeen).
+  [[nodiscard]] bool lastFrameCausticsSeen() const { return causticsSeenFrame_; }
+  /// Whether the caustics' map is made wherever a floor is in reach, seen or not (off by
+  /// default; on: the reference of the tests).
+  void setCausticsAlwaysMade(bool on) { causticsAlwaysMade_ = on; }
   /// The pixels the last frame listed (setScatteredPartsListed; reads the count back: for tests).
   [[nodiscard]] std::uint32_t listedPixelCount() const;
   /// The last frame's pixels per sky texel along a side (1: the sky per pixel).
@@ -382,6 +388,8 @@ class GlobeRenderer {
   /// almost all of those pixels, over the globe's part, which ran for nothing before them.
   bool frameLandLast_ = false;
   bool floorInReachFrame_ = false;  ///< lastFrameFloorInReach
+  bool causticsSeenFrame_ = false;   ///< lastFrameCausticsSeen
+  bool causticsAlwaysMade_ = false;  ///< setCausticsAlwaysMade
   /// The open-sea map on its texture unit (made on a helper thread since the constructor,
   /// uploaded on first use).
   void bindOpenSeaMap();

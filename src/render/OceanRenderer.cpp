@@ -373,7 +373,7 @@ unsigned OceanRenderer::frameFeatures(const geo::CameraView& view, const OceanPa
   } else if (atmosphere_ != nullptr) {
     atmosphere_->prepareSunLayerSums();  // (once: the Sun layers' radial sums, where used)
   }
-  if ((features & kFeatureWaterVolume) != 0) {
+  if ((features & kFeatureWaterVolume) != 0 && lighting.causticsSeen) {
     if (timer_ != nullptr) timer_->mark("ocean caustics");
     caustics_.update(patterns, timeS);
     if (timer_ != nullptr) timer_->mark("ocean");

@@ -45,6 +45,10 @@ struct OceanLighting {
   /// its vertices: 20-26 ms there) whether any of it shows, where its surface pass would pay
   /// the grid's whole vertex shader (110-140 ms).
   bool landEverywhere = false;
+  /// Whether a pixel may look the caustics up (ocean/water_volume.glsl's causticCurvature: only
+  /// where the floor's footprint, at least the sea's, is under the tile of a caustic pattern);
+  /// false leaves their curvature map unmade this frame.
+  bool causticsSeen = true;
 };
 
 enum class OceanModel {

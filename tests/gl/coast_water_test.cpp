@@ -112,6 +112,31 @@ TEST(CoastWater, CausticsMoveOnAShallowFloorOnly) {
   EXPECT_GT(change[0], 5.0 * change[1]);  // measured 24x
 }
 
+// The caustics' map is made only where some pixel looks it up: their lookups stop where twice
+// the floor's footprint (at least the sea's) reaches the caustic patterns' tiles (6 m and
+// 0.64 m), so over a floor 2 m down it is made from 20 m and not from 3 km, with the
+// same picture as with the map made (a rule that skipped it where seen would leave the floor
+// without its caustics: the 20 m view then differs by up to 22 levels).
+TEST(CoastWater, CausticsMapIsMadeOnlyWhereLookedUp) {
+  auto ctx = gl::createHeadlessContext();
+  for (const double heightM : {20.0, 3000.0}) {
+    SCOPED_TRACE(heightM);
+    render::FrameInput f = downView(heightM, 1.0);
+    f.camera.pitchDeg = -60.0;
+    std::array<io::ImageRgba8, 2> shown;
+    for (const bool always : {false, true}) {
+      render::GlobeRenderer r(flatFloor(2.0));
+      r.setCausticsAlwaysMade(always);
+      r.render(f);
+      EXPECT_TRUE(r.lastFrameFloorInReach());
+      EXPECT_EQ(r.lastFrameCausticsSeen(), always || heightM < 100.0);
+      shown.at(always ? 1 : 0) = r.display();
+    }
+    const test::Comparison c = test::compareRgb(shown[0], shown[1], 0);
+    EXPECT_EQ(c.maxDiff, 0) << c.describe();
+  }
+}
+
 // The floor seen through the waves from close by does not sparkle pixel by pixel: from 2 m,
 // 30° down over a floor 5 m deep, the finest resolved waves turn the refracted rays enough to
 // move the floor point by centimetres from one pixel to the next, and caustics looked up finer
