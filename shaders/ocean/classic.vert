@@ -8,10 +8,7 @@
 
 uniform ivec2 uGridSize;
 uniform vec4 uGridMarginNdc;
-uniform vec3 uRight;
-uniform vec3 uUp;
-uniform vec3 uForward;
-uniform vec2 uTanHalfFov;
+#include "geo/camera_ray.glsl"
 uniform mat4 uViewProjection;
 uniform mat3 uEcefToOcean;
 uniform float uEyeHeight;
@@ -35,7 +32,7 @@ void main() {
   int iy = gl_VertexID / uGridSize.x;
   vec2 lo = -1.0 - uGridMarginNdc.xz, hi = 1.0 + uGridMarginNdc.yw;
   vec2 ndc = mix(lo, hi, vec2(ix, iy) / vec2(uGridSize - 1));
-  vec3 dir = normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp);
+  vec3 dir = cameraRay(ndc);
   float t = intersectEllipsoid(dir);
   vec3 up = transpose(uEcefToOcean)[2];
   if (t < 0.0) {

@@ -20,10 +20,7 @@
 
 uniform ivec2 uGridSize;      // vertices per row, rows
 uniform vec4 uGridMarginNdc;  // overshoot (left, right, bottom, top) so displaced edges stay covered
-uniform vec3 uRight;          // camera basis, ECEF axes
-uniform vec3 uUp;
-uniform vec3 uForward;
-uniform vec2 uTanHalfFov;
+#include "geo/camera_ray.glsl"
 uniform mat4 uViewProjection; // camera-relative ECEF -> clip (reversed-Z)
 uniform mat3 uEcefToOcean;    // rows: ocean frame east, north, up in ECEF
 uniform float uEyeHeight;     // eye height above the ellipsoid, m
@@ -100,7 +97,7 @@ vec4 gridVertex(int vertexId) {
   int ix = vertexId % uGridSize.x;
   int iy = vertexId / uGridSize.x;
   vec2 ndc = gridNdc(ivec2(ix, iy));
-  vec3 dir = normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp);
+  vec3 dir = cameraRay(ndc);
   float t = intersectEllipsoid(dir);
   if (t < 0.0) {
     // Above the horizon: lower the ray in its vertical plane until it grazes the sea.

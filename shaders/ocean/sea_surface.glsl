@@ -93,15 +93,12 @@ void writeSeaSurface(float footprintM, vec2 floorSlope, int seaClass) {
 }
 #elif defined(OCEAN_DEFERRED)
 layout(binding = OG_UNIT_SEA_SURFACE) uniform usampler2DArray uSeaSurface;
-uniform vec3 uRight;  // the camera's basis, ECEF axes (as the grid's: ocean/grid_vertex.glsl)
-uniform vec3 uUp;
-uniform vec3 uForward;
-uniform vec2 uTanHalfFov;
+#include "geo/camera_ray.glsl"
 
 // The unit ray through the pixel's centre, ECEF axes (geo::CameraView::rayDirection).
 vec3 seaRayDirection(ivec2 pixel) {
   vec2 ndc = (vec2(pixel) + 0.5) / vec2(textureSize(uSeaSurface, 0).xy) * 2.0 - 1.0;
-  return normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp);
+  return cameraRay(ndc);
 }
 
 // Reads the pixel's values into the globals the forward pass has as varyings (ocean/ocean.frag

@@ -58,7 +58,7 @@ GRID_OUT float vNearShadow;  // > 0 in triangles that the terrain's shadows may 
 // onto the ellipsoid, rays above the horizon lowered onto it.
 vec3 seaClassGridPoint(ivec2 i) {
   vec2 ndc = gridNdc(clamp(i, ivec2(0), uGridSize - 1));
-  vec3 dir = normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp);
+  vec3 dir = cameraRay(ndc);
   float t = intersectEllipsoid(dir);
   if (t < 0.0) {
     vec3 up = transpose(uEcefToOcean)[2];

@@ -99,17 +99,12 @@ layout(binding = OG_UNIT_SKY_LOW) uniform sampler2D uSkyLow;  // GLOBE_PART_SKY_
 uniform vec2 uSkyLowScale;  // 1 / (their count x uSkyLowFactor): fragment -> texture coordinates
 #endif
 
-uniform vec3 uRight;       // camera basis, ECEF axes
-uniform vec3 uUp;
-uniform vec3 uForward;
-uniform vec2 uTanHalfFov;  // (tan(fov_y/2) * aspect, tan(fov_y/2))
+#include "geo/camera_ray.glsl"
 uniform vec2 uPixelNdc;    // size of one pixel in NDC
 uniform float uNear;       // near plane, m
 uniform float uGlobeDepthPushM;  // the classifying draws' depth over land: GlobeRenderer::kGlobeDepthPushM
 uniform vec3 uSunDir;      // unit, ECEF axes
 
-// The unit ray through normalised device position `ndc` (geo::CameraView::rayDirection).
-vec3 viewRay(vec2 ndc) { return normalize(uForward + ndc.x * uTanHalfFov.x * uRight + ndc.y * uTanHalfFov.y * uUp); }
 
 // Below 20 km (GLOBE_BEHIND) the projected-grid pass draws the sea: the globe leaves its sea
 // samples to it (and shades the grid's horizon gaps); above, it shades the sea itself. A
@@ -264,7 +259,7 @@ PixelRays traceRays() {
   rays.nHit = 0;
   for (int i = 0; i < 4; ++i) {
     vec2 ndc = vNdc + offsets[i] * uPixelNdc;
-    rays.dirs[i] = viewRay(ndc);
+    rays.dirs[i] = cameraRay(ndc);
     rays.ts[i] = PART_ALL_MISS ? -1.0 : intersectEllipsoid(rays.dirs[i]);
     rays.nHit += rays.ts[i] >= 0.0 ? 1 : 0;
   }
@@ -341,7 +336,7 @@ void main() {
   PixelRays rays = traceRays();
 #ifdef GLOBE_CLASSIFY_CENTRE
   // The pixel-centre ray: its hit decides the open sea and gives the depth.
-  vec3 centreDir = viewRay(vNdc);
+  vec3 centreDir = cameraRay(vNdc);
   float centreT = rays.nHit > 0 ? intersectEllipsoid(centreDir) : -1.0;
   vec3 centreNormal = ellipsoidNormal(centreDir, max(centreT, 0.0));
   vec2 centreLatLon = latLonOfNormal(centreNormal);
@@ -429,7 +424,7 @@ void main() {
 // (there by the 2′ mask at the centre; a block the 15″ cells decide by its own class).
 uniform int uBlockLand;  // 1: the blocks are land
 void main() {
-  vec3 centreDir = viewRay(vNdc);
+  vec3 centreDir = cameraRay(vNdc);
   float centreT = max(intersectEllipsoid(centreDir), 0.0);
   float depthZ = centreT * dot(centreDir, uForward);
   if (uBlockLand != 0) depthZ += uGlobeDepthPushM;
@@ -449,7 +444,7 @@ uniform float uSkyLowFactor;
 uniform vec2 uFrameSize;  // the full frame, pixels
 void main() {
   vec2 ndc = gl_FragCoord.xy * uSkyLowFactor / uFrameSize * 2.0 - 1.0;
-  vec3 dir = viewRay(ndc);
+  vec3 dir = cameraRay(ndc);
   float R = uAtmosphere.bottomRadius;
   float r = R + uCamAltitude;
   float mu = max(dot(dir, uCamUp), -sqrt(uCamAltitude * (2.0 * R + uCamAltitude)) / r + 1e-5);
@@ -514,7 +509,7 @@ float latticeFloorDepthM(vec3 dir, float t, vec3 n) {
   return t < 0.0 ? 1e4 : seaFloorDepthM(n, groundFootprintRad(dir, t, n), land, keepDepth);
 }
 float latticeFloorDepthM(vec2 ndc) {
-  vec3 dir = viewRay(ndc);
+  vec3 dir = cameraRay(ndc);
   float t = intersectEllipsoid(dir);
   return latticeFloorDepthM(dir, t, ellipsoidNormal(dir, max(t, 0.0)));
 }
@@ -541,7 +536,7 @@ void main() {
   ivec2 point = ivec2(uPixels[i] & 0xffffu, uPixels[i] >> 16);
   vNdc = vec2(point) * (SEA_LATTICE_PX * uPixelNdc) - 1.0;
   shadeClassPixel();
-  vec3 dir = viewRay(vNdc);
+  vec3 dir = cameraRay(vNdc);
   float t = intersectEllipsoid(dir);
   vec3 n = ellipsoidNormal(dir, max(t, 0.0));
   float turnRad = uPixelNdc.y * uTanHalfFov.y + 2.0 * latticeArcRad(dir, max(t, 0.0), n);
@@ -564,7 +559,7 @@ void main() { shadeClassPixel(); }
 void main() {
   vec3 radiance = 4.0 * textureLod(uSkyLow, gl_FragCoord.xy * uSkyLowScale, 0.0).rgb;
 #ifdef GLOBE_SKY_SUN_DISC  // drawn again over the Sun's box only (GlobeRenderer::drawSunDisc)
-  vec3 centreDir = viewRay(vNdc);
+  vec3 centreDir = cameraRay(vNdc);
   // A pixel spans at most this angle (its diagonal at the centre of the frame), rad
   // (render::sunDiscScissor's cone).
   float pixelRad = length(uPixelNdc * uTanHalfFov);
