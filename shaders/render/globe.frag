@@ -105,7 +105,6 @@ uniform float uNear;       // near plane, m
 uniform float uGlobeDepthPushM;  // the classifying draws' depth over land: GlobeRenderer::kGlobeDepthPushM
 uniform vec3 uSunDir;      // unit, ECEF axes
 
-
 // Below 20 km (GLOBE_BEHIND) the projected-grid pass draws the sea: the globe leaves its sea
 // samples to it (and shades the grid's horizon gaps); above, it shades the sea itself. A
 // constant, not a uniform: llvmpipe runs both sides of every `if`, so each variant compiles

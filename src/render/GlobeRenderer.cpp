@@ -291,6 +291,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   prepareFractionMips(view, f.height);
   constantWindFrame_ = constantWindVariants_ && !wind_->hasLayers();
   floorInReachFrame_ = false;  // (drawOcean's, below the ceiling)
+  causticsSeenFrame_ = false;
   terrain_->setSeaCrestM(patterns_->amplitudeBoundM() + 1.0);  // (+ 1 m: the morph's and chords' rounding)
   terrain_->setCoarseLandMask(coarseMaskFrame_);
   terrain_->setFilteredLandMask(filteredMaskFrame_);
@@ -936,19 +937,23 @@ void GlobeRenderer::drawOcean(const geo::CameraView& view, const FrameInput& f) 
   const double amplitude = 1.0 - x * x * (3.0 - 2.0 * x);
   if (f.oceanModel == OceanModel::Bruneton) {
     if (timer_ != nullptr) timer_->mark("ocean waves");
-    // The caustics are looked up at a blur of at least twice the floor's footprint, itself at
-    // least the sea's (ocean/water_volume.glsl's causticGain), and only where that is under
-    // their patterns' tiles: from a few hundred metres up none is (their map unmade, 7.7 ms
-    // of the demo's 1-20 km frames, docs/performance.md). Only the patterns some pixel
-    // resolves, all where the caustics are seen.
+    // Only the patterns some pixel resolves (the finest footprint of the CPU's rays, half a
+    // level of margin: OceanPatterns::resolvedPatternCount). The caustics are looked up at a
+    // blur of at least twice the floor's footprint, itself at least the sea's (ocean/
+    // water_volume.glsl's causticGain), only where that is under their patterns' tiles: a
+    // subset of those patterns, and none from a km or two up in the demo's views at 1280x720,
+    // where their map is left unmade (9.3 ms of one thread in its 1-20 km frames,
+    // docs/performance.md). As the patterns' count, the rule takes the sea's footprint on
+    // the undisplaced surface: wave faces seen at a few degrees' grazing, which shrink it
+    // beyond the margin, may then read a pattern or a caustic map left from an earlier frame.
     const ocean::WavePatternParams& params = patterns_->patterns().params;
     const double finestM = OceanPatterns::finestSeaFootprintM(view, f.height);
     lighting.causticsSeen = lighting.floorInReach &&
                             (causticsAlwaysMade_ || OceanPatterns::resolvedPatternCount(params, 2.0 * finestM) >
                                                         ocean::kPatternCount - kCausticPatterns);
     causticsSeenFrame_ = lighting.causticsSeen;
-    patterns_->update(f.simulationTimeS, lighting.causticsSeen ? ocean::kPatternCount
-                                                               : OceanPatterns::resolvedPatternCount(params, finestM));
+    patterns_->update(f.simulationTimeS,
+                      causticsAlwaysMade_ ? ocean::kPatternCount : OceanPatterns::resolvedPatternCount(params, finestM));
   }
   if (timer_ != nullptr) timer_->mark("ocean");
   glDepthFunc(GL_GREATER);

@@ -118,7 +118,7 @@ class OceanRenderer {
   /// them (setCountClassSamples).
   [[nodiscard]] const std::array<std::uint64_t, kSeaClasses>& classSamples() const { return classSamples_; }
   /// Whether the filtered sea may be drawn deferred (drawDeferred) where the target allows it
-  /// (single-sampled, a depth-stencil texture; stencil export, or OCEANGLOBE_SEA=deferred); on by default. Off, the grid's
+  /// (single-sampled, a depth-stencil texture; stencil export, or OCEANGLOBE_SEA=deferred or compute); on by default. Off, the grid's
   /// fragments shade the sea themselves (as under multisampling and in `validate`).
   void setDeferred(bool on) { deferred_ = on; }
   /// Cells of this many pixels or more (grown: geometryIsSubPixel) are drawn forward: their
@@ -383,7 +383,9 @@ class OceanRenderer {
   std::vector<std::string> defines_;        ///< the filtered model's, whatever the features
   bool deferred_;                           ///< setDeferred
   /// Deferred also where the driver cannot export stencil values (NVIDIA's): only when asked,
-  /// OCEANGLOBE_SEA=deferred, until measured on such a GPU (docs/performance.md, "Tenth session").
+  /// OCEANGLOBE_SEA=deferred or compute, until measured on such a GPU (docs/performance.md,
+  /// "Tenth session"); where compute cannot serve (--aov, counted samples) the classes then go
+  /// into the stencil by the copy passes.
   bool deferredWithoutExport_;
   /// The deferred classes shaded by compute shaders (OCEANGLOBE_SEA=compute; classesShadedByCompute):
   /// for GPUs whose pixel shaders are few (the H200's: docs/performance.md, "Thirty-second session");
