@@ -78,7 +78,7 @@ shared uint sSeaAnyOfClass;
 // The pixel's class: 0 where no sea was drawn.
 uint seaClassAt(ivec2 pixel) {
 #ifdef SEA_CLASS_IN_SURFACE
-  return texelFetch(uSeaSurface, ivec3(pixel, 5), 0).w;
+  return texelFetch(uSeaSurface, ivec3(pixel, 0), 0).y & SEA_CLASS_BITS;
 #else
   return texelFetch(uSeaStencil, pixel, 0).r;
 #endif

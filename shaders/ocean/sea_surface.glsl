@@ -5,21 +5,21 @@
 // so the grid's ~8-pixel cells shaded their pixels about twice over (docs/performance.md):
 // drawn through this buffer the costly shading runs once per pixel.
 // Layers of an RGBA32UI array texture, floats by their bits, smooth terms as half floats:
-//   0: distance to the eye along the pixel's ray (m), pixel footprint (m), undisplaced
-//      position in the ocean frame (m)
+//   0: distance to the eye along the pixel's ray (m), pixel footprint (m; its lowest
+//      SEA_CLASS_BITS bits the pixel's class where the driver cannot export stencil values,
+//      SEA_CLASS_IN_SURFACE, 0 where no sea was drawn; dropped from the footprint everywhere, so
+//      both paths shade alike), undisplaced position in the ocean frame (m)
 //   1: the vertices' mean slope, their slope covariance's xx and yy
 //   2: the Jacobian statistics; halves: the covariance's xy, the aerial in-scatter
 //   3: halves: the vertices' pattern shares 0-4, the aerial transmittance
 //   4: floor depth (m), the floor's depth gradient in the triangle; halves: the water's Sun
 //      irradiance (red, green)
-//   5: halves: the water's Sun irradiance (blue) and sky irradiance, the fine-floor flag; the
-//      pixel's class where the driver cannot export stencil values (SEA_CLASS_IN_SURFACE; 0:
-//      no sea)
+//   5: halves: the water's Sun irradiance (blue) and sky irradiance, the fine-floor flag
 // The position is not stored: the interpolated point of the grid's triangle at the pixel's
 // centre lies on the pixel's ray, so its distance along the ray gives it back (seaRayDirection).
-// SEA_SURFACE_COMPACT (a frame without the water volume, the class in the stencil: render/
-// OceanRenderer::surfaceCompact): layers 0-3 only; each layer written and read costs llvmpipe
-// about as much as a texture lookup per pixel.
+// SEA_SURFACE_COMPACT (a frame without the water volume: render/OceanRenderer::surfaceCompact):
+// layers 0-3 only; each layer written and read costs llvmpipe about as much as a texture lookup
+// per pixel (and a GPU's few raster units 16 bytes a pixel).
 // Needs (included first): ocean/patterns.glsl (PATTERN_COUNT).
 const int SEA_SURFACE_LAYERS = 6;
 #if PATTERN_COUNT != 5
@@ -27,6 +27,9 @@ const int SEA_SURFACE_LAYERS = 6;
 #endif
 
 uint seaHalves(float a, float b) { return packHalf2x16(vec2(a, b)); }
+// The class's bits in layer 0's footprint (ocean/sea_class_stencil.frag reads them too): three
+// bits of its mantissa, 1e-6 of its value.
+const uint SEA_CLASS_BITS = 7u;
 
 #ifndef OCEAN_COMPUTE  // (screen derivatives: the grid's fragments)
 // Gradient of the floor's depth (m per m of the ocean frame's x and y) in the pixel's grid
@@ -80,7 +83,11 @@ layout(location = 5) out uvec4 seaSurface5;
 // gradient in its triangle (floorDepthSlope) and its class (1..5, kept where SEA_CLASS_IN_SURFACE).
 void writeSeaSurface(float footprintM, vec2 floorSlope, int seaClass) {
   vec3 t = SEA_AERIAL_T, s = SEA_AERIAL_S;
-  seaSurface0 = uvec4(floatBitsToUint(length(vRelative)), floatBitsToUint(footprintM), floatBitsToUint(vOceanXY));
+  uint footprintBits = floatBitsToUint(footprintM) & ~SEA_CLASS_BITS;
+#ifdef SEA_CLASS_IN_SURFACE
+  footprintBits |= uint(seaClass);
+#endif
+  seaSurface0 = uvec4(floatBitsToUint(length(vRelative)), footprintBits, floatBitsToUint(vOceanXY));
   seaSurface1 = uvec4(floatBitsToUint(vPatternMean), floatBitsToUint(vPatternCov.xy));
   seaSurface2 = uvec4(floatBitsToUint(vPatternJacobian), seaHalves(vPatternCov.z, s.r), seaHalves(s.g, s.b));
   seaSurface3 = uvec4(seaHalves(vPatternShare[0], vPatternShare[1]), seaHalves(vPatternShare[2], vPatternShare[3]),
@@ -88,7 +95,7 @@ void writeSeaSurface(float footprintM, vec2 floorSlope, int seaClass) {
 #ifndef SEA_SURFACE_COMPACT
   vec3 sunE = SEA_WATER_SUN, skyE = SEA_WATER_SKY;
   seaSurface4 = uvec4(floatBitsToUint(SEA_FLOOR_DEPTH), floatBitsToUint(floorSlope), seaHalves(sunE.r, sunE.g));
-  seaSurface5 = uvec4(seaHalves(sunE.b, skyE.r), seaHalves(skyE.g, skyE.b), seaHalves(SEA_FLOOR_FINE, 0.0), uint(seaClass));
+  seaSurface5 = uvec4(seaHalves(sunE.b, skyE.r), seaHalves(skyE.g, skyE.b), seaHalves(SEA_FLOOR_FINE, 0.0), 0u);
 #endif
 }
 #elif defined(OCEAN_DEFERRED)
@@ -108,7 +115,7 @@ void readSeaSurface(out float footprintM, out vec2 floorSlope) {
   uvec4 s0 = texelFetch(uSeaSurface, ivec3(p, 0), 0), s1 = texelFetch(uSeaSurface, ivec3(p, 1), 0);
   uvec4 s2 = texelFetch(uSeaSurface, ivec3(p, 2), 0), s3 = texelFetch(uSeaSurface, ivec3(p, 3), 0);
   vRelative = uintBitsToFloat(s0.x) * seaRayDirection(p);
-  footprintM = uintBitsToFloat(s0.y);
+  footprintM = uintBitsToFloat(s0.y & ~SEA_CLASS_BITS);
   vOceanXY = uintBitsToFloat(s0.zw);
   vPatternMean = uintBitsToFloat(s1.xy);
   vec2 covXyS = unpackHalf2x16(s2.z), s2w = unpackHalf2x16(s2.w);

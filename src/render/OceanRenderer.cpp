@@ -758,7 +758,7 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
 }
 
 bool OceanRenderer::surfaceCompact(unsigned surfaceKey) {
-  return (surfaceKey & kFeatureWaterVolume) == 0 && gl::driverProfile().stencilExport;
+  return (surfaceKey & kFeatureWaterVolume) == 0;  // (the class, without stencil export, in layer 0)
 }
 
 std::vector<std::string> OceanRenderer::surfaceDefines(unsigned key) const {

@@ -55,7 +55,7 @@ void SeaSurfaceBuffer::bindForWriting(int width, int height, GLuint depthStencil
 }
 
 void SeaSurfaceBuffer::clearClasses() const {
-  constexpr GLint kClassLayer = kLayers - 1;  // its .w (ocean/sea_class_stencil.frag and, OCEAN_COMPUTE, ocean.frag read it there)
+  constexpr GLint kClassLayer = 0;  // its .y's low bits (ocean/sea_surface.glsl's SEA_CLASS_BITS)
   const std::array<GLuint, 4> none{};
   glClearNamedFramebufferuiv(fbo_.id(), GL_COLOR, kClassLayer, none.data());
 }

@@ -24,8 +24,8 @@ class SeaSurfaceBuffer {
   /// compact layout comes (until then it holds only the compact layout's layers).
   void bindForWriting(int width, int height, GLuint depthStencil, bool compact = false);
   /// Zeroes the layer that holds each pixel's class where the driver cannot export stencil
-  /// values (layer 5, ocean/sea_surface.glsl's SEA_CLASS_IN_SURFACE; 0: no sea drawn), bound
-  /// for writing with all kLayers (never the compact layout, which needs the export).
+  /// values (layer 0, the footprint's low bits: ocean/sea_surface.glsl's SEA_CLASS_IN_SURFACE;
+  /// 0: no sea drawn), bound for writing.
   void clearClasses() const;
   /// Binds the texture to gl::kUnitSeaSurface for the shading passes.
   void bindForReading() const;
