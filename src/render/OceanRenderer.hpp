@@ -101,6 +101,9 @@ class OceanRenderer {
   /// The sea's classes (shaders/ocean/sea_classify.frag): open sea, shadows, floor, floor with
   /// shadows, coast.
   static constexpr std::size_t kSeaClasses = 5;
+  // (Without stencil export the classes take three bits: ocean/sea_surface.glsl's SEA_CLASS_BITS,
+  // classesIntoStencil's three passes.)
+  static_assert(kSeaClasses <= 7, "a pixel's class fits three bits");
   /// Which of the sea's classes (sea_classify.frag) the last draw drew: bit k for class k + 1
   /// (open sea, shadows, floor, floor with shadows, coast), where the classifying draw found
   /// fragments of them; 0 when it drew the sea in one program.

@@ -3,7 +3,8 @@
 // texture of kLayers layers (kCompactLayers while every frame has used the compact layout),
 // each a colour attachment of a framebuffer that shares the frame's depth-stencil texture, so
 // that the projected grid's surface pass is depth-tested against the terrain and writes the
-// sea's classes into the frame's stencil (render/OceanRenderer).
+// sea's classes into the frame's stencil, or without stencil export into layer 0 (render/
+// OceanRenderer).
 #include "gl/Objects.hpp"
 
 namespace og::render {
@@ -11,8 +12,8 @@ namespace og::render {
 class SeaSurfaceBuffer {
  public:
   static constexpr int kLayers = 6;  ///< SEA_SURFACE_LAYERS
-  /// Layers of the compact layout (SEA_SURFACE_COMPACT: no water volume, the class in the
-  /// stencil), the draw buffers beyond them off.
+  /// Layers of the compact layout (SEA_SURFACE_COMPACT: no water volume; the class in the
+  /// stencil, or in layer 0's footprint bits), the draw buffers beyond them off.
   static constexpr int kCompactLayers = 4;
 
   /// The single-sampled 2D depth-stencil texture attached to the bound draw framebuffer, 0

@@ -1,6 +1,6 @@
 // The deferred sea's surface buffer (render/SeaSurfaceBuffer): it holds only the compact
 // layout's layers until a frame draws without it, then all of them from then on, and its
-// framebuffer stays complete and writable through the change.
+// framebuffer stays complete and writable through the change; clearClasses zeroes the classes.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -63,5 +63,27 @@ TEST(SeaSurfaceBuffer, GrowsFromTheCompactLayersOnlyWhenAFrameNeedsThemAll) {
   EXPECT_EQ(boundLayers(b), render::SeaSurfaceBuffer::kLayers);
   b.bindForWriting(32, 8, depth.id(), /*compact=*/true);  // a new size: still all of them
   EXPECT_EQ(boundLayers(b), render::SeaSurfaceBuffer::kLayers);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+// Without stencil export each pixel's class lies in layer 0 (the footprint's low bits, ocean/
+// sea_surface.glsl), 0 where no sea is drawn: clearClasses zeroes that layer every frame, in
+// the compact layout as in the full one (last frame's classes would otherwise stay where this
+// frame draws no sea; a new texture's zeros do not show it).
+TEST(SeaSurfaceBuffer, ClearClassesZeroesLayerZeroInBothLayouts) {
+  const auto context = gl::createHeadlessContext();
+  gl::Texture depth = gl::createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(depth.id(), 1, GL_DEPTH24_STENCIL8, 16, 8);
+  render::SeaSurfaceBuffer b;
+  for (const bool compact : {true, false}) {
+    SCOPED_TRACE(compact ? "compact" : "full");
+    b.bindForWriting(16, 8, depth.id(), compact);
+    EXPECT_EQ(clearAndRead(b, 0, 5)[1], 6u);  // a class left from an earlier frame
+    b.clearClasses();
+    std::array<GLuint, 4> back{1, 1, 1, 1};
+    glGetTextureSubImage(boundTexture(b), 0, 3, 2, 0, 1, 1, 1, GL_RGBA_INTEGER, GL_UNSIGNED_INT, sizeof back,
+                         back.data());
+    EXPECT_EQ(back[1], 0u);
+  }
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
