@@ -27,12 +27,16 @@ layout(std430, binding = 4) GRID_BUFFER_ACCESS buffer GridVertices { vec4 gridVe
 layout(std430, binding = 7) GRID_BUFFER_ACCESS buffer GridRadianceTerms { vec4 gridRadianceTerms[]; };  // kGridRadianceTermsBinding
 #endif
 #ifdef OCEAN_SEA_CLASSIFY
-// Each vertex's vNearLand > 0 again, 4 bytes a vertex, for ocean/grid_near_land.comp: its
+// Each vertex's vNearLand > 0 (bit 0) and its floor within the water's reach (bit 1) again,
+// 4 bytes a vertex, for ocean/grid_near_land.comp: its
 // three reads a triangle from the vertices' 160-byte records were ~30 ns a triangle on
 // llvmpipe (binding 2 as render/globe_pixels.glsl's: each pass binds its own buffer there).
 layout(std430, binding = 2) GRID_BUFFER_ACCESS buffer GridNearLand { uint gridNearLand[]; };  // kGridNearLandBinding
 #endif
 
+#if defined(GRID_VERTEX_STORE) && defined(OCEAN_SEA_CLASSIFY) && !defined(OCEAN_NO_WATER_VOLUME)
+uniform float uWaterReachM;  // as ocean/sea_class.glsl's (OceanRenderer::setClassUniforms)
+#endif
 #ifdef GRID_VERTEX_STORE
 // After gridVertex(i): its outputs (globals here) into the buffer.
 void storeGridVertex(int i, vec4 position) {
@@ -60,7 +64,11 @@ void storeGridVertex(int i, vec4 position) {
   nearLand = vNearLand;
   nearShadow = vNearShadow;
   gridRow = float(vGridRow);
-  gridNearLand[i] = vNearLand > 0.0 ? 1u : 0u;
+  uint flags = vNearLand > 0.0 ? 1u : 0u;
+#ifndef OCEAN_NO_WATER_VOLUME
+  if (vFloorDepthM <= uWaterReachM) flags |= 2u;  // (ocean/sea_class.glsl's floor test)
+#endif
+  gridNearLand[i] = flags;
 #endif
   gridVertices[at + 5] = vec4(vPatternShare[4], transmittance);
   gridVertices[at + 6] = vec4(inscatter, floorDepthM);
@@ -107,7 +115,9 @@ vec4 loadGridVertex(int i) {
   return gridVertices[at];
 }
 #ifdef OCEAN_SEA_CLASSIFY
-// Whether vertex i's vNearLand > 0 (ocean/grid_near_land.comp).
-bool gridVertexNearLand(int i) { return gridNearLand[i] != 0u; }
+// Whether vertex i's vNearLand > 0, and its floor is within the water's reach
+// (ocean/grid_near_land.comp).
+bool gridVertexNearLand(int i) { return (gridNearLand[i] & 1u) != 0u; }
+bool gridVertexFloor(int i) { return (gridNearLand[i] & 2u) != 0u; }
 #endif
 #endif

@@ -829,10 +829,12 @@ void OceanRenderer::splitNearLand(unsigned key) {
   const std::size_t bytes = static_cast<std::size_t>(indexCount_) * sizeof(GLuint);
   gl::ensureBufferCapacity(openIndices_, openIndicesBytes_, bytes);
   gl::ensureBufferCapacity(nearLandIndices_, nearLandIndicesBytes_, bytes);
+  gl::ensureBufferCapacity(deepIndices_, deepIndicesBytes_, bytes);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridIndicesBinding, indices_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridNearLandBinding, gridNearLand_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOpenIndicesBinding, openIndices_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kNearLandIndicesBinding, nearLandIndices_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDeepIndicesBinding, deepIndices_.id());
   const int triangles = indexCount_ / 3;
   programs().nearLandSplit.set("uTriangleCount", triangles);
   programs().nearLandSplit.use();
@@ -865,12 +867,20 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
     if (classes) routedShadows = setClassUniforms(p, view, patterns, lighting, amplitudeScale, features);
   };
   const gl::Program& surface = prepareSurfacePass(surfaceKey, prepareSurface);
-  // With classes the coast test runs only where land may be near: the grid in two draws.
+  // With classes the coast test runs only where land may be near, and the water's terms only
+  // where a floor may be within reach: the grid in three draws (splitNearLand).
   const gl::Program* open = nullptr;
-  if (classes && (features & kFeatureCoastTest) != 0) {
+  const gl::Program* deep = nullptr;
+  const bool fullLayout = (surfaceKey & kFeatureWaterVolume) != 0;
+  if (classes) {
     splitNearLand(surfaceKey);
     open = &surfaceProgram(surfaceKey & ~kFeatureCoastTest);
     prepareSurface(*open);
+    deep = open;
+    if (fullLayout) {
+      deep = &surfaceProgram(surfaceKey & ~(kFeatureCoastTest | kFeatureWaterVolume));
+      prepareSurface(*deep);
+    }
   }
   if (classes) resetClassRows();
   GLint target = 0;
@@ -891,6 +901,9 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
                             if (open == nullptr) return drawGrid(surface);
                             drawGridIndices(*open, openIndices_);
                             drawGridIndices(surface, nearLandIndices_);
+                            if (fullLayout) surface_.drawLayers(true);  // (deep: the compact layout)
+                            drawGridIndices(*deep, deepIndices_);
+                            if (fullLayout) surface_.drawLayers(false);
                           }) != 0;
   std::array<GLint, 2 * kSeaClasses> rows = noClassRows();
   rows.at(0) = 0, rows.at(1) = 0;  // without classes, all is class 1

@@ -248,11 +248,12 @@ class OceanRenderer {
   static bool surfaceCompact(unsigned surfaceKey);
   /// The surface pass's program for `key` (as prepareSurfacePass), compiled on first use.
   const gl::Program& surfaceProgram(unsigned key);
-  /// The grid's index list split in two copies by ocean/grid_near_land.comp (after the surface
-  /// pass's vertices): openIndices_ without the triangles where land may be near, nearLandIndices_
-  /// with only those (the others degenerate), so that only the second draw pays for the coast test
-  /// (llvmpipe runs a fragment shader's every line whatever its conditions). `key`: the surface
-  /// pass's, with classes.
+  /// The grid's index list split in three copies by ocean/grid_near_land.comp (after the surface
+  /// pass's vertices): nearLandIndices_ with only the triangles where land may be near (the others
+  /// degenerate), openIndices_ with the others that have a floor within the water's reach, and
+  /// deepIndices_ with the rest, so that only the near-land draw pays for the coast test and the
+  /// deep draw writes the compact layout (llvmpipe runs a fragment shader's every line whatever
+  /// its conditions). `key`: the surface pass's, with classes.
   void splitNearLand(unsigned key);
   /// Without stencil export (gl::DriverProfile::stencilExport): copies the surface pass's
   /// classes from the surface buffer into the bound framebuffer's stencil, a pass per bit
@@ -261,7 +262,8 @@ class OceanRenderer {
   /// drawGrid with another index list of the same layout (openIndices_, nearLandIndices_).
   void drawGridIndices(const gl::Program& p, const gl::Buffer& indices) const;
   /// ocean/grid_near_land.comp's buffers: the grid's indices, its two copies.
-  static constexpr GLuint kGridIndicesBinding = 5, kOpenIndicesBinding = 6, kNearLandIndicesBinding = 7;
+  static constexpr GLuint kGridIndicesBinding = 5, kOpenIndicesBinding = 6, kNearLandIndicesBinding = 7,
+                          kDeepIndicesBinding = 3;
   static constexpr int kFoldRows = 2;
   /// The index buffer's blocks of cells (ensureGrid): rows, columns.
   static constexpr int kGridBlockRows = 16, kGridBlockColumns = 16;
@@ -418,8 +420,8 @@ class OceanRenderer {
   bool oneBinAllowed_ = true;
   gl::Buffer gridVertices_;  ///< the surface pass's vertices (ocean/grid_vertex_buffer.glsl)
   gl::Program classStencil_;   ///< ocean/sea_class_stencil.frag; id() 0 until first used
-  gl::Buffer openIndices_, nearLandIndices_;  ///< splitNearLand's copies of indices_
-  std::size_t openIndicesBytes_ = 0, nearLandIndicesBytes_ = 0;
+  gl::Buffer openIndices_, nearLandIndices_, deepIndices_;  ///< splitNearLand's copies of indices_
+  std::size_t openIndicesBytes_ = 0, nearLandIndicesBytes_ = 0, deepIndicesBytes_ = 0;
   std::size_t gridVerticesBytes_ = 0;
   gl::Buffer gridRadianceTerms_;  ///< the radiance terms' vertices' (ocean/grid_vertex_buffer.glsl)
   std::size_t gridRadianceTermsBytes_ = 0;

@@ -24,6 +24,9 @@ class SeaSurfaceBuffer {
   /// when the size or the depth-stencil texture changes, or when the first frame without the
   /// compact layout comes (until then it holds only the compact layout's layers).
   void bindForWriting(int width, int height, GLuint depthStencil, bool compact = false);
+  /// Between draws of a pass bound with the full layout: the draws that follow write the compact
+  /// layout's layers only (`compact`), or all again.
+  void drawLayers(bool compact);
   /// Zeroes the layer that holds each pixel's class where the driver cannot export stencil
   /// values (layer 0, the footprint's low bits: ocean/sea_surface.glsl's SEA_CLASS_IN_SURFACE;
   /// 0: no sea drawn), bound for writing.
