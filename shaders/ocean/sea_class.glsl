@@ -3,7 +3,7 @@
 // first and last grid row, shared by the classifying draw and the deferred sea's surface pass
 // (ocean/sea_surface.frag).
 #ifdef OCEAN_NO_WATER_VOLUME
-const float vFloorDepthM = 1e4;  // no floor in reach (uWaterReachM is then below any depth)
+const float vFloorDepthM = 1e4;  // no floor in reach (deeper than any reach: the water's d_max is ~150 m)
 #else
 in float vFloorDepthM;  // m below sea level under the pixel (ocean/water_volume_vertex.glsl)
 #endif

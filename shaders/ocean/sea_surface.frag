@@ -49,9 +49,9 @@ void main() {
 #else
   vec2 floorSlope = vec2(0.0);
 #endif
-  // With classes the grid is drawn twice, the triangles near land by the program with the coast
-  // test, the others by one without it (ocean/grid_near_land.comp): a condition here would
-  // skip nothing on llvmpipe.
+  // With classes the grid is drawn three times, the triangles near land by the program with the
+  // coast test, the others by ones without it (ocean/grid_near_land.comp): a condition here
+  // would skip nothing on llvmpipe.
   KEEP_SEA_SAMPLES(vRelative)
 #ifdef OCEAN_SEA_CLASSIFY
   int seaClass = seaClassOfFragment();

@@ -882,7 +882,7 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
       prepareSurface(*deep);
     }
   }
-  if (classes) resetClassRows();
+  if (classes) resetClassRows();  // (binds the class rows at kClassRowsBinding, the split's deep list's)
   GLint target = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
   const bool compact = surfaceCompact(surfaceKey);
@@ -899,7 +899,7 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   if (timer_ != nullptr) timer_->mark("ocean surface");
   const bool seaVisible = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] {
                             if (open == nullptr) return drawGrid(surface);
-                            drawGridIndices(*open, openIndices_);
+                            if (fullLayout) drawGridIndices(*open, openIndices_);  // (else empty)
                             drawGridIndices(surface, nearLandIndices_);
                             if (fullLayout) surface_.drawLayers(true);  // (deep: the compact layout)
                             drawGridIndices(*deep, deepIndices_);

@@ -223,7 +223,7 @@ class OceanRenderer {
   static constexpr GLuint kClassRowsBinding = 3;  ///< ocean/sea_classify.frag's SeaClassRows
   /// ocean/grid_vertex_buffer.glsl's GridVertices and its vec4s per vertex.
   static constexpr GLuint kGridVerticesBinding = 4;
-  /// The vertices' near-land flags (gl::kGlobePixelsBinding's too: each pass binds its own).
+  /// The vertices' near-land and floor flags (gl::kGlobePixelsBinding's too: each pass binds its own).
   static constexpr GLuint kGridNearLandBinding = 2;
   static constexpr int kGridVertexVec4s = 10;
   /// ocean/grid_vertex_buffer.glsl's GridRadianceTerms and its vec4s per vertex
@@ -259,9 +259,10 @@ class OceanRenderer {
   /// classes from the surface buffer into the bound framebuffer's stencil, a pass per bit
   /// (ocean/sea_class_stencil.frag).
   void classesIntoStencil();
-  /// drawGrid with another index list of the same layout (openIndices_, nearLandIndices_).
+  /// drawGrid with another index list of the same layout (splitNearLand's).
   void drawGridIndices(const gl::Program& p, const gl::Buffer& indices) const;
-  /// ocean/grid_near_land.comp's buffers: the grid's indices, its two copies.
+  /// ocean/grid_near_land.comp's buffers: the grid's indices, its three copies (the deep list's
+  /// binding is kClassRowsBinding's: drawDeferred binds the class rows there after the split).
   static constexpr GLuint kGridIndicesBinding = 5, kOpenIndicesBinding = 6, kNearLandIndicesBinding = 7,
                           kDeepIndicesBinding = 3;
   static constexpr int kFoldRows = 2;
@@ -425,7 +426,7 @@ class OceanRenderer {
   std::size_t gridVerticesBytes_ = 0;
   gl::Buffer gridRadianceTerms_;  ///< the radiance terms' vertices' (ocean/grid_vertex_buffer.glsl)
   std::size_t gridRadianceTermsBytes_ = 0;
-  gl::Buffer gridNearLand_;  ///< a flag a vertex for the near-land split (ocean/grid_vertex_buffer.glsl)
+  gl::Buffer gridNearLand_;  ///< flags a vertex for the split (near land, floor: ocean/grid_vertex_buffer.glsl)
   std::size_t gridNearLandBytes_ = 0;
   SeaSurfaceBuffer surface_;
   bool lastDeferred_ = false;
