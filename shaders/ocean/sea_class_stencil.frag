@@ -9,6 +9,6 @@ layout(binding = OG_UNIT_SEA_SURFACE) uniform usampler2DArray uSeaSurface;
 uniform int uClassBit;  // the bit this pass writes, 0..2
 
 void main() {
-  uint seaClass = texelFetch(uSeaSurface, ivec3(ivec2(gl_FragCoord.xy), 0), 0).y & 7u;
+  uint seaClass = texelFetch(uSeaSurface, ivec3(ivec2(gl_FragCoord.xy), 0), 0).y & uint(OG_SEA_CLASS_BITS);
   if ((seaClass & (1u << uint(uClassBit))) == 0u) discard;
 }

@@ -29,7 +29,7 @@ const int SEA_SURFACE_LAYERS = 6;
 uint seaHalves(float a, float b) { return packHalf2x16(vec2(a, b)); }
 // The class's bits in layer 0's footprint (ocean/sea_class_stencil.frag reads them too): three
 // bits of its mantissa, 1e-6 of its value.
-const uint SEA_CLASS_BITS = 7u;
+const uint SEA_CLASS_BITS = uint(OG_SEA_CLASS_BITS);
 
 #ifndef OCEAN_COMPUTE  // (screen derivatives: the grid's fragments)
 // Gradient of the floor's depth (m per m of the ocean frame's x and y) in the pixel's grid

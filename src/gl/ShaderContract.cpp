@@ -37,6 +37,7 @@ std::vector<std::string> contractDefines() {
           define("OG_TILE_AERIAL_TILES_BINDING", kTileAerialTilesBinding),
           define("OG_TILE_AERIAL_LIST_BINDING", kTileAerialListBinding),
           define("OG_TILE_QUADS", kTerrainTileQuads),
+          define("OG_SEA_CLASS_BITS", kSeaClassBits),
           define("OG_OPEN_SEA_CELLS_PER_DEG", kOpenSeaCellsPerDeg),
           define("OG_GLOBE_PIXELS_BINDING", kGlobePixelsBinding),
           define("OG_GLOBE_PIXELS_GROUP", kGlobePixelsGroup),

@@ -83,6 +83,11 @@ inline constexpr unsigned kTerrainTileQuads = 32;
 inline constexpr unsigned kGlobePixelsGroup = 64;
 inline constexpr unsigned kGlobePixelsRow = 4096;
 
+/// The bits of the deferred sea's surface buffer that hold a pixel's class where the driver
+/// cannot export stencil values (the footprint's lowest three: ocean/sea_surface.glsl,
+/// ocean/sea_class_stencil.frag; GLSL: OG_SEA_CLASS_BITS).
+inline constexpr unsigned kSeaClassBits = 7;
+
 /// Cells per degree of the open-sea map (render/OpenSeaMap::kCellsPerDeg; GLSL:
 /// OG_OPEN_SEA_CELLS_PER_DEG): render/open_sea_map.glsl finds a point's texel from it.
 inline constexpr unsigned kOpenSeaCellsPerDeg = 8;

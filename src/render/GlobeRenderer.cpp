@@ -929,7 +929,6 @@ void GlobeRenderer::drawOcean(const geo::CameraView& view, const FrameInput& f) 
                                              ocean::kWaterEpsilon);
   lighting.floorInReach = ts.tiles == 0 || ts.seaSeenMaxHeightM > -0.5 * reachM;
   floorInReachFrame_ = lighting.floorInReach;
-  causticsSeenFrame_ = false;
   lighting.classes = f.oceanClasses;
   // Waves fade out on the way up so the grid meets the orbit model at the switch.
   const double h = view.position.heightM;

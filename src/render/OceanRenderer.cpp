@@ -177,22 +177,17 @@ std::vector<std::string> OceanRenderer::featureDefines(unsigned features) const 
   return d;
 }
 
-const gl::Program& OceanRenderer::deferredProgram(unsigned features) {
-  gl::Program& p = programs().deferredVariants.at(features);
+const gl::Program& OceanRenderer::deferredProgram(unsigned features, bool compute) {
+  gl::Program& p = (compute ? programs().deferredComputeVariants : programs().deferredVariants).at(features);
   if (p.id() != 0) return p;
   // The coast test is the surface pass's. The surface buffer's layers the shading reads are the
   // same in its compact layout and its full one (ocean/sea_surface.glsl): one program for both.
   std::vector<std::string> d = featureDefines(features & ~kFeatureCoastTest);
   d.emplace_back("OCEAN_DEFERRED");
-  p = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}}, d);
-  return p;
-}
-
-const gl::Program& OceanRenderer::deferredComputeProgram(unsigned features) {
-  gl::Program& p = programs().deferredComputeVariants.at(features);
-  if (p.id() != 0) return p;
-  std::vector<std::string> d = featureDefines(features & ~kFeatureCoastTest);
-  d.emplace_back("OCEAN_DEFERRED");
+  if (!compute) {
+    p = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}}, d);
+    return p;
+  }
   d.emplace_back("OCEAN_COMPUTE");
   if (!gl::driverProfile().stencilExport) d.emplace_back("SEA_CLASS_IN_SURFACE");
   p = gl::Program({{GL_COMPUTE_SHADER, "ocean/ocean.frag"}}, d);
@@ -929,7 +924,7 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
     if (rows.at(2 * k + 1) < rows.at(2 * k)) continue;  // no pixel of this class
     if (timer_ != nullptr) timer_->mark(kClassPass.at(k));
     if (classes) classesDrawn_ |= 1u << k;
-    const gl::Program& p = image != 0 ? deferredComputeProgram(perClass.at(k)) : deferredProgram(perClass.at(k));
+    const gl::Program& p = deferredProgram(perClass.at(k), image != 0);
     prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, perClass.at(k), margin);
     p.use();
     if (image != 0) {

@@ -13,6 +13,7 @@
 #include "gl/PassTimer.hpp"
 #include "gl/Objects.hpp"
 #include "gl/Shader.hpp"
+#include "gl/ShaderContract.hpp"
 #include "ocean/OceanFrame.hpp"
 #include "render/Atmosphere.hpp"
 #include "render/OceanPatterns.hpp"
@@ -101,9 +102,9 @@ class OceanRenderer {
   /// The sea's classes (shaders/ocean/sea_classify.frag): open sea, shadows, floor, floor with
   /// shadows, coast.
   static constexpr std::size_t kSeaClasses = 5;
-  // (Without stencil export the classes take three bits: ocean/sea_surface.glsl's SEA_CLASS_BITS,
-  // classesIntoStencil's three passes.)
-  static_assert(kSeaClasses <= 7, "a pixel's class fits three bits");
+  // (Without stencil export the classes take gl::kSeaClassBits: ocean/sea_surface.glsl's
+  // SEA_CLASS_BITS, classesIntoStencil's three passes.)
+  static_assert(kSeaClasses <= gl::kSeaClassBits, "a pixel's class fits three bits");
   /// Which of the sea's classes (sea_classify.frag) the last draw drew: bit k for class k + 1
   /// (open sea, shadows, floor, floor with shadows, coast), where the classifying draw found
   /// fragments of them; 0 when it drew the sea in one program.
@@ -347,15 +348,15 @@ class OceanRenderer {
   /// invocations a pixel with the grid's usual layout, 1.19 on the blocks). Returns the grid's
   /// margin (uGridMarginNdc: left, right, bottom, top).
   glm::vec4 layOutGridOnBlocks(int width, int height);
-  /// The deferred sea's shading program for `features` (coast test excluded), compiled on first use.
-  const gl::Program& deferredProgram(unsigned features);
-  /// ocean.frag OCEAN_DEFERRED compiled as a compute shader (OCEAN_COMPUTE) with `features`.
-  const gl::Program& deferredComputeProgram(unsigned features);
+  /// The deferred sea's shading program for `features` (coast test excluded), compiled on first
+  /// use: a full-screen fragment pass, or with `compute` ocean.frag as a compute shader
+  /// (OCEAN_COMPUTE: dispatchClass).
+  const gl::Program& deferredProgram(unsigned features, bool compute);
   /// The texture of `target`'s colour where the deferred classes are shaded by compute shaders
   /// (OCEANGLOBE_SEA=compute, a single-sampled RGBA32F texture, no auxiliary channels, the
   /// classes' samples not counted); 0: by full-screen draws.
   [[nodiscard]] GLuint classesShadedByCompute(GLuint target) const;
-  /// Shades class `seaClass` (1..kSeaClasses) with `p` (deferredComputeProgram, in use) into
+  /// Shades class `seaClass` (1..kSeaClasses) with `p` (deferredProgram's compute one, in use) into
   /// `image`, the classes read from `depthStencil`'s stencil or the surface buffer.
   void dispatchClass(const gl::Program& p, int seaClass, GLuint image, GLuint depthStencil) const;
   /// How far from land (m along the sea) the terrain's shadows can fall on the sea's surface or
