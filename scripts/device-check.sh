@@ -5,8 +5,11 @@
 # tests, when bundled) set; shaders are read from this checkout, so a shader change needs no
 # new bundle. Without a command: the GPU check of docs/performance.md (bench of every view at
 # 1920x1080 and 1280x720 with 1 and 4 samples, the per-pass breakdown, and three 720p renders to
-# compare with llvmpipe's; with FFmpeg bundled, the recording rate), its files written to $OUT;
-# at most 560 s with every step's time limit, under the lent machine's 600 s a command.
+# compare with llvmpipe's, forward at 4 samples and 1, and by compute at 1; the deferred and the
+# compute sea's breakdowns; with FFmpeg bundled, the recording rate; with the GL tests bundled,
+# their run in whatever time is left), its files written to $OUT. Every step has a time limit,
+# and the whole ends by 550 s, under the lent machine's 600 s a command. A whole check took
+# ~85 s on the H200 in the tenth session, before the compute sea's and the tests' runs.
 #   device run: bash scripts/device-check.sh            (carry .devbundle)
 #   device run: bash scripts/device-check.sh '$OG_TESTS --gtest_filter=Transforms*'
 set -uo pipefail
@@ -29,25 +32,45 @@ if [[ $# -gt 0 ]]; then
   (eval "$*") 2>&1 | quiet
   exit "${PIPESTATUS[0]}"
 fi
-{ nvidia-smi --query-gpu=name,driver_version,clocks.max.sm --format=csv,noheader; uptime; } | tee "$out/env.txt"
+# At most 8 files come back from $OUT: the texts in bench.txt, the breakdowns as JSON, the renders
+# in one tar, the GL tests' log (when bundled).
+{ nvidia-smi --query-gpu=name,driver_version,clocks.max.sm --format=csv,noheader; uptime; } | tee "$out/bench.txt"
+mkdir -p "$out/png"
 render() {
   local name=$1; shift
-  timeout 40 "$OG" render --width 1280 --height 720 --samples 4 --sun-elevation 20 --sun-azimuth 250 "$@" \
-    -o "$out/$name.png" 2>&1 | quiet | tail -2
+  timeout 20 "$OG" render --width 1280 --height 720 --sun-elevation 20 --sun-azimuth 250 "$@" \
+    -o "$out/png/$name.png" 2>&1 | quiet | tail -2
 }
-render sea-4m --lat 20 --lon -40 --alt 4 --heading 270 --pitch -10
-render coast-2m-bank --lat 24.2 --lon -78.2 --alt 2 --heading 270 --pitch -10
-render sea-2m-horizon --lat 36 --lon -5.5 --alt 2 --heading 270 --pitch 2
-timeout 160 "$OG" bench --size 1920x1080 --size 1280x720 --frames 30 --samples 1 4 2>&1 | quiet | tee "$out/bench.txt"
+views=("sea-4m --lat 20 --lon -40 --alt 4 --heading 270 --pitch -10"
+  "coast-2m-bank --lat 24.2 --lon -78.2 --alt 2 --heading 270 --pitch -10"
+  "sea-2m-horizon --lat 36 --lon -5.5 --alt 2 --heading 270 --pitch 2")
+for v in "${views[@]}"; do
+  read -r name args <<<"$v"
+  # shellcheck disable=SC2086 # the view's flags
+  render "$name" --samples 4 $args
+  # shellcheck disable=SC2086
+  render "$name-1" --samples 1 $args
+  # shellcheck disable=SC2086
+  OCEANGLOBE_SEA=compute render "$name-compute" --samples 1 $args
+done
+tar -C "$out" -cf "$out/renders.tar" png && rm -rf "$out/png"
+timeout 160 "$OG" bench --size 1920x1080 --size 1280x720 --frames 30 --samples 1 4 2>&1 | quiet | tee -a "$out/bench.txt"
 timeout 100 "$OG" bench --size 1920x1080 --size 1280x720 --frames 20 --samples 1 --breakdown --json 2>"$out/breakdown.err" >"$out/breakdown.json"
 # The deferred sea (full-screen passes per class, the classes copied into the stencil where the
 # driver cannot export them) and its classes shaded by compute shaders instead, against the
-# default above (docs/performance.md, "Thirty-second session").
+# default above (docs/performance.md, "Thirty-second session"), every view at one sample.
 for sea in deferred compute; do
-  OCEANGLOBE_SEA=$sea timeout 30 "$OG" bench --size 1920x1080 --frames 20 --samples 1 --breakdown \
-    --view sea-4m --view sea-2m-horizon --view coast-2m-bank 2>&1 | quiet | sed "s/^/OCEANGLOBE_SEA=$sea: /" | tee -a "$out/bench.txt"
+  OCEANGLOBE_SEA=$sea timeout 60 "$OG" bench --size 1920x1080 --size 1280x720 --frames 20 --samples 1 --breakdown \
+    2>&1 | quiet | sed "s/^/OCEANGLOBE_SEA=$sea: /" | tee -a "$out/bench.txt"
 done
 # The recording rate, where the bundle has FFmpeg (scripts/device-bundle.sh --record).
 if [[ -e $bundle/lib/libavcodec.so.59 ]]; then
   timeout 120 "$OG" bench --record config/flythrough.toml --size 1280x720 --size 1920x1080 2>&1 | quiet | tee -a "$out/bench.txt"
+fi
+# The GL tests, where bundled (scripts/device-bundle.sh --tests); the tests that read Debian's
+# data packages (ferret-datasets, GSHHG) or OSMesa fail there.
+if [[ -x $OG_TESTS ]]; then
+  left=$((550 - SECONDS)); ((left > 30)) || left=30
+  timeout $left "$OG_TESTS" 2>&1 | quiet >"$out/gltests.txt"
+  grep -E "^\[  (PASSED|FAILED) |^\[==========\]" "$out/gltests.txt" | tail -40
 fi
