@@ -23,8 +23,16 @@
 // Each class is then drawn by a program compiled with only its code, stencil-tested before
 // its shader runs: llvmpipe runs every line of a shader, both sides of each `if`, for every
 // fragment that reaches it (docs/performance.md).
+// Without stencil export (SEA_CLASS_IN_SURFACE: the classes go into the surface buffer) the
+// program serves only OceanRenderer::seaShows' occlusion query, and writes nothing.
+#if !defined(SEA_CLASS_IN_SURFACE) && defined(OG_STENCIL_EXPORT)  // (OG_STENCIL_EXPORT: gl::Program)
 #extension GL_ARB_shader_stencil_export : require
+#endif
 
 #include "ocean/sea_class.glsl"
 
-void main() { gl_FragStencilRefARB = seaClassOfFragment(); }
+void main() {
+#ifndef SEA_CLASS_IN_SURFACE
+  gl_FragStencilRefARB = seaClassOfFragment();
+#endif
+}

@@ -6,7 +6,7 @@
 // runs once per pixel, class by class. Without GL_ARB_shader_stencil_export (NVIDIA's drivers)
 // the class goes into the surface buffer (SEA_CLASS_IN_SURFACE) and ocean/sea_class_stencil.frag
 // copies it into the stencil.
-#ifndef SEA_CLASS_IN_SURFACE
+#if !defined(SEA_CLASS_IN_SURFACE) && defined(OG_STENCIL_EXPORT)  // (OG_STENCIL_EXPORT: gl::Program)
 #extension GL_ARB_shader_stencil_export : require
 #endif
 #include "common/types.glsl"

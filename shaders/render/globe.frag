@@ -1,5 +1,5 @@
 #version 450 core
-#ifdef GLOBE_CLASSIFY_EXPORT
+#if defined(GLOBE_CLASSIFY_EXPORT) && defined(OG_STENCIL_EXPORT)  // (OG_STENCIL_EXPORT: gl::Program)
 #extension GL_ARB_shader_stencil_export : require
 #endif
 // The globe as the WGS84 ellipsoid, ray-cast per pixel in the eye-relative frame, seen through

@@ -13,6 +13,7 @@
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "core/StartupTrace.hpp"
+#include "gl/DriverProfile.hpp"
 #include "gl/ShaderContract.hpp"
 
 namespace og::embedded::shaders {
@@ -124,8 +125,13 @@ Program::Program(const std::vector<std::pair<GLenum, std::string>>& stages,
   const auto t0 = core::startup::Clock::now();
   program_ = ProgramObject(glCreateProgram());
   std::vector<ShaderObject> shaders;
+  // GL_ARB_shader_stencil_export is enabled (#extension) only under OG_STENCIL_EXPORT, which the
+  // driver profile sets: with OCEANGLOBE_STENCIL_EXPORT=0 a program that writes
+  // gl_FragStencilRefARB then fails on llvmpipe as it does on drivers without the extension.
+  std::vector<std::string> all = defines;
+  if (driverProfile().stencilExport) all.emplace_back("OG_STENCIL_EXPORT");
   for (const auto& [stage, path] : stages) {
-    const ExpandedSource src = expandShader(path, defines);
+    const ExpandedSource src = expandShader(path, all);
     ShaderObject s(glCreateShader(stage));
     const char* text = src.text.c_str();
     glShaderSource(s.id(), 1, &text, nullptr);

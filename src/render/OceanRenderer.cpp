@@ -153,6 +153,8 @@ OceanRenderer::OceanRenderer(const Atmosphere* atmosphere, ValidationMode mode)
       deferred_(deferredAllowed()),
       deferredWithoutExport_(seaPathAsked() == "deferred" || seaPathAsked() == "compute"),
       computeShading_(seaPathAsked() == "compute"),
+      computeForRoutedClasses_(seaPathAsked().empty() && !gl::driverProfile().software &&
+                               !gl::driverProfile().stencilExport),
       vao_(gl::createVertexArray()),
       indices_(gl::createBuffer()) {}
 
@@ -195,7 +197,7 @@ const gl::Program& OceanRenderer::deferredProgram(unsigned features, bool comput
 }
 
 GLuint OceanRenderer::classesShadedByCompute(GLuint target) const {
-  if (!computeShading_ || countClassSamples_ || target == 0) return 0;
+  if (!frameComputeShading_ || countClassSamples_ || target == 0) return 0;
   const auto attachment = [target](GLenum a, GLenum what) {
     GLint v = 0;
     glGetNamedFramebufferAttachmentParameteriv(target, a, what, &v);
@@ -490,6 +492,10 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
                         windAlongOneBin(glm::radians(wind.constantTowardsDeg()), frame.fieldRotationRad())
                     ? 1
                     : 0;
+  // A GPU without stencil export: the frames with a floor or a coast to route by compute shaders.
+  const bool computeRoutes = computeForRoutedClasses_ && lighting.classes &&
+                             (features & (kFeatureWaterVolume | kFeatureCoastTest)) != 0;
+  frameComputeShading_ = computeShading_ || computeRoutes;
   lastDeferred_ = false;
   lastClassesByCompute_ = false;
   lastSurfaceCompact_ = false;
@@ -515,7 +521,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     drawGrid(p);
   } else if (const GLuint depthStencil = deferred_ ? SeaSurfaceBuffer::boundDepthStencilTexture() : 0;
              deferred_ && mode_ == ValidationMode::Filtered && frameCellPixels_ < kDeferredMaxCellPixels &&
-             depthStencil != 0 && (gl::driverProfile().stencilExport || deferredWithoutExport_)) {
+             depthStencil != 0 && (gl::driverProfile().stencilExport || deferredWithoutExport_ || computeRoutes)) {
     lastDeferred_ = true;
     drawDeferred(view, width, height, patterns, frame, lighting, amplitudeScale, wind, features, margin, depthStencil);
   } else if (classified) {  // sea_classify.frag
@@ -677,6 +683,7 @@ unsigned OceanRenderer::prepareClassify(const geo::CameraView& view, int height,
   if (programs().classify.id() == 0) {
     std::vector<std::string> d = patternDefines();
     d.emplace_back("OCEAN_SEA_CLASSIFY");
+    if (!gl::driverProfile().stencilExport) d.emplace_back("SEA_CLASS_IN_SURFACE");  // seaShows' query alone
     programs().classify = gl::Program({{GL_VERTEX_SHADER, "ocean/grid.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_classify.frag"}}, d);
   }
   prepare(programs().classify, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);

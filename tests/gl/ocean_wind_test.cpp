@@ -111,7 +111,8 @@ TEST(OceanWind, AWindAlongOneBinReadsOneBinsPatterns) {
     const test::RadianceChange change = test::radianceChange(images.off, images.on, 0.01);
     std::printf("towards %g deg: one bin against two, mean change %.3g, worst %.3g, %d pixels over 1 %%\n", towardsDeg,
                 change.mean, change.worst, change.over);
-    EXPECT_LT(change.mean, 1e-5) << "towards " << towardsDeg << " deg";
+    // (Within 1e-5 on llvmpipe; a GPU's compiler contracts each program's arithmetic its own way.)
+    EXPECT_LT(change.mean, gl::driverProfile().software ? 1e-5 : 1e-4) << "towards " << towardsDeg << " deg";
     EXPECT_LE(change.over, 20) << "towards " << towardsDeg << " deg";
   }
 }

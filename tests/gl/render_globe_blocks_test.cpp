@@ -65,7 +65,10 @@ void expectSamePicture(render::GlobeRenderer& r, const std::vector<View>& views,
     const test::RadianceChange change = test::radianceChange(images.off, images.on, bound);
     std::printf("%s: %d pixels changed, largest relative change %.2e\n", v.name, change.over, change.worst);
     EXPECT_EQ(change.over, 0) << v.name << " (largest relative change " << change.worst << ")";
-    if (change.over > 0) test::savePng(r, pngPrefix + v.name);
+    if (change.over > 0) {
+      test::savePng(r, pngPrefix + v.name);
+      test::saveChangePng(images.off, images.on, bound, pngPrefix + v.name);
+    }
   }
 }
 
@@ -230,6 +233,7 @@ TEST(GlobeRender, BlocksClassedOnTheCpuKeepThePicture) {
 TEST(GlobeRender, ScatteredPartsShadedFromAListKeepThePicture) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(data::defaultElevation());
+  r.setGlobeBlocks(true);  // (llvmpipe's default, whose blocks leave the horizon's pixels per pixel)
   std::vector<View> views(kViews.begin(), kViews.end());
   views.push_back({"orbit-20000km", 10, -30, 2.0e7, 0, -90});
   views.push_back({"sea-4m", 20, -40, 4.0, 270, -1});
@@ -242,7 +246,10 @@ TEST(GlobeRender, ScatteredPartsShadedFromAListKeepThePicture) {
     std::printf("%s: %u pixels listed, %d changed by over 1 %%, largest change %.2e\n", v.name, r.listedPixelCount(),
                 change.over, change.worst);
     EXPECT_EQ(change.over, 0) << v.name << " (largest relative change " << change.worst << ")";
-    if (change.over > 0) test::savePng(r, std::string("globe_listed_") + v.name);
+    if (change.over > 0) {
+      test::savePng(r, std::string("globe_listed_") + v.name);
+      test::saveChangePng(images.off, images.on, 0.01, std::string("globe_listed_") + v.name);
+    }
   }
 }
 
@@ -283,6 +290,7 @@ TEST(GlobeRender, OpenSeaOffTheShelfKeepsThePicture) {
 TEST(GlobeRender, SeaLatticeKeepsThePicture) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(data::defaultElevation());
+  r.setGlobeBlocks(true);  // (the lattice is the blocks': llvmpipe's default)
   r.setCountPartSamples(true);
   struct Case {
     View view;
@@ -352,10 +360,16 @@ TEST(GlobeRender, ConstantWindUniformsKeepThePicture) {
     f.wind.towardsDeg = 60.0;
     const test::OffAndOn images = test::renderOffAndOn(r, f, [&r](bool on) { r.setConstantWindVariants(on); });
     EXPECT_TRUE(r.lastFrameConstantWind()) << v.name;
-    const test::RadianceChange change = test::radianceChange(images.off, images.on, 1e-4);
-    std::printf("%s: %d pixels changed by over 1e-4, largest relative change %.2e\n", v.name, change.over, change.worst);
+    // (Exact on llvmpipe; a GPU's compiler contracts each program's arithmetic its own way.)
+    const double bound = gl::driverProfile().software ? 1e-4 : 2e-3;
+    const test::RadianceChange change = test::radianceChange(images.off, images.on, bound);
+    std::printf("%s: %d pixels changed by over %.0e, largest relative change %.2e\n", v.name, change.over, bound,
+                change.worst);
     EXPECT_EQ(change.over, 0) << v.name << " (largest relative change " << change.worst << ")";
-    if (change.over > 0) test::savePng(r, std::string("globe_constant_wind_") + v.name);
+    if (change.over > 0) {
+      test::savePng(r, std::string("globe_constant_wind_") + v.name);
+      test::saveChangePng(images.off, images.on, bound, std::string("globe_constant_wind_") + v.name);
+    }
   }
 }
 
@@ -376,7 +390,10 @@ TEST(GlobeRender, SamplesByTheMaskAloneKeepThePicture) {
     std::printf("%s: %d pixels changed by over 2 %%, largest relative change %.2e\n", v.name, change.over, change.worst);
     EXPECT_LE(change.over, kWidth * kHeight / 2000) << v.name << " (largest relative change " << change.worst << ")";
     EXPECT_LT(change.mean, 1e-4) << v.name;
-    if (change.over > kWidth * kHeight / 2000) test::savePng(r, std::string("globe_mask_coast_") + v.name);
+    if (change.over > kWidth * kHeight / 2000 || change.mean >= 1e-4) {
+      test::savePng(r, std::string("globe_mask_coast_") + v.name);
+      test::saveChangePng(images.off, images.on, 0.02, std::string("globe_mask_coast_") + v.name);
+    }
   }
 }
 
@@ -429,6 +446,7 @@ TEST(GlobeRender, PyramidAloneFromHighUpKeepsThePicture) {
 TEST(GlobeRender, LakesUnderAPixelBlinkLessThroughThePyramid) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(data::defaultElevation());
+  r.setGlobeBlocks(true);  // (the land blocks counted below: llvmpipe's default)
   render::FrameInput a = frameOf({"finland-3000km", 62.0, 26.0, 3.0e6, 0, -90});
   const geo::CameraView view = geo::makeCameraView(a.camera, kWidth, kHeight);
   // Half a pixel of ground below the eye, eastwards.

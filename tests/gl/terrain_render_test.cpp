@@ -591,6 +591,10 @@ TEST(TerrainRender, UnresolvedDetailLeftOutKeepsThePicture) {
     const bool resolved = std::string(c.name) == "alps_1300km";
     EXPECT_EQ(r.terrain().stats().pixelDetail, resolved) << c.name;
     const test::RadianceChange change = test::radianceChange(never, r.radiance(), 1e-4);
+    if (change.worst >= 1e-4) {
+      test::savePng(r, std::string("unresolved_detail_") + c.name);
+      test::saveChangePng(never, r.radiance(), 1e-4, std::string("unresolved_detail_") + c.name);
+    }
     std::printf("%s: detail per pixel %d, its share: %d pixels over 0.1 %%; largest change %.2e\n", c.name,
                 resolved ? 1 : 0, detail.over, change.worst);
     EXPECT_LT(change.worst, 1e-4) << c.name;
@@ -674,7 +678,10 @@ TEST(TerrainRender, SeaHorizonClipKeepsThePictureAndShadesLess) {
                 change.worst, change.over);
     EXPECT_EQ(change.over, 0);
     EXPECT_LT(change.mean, 1e-5);
-    if (change.over > 0) test::savePng(r, std::string("sea_horizon_clip_") + c.name);
+    if (change.over > 0) {
+      test::savePng(r, std::string("sea_horizon_clip_") + c.name);
+      test::saveChangePng(images[0], images[1], 0.01, std::string("sea_horizon_clip_") + c.name);
+    }
     EXPECT_LE(samples[1], samples[0]);
     const std::string name = c.name;
     if (name == "gibraltar_2m" || name == "gibraltar_300m") {

@@ -138,6 +138,24 @@ inline void savePng(const render::GlobeRenderer& r, const std::string& name) {
   io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".png"), r.display());
 }
 
+/// Where two radiance images differ, as OG_TEST_OUT_DIR/<name>_change.png: pixels changed by
+/// over `bound` (radianceChange's measure) red, the others grey by their change (white at
+/// `bound`), black where nothing changed; beside savePng's picture, to see which pixels moved.
+inline void saveChangePng(const io::ImageRgbaF& a, const io::ImageRgbaF& b, double bound, const std::string& name) {
+  io::ImageRgba8 out{a.width, a.height, std::vector<std::uint8_t>(4 * static_cast<std::size_t>(a.width) * a.height, 255)};
+  const std::size_t n = std::min(a.pixels.size(), b.pixels.size()) / 4;
+  for (std::size_t i = 0; i < n; ++i) {
+    const RadianceChange c = radianceChange(
+        io::ImageRgbaF{1, 1, {a.pixels.begin() + 4 * i, a.pixels.begin() + 4 * i + 4}},
+        io::ImageRgbaF{1, 1, {b.pixels.begin() + 4 * i, b.pixels.begin() + 4 * i + 4}}, bound);
+    const auto grey = static_cast<std::uint8_t>(std::lround(255.0 * std::min(1.0, c.worst / bound)));
+    out.pixels[4 * i] = c.over > 0 ? 255 : grey;
+    out.pixels[4 * i + 1] = c.over > 0 ? 0 : grey;
+    out.pixels[4 * i + 2] = c.over > 0 ? 0 : grey;
+  }
+  io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + "_change.png"), out);
+}
+
 /// Sets an environment variable for the scope's lifetime, then restores what it was.
 class ScopedEnv {
  public:
