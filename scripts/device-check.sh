@@ -7,9 +7,10 @@
 # 1920x1080 and 1280x720 with 1 and 4 samples, the per-pass breakdown, and three 720p renders to
 # compare with llvmpipe's, forward at 4 samples and 1, and by compute at 1; the deferred and the
 # compute sea's breakdowns; with FFmpeg bundled, the recording rate; with the GL tests bundled,
-# their run in whatever time is left), its files written to $OUT. Every step has a time limit,
-# and the whole ends by 550 s, under the lent machine's 600 s a command. A whole check took
-# ~85 s on the H200 in the tenth session, before the compute sea's and the tests' runs.
+# their run in the time left to 550 s), its files written to $OUT. Every step has a time limit
+# (run it with timeout_s near 590: the lent machine allows 600 s a command). A whole check took
+# ~85 s on the H200 in the tenth session, 377 s with the compute sea's and the tests' runs in
+# the thirty-third.
 #   device run: bash scripts/device-check.sh            (carry .devbundle)
 #   device run: bash scripts/device-check.sh '$OG_TESTS --gtest_filter=Transforms*'
 set -uo pipefail

@@ -153,7 +153,7 @@ OceanRenderer::OceanRenderer(const Atmosphere* atmosphere, ValidationMode mode)
       deferred_(deferredAllowed()),
       deferredWithoutExport_(seaPathAsked() == "deferred" || seaPathAsked() == "compute"),
       computeShading_(seaPathAsked() == "compute"),
-      computeForRoutedClasses_(seaPathAsked().empty() && !gl::driverProfile().software &&
+      computeForFloors_(seaPathAsked().empty() && !gl::driverProfile().software &&
                                !gl::driverProfile().stencilExport),
       vao_(gl::createVertexArray()),
       indices_(gl::createBuffer()) {}
@@ -492,10 +492,9 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
                         windAlongOneBin(glm::radians(wind.constantTowardsDeg()), frame.fieldRotationRad())
                     ? 1
                     : 0;
-  // A GPU without stencil export: the frames with a floor or a coast to route by compute shaders.
-  const bool computeRoutes = computeForRoutedClasses_ && lighting.classes &&
-                             (features & (kFeatureWaterVolume | kFeatureCoastTest)) != 0;
-  frameComputeShading_ = computeShading_ || computeRoutes;
+  // A GPU without stencil export: the frames with a floor within reach by compute shaders.
+  const bool computeFloors = computeForFloors_ && lighting.classes && (features & kFeatureWaterVolume) != 0;
+  frameComputeShading_ = computeShading_ || computeFloors;
   lastDeferred_ = false;
   lastClassesByCompute_ = false;
   lastSurfaceCompact_ = false;
@@ -521,7 +520,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     drawGrid(p);
   } else if (const GLuint depthStencil = deferred_ ? SeaSurfaceBuffer::boundDepthStencilTexture() : 0;
              deferred_ && mode_ == ValidationMode::Filtered && frameCellPixels_ < kDeferredMaxCellPixels &&
-             depthStencil != 0 && (gl::driverProfile().stencilExport || deferredWithoutExport_ || computeRoutes)) {
+             depthStencil != 0 && (gl::driverProfile().stencilExport || deferredWithoutExport_ || computeFloors)) {
     lastDeferred_ = true;
     drawDeferred(view, width, height, patterns, frame, lighting, amplitudeScale, wind, features, margin, depthStencil);
   } else if (classified) {  // sea_classify.frag

@@ -150,6 +150,9 @@ class OceanRenderer {
   [[nodiscard]] bool lastDrawDeferred() const { return lastDeferred_; }
   /// Whether the last deferred draw shaded its classes by compute shaders (OCEANGLOBE_SEA=compute).
   [[nodiscard]] bool lastClassesByCompute() const { return lastClassesByCompute_; }
+  /// The default of GPUs without stencil export (computeForFloors_: on there unless OCEANGLOBE_SEA
+  /// is set), for tests on llvmpipe with OCEANGLOBE_STENCIL_EXPORT=0.
+  void setComputeForFloors(bool on) { computeForFloors_ = on; }
   /// Whether the last deferred draw's surface buffer had the compact layout (SEA_SURFACE_COMPACT).
   [[nodiscard]] bool lastSurfaceCompact() const { return lastSurfaceCompact_; }
   /// Grid cell size in pixels (the paper's ~8 px); smaller = finer geometry, slower.
@@ -390,7 +393,7 @@ class OceanRenderer {
   std::vector<std::string> defines_;        ///< the filtered model's, whatever the features
   bool deferred_;                           ///< setDeferred
   /// Deferred in every frame where the driver cannot export stencil values (NVIDIA's): only when
-  /// asked, OCEANGLOBE_SEA=deferred or compute (computeForRoutedClasses_ otherwise); where compute
+  /// asked, OCEANGLOBE_SEA=deferred or compute (computeForFloors_ otherwise); where compute
   /// cannot serve (--aov, counted samples) the classes then go into the stencil by the copy passes.
   bool deferredWithoutExport_;
   /// The deferred classes shaded by compute shaders (OCEANGLOBE_SEA=compute; classesShadedByCompute):
@@ -398,12 +401,13 @@ class OceanRenderer {
   /// slower on llvmpipe (sea-4m's open sea 105 -> 175 ms of one thread).
   bool computeShading_;
   /// A GPU without stencil export (NVIDIA's), OCEANGLOBE_SEA unset: the frames whose sea has a
-  /// floor within reach or a coast to route (the water volume, the coast test) drawn deferred,
-  /// their classes shaded by compute shaders; the open sea's frames forward. Measured on the
-  /// H200 at 1080p: coast-2m-bank 22.9 -> 11.4 ms, sea-4m forward 6.6 against 7.3 by compute
-  /// (docs/performance.md, "Thirty-third session").
-  bool computeForRoutedClasses_;
-  bool frameComputeShading_ = false;  ///< this frame's: computeShading_ or the routed classes' default
+  /// floor within reach (the water volume) drawn deferred, their classes shaded by compute
+  /// shaders; the others forward. Measured on the H200 at 1080p, forward against by compute:
+  /// coast-2m-bank 22.9 against 11.4 ms; sea-4m 6.6 against 7.3, coast-2m-deep (the coast
+  /// test) 7.2 against 8.2, sea-2m-horizon 11.9 against 12.0 (docs/performance.md,
+  /// "Thirty-third session").
+  bool computeForFloors_;
+  bool frameComputeShading_ = false;  ///< this frame's: computeShading_ or computeForFloors_'s
   /// The programs that read the wave patterns, each compiled on first use: set 1 with
   /// PATTERN_ONE_BIN and PATTERN_CONSTANT_WIND (a constant wind along one of the patterns'
   /// direction bins: one bin's lookups, the wind, its bin and the tables' values as uniforms;

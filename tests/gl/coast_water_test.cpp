@@ -774,6 +774,35 @@ TEST(CoastWater, DeferredSeaByComputeDrawsTheSamePicture) {
   }
 }
 
+// On a GPU without stencil export (NVIDIA's) the frames with a floor within reach are drawn
+// deferred with their classes shaded by compute shaders, the others forward (the H200's
+// numbers: docs/performance.md, "Thirty-third session"): the rule played on llvmpipe with its
+// export turned off, over the shelf (floor and coast), the island's bank and the open Atlantic.
+TEST(CoastWater, GpuWithoutExportShadesFloorsByCompute) {
+  const test::ScopedEnv noExport("OCEANGLOBE_STENCIL_EXPORT", "0");
+  const std::vector<std::tuple<std::string, data::LatLonGrid, render::FrameInput, bool>> views{
+      {"shelf", shelf(), classView({kLat - 2.2 / 111.2, kLon, 20.0}, 10.0, -15.0, 40.0, 20.0), true},
+      {"island_bank", shadowingIsland(true),
+       classView({kLat - 1.0 / 110.8, kLon + 8.0 / (111.3 * std::cos(kLat * M_PI / 180.0)), 200.0}, 200.0, -25.0, 3.0,
+                 250.0),
+       true},
+      {"open_atlantic", data::defaultElevation(), classView({20.0, -40.0, 4.0}, 270.0, -10.0, 30.0, 250.0), false}};
+  auto ctx = gl::createHeadlessContext();
+  for (const auto& [name, grid, f, floor] : views) {
+    render::GlobeRenderer r(grid);
+    r.ocean().setComputeForFloors(true);
+    r.render(f);
+    EXPECT_EQ(r.ocean().lastDrawDeferred(), floor) << name;
+    EXPECT_EQ(r.ocean().lastClassesByCompute(), floor) << name;
+    if (floor) {
+      EXPECT_NE(r.ocean().classesDrawn() & (kClassFloor | kClassFloorShadows), 0u) << name;
+    }
+    r.ocean().setComputeForFloors(false);  // llvmpipe's own choice without export: forward
+    r.render(f);
+    EXPECT_FALSE(r.ocean().lastDrawDeferred()) << name;
+  }
+}
+
 // Where a grid cell's vertices (a few hundred metres apart from 3 km) fall on the land mask's
 // fine land but its pixels are sea at their own footprint (the coast test keeps them), the
 // floor search started from the vertices' floor at the surface and never left it: whole cells
