@@ -15,7 +15,7 @@
 #include "ocean/grid_vertex_buffer.glsl"
 layout(local_size_x = 64) in;
 layout(std430, binding = 5) readonly buffer GridIndices { uint gridIndices[]; };  // the grid's own
-layout(std430, binding = 6) writeonly buffer OpenIndices { uint openIndices[]; };
+layout(std430, binding = 6) writeonly buffer FloorIndices { uint floorIndices[]; };
 layout(std430, binding = 7) writeonly buffer NearLandIndices { uint nearLandIndices[]; };
 layout(std430, binding = 3) writeonly buffer DeepIndices { uint deepIndices[]; };
 uniform int uTriangleCount;
@@ -29,9 +29,9 @@ void main() {
   // A draw's other triangles all at vertex 0: its vertices shaded are its own triangles' (and
   // vertex 0's), not the whole grid's.
   const uvec3 none = uvec3(0u);
-  uvec3 landward = near ? tri : none, open = !near && floor ? tri : none, deep = !near && !floor ? tri : none;
+  uvec3 landward = near ? tri : none, floorward = !near && floor ? tri : none, deep = !near && !floor ? tri : none;
   for (int k = 0; k < 3; ++k) {
-    openIndices[3 * t + k] = open[k];
+    floorIndices[3 * t + k] = floorward[k];
     nearLandIndices[3 * t + k] = landward[k];
     deepIndices[3 * t + k] = deep[k];
   }

@@ -214,32 +214,42 @@ GLuint OceanRenderer::classesShadedByCompute(GLuint target) const {
   return format == GL_RGBA32F && samples == 0 ? texture : 0;
 }
 
-void OceanRenderer::dispatchClass(const gl::Program& p, int seaClass, GLuint image, GLuint depthStencil) const {
-  GLint width = 0, height = 0;
-  glGetTextureLevelParameteriv(image, 0, GL_TEXTURE_WIDTH, &width);
-  glGetTextureLevelParameteriv(image, 0, GL_TEXTURE_HEIGHT, &height);
-  // The classes from the stencil: the depth-stencil texture read as its stencil, unfiltered
-  // (an integer texture is incomplete otherwise); its state put back after.
-  GLint mode = 0, minFilter = 0, magFilter = 0;
-  glGetTextureParameteriv(depthStencil, GL_DEPTH_STENCIL_TEXTURE_MODE, &mode);
-  glGetTextureParameteriv(depthStencil, GL_TEXTURE_MIN_FILTER, &minFilter);
-  glGetTextureParameteriv(depthStencil, GL_TEXTURE_MAG_FILTER, &magFilter);
-  glTextureParameteri(depthStencil, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_STENCIL_INDEX);
-  glTextureParameteri(depthStencil, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(depthStencil, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glBindTextureUnit(gl::kUnitSeaStencil, depthStencil);
+OceanRenderer::ClassDispatches::ClassDispatches(GLuint image, GLuint depthStencil)
+    : depthStencil_(gl::driverProfile().stencilExport ? depthStencil : 0) {
+  glGetTextureLevelParameteriv(image, 0, GL_TEXTURE_WIDTH, &width_);
+  glGetTextureLevelParameteriv(image, 0, GL_TEXTURE_HEIGHT, &height_);
+  if (depthStencil_ != 0) {
+    // The classes from the stencil: the depth-stencil texture read as its stencil, unfiltered
+    // (an integer texture is incomplete otherwise); its state put back after. (Without stencil
+    // export they are read from the surface buffer.)
+    glGetTextureParameteriv(depthStencil_, GL_DEPTH_STENCIL_TEXTURE_MODE, &mode_);
+    glGetTextureParameteriv(depthStencil_, GL_TEXTURE_MIN_FILTER, &minFilter_);
+    glGetTextureParameteriv(depthStencil_, GL_TEXTURE_MAG_FILTER, &magFilter_);
+    glTextureParameteri(depthStencil_, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_STENCIL_INDEX);
+    glTextureParameteri(depthStencil_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(depthStencil_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTextureUnit(gl::kUnitSeaStencil, depthStencil_);
+  }
   glBindImageTexture(0, image, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  p.set("uSeaClass", seaClass);
-  // The surface pass's writes and the stencil before the reads; the image's writes before the
-  // target's next users.
+  // The surface pass's writes and the stencil before the reads. (The classes write disjoint
+  // pixels and read none of the image: no barrier between them.)
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  glDispatchCompute(static_cast<GLuint>((width + 7) / 8), static_cast<GLuint>((height + 7) / 8), 1);
+}
+
+OceanRenderer::ClassDispatches::~ClassDispatches() {
+  // The image's writes before the target's next users.
   glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  if (depthStencil_ == 0) return;
   glBindTextureUnit(gl::kUnitSeaStencil, 0);
-  glTextureParameteri(depthStencil, GL_DEPTH_STENCIL_TEXTURE_MODE, mode);
-  glTextureParameteri(depthStencil, GL_TEXTURE_MIN_FILTER, minFilter);
-  glTextureParameteri(depthStencil, GL_TEXTURE_MAG_FILTER, magFilter);
+  glTextureParameteri(depthStencil_, GL_DEPTH_STENCIL_TEXTURE_MODE, mode_);
+  glTextureParameteri(depthStencil_, GL_TEXTURE_MIN_FILTER, minFilter_);
+  glTextureParameteri(depthStencil_, GL_TEXTURE_MAG_FILTER, magFilter_);
+}
+
+void OceanRenderer::ClassDispatches::dispatch(const gl::Program& p, int seaClass) const {
+  p.set("uSeaClass", seaClass);
+  glDispatchCompute(static_cast<GLuint>((width_ + 7) / 8), static_cast<GLuint>((height_ + 7) / 8), 1);
 }
 
 double OceanRenderer::farthestSeaAngleRad(const geo::CameraView& view) {
@@ -828,12 +838,12 @@ void OceanRenderer::splitNearLand(unsigned key) {
   if (programs().nearLandSplit.id() == 0)
     programs().nearLandSplit = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_near_land.comp"}}, surfaceDefines(key));
   const std::size_t bytes = static_cast<std::size_t>(indexCount_) * sizeof(GLuint);
-  gl::ensureBufferCapacity(openIndices_, openIndicesBytes_, bytes);
+  gl::ensureBufferCapacity(floorIndices_, floorIndicesBytes_, bytes);
   gl::ensureBufferCapacity(nearLandIndices_, nearLandIndicesBytes_, bytes);
   gl::ensureBufferCapacity(deepIndices_, deepIndicesBytes_, bytes);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridIndicesBinding, indices_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridNearLandBinding, gridNearLand_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOpenIndicesBinding, openIndices_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFloorIndicesBinding, floorIndices_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kNearLandIndicesBinding, nearLandIndices_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDeepIndicesBinding, deepIndices_.id());
   const int triangles = indexCount_ / 3;
@@ -900,7 +910,7 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   if (timer_ != nullptr) timer_->mark("ocean surface");
   const bool seaVisible = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] {
                             if (open == nullptr) return drawGrid(surface);
-                            if (fullLayout) drawGridIndices(*open, openIndices_);  // (else empty)
+                            if (fullLayout) drawGridIndices(*open, floorIndices_);  // (else empty)
                             drawGridIndices(surface, nearLandIndices_);
                             if (fullLayout) surface_.drawLayers(true);  // (deep: the compact layout)
                             drawGridIndices(*deep, deepIndices_);
@@ -924,6 +934,8 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   glStencilMask(0);
   surface_.bindForReading();
   glBindVertexArray(vao_.id());
+  std::optional<ClassDispatches> dispatches;
+  if (image != 0 && seaVisible) dispatches.emplace(image, depthStencil);
   std::array<unsigned, kSeaClasses> perClass = classFeatures(features, routedShadows);
   if (!classes) perClass.at(0) = features & ~kFeatureCoastTest;  // one class: all but the coast test
   for (std::size_t k = 0; k < kSeaClasses && seaVisible; ++k) {
@@ -933,8 +945,8 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
     const gl::Program& p = deferredProgram(perClass.at(k), image != 0);
     prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, perClass.at(k), margin);
     p.use();
-    if (image != 0) {
-      dispatchClass(p, static_cast<int>(k + 1), image, depthStencil);
+    if (dispatches) {
+      dispatches->dispatch(p, static_cast<int>(k + 1));
       continue;
     }
     glStencilFunc(GL_EQUAL, static_cast<GLint>(k + 1), 0xff);
@@ -944,6 +956,7 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
     else
       draw();
   }
+  dispatches.reset();
   if (timer_ != nullptr) timer_->mark("ocean");
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);

@@ -254,7 +254,7 @@ class OceanRenderer {
   const gl::Program& surfaceProgram(unsigned key);
   /// The grid's index list split in three copies by ocean/grid_near_land.comp (after the surface
   /// pass's vertices): nearLandIndices_ with only the triangles where land may be near (the others
-  /// degenerate), openIndices_ with the others that have a floor within the water's reach, and
+  /// degenerate), floorIndices_ with the others that have a floor within the water's reach, and
   /// deepIndices_ with the rest, so that only the near-land draw pays for the coast test and the
   /// deep draw writes the compact layout (llvmpipe runs a fragment shader's every line whatever
   /// its conditions). `key`: the surface pass's, with classes.
@@ -267,7 +267,7 @@ class OceanRenderer {
   void drawGridIndices(const gl::Program& p, const gl::Buffer& indices) const;
   /// ocean/grid_near_land.comp's buffers: the grid's indices, its three copies (the deep list's
   /// binding is kClassRowsBinding's: drawDeferred binds the class rows there after the split).
-  static constexpr GLuint kGridIndicesBinding = 5, kOpenIndicesBinding = 6, kNearLandIndicesBinding = 7,
+  static constexpr GLuint kGridIndicesBinding = 5, kFloorIndicesBinding = 6, kNearLandIndicesBinding = 7,
                           kDeepIndicesBinding = 3;
   static constexpr int kFoldRows = 2;
   /// The index buffer's blocks of cells (ensureGrid): rows, columns.
@@ -359,9 +359,22 @@ class OceanRenderer {
   /// (OCEANGLOBE_SEA=compute, a single-sampled RGBA32F texture, no auxiliary channels, the
   /// classes' samples not counted); 0: by full-screen draws.
   [[nodiscard]] GLuint classesShadedByCompute(GLuint target) const;
-  /// Shades class `seaClass` (1..kSeaClasses) with `p` (deferredProgram's compute one, in use) into
-  /// `image`, the classes read from `depthStencil`'s stencil or the surface buffer.
-  void dispatchClass(const gl::Program& p, int seaClass, GLuint image, GLuint depthStencil) const;
+  /// A frame's class dispatches (drawDeferred) into `image`, the classes read from
+  /// `depthStencil`'s stencil (with stencil export) or the surface buffer: the bindings and the
+  /// stencil's texture state set once for all and put back by the destructor.
+  class ClassDispatches {
+   public:
+    ClassDispatches(GLuint image, GLuint depthStencil);
+    ~ClassDispatches();
+    ClassDispatches(const ClassDispatches&) = delete;
+    ClassDispatches& operator=(const ClassDispatches&) = delete;
+    /// Shades class `seaClass` (1..kSeaClasses) with `p` (deferredProgram's compute one, in use).
+    void dispatch(const gl::Program& p, int seaClass) const;
+
+   private:
+    GLuint depthStencil_;  ///< 0 without stencil export
+    GLint width_ = 0, height_ = 0, mode_ = 0, minFilter_ = 0, magFilter_ = 0;
+  };
   /// How far from land (m along the sea) the terrain's shadows can fall on the sea's surface or
   /// on the floor seen through it: the casters' height over the tangent of the Sun's elevation
   /// (the longest shadow on the sea), plus, with the water volume, how far from its pixel the
@@ -432,8 +445,8 @@ class OceanRenderer {
   bool oneBinAllowed_ = true;
   gl::Buffer gridVertices_;  ///< the surface pass's vertices (ocean/grid_vertex_buffer.glsl)
   gl::Program classStencil_;   ///< ocean/sea_class_stencil.frag; id() 0 until first used
-  gl::Buffer openIndices_, nearLandIndices_, deepIndices_;  ///< splitNearLand's copies of indices_
-  std::size_t openIndicesBytes_ = 0, nearLandIndicesBytes_ = 0, deepIndicesBytes_ = 0;
+  gl::Buffer floorIndices_, nearLandIndices_, deepIndices_;  ///< splitNearLand's copies of indices_
+  std::size_t floorIndicesBytes_ = 0, nearLandIndicesBytes_ = 0, deepIndicesBytes_ = 0;
   std::size_t gridVerticesBytes_ = 0;
   gl::Buffer gridRadianceTerms_;  ///< the radiance terms' vertices' (ocean/grid_vertex_buffer.glsl)
   std::size_t gridRadianceTermsBytes_ = 0;
