@@ -481,11 +481,13 @@ void TerrainRenderer::drawTileGroup(const geo::CameraView& view, const std::vect
   p.set("uFloorClipFarM", static_cast<float>(floorClip_.farM));
   const bool clipFloor = floorClip_.clipM > 0.0 && (bits & kLandOnly) == 0;
   if (clipFloor) glEnable(GL_CLIP_DISTANCE0);
-  if (seaHorizonClip_) {
-    p.set("uSeaHorizonAxis", glm::vec3(seaHorizonClip_->axis));
-    p.set("uSeaHorizonCone", glm::vec3(seaHorizonClip_->cosHalfAngle(), seaHorizonClip_->sinHalfAngle(),
-                                       seaHorizonClip_->capM()));
-  }
+  // Set in every frame, a cone that cuts nothing in those without the clip: llvmpipe cut by the
+  // distance though GL_CLIP_DISTANCE1 was off, and a former frame's cone took the far coasts
+  // away with 4 samples (the H200 too, by its test: SeaHorizonClipKeepsThePictureAndShadesLess).
+  const std::optional<terrain::SeaHorizonCone>& cone = seaHorizonClip_;
+  p.set("uSeaHorizonAxis", cone ? glm::vec3(cone->axis) : glm::vec3(0.0f, 0.0f, 1.0f));
+  p.set("uSeaHorizonCone", cone ? glm::vec3(cone->cosHalfAngle(), cone->sinHalfAngle(), cone->capM())
+                                : glm::vec3(0.0f, 0.0f, -1.0e30f));
   glBindTextureUnit(gl::kUnitShadowMap, shadowMap_.id());
   const bool aerialBuffer = (bits & kAerialBuffer) != 0 && (bits & kCoverage) == 0;
   if (aerialBuffer) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTerrainAerialBinding, tileAerial_.id());
