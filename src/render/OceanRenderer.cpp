@@ -153,8 +153,7 @@ OceanRenderer::OceanRenderer(const Atmosphere* atmosphere, ValidationMode mode)
       deferred_(deferredAllowed()),
       deferredWithoutExport_(seaPathAsked() == "deferred" || seaPathAsked() == "compute"),
       computeShading_(seaPathAsked() == "compute"),
-      computeForFloors_(seaPathAsked().empty() && !gl::driverProfile().software &&
-                               !gl::driverProfile().stencilExport),
+      computeForFloors_(seaPathAsked().empty() && !gl::driverProfile().software && !gl::driverProfile().stencilExport),
       vao_(gl::createVertexArray()),
       indices_(gl::createBuffer()) {}
 
@@ -197,7 +196,11 @@ const gl::Program& OceanRenderer::deferredProgram(unsigned features, bool comput
 }
 
 GLuint OceanRenderer::classesShadedByCompute(GLuint target) const {
-  if (!frameComputeShading_ || countClassSamples_ || target == 0) return 0;
+  return frameComputeShading_ && !countClassSamples_ ? computeImageOf(target) : 0;
+}
+
+GLuint OceanRenderer::computeImageOf(GLuint target) {
+  if (target == 0) return 0;
   const auto attachment = [target](GLenum a, GLenum what) {
     GLint v = 0;
     glGetNamedFramebufferAttachmentParameteriv(target, a, what, &v);
@@ -502,8 +505,14 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
                         windAlongOneBin(glm::radians(wind.constantTowardsDeg()), frame.fieldRotationRad())
                     ? 1
                     : 0;
-  // A GPU without stencil export: the frames with a floor within reach by compute shaders.
-  const bool computeFloors = computeForFloors_ && lighting.classes && (features & kFeatureWaterVolume) != 0;
+  // A GPU without stencil export: the frames with a floor within reach by compute shaders,
+  // where they can serve (not into --aov's targets, nor with the classes' samples counted).
+  const bool computeFloors = computeForFloors_ && lighting.classes && (features & kFeatureWaterVolume) != 0 &&
+                             !countClassSamples_ && [] {
+                               GLint target = 0;
+                               glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+                               return computeImageOf(static_cast<GLuint>(target)) != 0;
+                             }();
   frameComputeShading_ = computeShading_ || computeFloors;
   lastDeferred_ = false;
   lastClassesByCompute_ = false;

@@ -356,9 +356,12 @@ class OceanRenderer {
   /// (OCEAN_COMPUTE: dispatchClass).
   const gl::Program& deferredProgram(unsigned features, bool compute);
   /// The texture of `target`'s colour where the deferred classes are shaded by compute shaders
-  /// (OCEANGLOBE_SEA=compute, a single-sampled RGBA32F texture, no auxiliary channels, the
-  /// classes' samples not counted); 0: by full-screen draws.
+  /// (OCEANGLOBE_SEA=compute or computeForFloors_; computeImageOf, the classes' samples not
+  /// counted); 0: by full-screen draws.
   [[nodiscard]] GLuint classesShadedByCompute(GLuint target) const;
+  /// The texture of framebuffer `target`'s colour if compute shaders can write it (a
+  /// single-sampled RGBA32F texture, no auxiliary channels), else 0.
+  [[nodiscard]] static GLuint computeImageOf(GLuint target);
   /// A frame's class dispatches (drawDeferred) into `image`, the classes read from
   /// `depthStencil`'s stencil (with stencil export) or the surface buffer: the bindings and the
   /// stencil's texture state set once for all and put back by the destructor.

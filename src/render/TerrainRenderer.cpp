@@ -483,11 +483,12 @@ void TerrainRenderer::drawTileGroup(const geo::CameraView& view, const std::vect
   if (clipFloor) glEnable(GL_CLIP_DISTANCE0);
   // Set in every frame, a cone that cuts nothing in those without the clip: llvmpipe cut by the
   // distance though GL_CLIP_DISTANCE1 was off, and a former frame's cone took the far coasts
-  // away with 4 samples (the H200 too, by its test: SeaHorizonClipKeepsThePictureAndShadesLess).
+  // away (TerrainRender.NoFormerHorizonClipAfterClimbing; the H200 failed the horizon clip's
+  // test at its 4 samples as llvmpipe did before this, not rerun there since).
   const std::optional<terrain::SeaHorizonCone>& cone = seaHorizonClip_;
   p.set("uSeaHorizonAxis", cone ? glm::vec3(cone->axis) : glm::vec3(0.0f, 0.0f, 1.0f));
   p.set("uSeaHorizonCone", cone ? glm::vec3(cone->cosHalfAngle(), cone->sinHalfAngle(), cone->capM())
-                                : glm::vec3(0.0f, 0.0f, -1.0e30f));
+                                : glm::vec3(0.0f, 0.0f, 1.0e30f));  // (every distance ~1e30)
   glBindTextureUnit(gl::kUnitShadowMap, shadowMap_.id());
   const bool aerialBuffer = (bits & kAerialBuffer) != 0 && (bits & kCoverage) == 0;
   if (aerialBuffer) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::kTerrainAerialBinding, tileAerial_.id());

@@ -78,8 +78,8 @@ TEST(GlShader, CompileErrorNamesIncludedFileAndLine) {
 // NVIDIA's drivers lack GL_ARB_shader_stencil_export: a program that enables it fails to compile
 // there (the tenth and thirty-third sessions found two). Every shader enables it only under
 // OG_STENCIL_EXPORT, which gl::Program defines from the driver profile, so that
-// OCEANGLOBE_STENCIL_EXPORT=0 makes llvmpipe's compiler refuse what NVIDIA's would; and the
-// programs such a driver builds compile then.
+// OCEANGLOBE_STENCIL_EXPORT=0 makes llvmpipe's compiler refuse what NVIDIA's would (a test
+// shader that writes the stencil value); and the programs such a driver builds compile then.
 TEST(GlShader, StencilExportOnlyWhereTheDriverHasIt) {
   namespace fs = std::filesystem;
   int enabled = 0;
@@ -96,22 +96,37 @@ TEST(GlShader, StencilExportOnlyWhereTheDriverHasIt) {
     }
   }
   EXPECT_EQ(enabled, 3) << "globe.frag, sea_surface.frag, sea_classify.frag";
-  // The globe's one classifying draw asked of a driver without: refused, as NVIDIA's compiler would.
-  const ScopedEnv off("OCEANGLOBE_STENCIL_EXPORT", "0");
-  auto ctx = gl::createHeadlessContext();
-  ASSERT_FALSE(gl::driverProfile().stencilExport);
-  EXPECT_THROW(gl::Program({{GL_VERTEX_SHADER, "render/globe.vert"}, {GL_FRAGMENT_SHADER, "render/globe.frag"}},
-                           {"GLOBE_CLASSIFY_EXPORT"}),
-               InternalError);
+  // A shader that writes the stencil value: compiled where the driver exports it, refused
+  // where it does not (NVIDIA's compiler: "undefined variable gl_FragStencilRefARB").
+  const bool exports = gl::createHeadlessContext()->info().profile.stencilExport;
+  {
+    const ScopedEnv dir("OCEANGLOBE_SHADER_DIR", OG_TEST_DATA_DIR "/gl/shaders");
+    if (exports) {
+      auto ctx = gl::createHeadlessContext();
+      EXPECT_NO_THROW(gl::Program({{GL_FRAGMENT_SHADER, "stencil/export.frag"}}));
+    }
+    const ScopedEnv off("OCEANGLOBE_STENCIL_EXPORT", "0");
+    auto ctx = gl::createHeadlessContext();
+    ASSERT_FALSE(gl::driverProfile().stencilExport);
+    try {
+      gl::Program p({{GL_FRAGMENT_SHADER, "stencil/export.frag"}});
+      ADD_FAILURE() << "a stencil-writing shader compiled without stencil export";
+    } catch (const InternalError& e) {
+      EXPECT_NE(std::string(e.what()).find("gl_FragStencilRefARB"), std::string::npos) << e.what();
+    }
+  }
   // The deferred sea by a Himalayan valley from 15 km (bench's mountain-15km), by compute shaders
   // and by fragments: where land may hide the whole sea its classifying draw asks first
   // (OceanRenderer::seaShows), which wrote stencil values (the thirty-third session's crash).
+  const ScopedEnv off("OCEANGLOBE_STENCIL_EXPORT", "0");
   for (const char* path : {"compute", "deferred"}) {
     const ScopedEnv sea("OCEANGLOBE_SEA", path);
+    auto ctx = gl::createHeadlessContext();
     render::GlobeRenderer r(data::defaultElevation());
     render::FrameInput f = test::frameOf({27.3, 86.9, 15000.0, 10.0, -2.0, 45.0, 160, 90}, 30.0, 120.0);
     f.samples = 1;
     EXPECT_NO_THROW(r.render(f)) << path;
+    EXPECT_TRUE(r.ocean().lastDrawDeferred()) << path;  // (after the query: the sea shows there)
   }
 }
 

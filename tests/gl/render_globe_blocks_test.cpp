@@ -65,10 +65,7 @@ void expectSamePicture(render::GlobeRenderer& r, const std::vector<View>& views,
     const test::RadianceChange change = test::radianceChange(images.off, images.on, bound);
     std::printf("%s: %d pixels changed, largest relative change %.2e\n", v.name, change.over, change.worst);
     EXPECT_EQ(change.over, 0) << v.name << " (largest relative change " << change.worst << ")";
-    if (change.over > 0) {
-      test::savePng(r, pngPrefix + v.name);
-      test::saveChangePng(images.off, images.on, bound, pngPrefix + v.name);
-    }
+    if (change.over > 0) test::savePictureAndChange(r, images.off, images.on, bound, pngPrefix + v.name);
   }
 }
 
@@ -250,8 +247,7 @@ TEST(GlobeRender, ScatteredPartsShadedFromAListKeepThePicture) {
                 change.over, change.worst);
     EXPECT_EQ(change.over, 0) << v.name << " (largest relative change " << change.worst << ")";
     if (change.over > 0) {
-      test::savePng(r, std::string("globe_listed_") + v.name);
-      test::saveChangePng(images.off, images.on, 0.01, std::string("globe_listed_") + v.name);
+      test::savePictureAndChange(r, images.off, images.on, 0.01, std::string("globe_listed_") + v.name, 4);
     }
   }
 }
@@ -370,8 +366,7 @@ TEST(GlobeRender, ConstantWindUniformsKeepThePicture) {
                 change.worst);
     EXPECT_EQ(change.over, 0) << v.name << " (largest relative change " << change.worst << ")";
     if (change.over > 0) {
-      test::savePng(r, std::string("globe_constant_wind_") + v.name);
-      test::saveChangePng(images.off, images.on, bound, std::string("globe_constant_wind_") + v.name);
+      test::savePictureAndChange(r, images.off, images.on, bound, std::string("globe_constant_wind_") + v.name);
     }
   }
 }
@@ -397,8 +392,7 @@ TEST(GlobeRender, SamplesByTheMaskAloneKeepThePicture) {
     const double meanBound = gl::driverProfile().software ? 1e-4 : 2.5e-4;
     EXPECT_LT(change.mean, meanBound) << v.name;
     if (change.over > kWidth * kHeight / 2000 || change.mean >= meanBound) {
-      test::savePng(r, std::string("globe_mask_coast_") + v.name);
-      test::saveChangePng(images.off, images.on, 0.02, std::string("globe_mask_coast_") + v.name);
+      test::savePictureAndChange(r, images.off, images.on, 0.02, std::string("globe_mask_coast_") + v.name);
     }
   }
 }

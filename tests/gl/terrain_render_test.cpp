@@ -592,8 +592,7 @@ TEST(TerrainRender, UnresolvedDetailLeftOutKeepsThePicture) {
     EXPECT_EQ(r.terrain().stats().pixelDetail, resolved) << c.name;
     const test::RadianceChange change = test::radianceChange(never, r.radiance(), 1e-4);
     if (change.worst >= 1e-4) {
-      test::savePng(r, std::string("unresolved_detail_") + c.name);
-      test::saveChangePng(never, r.radiance(), 1e-4, std::string("unresolved_detail_") + c.name);
+      test::savePictureAndChange(r, never, r.radiance(), 1e-4, std::string("unresolved_detail_") + c.name);
     }
     std::printf("%s: detail per pixel %d, its share: %d pixels over 0.1 %%; largest change %.2e\n", c.name,
                 resolved ? 1 : 0, detail.over, change.worst);
@@ -661,7 +660,7 @@ TEST(TerrainRender, NoFormerHorizonClipAfterClimbing) {
         std::printf("%d samples: %d pixels changed by over 0.1 %%, largest change %.2e\n", pixelSamples, change.over,
                     change.worst);
         EXPECT_EQ(change.over, 0) << pixelSamples << " samples";
-        if (change.over > 0) test::saveChangePng(images[0], images[1], 1e-3, "former_horizon_clip");
+        if (change.over > 0) test::savePictureAndChange(r, images[0], images[1], 1e-3, "former_horizon_clip");
       }
     }
   }
@@ -715,8 +714,7 @@ TEST(TerrainRender, SeaHorizonClipKeepsThePictureAndShadesLess) {
     EXPECT_LE(change.over, pixelSamples == 1 ? 0 : 3);
     EXPECT_LT(change.mean, 1e-5);
     if (change.over > 0) {
-      test::savePng(r, std::string("sea_horizon_clip_") + c.name);
-      test::saveChangePng(images[0], images[1], 0.01, std::string("sea_horizon_clip_") + c.name);
+      test::savePictureAndChange(r, images[0], images[1], 0.01, std::string("sea_horizon_clip_") + c.name);
     }
     EXPECT_LE(samples[1], samples[0]);
     const std::string name = c.name;

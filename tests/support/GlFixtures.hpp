@@ -116,16 +116,22 @@ struct RadianceChange {
   double worst = 0.0, mean = 0.0;
   int over = 0;
 };
+/// Pixel i's largest relative change over its first `channels` channels (radianceChange's).
+inline double relativeChange(const io::ImageRgbaF& a, const io::ImageRgbaF& b, std::size_t i, std::size_t channels,
+                             float floor) {
+  double d = 0.0;
+  for (std::size_t k = 0; k < channels; ++k) {
+    const float x = a.pixels[4 * i + k], y = b.pixels[4 * i + k];
+    d = std::max(d, static_cast<double>(std::abs(x - y) / std::max(std::abs(x), floor)));
+  }
+  return d;
+}
 inline RadianceChange radianceChange(const io::ImageRgbaF& a, const io::ImageRgbaF& b, double bound,
                                      std::size_t channels = 3, float floor = 1e-3f) {
   RadianceChange c;
   const std::size_t n = std::min(a.pixels.size(), b.pixels.size()) / 4;
   for (std::size_t i = 0; i < n; ++i) {
-    double d = 0.0;
-    for (std::size_t k = 0; k < channels; ++k) {
-      const float x = a.pixels[4 * i + k], y = b.pixels[4 * i + k];
-      d = std::max(d, static_cast<double>(std::abs(x - y) / std::max(std::abs(x), floor)));
-    }
+    const double d = relativeChange(a, b, i, channels, floor);
     c.worst = std::max(c.worst, d);
     c.mean += d / static_cast<double>(n);
     c.over += d > bound ? 1 : 0;
@@ -141,19 +147,26 @@ inline void savePng(const render::GlobeRenderer& r, const std::string& name) {
 /// Where two radiance images differ, as OG_TEST_OUT_DIR/<name>_change.png: pixels changed by
 /// over `bound` (radianceChange's measure) red, the others grey by their change (white at
 /// `bound`), black where nothing changed; beside savePng's picture, to see which pixels moved.
-inline void saveChangePng(const io::ImageRgbaF& a, const io::ImageRgbaF& b, double bound, const std::string& name) {
+inline void saveChangePng(const io::ImageRgbaF& a, const io::ImageRgbaF& b, double bound, const std::string& name,
+                          std::size_t channels = 3) {
   io::ImageRgba8 out{a.width, a.height, std::vector<std::uint8_t>(4 * static_cast<std::size_t>(a.width) * a.height, 255)};
   const std::size_t n = std::min(a.pixels.size(), b.pixels.size()) / 4;
   for (std::size_t i = 0; i < n; ++i) {
-    const RadianceChange c = radianceChange(
-        io::ImageRgbaF{1, 1, {a.pixels.begin() + 4 * i, a.pixels.begin() + 4 * i + 4}},
-        io::ImageRgbaF{1, 1, {b.pixels.begin() + 4 * i, b.pixels.begin() + 4 * i + 4}}, bound);
-    const auto grey = static_cast<std::uint8_t>(std::lround(255.0 * std::min(1.0, c.worst / bound)));
-    out.pixels[4 * i] = c.over > 0 ? 255 : grey;
-    out.pixels[4 * i + 1] = c.over > 0 ? 0 : grey;
-    out.pixels[4 * i + 2] = c.over > 0 ? 0 : grey;
+    const double d = relativeChange(a, b, i, channels, 1e-3f);
+    const auto grey = static_cast<std::uint8_t>(std::lround(255.0 * std::min(1.0, d / bound)));
+    out.pixels[4 * i] = d > bound ? 255 : grey;
+    out.pixels[4 * i + 1] = d > bound ? 0 : grey;
+    out.pixels[4 * i + 2] = d > bound ? 0 : grey;
   }
   io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + "_change.png"), out);
+}
+
+/// savePng's picture and saveChangePng's map of the change from `before` to `after`.
+inline void savePictureAndChange(const render::GlobeRenderer& r, const io::ImageRgbaF& before,
+                                 const io::ImageRgbaF& after, double bound, const std::string& name,
+                                 std::size_t channels = 3) {
+  savePng(r, name);
+  saveChangePng(before, after, bound, name, channels);
 }
 
 /// Sets an environment variable for the scope's lifetime, then restores what it was.
