@@ -3,7 +3,7 @@
 # `record`) with the shared libraries it loads into .devbundle/og-bundle.tar.xz, for a machine
 # without the Debian packages: the GPU machine some sessions are lent (Ubuntu with NVIDIA's
 # driver, no network; docs/performance.md, "Tenth session"). scripts/device-check.sh unpacks and
-# runs it there. The bundle is ~39 MB, ~46 MB with both options: with the working tree (~19 MB)
+# runs it there. The bundle is ~39 MB (~41.6 with --tests, PROJ's database included), ~46 MB with both options: with the working tree (~21 MB)
 # that is about the 64 MiB the lent machine takes, so bundle the tests or the recorder, not both.
 #
 # To stay small, the libraries of what a GPU check does not use are replaced by stubs of the
@@ -26,7 +26,13 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$work/lib" "$work/stubs" "$work/bin" .devbundle
 cp build/oceanglobe "$work/bin/"
-[[ $tests == 1 ]] && cp build/tests/og_gl_tests "$work/bin/"
+if [[ $tests == 1 ]]; then
+  cp build/tests/og_gl_tests "$work/bin/"
+  # PROJ's database for the GeoTIFF imagery tests' warps (~1 MB compressed): device-check.sh
+  # points PROJ_DATA at it.
+  mkdir -p "$work/share/proj"
+  cp /usr/share/proj/proj.db "$work/share/proj/"
+fi
 strip -s "$work"/bin/*
 
 stubbed=(libOSMesa.so.8 libavcodec.so.59 libavformat.so.59 libavutil.so.57 libswscale.so.6 libglfw.so.3
@@ -79,6 +85,6 @@ for s in "${stubbed[@]}"; do
   gcc -shared -fPIC -w -Wl,-soname,"$s" -o "$work/stubs/$s" "$work/stub.c"
 done
 
-tar -C "$work" -cf - bin lib stubs | xz -T0 -6 >"$work/og-bundle.tar.xz"
+tar -C "$work" -cf - bin lib stubs $([[ -d $work/share ]] && echo share) | xz -T0 -6 >"$work/og-bundle.tar.xz"
 mv "$work/og-bundle.tar.xz" .devbundle/og-bundle.tar.xz
 echo "device-bundle: .devbundle/og-bundle.tar.xz, $(du -h .devbundle/og-bundle.tar.xz | cut -f1)"

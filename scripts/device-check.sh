@@ -23,10 +23,13 @@ vendor=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
 export LD_LIBRARY_PATH=$bundle/stubs:$bundle/lib:/usr/local/nvidia/lib64:/usr/local/nvidia/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
 export OCEANGLOBE_SHADER_DIR=$root/shaders OCEANGLOBE_CACHE_DIR=/tmp/oceanglobe-cache
 export OG=$bundle/bin/oceanglobe OG_TESTS=$bundle/bin/og_gl_tests
+[[ -d $bundle/share/proj ]] && export PROJ_DATA=$bundle/share/proj PROJ_LIB=$bundle/share/proj
 out=${OUT:-/tmp/oceanglobe-out}
 mkdir -p "$out"
-# The GL tests find their data by the paths compiled in (this machine's checkout of /work/main).
+# The GL tests find their data by the paths compiled in (this machine's checkout of /work/main)
+# and write into its build/tests/out.
 if [[ -x $OG_TESTS && ! -e /work/main ]]; then mkdir -p /work && ln -s "$root" /work/main; fi
+[[ -x $OG_TESTS ]] && mkdir -p "$root/build/tests/out"
 quiet() { perl -0pe 's/stub called: curl_global_[a-z]*\n?//g' | grep -v "no version information available"; }
 
 if [[ $# -gt 0 ]]; then
@@ -34,7 +37,8 @@ if [[ $# -gt 0 ]]; then
   exit "${PIPESTATUS[0]}"
 fi
 # At most 8 files come back from $OUT: the texts in bench.txt, the breakdowns as JSON, the renders
-# in one tar, the GL tests' log (when bundled).
+# in one tar, the GL tests' log and the pictures their failures wrote (when bundled).
+stamp=$(mktemp)  # (the tests' pictures newer than it come back)
 { nvidia-smi --query-gpu=name,driver_version,clocks.max.sm --format=csv,noheader; uptime; } | tee "$out/bench.txt"
 mkdir -p "$out/png"
 render() {
@@ -75,6 +79,11 @@ if [[ -x $OG_TESTS ]]; then
   if ((left >= 30)); then
     timeout $left "$OG_TESTS" 2>&1 | quiet >"$out/gltests.txt"
     grep -E "^\[  (PASSED|FAILED) |^\[==========\]" "$out/gltests.txt" | tail -40
+    # The pictures the tests wrote (a failure's *_change.png: which pixels moved), one tar;
+    # only the change maps if all would pass the 16 MB a file that comes back.
+    pictures() { (cd "$root/build/tests/out" && find . -name "$1" -newer "$stamp" -print0 | tar -cf "$out/testout.tar" --null -T -); }
+    pictures "*.png"
+    (($(stat -c %s "$out/testout.tar") < 15000000)) || pictures "*_change.png"
   else
     echo "device-check: no time left for the GL tests" | tee "$out/gltests.txt"
   fi
