@@ -130,16 +130,17 @@ std::vector<std::string> oceanDefines(const Atmosphere* atmosphere, ValidationMo
   return d;
 }
 // OCEANGLOBE_SEA: unset (""), "forward" (for comparisons), "deferred" or "compute" (deferred,
-// its classes shaded by compute shaders).
+// its classes shaded by compute shaders), "split" (forward, the grid's triangles in classes:
+// OceanRenderer::drawForwardSplit).
 std::string seaPathAsked() {
   const char* e = std::getenv("OCEANGLOBE_SEA");
   const std::string asked = e != nullptr ? e : "";
-  if (asked.empty() || asked == "forward" || asked == "deferred" || asked == "compute") return asked;
-  throw InputError("OCEANGLOBE_SEA: '" + asked + "' is not forward, deferred or compute");
+  if (asked.empty() || asked == "forward" || asked == "deferred" || asked == "compute" || asked == "split") return asked;
+  throw InputError("OCEANGLOBE_SEA: '" + asked + "' is not forward, deferred, compute or split");
 }
 
 // Whether the sea may be drawn deferred (OceanRenderer::setDeferred): unless it is asked forward.
-bool deferredAllowed() { return seaPathAsked() != "forward"; }
+bool deferredAllowed() { return seaPathAsked() != "forward" && seaPathAsked() != "split"; }
 
 // The sea's classes' passes in `bench --breakdown`.
 constexpr std::array<const char*, OceanRenderer::kSeaClasses> kClassPass{
@@ -153,6 +154,7 @@ OceanRenderer::OceanRenderer(const Atmosphere* atmosphere, ValidationMode mode)
       deferred_(deferredAllowed()),
       deferredWithoutExport_(seaPathAsked() == "deferred" || seaPathAsked() == "compute"),
       computeShading_(seaPathAsked() == "compute"),
+      forwardSplit_(seaPathAsked() == "split" || (seaPathAsked().empty() && !gl::driverProfile().stencilExport)),
       computeForFloors_(seaPathAsked().empty() && !gl::driverProfile().software && !gl::driverProfile().stencilExport),
       vao_(gl::createVertexArray()),
       indices_(gl::createBuffer()) {}
@@ -160,8 +162,9 @@ OceanRenderer::OceanRenderer(const Atmosphere* atmosphere, ValidationMode mode)
 const gl::Program& OceanRenderer::program(unsigned features) {
   gl::Program& p = programs().variants.at(features);
   if (p.id() != 0) return p;
-  // The radiance terms' vertices come from the compute pass (draw: computeGridVertices).
-  const char* vertex = (features & kFeatureRadianceTerms) != 0 ? "ocean/grid_cached.vert" : "ocean/grid.vert";
+  // The radiance terms' and the split's vertices come from the compute pass (computeGridVertices).
+  const char* vertex =
+      (features & (kFeatureRadianceTerms | kFeatureCachedVertices)) != 0 ? "ocean/grid_cached.vert" : "ocean/grid.vert";
   p = gl::Program({{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}}, featureDefines(features));
   return p;
 }
@@ -174,6 +177,7 @@ std::vector<std::string> OceanRenderer::featureDefines(unsigned features) const 
   if ((features & kFeatureFrameSky) != 0) d.emplace_back("SKY_FRAME_LAYER");
   // The per-wind bands from the tables (the vertex buffer does not keep the vertices').
   if ((features & kFeatureRadianceTerms) != 0) d.insert(d.end(), {"OCEAN_RADIANCE_TERMS", "PATTERN_BANDS_PER_PIXEL"});
+  else if ((features & kFeatureCachedVertices) != 0) d.emplace_back("PATTERN_BANDS_PER_PIXEL");
   if (atmosphere_ != nullptr && atmosphere_->skyFilter().radialSums) d.emplace_back("SKY_RADIAL_SUMS");
   return d;
 }
@@ -515,6 +519,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
                              }();
   frameComputeShading_ = computeShading_ || computeFloors;
   lastDeferred_ = false;
+  lastForwardSplit_ = false;
   lastClassesByCompute_ = false;
   lastSurfaceCompact_ = false;
   lastRadianceTerms_ = false;
@@ -547,6 +552,11 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
   } else {
     lastRadianceTerms_ = termsCells;
     lastCoversScreen_ = termsCells && (features & kFeatureCoastTest) == 0;
+    if (!termsCells && forwardSplit_ && lighting.classes && (features & (kFeatureWaterVolume | kFeatureCoastTest)) != 0) {
+      drawForwardSplit(view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
+      gl::checkErrors("OceanRenderer::draw");
+      return;
+    }
     if (termsCells) features |= kFeatureRadianceTerms;
     const gl::Program& p = program(features);
     if (termsCells) {  // the vertices first, on every core
@@ -860,6 +870,34 @@ void OceanRenderer::splitNearLand(unsigned key) {
   programs().nearLandSplit.use();
   glDispatchCompute(static_cast<GLuint>((triangles + 63) / 64), 1, 1);
   glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT);
+}
+
+void OceanRenderer::drawForwardSplit(const geo::CameraView& view, int height, const OceanPatterns& patterns,
+                                     const ocean::OceanFrame& frame, const OceanLighting& lighting,
+                                     double amplitudeScale, const WindTextures& wind, unsigned features,
+                                     const glm::vec4& margin) {
+  lastForwardSplit_ = true;
+  // The vertices and their flags as the deferred sea's surface pass computes them, the grid's
+  // index list split by them (near land, a floor within reach, the rest), each third drawn by
+  // the forward program with only what its triangles need.
+  const unsigned key = (features & (kFeatureWaterVolume | kFeatureCoastTest)) | kSurfaceClasses;
+  gl::Program& compute = programs().gridComputeVariants.at(key);
+  if (compute.id() == 0) compute = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_vertices.comp"}}, surfaceDefines(key));
+  prepare(compute, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
+  setClassUniforms(compute, view, patterns, lighting, amplitudeScale, features);
+  computeGridVertices(compute, false);
+  splitNearLand(key);
+  if (timer_ != nullptr) timer_->mark("ocean");
+  const std::array<std::pair<unsigned, const gl::Buffer*>, 3> draws{
+      {{features, &nearLandIndices_},
+       {features & ~kFeatureCoastTest, &floorIndices_},
+       {features & ~(kFeatureCoastTest | kFeatureWaterVolume), &deepIndices_}}};
+  for (const auto& [drawFeatures, indices] : draws) {
+    if ((drawFeatures & kFeatureWaterVolume) == 0 && indices == &floorIndices_) continue;  // (empty)
+    const gl::Program& p = program(drawFeatures | kFeatureCachedVertices);
+    prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, drawFeatures, margin);
+    drawGridIndices(p, *indices);
+  }
 }
 
 void OceanRenderer::drawGridIndices(const gl::Program& p, const gl::Buffer& indices) const {

@@ -148,6 +148,8 @@ class OceanRenderer {
   [[nodiscard]] bool lastDrawOneBin() const { return programSet_ == 1; }
   /// Whether the last draw was deferred.
   [[nodiscard]] bool lastDrawDeferred() const { return lastDeferred_; }
+  /// Whether the last draw was forward with its triangles in classes (OCEANGLOBE_SEA=split).
+  [[nodiscard]] bool lastDrawForwardSplit() const { return lastForwardSplit_; }
   /// Whether the last deferred draw shaded its classes by compute shaders (OCEANGLOBE_SEA=compute).
   [[nodiscard]] bool lastClassesByCompute() const { return lastClassesByCompute_; }
   /// The default of GPUs without stencil export (computeForFloors_: on there unless OCEANGLOBE_SEA
@@ -265,6 +267,13 @@ class OceanRenderer {
   void classesIntoStencil();
   /// drawGrid with another index list of the same layout (splitNearLand's).
   void drawGridIndices(const gl::Program& p, const gl::Buffer& indices) const;
+  /// The forward sea with the grid's triangles in three classes (forwardSplit_): near land
+  /// with every feature, over a floor within reach without the coast test, the rest without
+  /// the water volume too; the vertices from the compute pass (computeGridVertices,
+  /// splitNearLand).
+  void drawForwardSplit(const geo::CameraView& view, int height, const OceanPatterns& patterns,
+                        const ocean::OceanFrame& frame, const OceanLighting& lighting, double amplitudeScale,
+                        const WindTextures& wind, unsigned features, const glm::vec4& margin);
   /// ocean/grid_near_land.comp's buffers: the grid's indices, its three copies (the deep list's
   /// binding is kClassRowsBinding's: drawDeferred binds the class rows there after the split).
   static constexpr GLuint kGridIndicesBinding = 5, kFloorIndicesBinding = 6, kNearLandIndicesBinding = 7,
@@ -404,6 +413,9 @@ class OceanRenderer {
   static constexpr unsigned kFeatureFrameSky = 8;
   /// The radiance from the vertices' quadratic (OCEAN_RADIANCE_TERMS, setRadianceTerms).
   static constexpr unsigned kFeatureRadianceTerms = 16;
+  /// The vertices from the compute pass (ocean/grid_cached.vert), the bands per pixel
+  /// (drawForwardSplit).
+  static constexpr unsigned kFeatureCachedVertices = 32;
   const Atmosphere* atmosphere_;
   ValidationMode mode_;
   std::vector<std::string> defines_;        ///< the filtered model's, whatever the features
@@ -416,6 +428,14 @@ class OceanRenderer {
   /// for GPUs whose pixel shaders are few (the H200's: docs/performance.md, "Thirty-second session");
   /// slower on llvmpipe (sea-4m's open sea 105 -> 175 ms of one thread).
   bool computeShading_;
+  /// A forward frame with a floor or a coast to route draws the grid's triangles in three
+  /// classes (drawForwardSplit), each program with only what they need, where the pixels cannot
+  /// be classed (that needs stencil export): by default without stencil export (NVIDIA's: its
+  /// multisampled frames, the GPU default, and its single-sampled ones without a floor), with
+  /// OCEANGLOBE_SEA=split anywhere the frame is drawn forward. Measured on llvmpipe without
+  /// export: sea-2m-horizon 208 -> 157 ms, coast-2m-bank 432 -> 344 (1280x720, one sample);
+  /// not yet on a GPU (docs/performance.md, "Thirty-third session").
+  bool forwardSplit_;
   /// A GPU without stencil export (NVIDIA's), OCEANGLOBE_SEA unset: the frames whose sea has a
   /// floor within reach (the water volume) drawn deferred, their classes shaded by compute
   /// shaders; the others forward. Measured on the H200 at 1080p, forward against by compute:
@@ -430,7 +450,7 @@ class OceanRenderer {
   /// windAlongOneBin), set 0
   /// without.
   struct PatternPrograms {
-    std::array<gl::Program, 32> variants;    ///< by feature bits
+    std::array<gl::Program, 64> variants;    ///< by feature bits
     gl::Program classify;                    ///< ocean/sea_classify.frag
     std::array<gl::Program, 16> deferredVariants;  ///< ocean.frag OCEAN_DEFERRED, by feature bits
     std::array<gl::Program, 16> deferredComputeVariants;  ///< the same with OCEAN_COMPUTE
@@ -457,6 +477,7 @@ class OceanRenderer {
   std::size_t gridNearLandBytes_ = 0;
   SeaSurfaceBuffer surface_;
   bool lastDeferred_ = false;
+  bool lastForwardSplit_ = false;  ///< lastDrawForwardSplit
   bool lastClassesByCompute_ = false;  ///< lastClassesByCompute
   bool lastSurfaceCompact_ = false;
   unsigned classesDrawn_ = 0;  ///< classesDrawn()

@@ -797,9 +797,53 @@ TEST(CoastWater, GpuWithoutExportShadesFloorsByCompute) {
     if (floor) {
       EXPECT_NE(r.ocean().classesDrawn() & (kClassFloor | kClassFloorShadows), 0u) << name;
     }
-    r.ocean().setComputeForFloors(false);  // llvmpipe's own choice without export: forward
-    r.render(f);
+    r.ocean().setComputeForFloors(false);  // llvmpipe's own choice without export: forward,
+    r.render(f);                            // its triangles in classes
     EXPECT_FALSE(r.ocean().lastDrawDeferred()) << name;
+    EXPECT_EQ(r.ocean().lastDrawForwardSplit(), floor) << name;
+  }
+}
+
+// OCEANGLOBE_SEA=split: a forward frame (here without stencil export, as on NVIDIA; with one
+// sample and with four, the GPU default) draws the grid's triangles in three classes, near
+// land, over a floor within reach and the rest, each with only what it needs: the picture of
+// the one program with every feature (its pattern bands per pixel instead of per vertex):
+// within 1 level here, 2 allowed. Over the shelf (floor and coast), the island's bank in its
+// shadow, and the Strait of Gibraltar from 2 m (the coast test alone). Measured on llvmpipe at
+// 1280x720 without export: sea-2m-horizon 208 -> 157 ms, coast-2m-bank 432 -> 344 (docs/
+// performance.md, "Thirty-third session"). Mutation: the near-land list drawn without the
+// coast test changes the island's bank with 4 samples by up to 17 levels (14 pixels).
+TEST(CoastWater, ForwardSplitDrawsTheSamePicture) {
+  const test::ScopedEnv noExport("OCEANGLOBE_STENCIL_EXPORT", "0");
+  const std::vector<std::tuple<std::string, data::LatLonGrid, render::FrameInput>> views{
+      {"split_shelf", shelf(), classView({kLat - 2.2 / 111.2, kLon, 20.0}, 10.0, -15.0, 40.0, 20.0)},
+      {"split_island_bank", shadowingIsland(true),
+       classView({kLat - 1.0 / 110.8, kLon + 8.0 / (111.3 * std::cos(kLat * M_PI / 180.0)), 200.0}, 200.0, -25.0, 3.0,
+                 250.0)},
+      {"split_gibraltar_2m", data::defaultElevation(), classView({36.0, -5.5, 2.0}, 270.0, 2.0, 20.0, 250.0)}};
+  for (const int samples : {1, 4}) {
+    for (const auto& [name, grid, frame] : views) {
+      SCOPED_TRACE(name + ", " + std::to_string(samples) + " samples");
+      render::FrameInput f = frame;
+      f.samples = samples;
+      auto drawn = [&](const char* path) {
+        const test::ScopedEnv sea("OCEANGLOBE_SEA", path);
+        auto ctx = gl::createHeadlessContext();
+        render::GlobeRenderer r(grid);
+        r.render(f);
+        EXPECT_FALSE(r.ocean().lastDrawDeferred());
+        EXPECT_EQ(r.ocean().lastDrawForwardSplit(), std::string(path) == "split");
+        return r.display();
+      };
+      const io::ImageRgba8 single = drawn("forward"), split = drawn("split");
+      const test::Comparison c = test::compareRgb(split, single, 2);
+      std::printf("%s, %d samples: at most %d levels apart\n", name.c_str(), samples, c.maxDiff);
+      if (c.maxDiff > 2) {
+        io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".png"), split);
+        io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".diff.png"), c.diff);
+      }
+      EXPECT_LE(c.maxDiff, 2) << c.describe();
+    }
   }
 }
 
