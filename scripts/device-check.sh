@@ -64,14 +64,17 @@ timeout 100 "$OG" bench --size 1920x1080 --size 1280x720 --frames 20 --samples 1
 # The deferred sea (full-screen passes per class, the classes copied into the stencil where the
 # driver cannot export them) and its classes shaded by compute shaders instead, against the
 # default above (docs/performance.md, "Thirty-second session"), every view at one sample; and
-# the forward sea in one program, against the default's triangles in classes without stencil
-# export (OceanRenderer::drawForwardSplit: "Thirty-third session"), at 1 and 4 samples.
+# the forward sea in one program against its triangles in classes (OceanRenderer::drawForwardSplit,
+# "Thirty-third session"; the default without stencil export but where, at one sample, a
+# floor's frames go deferred by compute), at 1 and 4 samples.
 for sea in deferred compute; do
   OCEANGLOBE_SEA=$sea timeout 60 "$OG" bench --size 1920x1080 --size 1280x720 --frames 20 --samples 1 --breakdown \
     2>&1 | quiet | sed "s/^/OCEANGLOBE_SEA=$sea: /" | tee -a "$out/bench.txt"
 done
-OCEANGLOBE_SEA=forward timeout 40 "$OG" bench --size 1920x1080 --frames 20 --samples 1 4 --view sea-2m-horizon \
-  --view coast-2m-bank --view coast-2m-deep --view sea-4m 2>&1 | quiet | sed "s/^/OCEANGLOBE_SEA=forward: /" | tee -a "$out/bench.txt"
+for sea in forward split; do
+  OCEANGLOBE_SEA=$sea timeout 40 "$OG" bench --size 1920x1080 --frames 20 --samples 1 4 --view sea-2m-horizon \
+    --view coast-2m-bank --view coast-2m-deep --view sea-4m 2>&1 | quiet | sed "s/^/OCEANGLOBE_SEA=$sea: /" | tee -a "$out/bench.txt"
+done
 # The recording rate, where the bundle has FFmpeg (scripts/device-bundle.sh --record).
 if [[ -e $bundle/lib/libavcodec.so.59 ]]; then
   timeout 120 "$OG" bench --record config/flythrough.toml --size 1280x720 --size 1920x1080 2>&1 | quiet | tee -a "$out/bench.txt"

@@ -552,7 +552,8 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
   } else {
     lastRadianceTerms_ = termsCells;
     lastCoversScreen_ = termsCells && (features & kFeatureCoastTest) == 0;
-    if (!termsCells && forwardSplit_ && lighting.classes && (features & (kFeatureWaterVolume | kFeatureCoastTest)) != 0) {
+    if (!termsCells && forwardSplit_ && mode_ == ValidationMode::Filtered && lighting.classes &&
+        (features & (kFeatureWaterVolume | kFeatureCoastTest)) != 0) {
       drawForwardSplit(view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
       gl::checkErrors("OceanRenderer::draw");
       return;

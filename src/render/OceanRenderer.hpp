@@ -432,7 +432,8 @@ class OceanRenderer {
   /// classes (drawForwardSplit), each program with only what they need, where the pixels cannot
   /// be classed (that needs stencil export): by default without stencil export (NVIDIA's: its
   /// multisampled frames, the GPU default, and its single-sampled ones without a floor), with
-  /// OCEANGLOBE_SEA=split anywhere the frame is drawn forward. Measured on llvmpipe without
+  /// OCEANGLOBE_SEA=split also where export exists but the frame is drawn forward without the
+  /// classified path (a target without stencil). Measured on llvmpipe without
   /// export: sea-2m-horizon 208 -> 157 ms, coast-2m-bank 432 -> 344 (1280x720, one sample);
   /// not yet on a GPU (docs/performance.md, "Thirty-third session").
   bool forwardSplit_;
