@@ -828,12 +828,16 @@ const gl::Program& OceanRenderer::surfaceProgram(unsigned key) {
 const gl::Program& OceanRenderer::prepareSurfacePass(unsigned key,
                                                   const std::function<void(const gl::Program&)>& prepareProgram) {
   const gl::Program& surface = surfaceProgram(key);
+  computeSurfaceVertices(key, prepareProgram);
+  prepareProgram(surface);
+  return surface;
+}
+
+void OceanRenderer::computeSurfaceVertices(unsigned key, const std::function<void(const gl::Program&)>& prepareProgram) {
   gl::Program& compute = programs().gridComputeVariants.at(key);
   if (compute.id() == 0) compute = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_vertices.comp"}}, surfaceDefines(key));
   prepareProgram(compute);
   computeGridVertices(compute, false);
-  prepareProgram(surface);
-  return surface;
 }
 
 void OceanRenderer::computeGridVertices(const gl::Program& compute, bool radianceTerms) {
@@ -882,11 +886,10 @@ void OceanRenderer::drawForwardSplit(const geo::CameraView& view, int height, co
   // index list split by them (near land, a floor within reach, the rest), each third drawn by
   // the forward program with only what its triangles need.
   const unsigned key = (features & (kFeatureWaterVolume | kFeatureCoastTest)) | kSurfaceClasses;
-  gl::Program& compute = programs().gridComputeVariants.at(key);
-  if (compute.id() == 0) compute = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_vertices.comp"}}, surfaceDefines(key));
-  prepare(compute, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
-  setClassUniforms(compute, view, patterns, lighting, amplitudeScale, features);
-  computeGridVertices(compute, false);
+  computeSurfaceVertices(key, [&](const gl::Program& compute) {
+    prepare(compute, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
+    setClassUniforms(compute, view, patterns, lighting, amplitudeScale, features);
+  });
   splitNearLand(key);
   if (timer_ != nullptr) timer_->mark("ocean");
   const std::array<std::pair<unsigned, const gl::Buffer*>, 3> draws{

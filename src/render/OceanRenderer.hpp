@@ -246,6 +246,10 @@ class OceanRenderer {
   /// shades a draw's vertices on one thread, a dispatch on every core). `prepareProgram` sets a
   /// program's uniforms for the frame.
   const gl::Program& prepareSurfacePass(unsigned key, const std::function<void(const gl::Program&)>& prepareProgram);
+  /// prepareSurfacePass's vertices alone (also drawForwardSplit's): the compute variant for
+  /// `key`, its uniforms set by `prepareProgram`, run into gridVertices_ (and the classes'
+  /// per-vertex flags with kSurfaceClasses).
+  void computeSurfaceVertices(unsigned key, const std::function<void(const gl::Program&)>& prepareProgram);
   /// The surface pass's key bit for the sea's classes (OCEAN_SEA_CLASSIFY).
   static constexpr unsigned kSurfaceClasses = 4;
   /// The defines of the surface pass's programs for `key` (as prepareSurfacePass).

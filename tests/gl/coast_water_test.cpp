@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -477,6 +478,18 @@ render::FrameInput classView(const geo::Geodetic& position, double headingDeg, d
   return f;
 }
 
+// The display image of `f` by a fresh context and renderer over `grid` with OCEANGLOBE_SEA set
+// to `path`; `check` looks at the renderer after the frame (which path it took).
+io::ImageRgba8 drawnWithSea(const data::LatLonGrid& grid, const render::FrameInput& f, const char* path,
+                            const std::function<void(const render::GlobeRenderer&)>& check) {
+  const test::ScopedEnv sea("OCEANGLOBE_SEA", path);
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(grid);
+  r.render(f);
+  check(r);
+  return r.display();
+}
+
 // `f` drawn deferred (render/OceanRenderer::drawDeferred), then by the grid's own fragments,
 // compared as the classes are below.
 // Returns the classes the deferred frame drew (OceanRenderer::classesDrawn).
@@ -754,14 +767,11 @@ TEST(CoastWater, DeferredSeaByComputeDrawsTheSamePicture) {
     for (const auto& [name, grid, f, mustDraw] : views) {
       SCOPED_TRACE(name + (exportStencil ? " (stencil exported)" : " (classes in the surface buffer)"));
       auto drawn = [&](const char* path) {
-        const test::ScopedEnv sea("OCEANGLOBE_SEA", path);
-        auto ctx = gl::createHeadlessContext();
-        render::GlobeRenderer r(grid);
-        r.render(f);
-        EXPECT_TRUE(r.ocean().lastDrawDeferred());
-        EXPECT_EQ(r.ocean().lastClassesByCompute(), std::string(path) == "compute");
-        EXPECT_EQ(r.ocean().classesDrawn() & mustDraw, mustDraw) << r.ocean().classesDrawn();
-        return r.display();
+        return drawnWithSea(grid, f, path, [&](const render::GlobeRenderer& r) {
+          EXPECT_TRUE(r.ocean().lastDrawDeferred());
+          EXPECT_EQ(r.ocean().lastClassesByCompute(), std::string(path) == "compute");
+          EXPECT_EQ(r.ocean().classesDrawn() & mustDraw, mustDraw) << r.ocean().classesDrawn();
+        });
       };
       const io::ImageRgba8 fragments = drawn("deferred"), computed = drawn("compute");
       const test::Comparison c = test::compareRgb(computed, fragments, 1);
@@ -827,13 +837,10 @@ TEST(CoastWater, ForwardSplitDrawsTheSamePicture) {
       render::FrameInput f = frame;
       f.samples = samples;
       auto drawn = [&](const char* path) {
-        const test::ScopedEnv sea("OCEANGLOBE_SEA", path);
-        auto ctx = gl::createHeadlessContext();
-        render::GlobeRenderer r(grid);
-        r.render(f);
-        EXPECT_FALSE(r.ocean().lastDrawDeferred());
-        EXPECT_EQ(r.ocean().lastDrawForwardSplit(), std::string(path) == "split");
-        return r.display();
+        return drawnWithSea(grid, f, path, [&](const render::GlobeRenderer& r) {
+          EXPECT_FALSE(r.ocean().lastDrawDeferred());
+          EXPECT_EQ(r.ocean().lastDrawForwardSplit(), std::string(path) == "split");
+        });
       };
       const io::ImageRgba8 single = drawn("forward"), split = drawn("split");
       const test::Comparison c = test::compareRgb(split, single, 2);
