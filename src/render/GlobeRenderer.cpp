@@ -291,6 +291,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   prepareFractionMips(view, f.height);
   constantWindFrame_ = constantWindVariants_ && !wind_->hasLayers();
   floorInReachFrame_ = false;  // (drawOcean's, below the ceiling)
+  landInViewFrame_ = false;
   causticsSeenFrame_ = false;
   terrain_->setSeaCrestM(patterns_->amplitudeBoundM() + 1.0);  // (+ 1 m: the morph's and chords' rounding)
   terrain_->setCoarseLandMask(coarseMaskFrame_);
@@ -919,6 +920,7 @@ void GlobeRenderer::drawOcean(const geo::CameraView& view, const FrameInput& f) 
   // Over the open ocean (every tile in view deep under the sea) no pixel needs the coast test.
   const TerrainStats& ts = terrain_->stats();
   lighting.landInView = ts.landTiles > 0 || ts.tiles == 0;
+  landInViewFrame_ = lighting.landInView;
   lighting.landEverywhere = ts.tiles > 0 && ts.landTiles == ts.tiles;
   // The water volume only where a floor its light can come back from is under sea the eye
   // sees (TerrainStats::seaSeenMaxHeightM): the floor's light goes down and back up, at least

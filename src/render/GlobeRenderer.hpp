@@ -303,6 +303,9 @@ class GlobeRenderer {
   /// Whether the last frame drew the sea with its water volume (a floor within the water's
   /// reach under sea in view: TerrainStats::seaSeenMaxHeightM; false above 20 km).
   [[nodiscard]] bool lastFrameFloorInReach() const { return floorInReachFrame_; }
+  /// Whether the last frame drew the sea with its coast test (land may be in view:
+  /// TerrainStats::landTiles; false above 20 km).
+  [[nodiscard]] bool lastFrameLandInView() const { return landInViewFrame_; }
   /// Whether the last frame made the caustics' map (a floor in reach, and its footprint under
   /// the caustic patterns' tiles somewhere: OceanLighting::causticsSeen).
   [[nodiscard]] bool lastFrameCausticsSeen() const { return causticsSeenFrame_; }
@@ -388,6 +391,7 @@ class GlobeRenderer {
   /// almost all of those pixels, over the globe's part, which ran for nothing before them.
   bool frameLandLast_ = false;
   bool floorInReachFrame_ = false;  ///< lastFrameFloorInReach
+  bool landInViewFrame_ = false;    ///< lastFrameLandInView
   bool causticsSeenFrame_ = false;   ///< lastFrameCausticsSeen
   bool causticsAlwaysMade_ = false;  ///< setCausticsAlwaysMade
   /// The open-sea map on its texture unit (made on a helper thread since the constructor,

@@ -854,6 +854,69 @@ TEST(CoastWater, ForwardSplitDrawsTheSamePicture) {
   }
 }
 
+namespace {
+// A bank drowned 8 m deep within 1° of (20° N, 40° W), 4000 m deep beyond (the layer's
+// bilinear step crosses the water's reach within 0.5 km of the bank's last cell), on a global
+// layer (a regional one reads -1 m outside, which its terrain tiles take for land): the open
+// Atlantic, no land within 1500 km.
+data::LatLonGrid drownedBank() {
+  return test::globalGrid("drowned-bank", 0.1, [](double lat, double lon) {
+    return std::hypot(lat - 20.0, (lon + 40.0) * std::cos(20.0 * M_PI / 180.0)) < 1.0 ? -8.0 : -4000.0;
+  });
+}
+
+// `a` against `b`: at most `maxLevels` apart (the picture and a diff image on failure).
+void expectWithinLevels(const io::ImageRgba8& a, const io::ImageRgba8& b, int maxLevels, const std::string& name) {
+  const test::Comparison c = test::compareRgb(a, b, maxLevels);
+  std::printf("%s: at most %d levels apart\n", name.c_str(), c.maxDiff);
+  if (c.maxDiff > maxLevels) {
+    io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".png"), a);
+    io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".diff.png"), c.diff);
+  }
+  EXPECT_LE(c.maxDiff, maxLevels) << name << ": " << c.describe();
+}
+}  // namespace
+
+// A frame with the water volume and without the coast test (no land in view: every terrain
+// tile under the sea), which the coasts' views never draw: the drowned bank from 20 m, 5.5 km
+// inside its edge, looking south over its teal water to the deep beyond it (a dark band under
+// the horizon) with the Sun's glitter. Each path draws the bank with a program that has the
+// water volume and no coast test, the deep water without either: the sea in classes against
+// the one program of the frame's features, the deferred sea against the grid's own fragments,
+// and without stencil export (NVIDIA's) the forward split against the one program and the
+// classes by compute against the fragments. Measured: identical but for the split's 1 level;
+// the picture 7.3 levels from the deep sea's on average (its sky and glitter alike). Mutation:
+// the grid's vertices never flagged over a floor in reach (ocean/grid_vertex_buffer.glsl) draw
+// the bank's triangles without the water volume, 45 levels off in every path that splits.
+TEST(CoastWater, DrownedBankFarFromLandDrawsItsFloorWithoutTheCoastTest) {
+  const data::LatLonGrid bank = drownedBank();
+  const render::FrameInput f = classView({19.1, -40.0, 20.0}, 180.0, -10.0, 40.0, 200.0);
+  {
+    auto ctx = gl::createHeadlessContext();
+    render::GlobeRenderer r(bank);
+    r.render(f);
+    ASSERT_TRUE(r.lastFrameFloorInReach());
+    ASSERT_FALSE(r.lastFrameLandInView()) << "the coast test is on: the test's case is not drawn";
+    EXPECT_EQ(r.ocean().classesDrawn() & (kClassOpenSea | kClassFloor), kClassOpenSea | kClassFloor)
+        << r.ocean().classesDrawn();
+    expectClassesMatchTheSingleProgram(r, f, "drowned_bank_classes");
+    expectDeferredMatchesForward(r, f, "drowned_bank_deferred");
+    // The bank shows (else every path could agree on the deep sea's colour).
+    render::GlobeRenderer deep(test::globalGrid("deep", 0.1, [](double, double) { return -4000.0; }));
+    deep.render(f);
+    EXPECT_GT(test::compareRgb(r.display(), deep.display(), 8).meanDiff, 4.0);
+  }
+  const test::ScopedEnv noExport("OCEANGLOBE_STENCIL_EXPORT", "0");
+  auto drawn = [&](const char* path) {
+    return drawnWithSea(bank, f, path, [&](const render::GlobeRenderer& r) {
+      EXPECT_EQ(r.ocean().lastDrawForwardSplit(), std::string(path) == "split") << path;
+      EXPECT_EQ(r.ocean().lastClassesByCompute(), std::string(path) == "compute") << path;
+    });
+  };
+  expectWithinLevels(drawn("split"), drawn("forward"), 2, "drowned_bank_split");
+  expectWithinLevels(drawn("compute"), drawn("deferred"), 1, "drowned_bank_compute");
+}
+
 // Where a grid cell's vertices (a few hundred metres apart from 3 km) fall on the land mask's
 // fine land but its pixels are sea at their own footprint (the coast test keeps them), the
 // floor search started from the vertices' floor at the surface and never left it: whole cells
