@@ -6,7 +6,7 @@
 # new bundle. Without a command: the GPU check of docs/performance.md (bench of every view at
 # 1920x1080 and 1280x720 with 1 and 4 samples, the per-pass breakdown, and three 720p renders to
 # compare with llvmpipe's, forward at 4 samples and 1, and by compute at 1; the deferred and the
-# compute sea's breakdowns; with FFmpeg bundled, the recording rate; with the GL tests bundled,
+# compute sea's breakdowns; the surface pass's parts (ablated shaders, timing only); with FFmpeg bundled, the recording rate; with the GL tests bundled,
 # their run in the time left to 550 s), its files written to $OUT. Every step has a time limit
 # (run it with timeout_s near 590: the lent machine allows 600 s a command). A whole check took
 # ~85 s on the H200 in the tenth session, 377 s with the compute sea's and the tests' runs in
@@ -75,6 +75,27 @@ for sea in forward split; do
   OCEANGLOBE_SEA=$sea timeout 40 "$OG" bench --size 1920x1080 --frames 20 --samples 1 4 --view sea-2m-horizon \
     --view coast-2m-bank --view coast-2m-deep --view sea-4m 2>&1 | quiet | sed "s/^/OCEANGLOBE_SEA=$sea: /" | tee -a "$out/bench.txt"
 done
+# The deferred sea's surface pass by parts (its cost on the H200 was the deferred sea's:
+# "Thirty-third session"): sea-4m by compute at 1080p with the pass's fragment shader writing
+# constants (no varyings read: rasterising the grid and storing its layers) and discarding every
+# fragment (the grid's vertices and rasterising alone), for the next step's choice between a
+# thinner surface buffer and the grid rasterised by compute. Timing only: the pictures are wrong.
+surfacePart() {
+  local dir=/tmp/og-shaders-$1
+  rm -rf "$dir" && cp -r "$root/shaders" "$dir"
+  BODY=$2 perl -0pi -e 's/void main\(\) \{.*\z/void main() {\n$ENV{BODY}\n}\n/s' "$dir/ocean/sea_surface.frag"
+  OCEANGLOBE_SHADER_DIR=$dir OCEANGLOBE_SEA=compute timeout 30 "$OG" bench --size 1920x1080 --frames 20 --samples 1 \
+    --view sea-4m --breakdown 2>&1 | quiet | sed "s/^/surface pass $1: /" | tee -a "$out/bench.txt"
+}
+surfacePart writing-constants '  seaSurface0 = uvec4(0u, 1u, 0u, 0u);  // (class 1)
+  seaSurface1 = seaSurface2 = seaSurface3 = uvec4(0u);
+#ifndef SEA_SURFACE_COMPACT
+  seaSurface4 = seaSurface5 = uvec4(0u);
+#endif
+#ifndef SEA_CLASS_IN_SURFACE
+  gl_FragStencilRefARB = 1;
+#endif'
+surfacePart discarding '  discard;'
 # The recording rate, where the bundle has FFmpeg (scripts/device-bundle.sh --record).
 if [[ -e $bundle/lib/libavcodec.so.59 ]]; then
   timeout 120 "$OG" bench --record config/flythrough.toml --size 1280x720 --size 1920x1080 2>&1 | quiet | tee -a "$out/bench.txt"
