@@ -693,6 +693,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   // Sky, edge, surface, land, sea, open sea: the stencil counts 1-6 (one lower below 20 km).
   const std::vector<int> parts = globeParts(grid);
   if (countPartSamples_ && !landOnly) partSamples_.clear();
+  if (!landOnly) partsGated_.clear();
   const bool listed = listsScatteredParts();
   std::vector<int> listedCounts;
   bool latticeShaded = false;
@@ -724,7 +725,10 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
     globe.use();
     const auto draw = [] { glDrawArrays(GL_TRIANGLES, 0, 3); };
     if (!countPartSamples_) {
-      draw();
+      if (grid && partGateOn_ && hdr_.samples > 1)
+        drawPartGated(draw);
+      else
+        draw();
     } else {
       partSamples_.emplace_back(std::string(pass).substr(std::string_view("globe ").size()),
                                 gl::queryResult(GL_SAMPLES_PASSED, draw));
@@ -739,6 +743,36 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   glDisable(GL_SCISSOR_TEST);
   glDepthMask(grid ? GL_FALSE : GL_TRUE);  // as the caller had it
   if (grid) glEndConditionalRender();
+}
+
+void GlobeRenderer::drawPartGated(const std::function<void()>& draw) {
+  if (partGate_.id() == 0) {
+    partGate_ = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "render/uncovered.frag"}});
+    partGateQuery_ = gl::createQuery(GL_ANY_SAMPLES_PASSED);
+  }
+  GLint part = 0;
+  glGetIntegerv(GL_CURRENT_PROGRAM, &part);
+  GLboolean colour[4];
+  glGetBooleanv(GL_COLOR_WRITEMASK, colour);
+  // The same triangle, depth and stencil tests; nothing written. Inside the frame's condition
+  // (a discarded draw passes no sample), which conditional renders cannot nest.
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  partGate_.use();
+  glBeginQuery(GL_ANY_SAMPLES_PASSED, partGateQuery_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glEndQuery(GL_ANY_SAMPLES_PASSED);
+  if (recordPartGate_) {
+    GLuint any = 0;
+    glGetQueryObjectuiv(partGateQuery_.id(), GL_QUERY_RESULT, &any);
+    partsGated_.push_back(any != 0);
+  }
+  glColorMask(colour[0], colour[1], colour[2], colour[3]);
+  glUseProgram(static_cast<GLuint>(part));
+  glEndConditionalRender();
+  glBeginConditionalRender(partGateQuery_.id(), GL_QUERY_WAIT);
+  draw();
+  glEndConditionalRender();
+  glBeginConditionalRender(uncovered_.query(), GL_QUERY_WAIT);
 }
 
 void GlobeRenderer::drawSeaLattice(const geo::CameraView& view, const FrameInput& f, bool first, bool seaPart) {

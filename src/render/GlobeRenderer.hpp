@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <future>
 #include <memory>
 #include <optional>
@@ -270,6 +271,14 @@ class GlobeRenderer {
   /// on llvmpipe pay a vector of lanes for a lone pixel. On by default on software renderers
   /// with one sample per pixel and no auxiliary outputs; false: fragments (the tests' reference).
   void setScatteredPartsListed(bool on) { scatteredListed_ = on; }
+  /// Whether a multisampled frame below 20 km draws each of the globe's parts only where a lean
+  /// draw's occlusion query found samples of it (drawPartGated; on by default; off: the tests'
+  /// reference).
+  void setPartGate(bool on) { partGateOn_ = on; }
+  /// With `on`, each gated part's query is read back at once (a stall: for tests) into
+  /// partsGated(): whether the last frame's gated parts had samples, in their order.
+  void setRecordPartGate(bool on) { recordPartGate_ = on; }
+  [[nodiscard]] const std::vector<bool>& partsGated() const { return partsGated_; }
   /// Whether frames in which no pixel resolves the land mask's fine level draw with programs
   /// that leave it out (LANDMASK_COARSE_ONLY; on by default, off for comparisons).
   void setCoarseMaskVariants(bool on) { coarseMaskVariants_ = on; }
@@ -474,6 +483,17 @@ class GlobeRenderer {
   std::size_t scatteredPixelsBytes_ = 0;
   gl::Program scatteredList_, scatteredArgs_;
   bool scatteredListed_ = false;  ///< set from gl::driverProfile().software by the constructor
+  /// Below 20 km with several samples a pixel: `draw` (a part's full-screen draw, its tests
+  /// set) conditional on a lean draw's occlusion query under the same tests. llvmpipe's early
+  /// tests skip no block of a multisampled draw, so a part without samples (the edge's and the
+  /// surface's, where the grid covers the globe) cost the whole screen's shading. Within the
+  /// frame's conditional render on uncovered_, which this suspends around the part's.
+  void drawPartGated(const std::function<void()>& draw);
+  gl::Program partGate_;     ///< render/uncovered.frag: nothing but the tests; id() 0 until first used
+  gl::Query partGateQuery_;  ///< GL_ANY_SAMPLES_PASSED
+  bool partGateOn_ = true;   ///< setPartGate
+  bool recordPartGate_ = false;  ///< setRecordPartGate
+  std::vector<bool> partsGated_;
   bool ellipsoidScissorOn_ = true;
   /// Above 20 km with the aerial table, without, below, above without the mask's fine level,
   /// above with the land fraction's pyramid alone, and the first four again with the pyramid
