@@ -404,8 +404,9 @@ int GlobeRenderer::programSet(bool behind, int variant) const {
 
 const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
   const int set = programSet(behind, variant), baseSet = set > 4 ? set - 5 : set;
-  const bool shadesSea = variant == kGlobePart0 + 2 || variant == kGlobePart0 + 3 || variant == kGlobePart0 + 5 ||
-                         variant == kGlobePart0 + 6 || variant == kListedPixels ||
+  const int partOf = variant > kGlobePartOverBlocks0 ? variant - kGlobePartOverBlocks0 + kGlobePart0 : variant;
+  const bool shadesSea = partOf == kGlobePart0 + 2 || partOf == kGlobePart0 + 3 || partOf == kGlobePart0 + 5 ||
+                         partOf == kGlobePart0 + 6 || variant == kListedPixels ||
                          variant == kOpenSeaLatticePoints ||
                          variant == kSeaLatticePoints;  // the edge, the surface, the seas, the listed, the lattice's
   const int windSet = constantWindFrame_ && shadesSea ? kGlobeProgramSets : 0;
@@ -434,7 +435,8 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
       if (variant == kSkyLowSunPart) defines.emplace_back("GLOBE_SKY_SUN_DISC");
     } else {
       static constexpr std::array<int, 6> kPart{1, 2, 3, 7, 6, 5};
-      defines.push_back("GLOBE_PART " + std::to_string(kPart.at(static_cast<std::size_t>(variant - kGlobePart0 - 1))));
+      const int k = variant > kGlobePartOverBlocks0 ? variant - kGlobePartOverBlocks0 : variant - kGlobePart0;
+      defines.push_back("GLOBE_PART " + std::to_string(kPart.at(static_cast<std::size_t>(k - 1))));
     }
     if (behind) defines.emplace_back("GLOBE_BEHIND");  // (baseSet 2)
     if (baseSet == 0) defines.emplace_back("AERIAL_TABLE");
@@ -451,7 +453,7 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
     // it the one draw the uncovered ones (render/UncoveredPixels).
     const bool blocks =
         behind ? variant >= kClassifyExport && variant <= kClassifyExportLandSea
-               : variant <= kClassifyExportLandSea || variant == kBlockFill;
+               : variant <= kClassifyExportLandSea || variant == kBlockFill || variant > kGlobePartOverBlocks0;
     if (variant == kListedPixels || variant == kOpenSeaLatticePoints || variant == kSeaLatticePoints)
       p = gl::Program({{GL_COMPUTE_SHADER, "render/globe.frag"}}, defines);
     else
@@ -652,14 +654,17 @@ void GlobeRenderer::drawBlockFill(const geo::CameraView& view, const FrameInput&
   for (std::size_t k = 0; k < blockRanges_.fills.size(); ++k) {
     const auto [first, count] = blockRanges_.fills[k];
     if (count == 0) continue;
-    const bool open = k == 2 && openSeaPart_;
-    const int stencil = frameLandSea_ ? (k == 0 ? 4 : 5) + (open ? 1 : 0) : 3 + (open ? 1 : 0);
     fill.set("uBlockLand", k == 0 ? 1 : 0);
-    glStencilFunc(GL_ALWAYS, stencil, 0xff);
+    glStencilFunc(GL_ALWAYS, fillStencilCount(k), 0xff);
     glDepthMask(k == 0 && frameLandLast_ ? GL_FALSE : GL_TRUE);  // the land's: the far plane, as cleared
     glDrawArrays(GL_TRIANGLES, first, count);
   }
   glDepthMask(GL_TRUE);
+}
+
+int GlobeRenderer::fillStencilCount(std::size_t k) const {
+  const int open = k == 2 && openSeaPart_ ? 1 : 0;
+  return frameLandSea_ ? (k == 0 ? 4 : 5) + open : 3 + open;
 }
 
 void GlobeRenderer::bindOpenSeaMap() {
@@ -716,14 +721,21 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
     }
     if (timer_ != nullptr) timer_->mark(pass);
     const bool readsSkyLow = skyLow && parts[k] == kGlobePart0 + 1;
-    const gl::Program& globe = globeProgram(grid, readsSkyLow ? kSkyLowPart : parts[k]);
+    const bool overBlocks = !grid && partsOverBlocks_ && hdr_.samples > 1;
+    const gl::Program& globe =
+        globeProgram(grid, readsSkyLow ? kSkyLowPart : overBlocks ? parts[k] - kGlobePart0 + kGlobePartOverBlocks0 : parts[k]);
     setGlobeUniforms(globe, view, f);
     if (readsSkyLow) {
       globe.set("uSkyLowScale", skyLowScale_);
       glBindTextureUnit(gl::kUnitSkyLow, skyLow_.color.id());
     }
     globe.use();
-    const auto draw = [] { glDrawArrays(GL_TRIANGLES, 0, 3); };
+    const std::function<void()> draw = [&, part = parts[k]] {
+      if (overBlocks)
+        drawPartOverBlocks(part, count);
+      else
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    };
     if (!countPartSamples_) {
       if (grid && partGateOn_ && hdr_.samples > 1)
         drawPartGated(draw);
@@ -773,6 +785,18 @@ void GlobeRenderer::drawPartGated(const std::function<void()>& draw) {
   draw();
   glEndConditionalRender();
   glBeginConditionalRender(uncovered_.query(), GL_QUERY_WAIT);
+}
+
+void GlobeRenderer::drawPartOverBlocks(int part, int count) const {
+  glBindVertexArray(blocksVao_.id());
+  const auto drawRange = [](std::pair<int, int> range) {
+    if (range.second > 0) glDrawArrays(GL_TRIANGLES, range.first, range.second);
+  };
+  drawRange(blockRanges_.perPixel);  // (without blocks: the frame's triangle)
+  if (part == kGlobePart0 + 1) drawRange(blockRanges_.miss);
+  for (std::size_t k = 0; k < blockRanges_.fills.size(); ++k)
+    if (fillStencilCount(k) == count) drawRange(blockRanges_.fills[k]);
+  glBindVertexArray(emptyVao_.id());
 }
 
 void GlobeRenderer::drawSeaLattice(const geo::CameraView& view, const FrameInput& f, bool first, bool seaPart) {

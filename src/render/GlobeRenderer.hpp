@@ -275,6 +275,9 @@ class GlobeRenderer {
   /// draw's occlusion query found samples of it (drawPartGated; on by default; off: the tests'
   /// reference).
   void setPartGate(bool on) { partGateOn_ = on; }
+  /// Whether a multisampled frame above 20 km draws each of the globe's parts over the blocks
+  /// of pixels that may hold it (drawPartOverBlocks; on by default; off: the tests' reference).
+  void setPartsOverBlocks(bool on) { partsOverBlocks_ = on; }
   /// With `on`, each gated part's query is read back at once (a stall: for tests) into
   /// partsGated(): whether the last frame's gated parts had samples, in their order.
   void setRecordPartGate(bool on) { recordPartGate_ = on; }
@@ -360,11 +363,14 @@ class GlobeRenderer {
   /// (GLOBE_PART_BLOCK_FILL); 17 the edge part as a compute shader over listed pixels
   /// (GLOBE_COMPUTE); 18 the sky part with the Sun's disc (GLOBE_SKY_SUN_DISC: 15 leaves it
   /// out), drawn over the Sun's box only (drawSunDisc); 19 and 20 the open sea's and the sea's
-  /// parts as compute shaders at the lattice's points (GLOBE_LATTICE, render/SeaLattice).
+  /// parts as compute shaders at the lattice's points (GLOBE_LATTICE, render/SeaLattice); 21-26
+  /// the six parts again over blocksVao_'s triangles (render/blocks.vert: drawPartOverBlocks).
   /// `variant` in [0, kGlobeVariants). Above the ceiling the classifying variants draw the
   /// triangles of blocksVao_ (render/blocks.vert), below it the one draw (6, 7)
   /// render/UncoveredPixels' blocks.
-  static constexpr int kGlobeVariants = 21;
+  static constexpr int kGlobeVariants = 27;
+  /// Part k (1 sky ... 6 open sea) over blocks is variant kGlobePartOverBlocks0 + k.
+  static constexpr int kGlobePartOverBlocks0 = 20;
   static constexpr int kSkyLowPass = 14, kSkyLowPart = 15, kBlockFill = 16, kListedPixels = 17, kSkyLowSunPart = 18;
   static constexpr int kOpenSeaLatticePoints = 19, kSeaLatticePoints = 20;
   static constexpr int kClassifyExport = 6, kClassifyExportLandSea = 7;
@@ -489,6 +495,15 @@ class GlobeRenderer {
   /// surface's, where the grid covers the globe) cost the whole screen's shading. Within the
   /// frame's conditional render on uncovered_, which this suspends around the part's.
   void drawPartGated(const std::function<void()>& draw);
+  /// Above 20 km with several samples a pixel: the part of stencil count `count` (variant
+  /// `part`) over the triangles of the blocks that may hold it (blockRanges_: the per-pixel
+  /// blocks, the sky's, the fills of that count) instead of the whole frame, with its
+  /// blocks.vert variant bound: llvmpipe shaded every block of the frame for the limb's edge
+  /// (limb-400km at 1280x720, 4 samples: the edge's and the surface's parts 250 and 230 ms).
+  void drawPartOverBlocks(int part, int count) const;
+  /// The stencil count drawBlockFill gives fill k (0 land, 1 sea, 2 open sea) this frame.
+  [[nodiscard]] int fillStencilCount(std::size_t k) const;
+  bool partsOverBlocks_ = true;  ///< setPartsOverBlocks
   gl::Program partGate_;     ///< render/uncovered.frag: nothing but the tests; id() 0 until first used
   gl::Query partGateQuery_;  ///< GL_ANY_SAMPLES_PASSED
   bool partGateOn_ = true;   ///< setPartGate
