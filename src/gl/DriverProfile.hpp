@@ -9,8 +9,9 @@ namespace og::gl {
 struct DriverProfile {
   /// Renders on the CPU (Mesa's llvmpipe, softpipe, swrast; lavapipe).
   bool software = false;
-  /// Samples per pixel that "auto" means: 1 on a software renderer (it shades every fragment
-  /// of a multisampled target, hidden ones too: 4 samples cost 1.3-2x a frame), else 4.
+  /// Samples per pixel that "auto" means: 1 on a software renderer (4 samples cost llvmpipe
+  /// 1.6-7x a frame at 1280x720: the sea forward instead of deferred, every sample through
+  /// the tone map; docs/performance.md), else 4.
   int autoSamples = 4;
   /// The anisotropy samplers may ask for: 1 on a software renderer (llvmpipe's anisotropic
   /// filtering is ~20x slower and wrong), else what the device offers.

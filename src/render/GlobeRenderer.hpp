@@ -42,8 +42,8 @@
 
 namespace og::render {
 
-/// FrameInput::samples: 4 on a GPU; 1 on a software renderer (llvmpipe shades every fragment
-/// of a multisampled target, hidden ones too: 4 samples cost it 1.3-2x per frame).
+/// FrameInput::samples: 4 on a GPU; 1 on a software renderer (4 samples cost llvmpipe 1.6-7x
+/// a frame: gl::DriverProfile::autoSamples).
 inline constexpr int kAutoSamples = io::kAutoSamples;
 
 struct FrameInput {
