@@ -4,13 +4,14 @@
 # driver, and runs the command given with OG (the oceanglobe executable) and OG_TESTS (the GL
 # tests, when bundled) set; shaders are read from this checkout, so a shader change needs no
 # new bundle. Without a command: the GPU check of docs/performance.md (bench of every view at
-# 1920x1080 and 1280x720 with 1 and 4 samples, the per-pass breakdown, and three 720p renders to
-# compare with llvmpipe's, forward at 4 samples and 1, and by compute at 1; the deferred and the
-# compute sea's breakdowns; the surface pass's parts (ablated shaders, timing only); with FFmpeg bundled, the recording rate; with the GL tests bundled,
-# their run in the time left to 550 s), its files written to $OUT. Every step has a time limit
-# (run it with timeout_s near 590: the lent machine allows 600 s a command). A whole check took
-# ~85 s on the H200 in the tenth session, 377 s with the compute sea's and the tests' runs in
-# the thirty-third.
+# 1920x1080 and 1280x720 with 1 and 4 samples; the per-pass breakdown, at 1080p with 4 samples
+# too; three 720p renders to compare with llvmpipe's, forward at 4 samples and 1, and by
+# compute at 1; the deferred and the compute sea's breakdowns; the surface pass's parts
+# (ablated shaders, timing only); with FFmpeg bundled, the recording rate; with the GL tests
+# bundled, their run in the time left to 550 s), its files written to $OUT. Every step has a
+# time limit (run it with timeout_s near 590: the lent machine allows 600 s a command). A whole
+# check took ~85 s on the H200 in the tenth session, 377 s with the compute sea's and the
+# tests' runs in the thirty-third.
 #   device run: bash scripts/device-check.sh            (carry .devbundle)
 #   device run: bash scripts/device-check.sh '$OG_TESTS --gtest_filter=Transforms*'
 set -uo pipefail
@@ -61,6 +62,9 @@ done
 tar -C "$out" -cf "$out/renders.tar" png && rm -rf "$out/png"
 timeout 160 "$OG" bench --size 1920x1080 --size 1280x720 --frames 30 --samples 1 4 2>&1 | quiet | tee -a "$out/bench.txt"
 timeout 100 "$OG" bench --size 1920x1080 --size 1280x720 --frames 20 --samples 1 --breakdown --json 2>"$out/breakdown.err" >"$out/breakdown.json"
+# The GPU's default, 4 samples, pass by pass (where its frames' extra time goes: "Thirty-fourth
+# session" on llvmpipe's).
+timeout 50 "$OG" bench --size 1920x1080 --frames 20 --samples 4 --breakdown 2>&1 | quiet | sed "s/^/4 samples: /" | tee -a "$out/bench.txt"
 # The deferred sea (full-screen passes per class, the classes copied into the stencil where the
 # driver cannot export them) and its classes shaded by compute shaders instead, against the
 # default above (docs/performance.md, "Thirty-second session"), every view at one sample; and
