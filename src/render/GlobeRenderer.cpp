@@ -451,9 +451,9 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
     if (atmosphere_->skyFilter().radialSums && !behind) defines.emplace_back("SKY_RADIAL_SUMS");
     // Above the ceiling the classifying draws cover blocks of pixels (render/GlobeBlocks), below
     // it the one draw the uncovered ones (render/UncoveredPixels).
-    const bool blocks =
-        behind ? variant >= kClassifyExport && variant <= kClassifyExportLandSea
-               : variant <= kClassifyExportLandSea || variant == kBlockFill || variant > kGlobePartOverBlocks0;
+    const bool blocks = variant > kGlobePartOverBlocks0 ||
+                        (behind ? variant >= kClassifyExport && variant <= kClassifyExportLandSea
+                                : variant <= kClassifyExportLandSea || variant == kBlockFill);
     if (variant == kListedPixels || variant == kOpenSeaLatticePoints || variant == kSeaLatticePoints)
       p = gl::Program({{GL_COMPUTE_SHADER, "render/globe.frag"}}, defines);
     else
@@ -484,6 +484,7 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
   const bool oneDraw = gl::driverProfile().stencilExport;
   // Below the ceiling the one draw covers only the blocks of pixels the terrain and the grid left.
   const bool listedBlocks = grid && oneDraw;
+  uncoveredListedFrame_ = listedBlocks;
   if (grid) {  // the classifying draws run on every pixel: skip them when nothing is left
     // The sky (every ray misses the ellipsoid) has count 0 below the ceiling: the draws skip it
     // (after the query, which must see the sky the parts then shade).
@@ -721,7 +722,10 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
     }
     if (timer_ != nullptr) timer_->mark(pass);
     const bool readsSkyLow = skyLow && parts[k] == kGlobePart0 + 1;
-    const bool overBlocks = !grid && partsOverBlocks_ && hdr_.samples > 1;
+    // Below 20 km the edge's and the surface's pixels lie in the blocks the classifying draw
+    // covered (uncovered_'s, where listed); the sky's beyond them.
+    const bool overBlocks = partsOverBlocks_ && hdr_.samples > 1 &&
+                            (!grid || (uncoveredListedFrame_ && parts[k] != kGlobePart0 + 1));
     const gl::Program& globe =
         globeProgram(grid, readsSkyLow ? kSkyLowPart : overBlocks ? parts[k] - kGlobePart0 + kGlobePartOverBlocks0 : parts[k]);
     setGlobeUniforms(globe, view, f);
@@ -731,10 +735,14 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
     }
     globe.use();
     const std::function<void()> draw = [&, part = parts[k]] {
-      if (overBlocks)
+      if (overBlocks && grid) {
+        uncovered_.drawBlocks();
+        glBindVertexArray(emptyVao_.id());
+      } else if (overBlocks) {
         drawPartOverBlocks(part, count);
-      else
+      } else {
         glDrawArrays(GL_TRIANGLES, 0, 3);
+      }
     };
     if (!countPartSamples_) {
       if (grid && partGateOn_ && hdr_.samples > 1)

@@ -275,8 +275,10 @@ class GlobeRenderer {
   /// draw's occlusion query found samples of it (drawPartGated; on by default; off: the tests'
   /// reference).
   void setPartGate(bool on) { partGateOn_ = on; }
-  /// Whether a multisampled frame above 20 km draws each of the globe's parts over the blocks
-  /// of pixels that may hold it (drawPartOverBlocks; on by default; off: the tests' reference).
+  /// Whether a multisampled frame draws each of the globe's parts over the blocks of pixels that
+  /// may hold it (above 20 km drawPartOverBlocks; below, the edge's and the surface's over the
+  /// blocks the grid and the terrain left: UncoveredPixels; on by default; off: the tests'
+  /// reference).
   void setPartsOverBlocks(bool on) { partsOverBlocks_ = on; }
   /// With `on`, each gated part's query is read back at once (a stall: for tests) into
   /// partsGated(): whether the last frame's gated parts had samples, in their order.
@@ -504,6 +506,7 @@ class GlobeRenderer {
   /// The stencil count drawBlockFill gives fill k (0 land, 1 sea, 2 open sea) this frame.
   [[nodiscard]] int fillStencilCount(std::size_t k) const;
   bool partsOverBlocks_ = true;  ///< setPartsOverBlocks
+  bool uncoveredListedFrame_ = false;  ///< below 20 km: this frame's classifying draw covered uncovered_'s blocks
   gl::Program partGate_;     ///< render/uncovered.frag: nothing but the tests; id() 0 until first used
   gl::Query partGateQuery_;  ///< GL_ANY_SAMPLES_PASSED
   bool partGateOn_ = true;   ///< setPartGate
