@@ -28,7 +28,7 @@ void SceneOptions::add(CLI::App& cmd) {
   cmd.add_option("--height", flags_.height, "image height, pixels");
   cmd.add_option("--samples", samples_,
                  "samples per pixel for anti-aliased edges: auto (default: 4 on a GPU, 1 on the "
-                 "CPU's llvmpipe, where 4 cost 1.6-7x), 1, 2, 4 or 8");
+                 "CPU's llvmpipe, where 4 cost 1.6-5x), 1, 2, 4 or 8");
   auto* time = cmd.add_option("--time", time_, "UTC time (ISO 8601) that places the Sun");
   auto* el = cmd.add_option("--sun-elevation", sunElevation_,
                             "Sun elevation at the point under the camera, degrees");

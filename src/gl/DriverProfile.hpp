@@ -10,7 +10,7 @@ struct DriverProfile {
   /// Renders on the CPU (Mesa's llvmpipe, softpipe, swrast; lavapipe).
   bool software = false;
   /// Samples per pixel that "auto" means: 1 on a software renderer (4 samples cost llvmpipe
-  /// 1.6-7x a frame at 1280x720: the sea forward instead of deferred, every sample through
+  /// 1.6-5x a frame at 1280x720: the sea forward instead of deferred, every sample through
   /// the tone map; docs/performance.md), else 4.
   int autoSamples = 4;
   /// The anisotropy samplers may ask for: 1 on a software renderer (llvmpipe's anisotropic

@@ -42,7 +42,7 @@
 
 namespace og::render {
 
-/// FrameInput::samples: 4 on a GPU; 1 on a software renderer (4 samples cost llvmpipe 1.6-7x
+/// FrameInput::samples: 4 on a GPU; 1 on a software renderer (4 samples cost llvmpipe 1.6-5x
 /// a frame: gl::DriverProfile::autoSamples).
 inline constexpr int kAutoSamples = io::kAutoSamples;
 
