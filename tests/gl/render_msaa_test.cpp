@@ -345,6 +345,22 @@ TEST(Multisampling, ToneMappingIsPerSampleBeforeAveraging) {
   EXPECT_LE(linearEdge, 2);
 }
 
+namespace {
+// A 160 x 90 view with 4 samples a pixel from (lat, lon, height), the Sun 20° up in the
+// west-south-west.
+render::FrameInput multisampledView(double lat, double lon, double heightM, double headingDeg, double pitchDeg) {
+  render::FrameInput f;
+  f.camera.position = {lat, lon, heightM};
+  f.camera.headingDeg = headingDeg;
+  f.camera.pitchDeg = pitchDeg;
+  f.width = 160;
+  f.height = 90;
+  f.samples = 4;
+  f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 20.0, 250.0);
+  return f;
+}
+}  // namespace
+
 // Below 20 km with several samples a pixel each of the globe's parts is drawn only where an
 // occlusion query of a lean draw found samples of it (GlobeRenderer::drawPartGated): llvmpipe's
 // early tests skip no block of a multisampled draw, so a part without samples shaded the whole
@@ -355,26 +371,16 @@ TEST(Multisampling, ToneMappingIsPerSampleBeforeAveraging) {
 // through, or none, fails the counts (the time a skipped draw saves is bench's to show).
 TEST(Multisampling, GlobePartsWithoutSamplesAreNotDrawn) {
   auto ctx = gl::createHeadlessContext();
-  const auto view = [](double lat, double lon, double heightM, double headingDeg, double pitchDeg) {
-    render::FrameInput f;
-    f.camera.position = {lat, lon, heightM};
-    f.camera.headingDeg = headingDeg;
-    f.camera.pitchDeg = pitchDeg;
-    f.width = 160;
-    f.height = 90;
-    f.samples = 4;
-    f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 20.0, 250.0);
-    return f;
-  };
   struct Case {
     std::string name;
     data::LatLonGrid grid;
     render::FrameInput frame;
     int minDrawn, minSkipped;  // parts the gate lets through, parts it leaves out
   };
-  const std::vector<Case> cases{{"sea_4m", data::defaultElevation(), view(20.0, -40.0, 4.0, 270.0, -10.0), 1, 2},
-                                {"gibraltar_2m", data::defaultElevation(), view(36.0, -5.5, 2.0, 270.0, 2.0), 1, 2},
-                                {"sea_1km_down", data::defaultElevation(), view(20.0, -40.0, 1000.0, 0.0, -90.0), 0, 3}};
+  const data::LatLonGrid& relief = data::defaultElevation();
+  const std::vector<Case> cases{{"sea_4m", relief, multisampledView(20.0, -40.0, 4.0, 270.0, -10.0), 1, 2},
+                                {"gibraltar_2m", relief, multisampledView(36.0, -5.5, 2.0, 270.0, 2.0), 1, 2},
+                                {"sea_1km_down", relief, multisampledView(20.0, -40.0, 1000.0, 0.0, -90.0), 0, 3}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
     render::GlobeRenderer r(c.grid);
@@ -411,25 +417,14 @@ TEST(Multisampling, GlobePartsWithoutSamplesAreNotDrawn) {
 // the limb; the fills', 102 and 142; below 20 km no block drawn, 216 at 1 km.
 TEST(Multisampling, GlobePartsOverTheirBlocksDrawTheSamePicture) {
   auto ctx = gl::createHeadlessContext();
-  const auto view = [](double lat, double lon, double heightM, double headingDeg, double pitchDeg) {
-    render::FrameInput f;
-    f.camera.position = {lat, lon, heightM};
-    f.camera.headingDeg = headingDeg;
-    f.camera.pitchDeg = pitchDeg;
-    f.width = 160;
-    f.height = 90;
-    f.samples = 4;
-    f.sunDirectionEcef = geo::sunDirectionFromHorizontal(f.camera.position, 20.0, 250.0);
-    return f;
-  };
   render::GlobeRenderer r(data::defaultElevation());
   r.setRecordPartGate(true);
-  for (const auto& [name, f] : {std::pair{"orbit", view(20.0, -40.0, 2.0e7, 0.0, -90.0)},
-                                std::pair{"limb_400km", view(38.0, -12.0, 4.0e5, 90.0, -15.0)},
-                                std::pair{"gibraltar_30km", view(35.5, -6.5, 3.0e4, 60.0, -30.0)},
-                                std::pair{"sea_1km", view(20.0, -40.0, 1000.0, 270.0, -20.0)},
-                                std::pair{"sea_4m", view(20.0, -40.0, 4.0, 270.0, -10.0)},
-                                std::pair{"gibraltar_2m", view(36.0, -5.5, 2.0, 270.0, 2.0)}}) {
+  for (const auto& [name, f] : {std::pair{"orbit", multisampledView(20.0, -40.0, 2.0e7, 0.0, -90.0)},
+                                std::pair{"limb_400km", multisampledView(38.0, -12.0, 4.0e5, 90.0, -15.0)},
+                                std::pair{"gibraltar_30km", multisampledView(35.5, -6.5, 3.0e4, 60.0, -30.0)},
+                                std::pair{"sea_1km", multisampledView(20.0, -40.0, 1000.0, 270.0, -20.0)},
+                                std::pair{"sea_4m", multisampledView(20.0, -40.0, 4.0, 270.0, -10.0)},
+                                std::pair{"gibraltar_2m", multisampledView(36.0, -5.5, 2.0, 270.0, 2.0)}}) {
     SCOPED_TRACE(name);
     r.setPartsOverBlocks(false);
     r.render(f);
