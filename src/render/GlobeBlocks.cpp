@@ -241,7 +241,9 @@ GlobeBlocks classifyGlobeBlocks(const geo::CameraView& view, int width, int heig
   // The ellipsoid's outline, a circle of r pixels (angular radius asin(b / |eye|) or more),
   // bulges by r (1 - cos(4 / r)) between two corners 8 pixels apart: 0.06 pixels from r = 128,
   // where a sample lies at least 0.125 pixels inside its block. (A sample that still hit would
-  // be classed per pixel without the land's and the sea's tests: the surface part's count.)
+  // be classed per pixel without the land's and the sea's tests: the surface part's count,
+  // which with several samples a pixel is drawn over the per-pixel blocks and the fills only,
+  // GlobeRenderer::drawPartOverBlocks: this margin keeps such a pixel from staying black.)
   const double pixelRad = 2.0 * std::tan(0.5 * view.verticalFovRad) / height;
   const bool missOk = std::asin(std::min(1.0, geo::kWgs84SemiMinorM / glm::length(view.positionEcef))) > 128.0 * pixelRad;
   // Space: the atmosphere's outline as round (outside it: the eye above the atmosphere), and

@@ -207,6 +207,9 @@ GlobeRenderer::GlobeRenderer(std::shared_ptr<const data::LatLonGrid> layer,
   maxSamples_ = gl::maxSamples(GL_RGBA32F);
   blocksOn_ = gl::driverProfile().software;
   scatteredListed_ = gl::driverProfile().software;
+  // llvmpipe's early tests skip no block of a multisampled draw; a GPU's hierarchical tests
+  // should (not measured: docs/performance.md, "Thirty-fourth session").
+  partGateOn_ = partsOverBlocks_ = gl::driverProfile().software;
   gl::checkErrors("GlobeRenderer setup");
 }
 
@@ -280,6 +283,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   lastView_ = view;
   if (timer_ != nullptr) timer_->beginFrame();
   ocean_->beginFrame();
+  partsGated_.clear();
   // The waves hold the strongest wind of the scene; every point scales and turns them to its
   // own wind (ocean/patterns.glsl).
   wind_->setConstantWind(f.wind);
@@ -412,9 +416,9 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
   const int windSet = constantWindFrame_ && shadesSea ? kGlobeProgramSets : 0;
   gl::Program& p = globePrograms_[static_cast<std::size_t>((windSet + set) * kGlobeVariants + variant)];
   if (p.id() == 0) {
-    // Variants 0-5: GLOBE_PART_CLASSIFY (4) with its step; 6: all steps in one draw; 7-9: the
-    // parts 1-3, 10: the land (GLOBE_PART_LAND, 7), 11: the sea (GLOBE_PART_SEA, 6), 12: the
-    // open sea (GLOBE_PART_OPEN_SEA, 5) (render/globe.frag).
+    // Variants 0-5: GLOBE_PART_CLASSIFY (4) with its step; 6-7: all steps in one draw; 8-10:
+    // the parts 1-3, 11: the land (GLOBE_PART_LAND, 7), 12: the sea (GLOBE_PART_SEA, 6), 13: the
+    // open sea (GLOBE_PART_OPEN_SEA, 5) (render/globe.frag); 21-26 the parts again, over blocks.
     std::vector<std::string> defines = OceanPatterns::shaderDefines();
     if (variant <= kClassifyExportLandSea) {
       defines.emplace_back("GLOBE_PART 4");
@@ -450,7 +454,8 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
     // the sums of every Sun layer would cost a first frame at sea level ~60 ms.
     if (atmosphere_->skyFilter().radialSums && !behind) defines.emplace_back("SKY_RADIAL_SUMS");
     // Above the ceiling the classifying draws cover blocks of pixels (render/GlobeBlocks), below
-    // it the one draw the uncovered ones (render/UncoveredPixels).
+    // it the one draw the uncovered ones (render/UncoveredPixels); so do the parts' variants
+    // 21-26 with several samples a pixel (drawPartOverBlocks; below, the edge's and the surface's).
     const bool blocks = variant > kGlobePartOverBlocks0 ||
                         (behind ? variant >= kClassifyExport && variant <= kClassifyExportLandSea
                                 : variant <= kClassifyExportLandSea || variant == kBlockFill);
@@ -699,7 +704,6 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   // Sky, edge, surface, land, sea, open sea: the stencil counts 1-6 (one lower below 20 km).
   const std::vector<int> parts = globeParts(grid);
   if (countPartSamples_ && !landOnly) partSamples_.clear();
-  if (!landOnly) partsGated_.clear();
   const bool listed = listsScatteredParts();
   std::vector<int> listedCounts;
   bool latticeShaded = false;
@@ -746,7 +750,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
     };
     if (!countPartSamples_) {
       if (grid && partGateOn_ && hdr_.samples > 1)
-        drawPartGated(draw);
+        drawPartGated(globe, draw);
       else
         draw();
     } else {
@@ -765,17 +769,13 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   if (grid) glEndConditionalRender();
 }
 
-void GlobeRenderer::drawPartGated(const std::function<void()>& draw) {
+void GlobeRenderer::drawPartGated(const gl::Program& part, const std::function<void()>& draw) {
   if (partGate_.id() == 0) {
     partGate_ = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "render/uncovered.frag"}});
     partGateQuery_ = gl::createQuery(GL_ANY_SAMPLES_PASSED);
   }
-  GLint part = 0;
-  glGetIntegerv(GL_CURRENT_PROGRAM, &part);
-  GLboolean colour[4];
-  glGetBooleanv(GL_COLOR_WRITEMASK, colour);
-  // The same triangle, depth and stencil tests; nothing written. Inside the frame's condition
-  // (a discarded draw passes no sample), which conditional renders cannot nest.
+  // The frame's triangle under the part's depth and stencil tests, nothing written. Inside the
+  // frame's condition (a discarded draw passes no sample), which conditional renders cannot nest.
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   partGate_.use();
   glBeginQuery(GL_ANY_SAMPLES_PASSED, partGateQuery_.id());
@@ -786,8 +786,8 @@ void GlobeRenderer::drawPartGated(const std::function<void()>& draw) {
     glGetQueryObjectuiv(partGateQuery_.id(), GL_QUERY_RESULT, &any);
     partsGated_.push_back(any != 0);
   }
-  glColorMask(colour[0], colour[1], colour[2], colour[3]);
-  glUseProgram(static_cast<GLuint>(part));
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);  // (shadeGlobe's)
+  part.use();
   glEndConditionalRender();
   glBeginConditionalRender(partGateQuery_.id(), GL_QUERY_WAIT);
   draw();

@@ -272,16 +272,17 @@ class GlobeRenderer {
   /// with one sample per pixel and no auxiliary outputs; false: fragments (the tests' reference).
   void setScatteredPartsListed(bool on) { scatteredListed_ = on; }
   /// Whether a multisampled frame below 20 km draws each of the globe's parts only where a lean
-  /// draw's occlusion query found samples of it (drawPartGated; on by default; off: the tests'
-  /// reference).
+  /// draw's occlusion query found samples of it (drawPartGated; on by default on software
+  /// renderers; off: the tests' reference).
   void setPartGate(bool on) { partGateOn_ = on; }
   /// Whether a multisampled frame draws each of the globe's parts over the blocks of pixels that
   /// may hold it (above 20 km drawPartOverBlocks; below, the edge's and the surface's over the
-  /// blocks the grid and the terrain left: UncoveredPixels; on by default; off: the tests'
-  /// reference).
+  /// blocks the grid and the terrain left: UncoveredPixels; on by default on software
+  /// renderers; off: the tests' reference).
   void setPartsOverBlocks(bool on) { partsOverBlocks_ = on; }
   /// With `on`, each gated part's query is read back at once (a stall: for tests) into
-  /// partsGated(): whether the last frame's gated parts had samples, in their order.
+  /// partsGated(): whether the last frame's gated parts had samples, in their order (none where
+  /// the frame gated none).
   void setRecordPartGate(bool on) { recordPartGate_ = on; }
   [[nodiscard]] const std::vector<bool>& partsGated() const { return partsGated_; }
   /// Whether frames in which no pixel resolves the land mask's fine level draw with programs
@@ -366,10 +367,10 @@ class GlobeRenderer {
   /// (GLOBE_COMPUTE); 18 the sky part with the Sun's disc (GLOBE_SKY_SUN_DISC: 15 leaves it
   /// out), drawn over the Sun's box only (drawSunDisc); 19 and 20 the open sea's and the sea's
   /// parts as compute shaders at the lattice's points (GLOBE_LATTICE, render/SeaLattice); 21-26
-  /// the six parts again over blocksVao_'s triangles (render/blocks.vert: drawPartOverBlocks).
-  /// `variant` in [0, kGlobeVariants). Above the ceiling the classifying variants draw the
-  /// triangles of blocksVao_ (render/blocks.vert), below it the one draw (6, 7)
-  /// render/UncoveredPixels' blocks.
+  /// the six parts again over triangles of blocks (render/blocks.vert), with several samples a
+  /// pixel. `variant` in [0, kGlobeVariants). Above the ceiling the classifying variants and
+  /// 21-26 draw the triangles of blocksVao_ (drawPartOverBlocks), below it the one draw (6, 7)
+  /// and the edge's and the surface's parts (22, 23) render/UncoveredPixels' blocks.
   static constexpr int kGlobeVariants = 27;
   /// Part k (1 sky ... 6 open sea) over blocks is variant kGlobePartOverBlocks0 + k.
   static constexpr int kGlobePartOverBlocks0 = 20;
@@ -495,8 +496,9 @@ class GlobeRenderer {
   /// set) conditional on a lean draw's occlusion query under the same tests. llvmpipe's early
   /// tests skip no block of a multisampled draw, so a part without samples (the edge's and the
   /// surface's, where the grid covers the globe) cost the whole screen's shading. Within the
-  /// frame's conditional render on uncovered_, which this suspends around the part's.
-  void drawPartGated(const std::function<void()>& draw);
+  /// frame's conditional render on uncovered_, which this suspends around the part's; binds the
+  /// part's program `part` again after the lean one.
+  void drawPartGated(const gl::Program& part, const std::function<void()>& draw);
   /// Above 20 km with several samples a pixel: the part of stencil count `count` (variant
   /// `part`) over the triangles of the blocks that may hold it (blockRanges_: the per-pixel
   /// blocks, the sky's, the fills of that count) instead of the whole frame, with its
@@ -505,11 +507,11 @@ class GlobeRenderer {
   void drawPartOverBlocks(int part, int count) const;
   /// The stencil count drawBlockFill gives fill k (0 land, 1 sea, 2 open sea) this frame.
   [[nodiscard]] int fillStencilCount(std::size_t k) const;
-  bool partsOverBlocks_ = true;  ///< setPartsOverBlocks
+  bool partsOverBlocks_ = false;  ///< setPartsOverBlocks; set from gl::driverProfile().software by the constructor
   bool uncoveredListedFrame_ = false;  ///< below 20 km: this frame's classifying draw covered uncovered_'s blocks
   gl::Program partGate_;     ///< render/uncovered.frag: nothing but the tests; id() 0 until first used
   gl::Query partGateQuery_;  ///< GL_ANY_SAMPLES_PASSED
-  bool partGateOn_ = true;   ///< setPartGate
+  bool partGateOn_ = false;  ///< setPartGate; set from gl::driverProfile().software by the constructor
   bool recordPartGate_ = false;  ///< setRecordPartGate
   std::vector<bool> partsGated_;
   bool ellipsoidScissorOn_ = true;

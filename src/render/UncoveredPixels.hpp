@@ -28,7 +28,8 @@ class UncoveredPixels {
   /// The query find drew in (GL_ANY_SAMPLES_PASSED).
   [[nodiscard]] GLuint query() const { return query_.id(); }
   /// The blocks find listed, two triangles each (shaders/render/blocks.vert's input), with the
-  /// bound program; binds its own vertex array.
+  /// bound program (the classifying draw's, and with several samples a pixel the globe's edge
+  /// and surface parts': GlobeRenderer::shadeGlobe); binds its own vertex array.
   void drawBlocks() const;
   /// The blocks find listed last (reads them back: for tests; a frame whose grid left no pixel
   /// lists none and leaves the count as it was).
