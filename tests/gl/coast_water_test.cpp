@@ -490,6 +490,17 @@ io::ImageRgba8 drawnWithSea(const data::LatLonGrid& grid, const render::FrameInp
   return r.display();
 }
 
+// `a` against `b`: at most `maxLevels` apart (the picture and a diff image on failure).
+void expectWithinLevels(const io::ImageRgba8& a, const io::ImageRgba8& b, int maxLevels, const std::string& name) {
+  const test::Comparison c = test::compareRgb(a, b, maxLevels);
+  std::printf("%s: at most %d levels apart\n", name.c_str(), c.maxDiff);
+  if (c.maxDiff > maxLevels) {
+    io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".png"), a);
+    io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".diff.png"), c.diff);
+  }
+  EXPECT_LE(c.maxDiff, maxLevels) << name << ": " << c.describe();
+}
+
 // `f` drawn deferred (render/OceanRenderer::drawDeferred), then by the grid's own fragments,
 // compared as the classes are below.
 // Returns the classes the deferred frame drew (OceanRenderer::classesDrawn).
@@ -774,12 +785,7 @@ TEST(CoastWater, DeferredSeaByComputeDrawsTheSamePicture) {
         });
       };
       const io::ImageRgba8 fragments = drawn("deferred"), computed = drawn("compute");
-      const test::Comparison c = test::compareRgb(computed, fragments, 1);
-      if (c.maxDiff > 1) {
-        io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".png"), computed);
-        io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".diff.png"), c.diff);
-      }
-      EXPECT_LE(c.maxDiff, 1) << name << ": " << c.describe();
+      expectWithinLevels(computed, fragments, 1, name);
     }
   }
 }
@@ -843,13 +849,7 @@ TEST(CoastWater, ForwardSplitDrawsTheSamePicture) {
         });
       };
       const io::ImageRgba8 single = drawn("forward"), split = drawn("split");
-      const test::Comparison c = test::compareRgb(split, single, 2);
-      std::printf("%s, %d samples: at most %d levels apart\n", name.c_str(), samples, c.maxDiff);
-      if (c.maxDiff > 2) {
-        io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".png"), split);
-        io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".diff.png"), c.diff);
-      }
-      EXPECT_LE(c.maxDiff, 2) << c.describe();
+      expectWithinLevels(split, single, 2, name + "_" + std::to_string(samples) + "_samples");
     }
   }
 }
@@ -863,17 +863,6 @@ data::LatLonGrid drownedBank() {
   return test::globalGrid("drowned-bank", 0.1, [](double lat, double lon) {
     return std::hypot(lat - 20.0, (lon + 40.0) * std::cos(20.0 * M_PI / 180.0)) < 1.0 ? -8.0 : -4000.0;
   });
-}
-
-// `a` against `b`: at most `maxLevels` apart (the picture and a diff image on failure).
-void expectWithinLevels(const io::ImageRgba8& a, const io::ImageRgba8& b, int maxLevels, const std::string& name) {
-  const test::Comparison c = test::compareRgb(a, b, maxLevels);
-  std::printf("%s: at most %d levels apart\n", name.c_str(), c.maxDiff);
-  if (c.maxDiff > maxLevels) {
-    io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".png"), a);
-    io::writePng(std::filesystem::path(OG_TEST_OUT_DIR) / (name + ".diff.png"), c.diff);
-  }
-  EXPECT_LE(c.maxDiff, maxLevels) << name << ": " << c.describe();
 }
 }  // namespace
 
