@@ -65,6 +65,10 @@ timeout 100 "$OG" bench --size 1920x1080 --size 1280x720 --frames 20 --samples 1
 # The GPU's default, 4 samples, pass by pass (where its frames' extra time goes: "Thirty-fourth
 # session" on llvmpipe's).
 timeout 50 "$OG" bench --size 1920x1080 --frames 20 --samples 4 --breakdown 2>&1 | quiet | sed "s/^/4 samples: /" | tee -a "$out/bench.txt"
+# The globe's parts by query and over blocks, llvmpipe's multisampling workaround (off on GPUs:
+# gl::DriverProfile::multisampleShadesEveryBlock), against the above.
+OCEANGLOBE_MSAA_PART_BLOCKS=1 timeout 30 "$OG" bench --size 1920x1080 --frames 20 --samples 4 --view sea-4m \
+  --view limb-400km --view orbit-20000km 2>&1 | quiet | sed "s/^/4 samples, part blocks: /" | tee -a "$out/bench.txt"
 # The deferred sea (full-screen passes per class, the classes copied into the stencil where the
 # driver cannot export them) and its classes shaded by compute shaders instead, against the
 # default above (docs/performance.md, "Thirty-second session"), every view at one sample; and

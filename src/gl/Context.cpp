@@ -80,6 +80,8 @@ void Context::finishInit(std::string backend, void* (*getProcAddress)(const char
                                 !envSaysOff("OCEANGLOBE_STENCIL_EXPORT");
   if (const char* fft = std::getenv("OCEANGLOBE_FFT"); fft != nullptr && *fft != '\0')
     info_.profile.cpuWaveFft = std::string_view(fft) == "cpu";
+  if (const char* blocks = std::getenv("OCEANGLOBE_MSAA_PART_BLOCKS"); blocks != nullptr && *blocks != '\0')
+    info_.profile.multisampleShadesEveryBlock = std::string_view(blocks) == "1";
   log::info("GL context: " + info_.backend + ", " + info_.renderer + ", " + info_.version);
 }
 

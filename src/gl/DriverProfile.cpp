@@ -17,6 +17,7 @@ DriverProfile makeDriverProfile(std::string_view renderer, float deviceMaxAnisot
   p.maxAnisotropy = p.software ? 1.0f : std::max(deviceMaxAnisotropy, 1.0f);
   p.timestampsTimeWork = !p.software;
   p.cpuWaveFft = p.software;
+  p.multisampleShadesEveryBlock = p.software;
   return p;
 }
 

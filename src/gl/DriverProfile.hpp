@@ -28,6 +28,11 @@ struct DriverProfile {
   /// fifth of the time on the same cores (docs/performance.md, "Eighth session"). On a GPU the
   /// compute shaders. OCEANGLOBE_FFT=cpu or gpu overrides (to compare the paths).
   bool cpuWaveFft = false;
+  /// Multisampled draws skip no block for failing the early depth and stencil tests (llvmpipe:
+  /// docs/performance.md, "Thirty-fourth session"), so GlobeRenderer draws each of the globe's
+  /// parts only where a query found samples and over the blocks that may hold it. On software
+  /// renderers; OCEANGLOBE_MSAA_PART_BLOCKS=1 or 0 overrides (to measure a GPU with them).
+  bool multisampleShadesEveryBlock = false;
 };
 
 /// Whether a GL_RENDERER string names a software renderer: the one list of their names.

@@ -207,9 +207,7 @@ GlobeRenderer::GlobeRenderer(std::shared_ptr<const data::LatLonGrid> layer,
   maxSamples_ = gl::maxSamples(GL_RGBA32F);
   blocksOn_ = gl::driverProfile().software;
   scatteredListed_ = gl::driverProfile().software;
-  // llvmpipe's early tests skip no block of a multisampled draw; a GPU's hierarchical tests
-  // should (not measured: docs/performance.md, "Thirty-fourth session").
-  partGateOn_ = partsOverBlocks_ = gl::driverProfile().software;
+  partGateOn_ = partsOverBlocks_ = gl::driverProfile().multisampleShadesEveryBlock;
   gl::checkErrors("GlobeRenderer setup");
 }
 

@@ -272,13 +272,13 @@ class GlobeRenderer {
   /// with one sample per pixel and no auxiliary outputs; false: fragments (the tests' reference).
   void setScatteredPartsListed(bool on) { scatteredListed_ = on; }
   /// Whether a multisampled frame below 20 km draws each of the globe's parts only where a lean
-  /// draw's occlusion query found samples of it (drawPartGated; on by default on software
-  /// renderers; off: the tests' reference).
+  /// draw's occlusion query found samples of it (drawPartGated; on by default where
+  /// gl::DriverProfile::multisampleShadesEveryBlock; off: the tests' reference).
   void setPartGate(bool on) { partGateOn_ = on; }
   /// Whether a multisampled frame draws each of the globe's parts over the blocks of pixels that
   /// may hold it (above 20 km drawPartOverBlocks; below, the edge's and the surface's over the
-  /// blocks the grid and the terrain left: UncoveredPixels; on by default on software
-  /// renderers; off: the tests' reference).
+  /// blocks the grid and the terrain left: UncoveredPixels; on by default where
+  /// gl::DriverProfile::multisampleShadesEveryBlock; off: the tests' reference).
   void setPartsOverBlocks(bool on) { partsOverBlocks_ = on; }
   /// With `on`, each gated part's query is read back at once (a stall: for tests) into
   /// partsGated(): whether the last frame's gated parts had samples, in their order (none where
@@ -507,11 +507,11 @@ class GlobeRenderer {
   void drawPartOverBlocks(int part, int count) const;
   /// The stencil count drawBlockFill gives fill k (0 land, 1 sea, 2 open sea) this frame.
   [[nodiscard]] int fillStencilCount(std::size_t k) const;
-  bool partsOverBlocks_ = false;  ///< setPartsOverBlocks; set from gl::driverProfile().software by the constructor
+  bool partsOverBlocks_ = false;  ///< setPartsOverBlocks; from gl::DriverProfile::multisampleShadesEveryBlock
   bool uncoveredListedFrame_ = false;  ///< below 20 km: this frame's classifying draw covered uncovered_'s blocks
   gl::Program partGate_;     ///< render/uncovered.frag: nothing but the tests; id() 0 until first used
   gl::Query partGateQuery_;  ///< GL_ANY_SAMPLES_PASSED
-  bool partGateOn_ = false;  ///< setPartGate; set from gl::driverProfile().software by the constructor
+  bool partGateOn_ = false;  ///< setPartGate; from gl::DriverProfile::multisampleShadesEveryBlock
   bool recordPartGate_ = false;  ///< setRecordPartGate
   std::vector<bool> partsGated_;
   bool ellipsoidScissorOn_ = true;
