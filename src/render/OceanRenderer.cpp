@@ -199,10 +199,6 @@ const gl::Program& OceanRenderer::deferredProgram(unsigned features, bool comput
   return p;
 }
 
-GLuint OceanRenderer::classesShadedByCompute(GLuint target) const {
-  return frameComputeShading_ && !countClassSamples_ ? computeImageOf(target) : 0;
-}
-
 GLuint OceanRenderer::computeImageOf(GLuint target) {
   if (target == 0) return 0;
   const auto attachment = [target](GLenum a, GLenum what) {
@@ -509,15 +505,18 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
                         windAlongOneBin(glm::radians(wind.constantTowardsDeg()), frame.fieldRotationRad())
                     ? 1
                     : 0;
-  // A GPU without stencil export: the frames with a floor within reach by compute shaders,
-  // where they can serve (not into --aov's targets, nor with the classes' samples counted).
-  const bool computeFloors = computeForFloors_ && lighting.classes && (features & kFeatureWaterVolume) != 0 &&
-                             !countClassSamples_ && [] {
-                               GLint target = 0;
-                               glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
-                               return computeImageOf(static_cast<GLuint>(target)) != 0;
-                             }();
-  frameComputeShading_ = computeShading_ || computeFloors;
+  // The deferred classes by compute shaders (OCEANGLOBE_SEA=compute; on a GPU without stencil
+  // export, the frames with a floor within reach), where they can serve: into the target's
+  // image (not --aov's targets), the classes' samples not counted. The bound framebuffer is
+  // drawDeferred's target.
+  const bool floorsByCompute = computeForFloors_ && lighting.classes && (features & kFeatureWaterVolume) != 0;
+  frameComputeImage_ = 0;
+  if ((computeShading_ || floorsByCompute) && !countClassSamples_) {
+    GLint target = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+    frameComputeImage_ = computeImageOf(static_cast<GLuint>(target));
+  }
+  const bool computeFloors = floorsByCompute && frameComputeImage_ != 0;
   lastDeferred_ = false;
   lastForwardSplit_ = false;
   lastClassesByCompute_ = false;
@@ -978,7 +977,7 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   glDepthMask(GL_FALSE);
   // The shading: a full-screen pass per class present, only its pixels; or a compute dispatch
   // into the target's image, which reads the classes where they are.
-  const GLuint image = classesShadedByCompute(static_cast<GLuint>(target));
+  const GLuint image = frameComputeImage_;
   lastClassesByCompute_ = image != 0;
   if (!exportsStencil && seaVisible && image == 0) classesIntoStencil();
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);

@@ -366,12 +366,8 @@ class OceanRenderer {
   glm::vec4 layOutGridOnBlocks(int width, int height);
   /// The deferred sea's shading program for `features` (coast test excluded), compiled on first
   /// use: a full-screen fragment pass, or with `compute` ocean.frag as a compute shader
-  /// (OCEAN_COMPUTE: dispatchClass).
+  /// (OCEAN_COMPUTE: ClassDispatches).
   const gl::Program& deferredProgram(unsigned features, bool compute);
-  /// The texture of `target`'s colour where the deferred classes are shaded by compute shaders
-  /// (OCEANGLOBE_SEA=compute or computeForFloors_; computeImageOf, the classes' samples not
-  /// counted); 0: by full-screen draws.
-  [[nodiscard]] GLuint classesShadedByCompute(GLuint target) const;
   /// The texture of framebuffer `target`'s colour if compute shaders can write it (a
   /// single-sampled RGBA32F texture, no auxiliary channels), else 0.
   [[nodiscard]] static GLuint computeImageOf(GLuint target);
@@ -428,7 +424,7 @@ class OceanRenderer {
   /// asked, OCEANGLOBE_SEA=deferred or compute (computeForFloors_ otherwise); where compute
   /// cannot serve (--aov, counted samples) the classes then go into the stencil by the copy passes.
   bool deferredWithoutExport_;
-  /// The deferred classes shaded by compute shaders (OCEANGLOBE_SEA=compute; classesShadedByCompute):
+  /// The deferred classes shaded by compute shaders (OCEANGLOBE_SEA=compute; frameComputeImage_):
   /// for GPUs whose pixel shaders are few (the H200's: docs/performance.md, "Thirty-second session");
   /// slower on llvmpipe (sea-4m's open sea 105 -> 175 ms of one thread).
   bool computeShading_;
@@ -448,7 +444,10 @@ class OceanRenderer {
   /// test) 7.2 against 8.2, sea-2m-horizon 11.9 against 12.0 (docs/performance.md,
   /// "Thirty-third session").
   bool computeForFloors_;
-  bool frameComputeShading_ = false;  ///< this frame's: computeShading_ or computeForFloors_'s
+  /// This frame's target's texture where its deferred classes are shaded by compute shaders
+  /// (computeShading_ or computeForFloors_'s; computeImageOf, the classes' samples not
+  /// counted: draw); 0: by full-screen draws.
+  GLuint frameComputeImage_ = 0;
   /// The programs that read the wave patterns, each compiled on first use: set 1 with
   /// PATTERN_ONE_BIN and PATTERN_CONSTANT_WIND (a constant wind along one of the patterns'
   /// direction bins: one bin's lookups, the wind, its bin and the tables' values as uniforms;
