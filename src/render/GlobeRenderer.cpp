@@ -437,8 +437,7 @@ const gl::Program& GlobeRenderer::globeProgram(bool behind, int variant) {
       if (variant == kSkyLowSunPart) defines.emplace_back("GLOBE_SKY_SUN_DISC");
     } else {
       static constexpr std::array<int, 6> kPart{1, 2, 3, 7, 6, 5};
-      const int k = variant > kGlobePartOverBlocks0 ? variant - kGlobePartOverBlocks0 : variant - kGlobePart0;
-      defines.push_back("GLOBE_PART " + std::to_string(kPart.at(static_cast<std::size_t>(k - 1))));
+      defines.push_back("GLOBE_PART " + std::to_string(kPart.at(static_cast<std::size_t>(partOf - kGlobePart0 - 1))));
     }
     if (behind) defines.emplace_back("GLOBE_BEHIND");  // (baseSet 2)
     if (baseSet == 0) defines.emplace_back("AERIAL_TABLE");
@@ -486,8 +485,7 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
   // the open sea's class is in the sea's, and so on), as the one draw counts.
   const bool oneDraw = gl::driverProfile().stencilExport;
   // Below the ceiling the one draw covers only the blocks of pixels the terrain and the grid left.
-  const bool listedBlocks = grid && oneDraw;
-  uncoveredListedFrame_ = listedBlocks;
+  const bool listedBlocks = listsUncoveredBlocks(grid);
   if (grid) {  // the classifying draws run on every pixel: skip them when nothing is left
     // The sky (every ray misses the ellipsoid) has count 0 below the ceiling: the draws skip it
     // (after the query, which must see the sky the parts then shade).
@@ -727,7 +725,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
     // Below 20 km the edge's and the surface's pixels lie in the blocks the classifying draw
     // covered (uncovered_'s, where listed); the sky's beyond them.
     const bool overBlocks = partsOverBlocks_ && hdr_.samples > 1 &&
-                            (!grid || (uncoveredListedFrame_ && parts[k] != kGlobePart0 + 1));
+                            (!grid || (listsUncoveredBlocks(grid) && parts[k] != kGlobePart0 + 1));
     const gl::Program& globe =
         globeProgram(grid, readsSkyLow ? kSkyLowPart : overBlocks ? parts[k] - kGlobePart0 + kGlobePartOverBlocks0 : parts[k]);
     setGlobeUniforms(globe, view, f);
@@ -868,6 +866,8 @@ std::uint32_t GlobeRenderer::listedPixelCount() const {
   if (scatteredPixels_.id() != 0) glGetNamedBufferSubData(scatteredPixels_.id(), 0, sizeof count, &count);
   return count;
 }
+
+bool GlobeRenderer::listsUncoveredBlocks(bool grid) { return grid && gl::driverProfile().stencilExport; }
 
 bool GlobeRenderer::listsScatteredParts() const {
   return scatteredListed_ && hdr_.samples == 1 && !auxiliary_ && !countPartSamples_;

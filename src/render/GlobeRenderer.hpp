@@ -508,7 +508,9 @@ class GlobeRenderer {
   /// The stencil count drawBlockFill gives fill k (0 land, 1 sea, 2 open sea) this frame.
   [[nodiscard]] int fillStencilCount(std::size_t k) const;
   bool partsOverBlocks_ = false;  ///< setPartsOverBlocks; from gl::DriverProfile::multisampleShadesEveryBlock
-  bool uncoveredListedFrame_ = false;  ///< below 20 km: this frame's classifying draw covered uncovered_'s blocks
+  /// Below 20 km: whether the classifying draw covers uncovered_'s listed blocks (its one draw,
+  /// with stencil export) rather than the frame.
+  [[nodiscard]] static bool listsUncoveredBlocks(bool grid);
   gl::Program partGate_;     ///< render/uncovered.frag: nothing but the tests; id() 0 until first used
   gl::Query partGateQuery_;  ///< GL_ANY_SAMPLES_PASSED
   bool partGateOn_ = false;  ///< setPartGate; from gl::DriverProfile::multisampleShadesEveryBlock
