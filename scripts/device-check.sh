@@ -58,6 +58,8 @@ for v in "${views[@]}"; do
   render "$name-1" --samples 1 $args
   # shellcheck disable=SC2086
   OCEANGLOBE_SEA=compute render "$name-compute" --samples 1 $args
+  # shellcheck disable=SC2086 # (the visibility buffer where the sea has one class: sea-4m)
+  OCEANGLOBE_SEA_SURFACE=visibility render "$name-visibility" --samples 4 $args
 done
 tar -C "$out" -cf "$out/renders.tar" png && rm -rf "$out/png"
 timeout 160 "$OG" bench --size 1920x1080 --size 1280x720 --frames 30 --samples 1 4 2>&1 | quiet | tee -a "$out/bench.txt"
@@ -69,6 +71,18 @@ timeout 50 "$OG" bench --size 1920x1080 --frames 20 --samples 4 --breakdown 2>&1
 # gl::DriverProfile::multisampleShadesEveryBlock), against the above.
 OCEANGLOBE_MSAA_PART_BLOCKS=1 timeout 30 "$OG" bench --size 1920x1080 --frames 20 --samples 4 --view sea-4m \
   --view limb-400km --view orbit-20000km 2>&1 | quiet | sed "s/^/4 samples, part blocks: /" | tee -a "$out/bench.txt"
+# The visibility buffer (OCEANGLOBE_SEA_SURFACE=visibility, "Thirty-fifth session"): where the
+# sea has one class the surface pass writes each pixel's grid triangle alone (no varyings, 4
+# bytes) and the shading interpolates the triangle's vertices; at 4 samples (the GPU default,
+# otherwise the sea forward) shaded once a pixel by compute shaders, then copied to the samples
+# with sea. Against the default above: 4 samples, and one sample by fragments and by compute.
+OCEANGLOBE_SEA_SURFACE=visibility timeout 40 "$OG" bench --size 1920x1080 --size 1280x720 --frames 20 --samples 4 \
+  --view sea-4m --view sea-1km --view sea-8km --breakdown 2>&1 | quiet | sed "s/^/visibility, 4 samples: /" | tee -a "$out/bench.txt"
+for sea in deferred compute; do
+  OCEANGLOBE_SEA_SURFACE=visibility OCEANGLOBE_SEA=$sea timeout 30 "$OG" bench --size 1920x1080 --frames 20 --samples 1 \
+    --view sea-4m --view sea-1km --view sea-8km --breakdown 2>&1 | quiet |
+    sed "s/^/visibility, OCEANGLOBE_SEA=$sea: /" | tee -a "$out/bench.txt"
+done
 # The deferred sea (full-screen passes per class, the classes copied into the stencil where the
 # driver cannot export them) and its classes shaded by compute shaders instead, against the
 # default above (docs/performance.md, "Thirty-second session"), every view at one sample; and

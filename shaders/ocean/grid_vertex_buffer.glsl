@@ -80,39 +80,49 @@ void storeGridVertex(int i, vec4 position) {
 #endif
 }
 #else
-// Vertex i's outputs from the buffer; returns its clip-space position.
-vec4 loadGridVertex(int i) {
-  int at = i * GRID_VERTEX_VEC4S;
-  vec4 v1 = gridVertices[at + 1], v2 = gridVertices[at + 2], v3 = gridVertices[at + 3];
-  vec4 v4 = gridVertices[at + 4], v5 = gridVertices[at + 5], v6 = gridVertices[at + 6];
-  vec4 v7 = gridVertices[at + 7], v8 = gridVertices[at + 8], v9 = gridVertices[at + 9];
-  vRelative = v1.xyz;
-  vOceanXY = vec2(v1.w, v2.x);
-  vPatternMean = v2.yz;
-  vPatternJacobian = vec2(v2.w, v3.x);
-  vPatternCov = v3.yzw;
-  vPatternShare = float[PATTERN_COUNT](v4.x, v4.y, v4.z, v4.w, v5.x);
+// A vertex's record (its GRID_VERTEX_VEC4S vec4s, or three vertices' weighted sum: the
+// visibility buffer's pixels, ocean/sea_visibility.glsl) into the outputs it holds, its
+// position (record[0]) aside. The flat ones (OCEAN_SEA_CLASSIFY) are whole vertices' only.
+void unpackGridVertex(vec4 r[GRID_VERTEX_VEC4S]) {
+  vRelative = r[1].xyz;
+  vOceanXY = vec2(r[1].w, r[2].x);
+  vPatternMean = r[2].yz;
+  vPatternJacobian = vec2(r[2].w, r[3].x);
+  vPatternCov = r[3].yzw;
+  vPatternShare = float[PATTERN_COUNT](r[4].x, r[4].y, r[4].z, r[4].w, r[5].x);
 #ifndef OCEAN_SIMPLE_SKY
-  vTransmittance = v5.yzw;
-  vInscatter = v6.xyz;
+  vTransmittance = r[5].yzw;
+  vInscatter = r[6].xyz;
 #endif
 #ifndef OCEAN_NO_WATER_VOLUME
-  vFloorDepthM = v6.w;
-  vFloorFine = v7.x;
+  vFloorDepthM = r[6].w;
+  vFloorFine = r[7].x;
 #ifndef OCEAN_SIMPLE_SKY
-  vWaterSunE = v7.yzw;
-  vWaterSkyE = v8.xyz;
+  vWaterSunE = r[7].yzw;
+  vWaterSkyE = r[8].xyz;
 #endif
 #endif
 #ifdef OCEAN_SEA_CLASSIFY
-  vNearLand = v8.w;
-  vNearShadow = v9.x;
-  vGridRow = int(v9.y);
+  vNearLand = r[8].w;
+  vNearShadow = r[9].x;
+  vGridRow = int(r[9].y);
 #endif
+}
+
+// Vertex i's record.
+void gridVertexRecord(int i, out vec4 r[GRID_VERTEX_VEC4S]) {
+  for (int k = 0; k < GRID_VERTEX_VEC4S; ++k) r[k] = gridVertices[i * GRID_VERTEX_VEC4S + k];
+}
+
+// Vertex i's outputs from the buffer; returns its clip-space position.
+vec4 loadGridVertex(int i) {
+  vec4 r[GRID_VERTEX_VEC4S];
+  gridVertexRecord(i, r);
+  unpackGridVertex(r);
 #ifdef OCEAN_RADIANCE_TERMS
   for (int k = 0; k < SEA_RADIANCE_VEC4S; ++k) vRadianceTerms[k] = gridRadianceTerms[i * SEA_RADIANCE_VEC4S + k];
 #endif
-  return gridVertices[at];
+  return r[0];
 }
 #ifdef OCEAN_SEA_CLASSIFY
 // Whether vertex i's vNearLand > 0, and its floor is within the water's reach

@@ -60,7 +60,7 @@ SEA_IN vec3 vInscatter;
 #endif
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0, rgba32f) uniform writeonly image2D uRadianceImage;
-#ifndef SEA_CLASS_IN_SURFACE
+#if !defined(SEA_CLASS_IN_SURFACE) && !defined(SEA_VISIBILITY)
 layout(binding = OG_UNIT_SEA_STENCIL) uniform usampler2D uSeaStencil;  // the classes
 #endif
 uniform int uSeaClass;  // the class shaded (1..5)
@@ -77,7 +77,9 @@ shared uint sSeaAnyOfClass;
 #ifdef OCEAN_COMPUTE
 // The pixel's class: 0 where no sea was drawn.
 uint seaClassAt(ivec2 pixel) {
-#ifdef SEA_CLASS_IN_SURFACE
+#if defined(SEA_VISIBILITY)  // (one class: the frame's sea has none)
+  return seaVisibilityAt(pixel) != 0u ? 1u : 0u;
+#elif defined(SEA_CLASS_IN_SURFACE)
   return texelFetch(uSeaSurface, ivec3(pixel, 0), 0).y & SEA_CLASS_BITS;
 #else
   return texelFetch(uSeaStencil, pixel, 0).r;

@@ -31,17 +31,19 @@ uint seaHalves(float a, float b) { return packHalf2x16(vec2(a, b)); }
 // bits of its mantissa, 1e-6 of its value.
 const uint SEA_CLASS_BITS = uint(OG_SEA_CLASS_BITS);
 
-#ifndef OCEAN_COMPUTE  // (screen derivatives: the grid's fragments)
 // Gradient of the floor's depth (m per m of the ocean frame's x and y) in the pixel's grid
-// triangle, where the vertices' depths are interpolated linearly: from the screen derivatives
-// of the depth and of the position (taken while the pixel's quad is whole). 0 where the
+// triangle, where the vertices' depths are interpolated linearly: from the change per pixel of
+// the position (`toScreen`'s columns: in x, in y) and of the depth (`perPixel`). 0 where the
 // triangle is seen edge-on.
-vec2 floorDepthSlope(vec2 oceanXY, float depthM) {
-  mat2 toScreen = mat2(dFdx(oceanXY), dFdy(oceanXY));  // columns: the position per pixel in x, in y
+vec2 floorDepthSlopeOf(mat2 toScreen, vec2 perPixel) {
   float det = determinant(toScreen);
-  vec2 perPixel = vec2(dFdx(depthM), dFdy(depthM));
   return abs(det) > 1e-12 * max(dot(toScreen[0], toScreen[0]) + dot(toScreen[1], toScreen[1]), 1e-30)
              ? perPixel * inverse(toScreen) : vec2(0.0);
+}
+#ifndef OCEAN_COMPUTE  // (screen derivatives: the grid's fragments)
+// The same from the screen derivatives (taken while the pixel's quad is whole).
+vec2 floorDepthSlope(vec2 oceanXY, float depthM) {
+  return floorDepthSlopeOf(mat2(dFdx(oceanXY), dFdy(oceanXY)), vec2(dFdx(depthM), dFdy(depthM)));
 }
 #endif
 
@@ -99,15 +101,27 @@ void writeSeaSurface(float footprintM, vec2 floorSlope, int seaClass) {
 #endif
 }
 #elif defined(OCEAN_DEFERRED)
+#if defined(SEA_VISIBILITY_MULTISAMPLE)  // the visibility buffer, a triangle a sample
+layout(binding = OG_UNIT_SEA_SURFACE) uniform usampler2DMS uSeaSurface;
+#define SEA_SURFACE_SIZE textureSize(uSeaSurface)
+#elif defined(SEA_VISIBILITY)  // the visibility buffer
+layout(binding = OG_UNIT_SEA_SURFACE) uniform usampler2D uSeaSurface;
+#define SEA_SURFACE_SIZE textureSize(uSeaSurface, 0)
+#else
 layout(binding = OG_UNIT_SEA_SURFACE) uniform usampler2DArray uSeaSurface;
+#define SEA_SURFACE_SIZE textureSize(uSeaSurface, 0).xy
+#endif
 #include "geo/camera_ray.glsl"
 
 // The unit ray through the pixel's centre, ECEF axes (geo::CameraView::rayDirection).
 vec3 seaRayDirection(ivec2 pixel) {
-  vec2 ndc = (vec2(pixel) + 0.5) / vec2(textureSize(uSeaSurface, 0).xy) * 2.0 - 1.0;
+  vec2 ndc = (vec2(pixel) + 0.5) / vec2(SEA_SURFACE_SIZE) * 2.0 - 1.0;
   return cameraRay(ndc);
 }
 
+#ifdef SEA_VISIBILITY
+#include "ocean/sea_visibility.glsl"  // readSeaSurface from the pixel's triangle
+#else
 // Reads the pixel's values into the globals the forward pass has as varyings (ocean/ocean.frag
 // declares them with SEA_IN empty): returns the footprint (m) and the floor's depth gradient.
 void readSeaSurface(out float footprintM, out vec2 floorSlope) {
@@ -141,4 +155,5 @@ void readSeaSurface(out float footprintM, out vec2 floorSlope) {
   floorSlope = vec2(0.0);
 #endif
 }
+#endif
 #endif

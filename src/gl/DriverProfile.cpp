@@ -18,6 +18,7 @@ DriverProfile makeDriverProfile(std::string_view renderer, float deviceMaxAnisot
   p.timestampsTimeWork = !p.software;
   p.cpuWaveFft = p.software;
   p.multisampleShadesEveryBlock = p.software;
+  p.multisampledSeaByVisibility = p.software;
   return p;
 }
 

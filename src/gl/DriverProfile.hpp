@@ -33,6 +33,12 @@ struct DriverProfile {
   /// parts only where a query found samples and over the blocks that may hold it. On software
   /// renderers; OCEANGLOBE_MSAA_PART_BLOCKS=1 or 0 overrides (to measure a GPU with them).
   bool multisampleShadesEveryBlock = false;
+  /// A multisampled frame's open sea deferred through a multisampled visibility buffer, shaded
+  /// once a pixel by compute shaders (render/OceanRenderer, docs/ocean.md), instead of forward:
+  /// on software renderers (llvmpipe: sea-4m with 4 samples 280 -> 221 ms at 1280x720,
+  /// docs/performance.md, "Thirty-fifth session"); on GPUs when measured.
+  /// OCEANGLOBE_SEA_SURFACE=visibility or buffer overrides.
+  bool multisampledSeaByVisibility = false;
 };
 
 /// Whether a GL_RENDERER string names a software renderer: the one list of their names.

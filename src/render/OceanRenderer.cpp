@@ -139,6 +139,17 @@ std::string seaPathAsked() {
   throw InputError("OCEANGLOBE_SEA: '" + asked + "' is not forward, deferred, compute or split");
 }
 
+// OCEANGLOBE_SEA_SURFACE: what the deferred sea's surface pass writes where the frame's sea has
+// one class: "buffer" (the surface buffer; multisampled frames then draw the sea forward) or
+// "visibility" (each pixel's grid triangle, ocean/sea_visibility.glsl, at any sample count);
+// unset (""), the driver profile's choice (gl::DriverProfile::multisampledSeaByVisibility).
+std::string seaSurfaceAsked() {
+  const char* e = std::getenv("OCEANGLOBE_SEA_SURFACE");
+  const std::string asked = e != nullptr ? e : "";
+  if (asked.empty() || asked == "buffer" || asked == "visibility") return asked;
+  throw InputError("OCEANGLOBE_SEA_SURFACE: '" + asked + "' is not buffer or visibility");
+}
+
 // Whether the sea may be drawn deferred (OceanRenderer::setDeferred): unless it is asked forward.
 bool deferredAllowed() { return seaPathAsked() != "forward" && seaPathAsked() != "split"; }
 
@@ -154,6 +165,9 @@ OceanRenderer::OceanRenderer(const Atmosphere* atmosphere, ValidationMode mode)
       deferred_(deferredAllowed()),
       deferredWithoutExport_(seaPathAsked() == "deferred" || seaPathAsked() == "compute"),
       computeShading_(seaPathAsked() == "compute"),
+      visibilityOneSample_(seaSurfaceAsked() == "visibility"),
+      visibilityMultisample_(seaSurfaceAsked() == "visibility" ||
+                             (seaSurfaceAsked().empty() && gl::driverProfile().multisampledSeaByVisibility)),
       forwardSplit_(seaPathAsked() == "split" || (seaPathAsked().empty() && !gl::driverProfile().stencilExport)),
       computeForFloors_(seaPathAsked().empty() && !gl::driverProfile().software && !gl::driverProfile().stencilExport),
       vao_(gl::createVertexArray()),
@@ -182,19 +196,23 @@ std::vector<std::string> OceanRenderer::featureDefines(unsigned features) const 
   return d;
 }
 
-const gl::Program& OceanRenderer::deferredProgram(unsigned features, bool compute) {
-  gl::Program& p = (compute ? programs().deferredComputeVariants : programs().deferredVariants).at(features);
+const gl::Program& OceanRenderer::deferredProgram(unsigned features, bool compute, bool visibility,
+                                                  bool multisampled) {
+  gl::Program& p = programs().deferredVariants.at(features + (compute ? 16u : 0u) + (visibility ? 32u : 0u) +
+                                                  (multisampled ? 64u : 0u));
   if (p.id() != 0) return p;
   // The coast test is the surface pass's. The surface buffer's layers the shading reads are the
   // same in its compact layout and its full one (ocean/sea_surface.glsl): one program for both.
   std::vector<std::string> d = featureDefines(features & ~kFeatureCoastTest);
   d.emplace_back("OCEAN_DEFERRED");
+  if (visibility) d.emplace_back("SEA_VISIBILITY");
+  if (multisampled) d.emplace_back("SEA_VISIBILITY_MULTISAMPLE");
   if (!compute) {
     p = gl::Program({{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "ocean/ocean.frag"}}, d);
     return p;
   }
   d.emplace_back("OCEAN_COMPUTE");
-  if (!gl::driverProfile().stencilExport) d.emplace_back("SEA_CLASS_IN_SURFACE");
+  if (!visibility && !gl::driverProfile().stencilExport) d.emplace_back("SEA_CLASS_IN_SURFACE");
   p = gl::Program({{GL_COMPUTE_SHADER, "ocean/ocean.frag"}}, d);
   return p;
 }
@@ -521,6 +539,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
   lastForwardSplit_ = false;
   lastClassesByCompute_ = false;
   lastSurfaceCompact_ = false;
+  lastSurfaceByVisibility_ = false;
   lastRadianceTerms_ = false;
   lastCoversScreen_ = false;
   if (model == OceanModel::Classic) {
@@ -541,9 +560,10 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     glBindTextureUnit(gl::kUnitBumpMap, bumpMap_.id());
     glBindTextureUnit(gl::kUnitFresnelRamp, fresnelRamp_.id());
     drawGrid(p);
-  } else if (const GLuint depthStencil = deferred_ ? SeaSurfaceBuffer::boundDepthStencilTexture() : 0;
+  } else if (const SeaSurfaceBuffer::DepthStencil depthStencil =
+                 deferred_ ? SeaSurfaceBuffer::boundDepthStencil() : SeaSurfaceBuffer::DepthStencil{};
              deferred_ && mode_ == ValidationMode::Filtered && frameCellPixels_ < kDeferredMaxCellPixels &&
-             depthStencil != 0 && (gl::driverProfile().stencilExport || deferredWithoutExport_ || computeFloors)) {
+             depthStencil.texture != 0 && deferredServes(depthStencil.samples, surfaceClasses(lighting, features), computeFloors)) {
     lastDeferred_ = true;
     drawDeferred(view, width, height, patterns, frame, lighting, amplitudeScale, wind, features, margin, depthStencil);
   } else if (classified) {  // sea_classify.frag
@@ -570,6 +590,17 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     drawGrid(p);
   }
   gl::checkErrors("OceanRenderer::draw");
+}
+
+bool OceanRenderer::surfaceClasses(const OceanLighting& lighting, unsigned features) {
+  return lighting.classes && (features & (kFeatureWaterVolume | kFeatureCoastTest)) != 0;
+}
+
+bool OceanRenderer::deferredServes(int samples, bool classes, bool computeFloors) const {
+  // Multisampled: only by the visibility buffer (one class: a sample's class is its triangle's),
+  // without --aov's channels (copySeaRadiance writes the radiance alone).
+  if (samples > 1) return visibilityMultisample_ && !classes && !drawTargetHasAuxiliary();
+  return gl::driverProfile().stencilExport || deferredWithoutExport_ || computeFloors || (visibilityOneSample_ && !classes);
 }
 
 void OceanRenderer::prepare(const gl::Program& p, const geo::CameraView& view, int height,
@@ -616,6 +647,15 @@ bool OceanRenderer::windAlongOneBin(double towardsRad, double fieldRotationRad) 
   const double b = OceanPatterns::fieldWind(towardsRad, fieldRotationRad).bin;
   const double f = b - std::floor(b);
   return std::sin(0.5 * std::numbers::pi * std::min(f, 1.0 - f)) < 1e-3;
+}
+
+bool OceanRenderer::drawTargetHasAuxiliary() {
+  GLint fbo = 0, type = GL_NONE;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
+  if (fbo == 0) return false;
+  glGetNamedFramebufferAttachmentParameteriv(static_cast<GLuint>(fbo), GL_COLOR_ATTACHMENT1,
+                                             GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+  return type != GL_NONE;
 }
 
 bool OceanRenderer::drawTargetHasStencil() {
@@ -816,6 +856,34 @@ void OceanRenderer::classesIntoStencil() {
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
+GLuint OceanRenderer::seaRadianceImage(int width, int height) {
+  if (seaRadiance_.id() == 0 || seaRadianceWidth_ != width || seaRadianceHeight_ != height) {
+    seaRadiance_ = gl::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(seaRadiance_.id(), 1, GL_RGBA32F, width, height);
+    seaRadianceWidth_ = width, seaRadianceHeight_ = height;
+  }
+  return seaRadiance_.id();
+}
+
+void OceanRenderer::copySeaRadiance(GLuint target) {
+  if (seaRadianceCopy_.id() == 0)
+    seaRadianceCopy_ = gl::Program(
+        {{GL_VERTEX_SHADER, "render/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_radiance_copy.frag"}});
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
+  glStencilFunc(GL_EQUAL, 1, 0xff);  // the samples with sea
+  glBindTextureUnit(gl::kUnitSeaSurface, seaRadiance_.id());
+  seaRadianceCopy_.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+const gl::Program& OceanRenderer::visibilityProgram() {
+  if (visibilityProgram_.id() == 0)
+    visibilityProgram_ = gl::Program(
+        {{GL_VERTEX_SHADER, "ocean/sea_visibility.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_visibility.frag"}},
+        featureDefines(0));  // (the vertex records' layout needs the patterns' count)
+  return visibilityProgram_;
+}
+
 const gl::Program& OceanRenderer::surfaceProgram(unsigned key) {
   gl::Program& surface = programs().surfaceVariants.at(key);
   if (surface.id() == 0)
@@ -912,7 +980,7 @@ void OceanRenderer::drawGridIndices(const gl::Program& p, const gl::Buffer& indi
 void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int height, const OceanPatterns& patterns,
                                  const ocean::OceanFrame& frame, const OceanLighting& lighting,
                                  double amplitudeScale, const WindTextures& wind, unsigned features,
-                                 const glm::vec4& margin, GLuint depthStencil) {
+                                 const glm::vec4& margin, SeaSurfaceBuffer::DepthStencil depthStencil) {
   if (lighting.landEverywhere) {  // the sea may be hidden by the terrain: ask the lean draw first
     if (timer_ != nullptr) timer_->mark("ocean classify");
     const bool shows = seaShows(view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
@@ -920,14 +988,19 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
     if (!shows) return;
   }
   // The surface pass: with classes where the frame has a floor or a coast to route.
-  const bool classes = lighting.classes && (features & (kFeatureWaterVolume | kFeatureCoastTest)) != 0;
+  const bool classes = surfaceClasses(lighting, features);
   const unsigned surfaceKey = (features & (kFeatureWaterVolume | kFeatureCoastTest)) | (classes ? kSurfaceClasses : 0u);
   unsigned routedShadows = kFeatureShadows;
   const auto prepareSurface = [&](const gl::Program& p) {
     prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
     if (classes) routedShadows = setClassUniforms(p, view, patterns, lighting, amplitudeScale, features);
   };
-  const gl::Program& surface = prepareSurfacePass(surfaceKey, prepareSurface);
+  // A visibility buffer where the sea has one class (multisampled, always: deferredServes).
+  const bool multisampled = depthStencil.samples > 1;
+  const bool visibility = (multisampled || visibilityOneSample_) && !classes;
+  lastSurfaceByVisibility_ = visibility;
+  if (visibility) computeSurfaceVertices(surfaceKey, prepareSurface);
+  const gl::Program& surface = visibility ? visibilityProgram() : prepareSurfacePass(surfaceKey, prepareSurface);
   // With classes the coast test runs only where land may be near, and the water's terms only
   // where a floor may be within reach: the grid in three draws (splitNearLand).
   const gl::Program* open = nullptr;
@@ -948,14 +1021,19 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
   const bool compact = surfaceCompact(surfaceKey);
   lastSurfaceCompact_ = compact;
-  surface_.bindForWriting(width, height, depthStencil, compact);
   const bool exportsStencil = gl::driverProfile().stencilExport;
-  if (!exportsStencil) surface_.clearClasses();
+  if (visibility) {
+    surface_.bindVisibilityForWriting(width, height, depthStencil.texture, depthStencil.samples);
+  } else {
+    surface_.bindForWriting(width, height, depthStencil.texture, compact);
+    if (!exportsStencil) surface_.clearClasses();
+  }
   // Each pixel's class is its nearest fragment's (depth-tested, its values in the buffer).
   glEnable(GL_STENCIL_TEST);
   glStencilMask(0xff);
   glClear(GL_STENCIL_BUFFER_BIT);
-  glStencilFunc(GL_ALWAYS, 0, 0xff);  // the reference is the shader's (gl_FragStencilRefARB)
+  // The reference is the shader's (gl_FragStencilRefARB); the visibility buffer's one class's.
+  glStencilFunc(GL_ALWAYS, visibility ? 1 : 0, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   if (timer_ != nullptr) timer_->mark("ocean surface");
   const bool seaVisible = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] {
@@ -976,23 +1054,30 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   glDisable(GL_DEPTH_TEST);
   glDepthMask(GL_FALSE);
   // The shading: a full-screen pass per class present, only its pixels; or a compute dispatch
-  // into the target's image, which reads the classes where they are.
-  const GLuint image = frameComputeImage_;
+  // into the target's image, which reads the classes where they are. Multisampled, per pixel
+  // into a single-sampled image first (copySeaRadiance).
+  const GLuint image = multisampled ? seaRadianceImage(width, height) : frameComputeImage_;
   lastClassesByCompute_ = image != 0;
-  if (!exportsStencil && seaVisible && image == 0) classesIntoStencil();
+  if (!exportsStencil && !visibility && seaVisible && image == 0) classesIntoStencil();
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glStencilMask(0);
-  surface_.bindForReading();
+  if (visibility) {  // (the triangles' vertices: ocean/sea_visibility.glsl)
+    surface_.bindVisibilityForReading();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridVerticesBinding, gridVertices_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridIndicesBinding, indices_.id());
+  } else {
+    surface_.bindForReading();
+  }
   glBindVertexArray(vao_.id());
   std::optional<ClassDispatches> dispatches;
-  if (image != 0 && seaVisible) dispatches.emplace(image, depthStencil);
+  if (image != 0 && seaVisible) dispatches.emplace(image, visibility ? 0 : depthStencil.texture);
   std::array<unsigned, kSeaClasses> perClass = classFeatures(features, routedShadows);
   if (!classes) perClass.at(0) = features & ~kFeatureCoastTest;  // one class: all but the coast test
   for (std::size_t k = 0; k < kSeaClasses && seaVisible; ++k) {
     if (rows.at(2 * k + 1) < rows.at(2 * k)) continue;  // no pixel of this class
     if (timer_ != nullptr) timer_->mark(kClassPass.at(k));
     if (classes) classesDrawn_ |= 1u << k;
-    const gl::Program& p = deferredProgram(perClass.at(k), image != 0);
+    const gl::Program& p = deferredProgram(perClass.at(k), image != 0, visibility, multisampled);
     prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, perClass.at(k), margin);
     p.use();
     if (dispatches) {
@@ -1008,6 +1093,7 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   }
   dispatches.reset();
   if (timer_ != nullptr) timer_->mark("ocean");
+  if (multisampled && seaVisible) copySeaRadiance(static_cast<GLuint>(target));
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
   glStencilMask(0xff);

@@ -155,6 +155,9 @@ class OceanRenderer {
   /// The default of GPUs without stencil export (computeForFloors_: on there unless OCEANGLOBE_SEA
   /// is set), for tests on llvmpipe with OCEANGLOBE_STENCIL_EXPORT=0.
   void setComputeForFloors(bool on) { computeForFloors_ = on; }
+  /// Whether the last deferred draw wrote a visibility buffer instead of the surface buffer
+  /// (OCEANGLOBE_SEA_SURFACE=visibility, a frame whose sea has one class).
+  [[nodiscard]] bool lastSurfaceByVisibility() const { return lastSurfaceByVisibility_; }
   /// Whether the last deferred draw's surface buffer had the compact layout (SEA_SURFACE_COMPACT).
   [[nodiscard]] bool lastSurfaceCompact() const { return lastSurfaceCompact_; }
   /// Grid cell size in pixels (the paper's ~8 px); smaller = finer geometry, slower.
@@ -258,6 +261,8 @@ class OceanRenderer {
   static bool surfaceCompact(unsigned surfaceKey);
   /// The surface pass's program for `key` (as prepareSurfacePass), compiled on first use.
   const gl::Program& surfaceProgram(unsigned key);
+  /// The visibility buffer's surface pass (ocean/sea_visibility.vert/.frag), compiled on first use.
+  const gl::Program& visibilityProgram();
   /// The grid's index list split in three copies by ocean/grid_near_land.comp (after the surface
   /// pass's vertices): nearLandIndices_ with only the triangles where land may be near (the others
   /// degenerate), floorIndices_ with the others that have a floor within the water's reach, and
@@ -301,11 +306,12 @@ class OceanRenderer {
   /// into the stencil; then each class present is shaded by a full-screen pass of its program
   /// (ocean.frag with OCEAN_DEFERRED), stencil-tested: every pixel is shaded once, where the
   /// grid's own fragments shade the blocks along every triangle's edges twice on llvmpipe.
-  /// `depthStencil`: the bound framebuffer's (SeaSurfaceBuffer::boundDepthStencilTexture). The
-  /// stencil is left 0.
+  /// `depthStencil`: the bound framebuffer's (SeaSurfaceBuffer::boundDepthStencil;
+  /// multisampled, the visibility buffer's frames only: deferredServes). The stencil is left 0.
   void drawDeferred(const geo::CameraView& view, int width, int height, const OceanPatterns& patterns,
                     const ocean::OceanFrame& frame, const OceanLighting& lighting, double amplitudeScale,
-                    const WindTextures& wind, unsigned features, const glm::vec4& margin, GLuint depthStencil);
+                    const WindTextures& wind, unsigned features, const glm::vec4& margin,
+                    SeaSurfaceBuffer::DepthStencil depthStencil);
   /// Sets the classifying uniforms of sea_class.glsl on `p`; returns the shadows routed to
   /// classes (kFeatureShadows or 0).
   unsigned setClassUniforms(const gl::Program& p, const geo::CameraView& view, const OceanPatterns& patterns,
@@ -367,7 +373,16 @@ class OceanRenderer {
   /// The deferred sea's shading program for `features` (coast test excluded), compiled on first
   /// use: a full-screen fragment pass, or with `compute` ocean.frag as a compute shader
   /// (OCEAN_COMPUTE: ClassDispatches).
-  const gl::Program& deferredProgram(unsigned features, bool compute);
+  /// With `visibility` (and `compute`), the pixels' values from the visibility buffer
+  /// (SEA_VISIBILITY: ocean/sea_visibility.glsl).
+  /// (`multisampled`: SEA_VISIBILITY_MULTISAMPLE, a fragment pass).
+  const gl::Program& deferredProgram(unsigned features, bool compute, bool visibility = false,
+                                     bool multisampled = false);
+  /// Whether the frame's surface pass writes the sea's classes (a floor or a coast to route).
+  [[nodiscard]] static bool surfaceClasses(const OceanLighting& lighting, unsigned features);
+  /// Whether a frame may be drawn deferred over a depth-stencil texture of `samples` a pixel
+  /// (its sea with `classes` or not; `computeFloors`: computeForFloors_'s frame).
+  [[nodiscard]] bool deferredServes(int samples, bool classes, bool computeFloors) const;
   /// The texture of framebuffer `target`'s colour if compute shaders can write it (a
   /// single-sampled RGBA32F texture, no auxiliary channels), else 0.
   [[nodiscard]] static GLuint computeImageOf(GLuint target);
@@ -403,6 +418,15 @@ class OceanRenderer {
                                            double* casterHeightM = nullptr);
   /// Whether the bound draw framebuffer has a stencil buffer.
   [[nodiscard]] static bool drawTargetHasStencil();
+  /// Whether the bound draw framebuffer has --aov's second colour attachment.
+  [[nodiscard]] static bool drawTargetHasAuxiliary();
+  /// A multisampled deferred frame's single-sampled sea radiance, for its compute shading
+  /// (seaRadiance_, `width` x `height`, made on first use; a full-screen pass per pixel cost
+  /// llvmpipe twice as much, every pixel shaded: docs/performance.md, "Thirty-fifth session").
+  GLuint seaRadianceImage(int width, int height);
+  /// Binds `target` and writes seaRadiance_ into its samples with sea (the stencil's class 1:
+  /// ocean/sea_radiance_copy.frag).
+  void copySeaRadiance(GLuint target);
 
   static constexpr unsigned kFeatureWaterVolume = 1, kFeatureCoastTest = 2, kFeatureShadows = 4;
   /// The sky maps' frame layer alone (Atmosphere::prepareFrameSkyLayer) instead of two layers
@@ -428,6 +452,20 @@ class OceanRenderer {
   /// for GPUs whose pixel shaders are few (the H200's: docs/performance.md, "Thirty-second session");
   /// slower on llvmpipe (sea-4m's open sea 105 -> 175 ms of one thread).
   bool computeShading_;
+  /// Where a deferred frame's sea has one class, the surface pass writes each pixel's grid
+  /// triangle alone (a visibility buffer, ocean/sea_visibility.frag) and the shading
+  /// interpolates the triangle's vertices (OCEANGLOBE_SEA_SURFACE=visibility): with one sample
+  /// a pixel only when asked (on llvmpipe sea-4m's surface pass 37 -> 12 ms of one thread, its
+  /// shading 106 -> 139: docs/performance.md, "Thirty-fifth session"; the H200 not measured).
+  bool visibilityOneSample_;
+  /// The same in multisampled frames, which otherwise draw the sea forward: each pixel shaded
+  /// once, its radiance written to its samples with sea. By default as the driver profile says
+  /// (gl::DriverProfile::multisampledSeaByVisibility: llvmpipe), or asked.
+  bool visibilityMultisample_;
+  gl::Program visibilityProgram_;  ///< ocean/sea_visibility.vert/.frag; id() 0 until first used
+  gl::Texture seaRadiance_;  ///< seaRadianceImage's
+  int seaRadianceWidth_ = 0, seaRadianceHeight_ = 0;
+  gl::Program seaRadianceCopy_;    ///< ocean/sea_radiance_copy.frag; id() 0 until first used
   /// A forward frame with a floor or a coast to route draws the grid's triangles in three
   /// classes (drawForwardSplit), each program with only what they need, where the pixels cannot
   /// be classed (that needs stencil export): by default without stencil export (NVIDIA's: its
@@ -456,8 +494,9 @@ class OceanRenderer {
   struct PatternPrograms {
     std::array<gl::Program, 64> variants;    ///< by feature bits
     gl::Program classify;                    ///< ocean/sea_classify.frag
-    std::array<gl::Program, 16> deferredVariants;  ///< ocean.frag OCEAN_DEFERRED, by feature bits
-    std::array<gl::Program, 16> deferredComputeVariants;  ///< the same with OCEAN_COMPUTE
+    /// ocean.frag OCEAN_DEFERRED, by feature bits, + 16 with OCEAN_COMPUTE, + 32 with
+    /// SEA_VISIBILITY, + 64 with SEA_VISIBILITY_MULTISAMPLE
+    std::array<gl::Program, 128> deferredVariants;
     std::array<gl::Program, 8> surfaceVariants;    ///< sea_surface.frag: volume, coast, classes bits
     std::array<gl::Program, 8> gridComputeVariants;  ///< grid_vertices.comp, as surfaceVariants
     /// grid_vertices.comp with the radiance terms, by feature bits (kFeatureRadianceTerms's aside)
@@ -484,6 +523,7 @@ class OceanRenderer {
   bool lastForwardSplit_ = false;  ///< lastDrawForwardSplit
   bool lastClassesByCompute_ = false;  ///< lastClassesByCompute
   bool lastSurfaceCompact_ = false;
+  bool lastSurfaceByVisibility_ = false;  ///< lastSurfaceByVisibility
   unsigned classesDrawn_ = 0;  ///< classesDrawn()
   bool countClassSamples_ = false;
   std::array<std::uint64_t, kSeaClasses> classSamples_{};

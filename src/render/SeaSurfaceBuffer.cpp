@@ -1,5 +1,6 @@
 #include "render/SeaSurfaceBuffer.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cassert>
 
@@ -8,18 +9,18 @@
 
 namespace og::render {
 
-GLuint SeaSurfaceBuffer::boundDepthStencilTexture() {
+SeaSurfaceBuffer::DepthStencil SeaSurfaceBuffer::boundDepthStencil() {
   GLint fbo = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
-  if (fbo == 0) return 0;
+  if (fbo == 0) return {};
   const auto name = static_cast<GLuint>(fbo);
   GLint type = GL_NONE, object = 0;
   glGetNamedFramebufferAttachmentParameteriv(name, GL_DEPTH_STENCIL_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
-  if (type != GL_TEXTURE) return 0;
+  if (type != GL_TEXTURE) return {};
   glGetNamedFramebufferAttachmentParameteriv(name, GL_DEPTH_STENCIL_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &object);
   GLint samples = 0;
   glGetTextureLevelParameteriv(static_cast<GLuint>(object), 0, GL_TEXTURE_SAMPLES, &samples);
-  return samples <= 1 ? static_cast<GLuint>(object) : 0;
+  return {static_cast<GLuint>(object), std::max(samples, 1)};
 }
 
 void SeaSurfaceBuffer::bindForWriting(int width, int height, GLuint depthStencil, bool compact) {
@@ -38,14 +39,41 @@ void SeaSurfaceBuffer::bindForWriting(int width, int height, GLuint depthStencil
     width_ = width, height_ = height, depthStencil_ = 0, drawBuffers_ = 0, allocated_ = layers;
   }
   drawLayers(compact);
-  if (depthStencil != depthStencil_) {
-    glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depthStencil, 0);
-    depthStencil_ = depthStencil;
-    if (glCheckNamedFramebufferStatus(fbo_.id(), GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-      throw InternalError("SeaSurfaceBuffer: the surface buffer's framebuffer is incomplete");
-  }
+  attachDepthStencil(fbo_, depthStencil, &depthStencil_);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_.id());
 }
+
+void SeaSurfaceBuffer::attachDepthStencil(const gl::Framebuffer& fbo, GLuint depthStencil, GLuint* attached) {
+  if (depthStencil == *attached) return;
+  glNamedFramebufferTexture(fbo.id(), GL_DEPTH_STENCIL_ATTACHMENT, depthStencil, 0);
+  *attached = depthStencil;
+  if (glCheckNamedFramebufferStatus(fbo.id(), GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw InternalError("SeaSurfaceBuffer: the surface buffer's framebuffer is incomplete");
+}
+
+void SeaSurfaceBuffer::bindVisibilityForWriting(int width, int height, GLuint depthStencil, int samples) {
+  if (width != visibilityWidth_ || height != visibilityHeight_ || samples != visibilitySamples_ ||
+      visibility_.id() == 0) {
+    if (samples > 1) {  // (fixed sample locations, as gl::createRenderTarget's depth)
+      visibility_ = gl::createTexture(GL_TEXTURE_2D_MULTISAMPLE);
+      glTextureStorage2DMultisample(visibility_.id(), samples, GL_R32UI, width, height, GL_TRUE);
+    } else {
+      visibility_ = gl::createTexture(GL_TEXTURE_2D);
+      glTextureStorage2D(visibility_.id(), 1, GL_R32UI, width, height);
+      glTextureParameteri(visibility_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTextureParameteri(visibility_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    visibilityFbo_ = gl::createFramebuffer();
+    glNamedFramebufferTexture(visibilityFbo_.id(), GL_COLOR_ATTACHMENT0, visibility_.id(), 0);
+    visibilityWidth_ = width, visibilityHeight_ = height, visibilitySamples_ = samples, visibilityDepthStencil_ = 0;
+  }
+  attachDepthStencil(visibilityFbo_, depthStencil, &visibilityDepthStencil_);
+  const std::array<GLuint, 4> none{};
+  glClearNamedFramebufferuiv(visibilityFbo_.id(), GL_COLOR, 0, none.data());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, visibilityFbo_.id());
+}
+
+void SeaSurfaceBuffer::bindVisibilityForReading() const { glBindTextureUnit(gl::kUnitSeaSurface, visibility_.id()); }
 
 void SeaSurfaceBuffer::drawLayers(bool compact) {
   assert(compact || allocated_ == kLayers);  // (the full layout's layers made by bindForWriting)

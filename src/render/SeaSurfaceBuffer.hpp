@@ -16,9 +16,13 @@ class SeaSurfaceBuffer {
   /// stencil, or in layer 0's footprint bits), the draw buffers beyond them off.
   static constexpr int kCompactLayers = 4;
 
-  /// The single-sampled 2D depth-stencil texture attached to the bound draw framebuffer, 0
-  /// where it has none (the default framebuffer, a renderbuffer, a multisample texture).
-  [[nodiscard]] static GLuint boundDepthStencilTexture();
+  /// The depth-stencil texture attached to the bound draw framebuffer and its samples a pixel
+  /// (1: a 2D texture); texture 0 where it has none (the default framebuffer, a renderbuffer).
+  struct DepthStencil {
+    GLuint texture = 0;
+    int samples = 1;
+  };
+  [[nodiscard]] static DepthStencil boundDepthStencil();
   /// Makes the buffer `width` x `height` over `depthStencil` (boundDepthStencilTexture) and binds
   /// its framebuffer with the kLayers draw buffers (kCompactLayers when `compact`); remade only
   /// when the size or the depth-stencil texture changes, or when the first frame without the
@@ -34,13 +38,27 @@ class SeaSurfaceBuffer {
   /// Binds the texture to gl::kUnitSeaSurface for the shading passes.
   void bindForReading() const;
 
+  /// The visibility buffer instead (ocean/sea_visibility.glsl): an R32UI texture, each
+  /// sample's grid triangle + 1, over `depthStencil` (of `samples` a pixel: a multisample
+  /// texture beyond 1) as bindForWriting; cleared to 0 (no sea) and bound.
+  void bindVisibilityForWriting(int width, int height, GLuint depthStencil, int samples = 1);
+  /// Binds the visibility texture to gl::kUnitSeaSurface for the shading's compute pass.
+  void bindVisibilityForReading() const;
+
  private:
+  /// Attaches `depthStencil` to `fbo` unless it is `*attached` already; checks completeness.
+  static void attachDepthStencil(const gl::Framebuffer& fbo, GLuint depthStencil, GLuint* attached);
+
   gl::Texture layers_;
   gl::Framebuffer fbo_;
   int width_ = 0, height_ = 0;
   GLuint depthStencil_ = 0;
   int drawBuffers_ = 0;
   int allocated_ = 0;  ///< layers of layers_: kCompactLayers until a frame wants them all, then kLayers
+  gl::Texture visibility_;  ///< bindVisibilityForWriting's, made on first use
+  gl::Framebuffer visibilityFbo_;
+  int visibilityWidth_ = 0, visibilityHeight_ = 0, visibilitySamples_ = 0;
+  GLuint visibilityDepthStencil_ = 0;
 };
 
 }  // namespace og::render
