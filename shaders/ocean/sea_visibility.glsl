@@ -3,18 +3,30 @@
 // nearest grid triangle (ocean/sea_visibility.frag: gl_PrimitiveID + 1, 0 where no sea), and
 // the shading's compute pass interpolates that triangle's three vertex records (ocean/
 // grid_vertex_buffer.glsl) at the pixel's centre itself, perspective-correct as the rasteriser
-// does the surface pass's inputs. For GPUs whose pixel shaders are few (the H200's graphics
-// run on 2 of its 66 TPCs: docs/performance.md, "Thirty-fifth session"): the surface pass's
-// fragments interpolate nothing and write 4 bytes instead of 64; the compute pass reads 21-30
-// vec4s a pixel instead of 4-6 (on llvmpipe a loss: "Thirty-fourth session").
+// does the surface pass's inputs: the surface pass's fragments interpolate nothing and write 4
+// bytes instead of 64, the shading reads 21-30 vec4s a pixel instead of 4-6 (on llvmpipe
+// sea-4m's surface pass 37 -> 12 ms of one thread, its shading unchanged; for GPUs whose pixel
+// shaders are few, the H200's run on 2 of its 66 TPCs: docs/performance.md, "Thirty-fifth
+// session"). Only where the frame has no coast test (the surface pass's).
 // SEA_VISIBILITY_MULTISAMPLE (compute shaders only): a triangle a sample (a multisampled
 // frame), each pixel shaded once from its first sample with sea into a single-sampled image,
 // then written to those samples (ocean/sea_radiance_copy.frag, the stencil's class per sample)
 // as a forward draw's fragment is written to the samples its triangle covers.
 // Needs (included first): ocean/sea_surface.glsl's deferred part (uSeaSurface, SEA_SURFACE_SIZE,
 // seaRayDirection, SEA_CLASS_BITS, floorDepthSlopeOf) and ocean/ocean.frag's globals.
-#include "ocean/grid_vertex_buffer.glsl"
-layout(std430, binding = 5) readonly buffer GridIndices { uint gridIndices[]; };  // OceanRenderer::kGridIndicesBinding
+#include "ocean/grid_vertex_buffer.glsl"  // (unpackGridVertex; its storage buffer unread here)
+// The grid's vertex records (ocean/grid_vertex_buffer.glsl's layout) and index list, as buffer
+// textures: llvmpipe loads a storage buffer's values lane by lane where the pixels' addresses
+// differ, a texel fetch for all lanes at once (sea-4m's shading at 1280 x 720: 139 -> 106 ms of
+// one thread; docs/performance.md, "Thirty-fifth session").
+layout(binding = OG_UNIT_SEA_GRID_VERTICES) uniform samplerBuffer uGridVertexTexels;
+layout(binding = OG_UNIT_SEA_GRID_INDICES) uniform usamplerBuffer uGridIndexTexels;
+
+// Triangle `triangle`'s corner `k`'s record.
+void gridCornerRecord(uint triangle, int k, out vec4 r[GRID_VERTEX_VEC4S]) {
+  int at = int(texelFetch(uGridIndexTexels, int(3u * triangle) + k).r) * GRID_VERTEX_VEC4S;
+  for (int i = 0; i < GRID_VERTEX_VEC4S; ++i) r[i] = texelFetch(uGridVertexTexels, at + i);
+}
 
 // The weights (summing to 1) of the clip-space corners c[0..2] whose weighted point projects to
 // the normalised device position `ndc`: the perspective-correct barycentrics a rasteriser
@@ -49,9 +61,9 @@ void readSeaSurface(out float footprintM, out vec2 floorSlope) {
   ivec2 p = SEA_PIXEL;  // (ocean/ocean.frag)
   uint triangle = seaVisibilityAt(p) - 1u;
   vec4 r0[GRID_VERTEX_VEC4S], r1[GRID_VERTEX_VEC4S], r2[GRID_VERTEX_VEC4S];
-  gridVertexRecord(int(gridIndices[3u * triangle]), r0);
-  gridVertexRecord(int(gridIndices[3u * triangle + 1u]), r1);
-  gridVertexRecord(int(gridIndices[3u * triangle + 2u]), r2);
+  gridCornerRecord(triangle, 0, r0);
+  gridCornerRecord(triangle, 1, r1);
+  gridCornerRecord(triangle, 2, r2);
   vec2 size = vec2(SEA_SURFACE_SIZE);
   vec4 corners[3] = vec4[3](r0[0], r1[0], r2[0]);
   vec3 b = clipBarycentrics(corners, pixelNdc(p, size));

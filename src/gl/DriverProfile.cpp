@@ -18,7 +18,7 @@ DriverProfile makeDriverProfile(std::string_view renderer, float deviceMaxAnisot
   p.timestampsTimeWork = !p.software;
   p.cpuWaveFft = p.software;
   p.multisampleShadesEveryBlock = p.software;
-  p.multisampledSeaByVisibility = p.software;
+  p.seaByVisibility = p.software;
   return p;
 }
 

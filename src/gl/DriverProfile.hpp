@@ -33,12 +33,13 @@ struct DriverProfile {
   /// parts only where a query found samples and over the blocks that may hold it. On software
   /// renderers; OCEANGLOBE_MSAA_PART_BLOCKS=1 or 0 overrides (to measure a GPU with them).
   bool multisampleShadesEveryBlock = false;
-  /// A multisampled frame's open sea deferred through a multisampled visibility buffer, shaded
-  /// once a pixel by compute shaders (render/OceanRenderer, docs/ocean.md), instead of forward:
-  /// on software renderers (llvmpipe: sea-4m with 4 samples 280 -> 221 ms at 1280x720,
-  /// docs/performance.md, "Thirty-fifth session"); on GPUs when measured.
-  /// OCEANGLOBE_SEA_SURFACE=visibility or buffer overrides.
-  bool multisampledSeaByVisibility = false;
+  /// The deferred open sea (one class) through a visibility buffer, its vertices read by the
+  /// shading, and multisampled frames' open sea deferred through it too (shaded once a pixel by
+  /// compute shaders) instead of forward (render/OceanRenderer, docs/ocean.md): on software
+  /// renderers (llvmpipe at 1280x720, sea-4m's surface pass 37 -> 12 ms of one thread; with 4
+  /// samples the frame 280 -> 221 ms: docs/performance.md, "Thirty-fifth session"); on GPUs
+  /// when measured. OCEANGLOBE_SEA_SURFACE=visibility or buffer overrides.
+  bool seaByVisibility = false;
 };
 
 /// Whether a GL_RENDERER string names a software renderer: the one list of their names.

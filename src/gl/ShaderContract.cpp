@@ -59,6 +59,8 @@ std::vector<std::string> contractDefines() {
           define("OG_UNIT_SEA_LATTICE", kUnitSeaLattice),
           define("OG_UNIT_SEA_LATTICE_BLOCKS", kUnitSeaLatticeBlocks),
           define("OG_UNIT_SEA_STENCIL", kUnitSeaStencil),
+          define("OG_UNIT_SEA_GRID_VERTICES", kUnitSeaGridVertices),
+          define("OG_UNIT_SEA_GRID_INDICES", kUnitSeaGridIndices),
           define("OG_UNIT_SKY_LOW", kUnitSkyLow),
           define("OG_UNIT_AERIAL_TABLE", kUnitAerialTable),
           define("OG_UNIT_TERRAIN_AERIAL_TABLE", kUnitTerrainAerialTable),

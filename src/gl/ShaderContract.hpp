@@ -42,6 +42,11 @@ enum TextureUnit : unsigned {
   kUnitSeaLattice = 29,          ///< render/sea_lattice.frag uLattice (render/SeaLattice)
   kUnitSeaLatticeBlocks = 30,    ///< render/sea_lattice.frag uBlockInterpolated
   kUnitSeaStencil = 31,          ///< ocean/ocean.frag OCEAN_COMPUTE uSeaStencil: the classes (OceanRenderer::drawDeferred)
+  // The visibility buffer's shading (ocean/sea_visibility.glsl), whose passes read neither
+  // uSeaStencil nor the globe's lattice: the grid's vertex records and index list as buffer
+  // textures (OceanRenderer::drawDeferred).
+  kUnitSeaGridVertices = 31,     ///< uGridVertexTexels
+  kUnitSeaGridIndices = 30,      ///< uGridIndexTexels
   // Passes of their own, which bind nothing else, reuse unit 0:
   kUnitToneRadiance = 0,         ///< render/tonemap.frag uRadiance (the HDR target)
   kUnitOverlayText = 0,          ///< viewer/text.frag uText (the viewer's text overlay)

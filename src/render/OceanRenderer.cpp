@@ -142,7 +142,7 @@ std::string seaPathAsked() {
 // OCEANGLOBE_SEA_SURFACE: what the deferred sea's surface pass writes where the frame's sea has
 // one class: "buffer" (the surface buffer; multisampled frames then draw the sea forward) or
 // "visibility" (each pixel's grid triangle, ocean/sea_visibility.glsl, at any sample count);
-// unset (""), the driver profile's choice (gl::DriverProfile::multisampledSeaByVisibility).
+// unset (""), the driver profile's choice (gl::DriverProfile::seaByVisibility).
 std::string seaSurfaceAsked() {
   const char* e = std::getenv("OCEANGLOBE_SEA_SURFACE");
   const std::string asked = e != nullptr ? e : "";
@@ -165,9 +165,7 @@ OceanRenderer::OceanRenderer(const Atmosphere* atmosphere, ValidationMode mode)
       deferred_(deferredAllowed()),
       deferredWithoutExport_(seaPathAsked() == "deferred" || seaPathAsked() == "compute"),
       computeShading_(seaPathAsked() == "compute"),
-      visibilityOneSample_(seaSurfaceAsked() == "visibility"),
-      visibilityMultisample_(seaSurfaceAsked() == "visibility" ||
-                             (seaSurfaceAsked().empty() && gl::driverProfile().multisampledSeaByVisibility)),
+      visibility_(seaSurfaceAsked() == "visibility" || (seaSurfaceAsked().empty() && gl::driverProfile().seaByVisibility)),
       forwardSplit_(seaPathAsked() == "split" || (seaPathAsked().empty() && !gl::driverProfile().stencilExport)),
       computeForFloors_(seaPathAsked().empty() && !gl::driverProfile().software && !gl::driverProfile().stencilExport),
       vao_(gl::createVertexArray()),
@@ -563,7 +561,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
   } else if (const SeaSurfaceBuffer::DepthStencil depthStencil =
                  deferred_ ? SeaSurfaceBuffer::boundDepthStencil() : SeaSurfaceBuffer::DepthStencil{};
              deferred_ && mode_ == ValidationMode::Filtered && frameCellPixels_ < kDeferredMaxCellPixels &&
-             depthStencil.texture != 0 && deferredServes(depthStencil.samples, surfaceClasses(lighting, features), computeFloors)) {
+             depthStencil.texture != 0 && deferredServes(depthStencil.samples, features, surfaceClasses(lighting, features), computeFloors)) {
     lastDeferred_ = true;
     drawDeferred(view, width, height, patterns, frame, lighting, amplitudeScale, wind, features, margin, depthStencil);
   } else if (classified) {  // sea_classify.frag
@@ -596,11 +594,24 @@ bool OceanRenderer::surfaceClasses(const OceanLighting& lighting, unsigned featu
   return lighting.classes && (features & (kFeatureWaterVolume | kFeatureCoastTest)) != 0;
 }
 
-bool OceanRenderer::deferredServes(int samples, bool classes, bool computeFloors) const {
+bool OceanRenderer::deferredServes(int samples, unsigned features, bool classes, bool computeFloors) const {
   // Multisampled: only by the visibility buffer (one class: a sample's class is its triangle's),
   // without --aov's channels (copySeaRadiance writes the radiance alone).
-  if (samples > 1) return visibilityMultisample_ && !classes && !drawTargetHasAuxiliary();
-  return gl::driverProfile().stencilExport || deferredWithoutExport_ || computeFloors || (visibilityOneSample_ && !classes);
+  if (samples > 1) return visibilityServes(features, classes) && !drawTargetHasAuxiliary();
+  return gl::driverProfile().stencilExport || deferredWithoutExport_ || computeFloors || visibilityServes(features, classes);
+}
+
+bool OceanRenderer::visibilityServes(unsigned features, bool classes) const {
+  // (The coast test is the surface pass's, which the visibility buffer's has not.)
+  if (!visibility_ || classes || (features & kFeatureCoastTest) != 0) return false;
+  static const GLint maxTexels = [] {
+    GLint n = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &n);
+    return n;
+  }();
+  // The vertex records as one buffer texture (bindGridTexels; GL guarantees 65536 texels,
+  // drivers offer 2^27).
+  return static_cast<std::int64_t>(gridColumns_) * gridRows_ * kGridVertexVec4s <= maxTexels;
 }
 
 void OceanRenderer::prepare(const gl::Program& p, const geo::CameraView& view, int height,
@@ -856,6 +867,18 @@ void OceanRenderer::classesIntoStencil() {
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
+void OceanRenderer::bindGridTexels() {
+  if (gridVertexTexels_.id() == 0) {
+    gridVertexTexels_ = gl::createTexture(GL_TEXTURE_BUFFER);
+    gridIndexTexels_ = gl::createTexture(GL_TEXTURE_BUFFER);
+  }
+  // (Re-pointed each frame: ensureBufferCapacity and ensureGrid may have made new buffers.)
+  glTextureBuffer(gridVertexTexels_.id(), GL_RGBA32F, gridVertices_.id());
+  glTextureBuffer(gridIndexTexels_.id(), GL_R32UI, indices_.id());
+  glBindTextureUnit(gl::kUnitSeaGridVertices, gridVertexTexels_.id());
+  glBindTextureUnit(gl::kUnitSeaGridIndices, gridIndexTexels_.id());
+}
+
 GLuint OceanRenderer::seaRadianceImage(int width, int height) {
   if (seaRadiance_.id() == 0 || seaRadianceWidth_ != width || seaRadianceHeight_ != height) {
     seaRadiance_ = gl::createTexture(GL_TEXTURE_2D);
@@ -995,9 +1018,10 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
     prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
     if (classes) routedShadows = setClassUniforms(p, view, patterns, lighting, amplitudeScale, features);
   };
-  // A visibility buffer where the sea has one class (multisampled, always: deferredServes).
+  // A visibility buffer where the sea has one class (multisampled frames come only so:
+  // deferredServes).
   const bool multisampled = depthStencil.samples > 1;
-  const bool visibility = (multisampled || visibilityOneSample_) && !classes;
+  const bool visibility = visibilityServes(features, classes);
   lastSurfaceByVisibility_ = visibility;
   if (visibility) computeSurfaceVertices(surfaceKey, prepareSurface);
   const gl::Program& surface = visibility ? visibilityProgram() : prepareSurfacePass(surfaceKey, prepareSurface);
@@ -1063,8 +1087,7 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   glStencilMask(0);
   if (visibility) {  // (the triangles' vertices: ocean/sea_visibility.glsl)
     surface_.bindVisibilityForReading();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridVerticesBinding, gridVertices_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridIndicesBinding, indices_.id());
+    bindGridTexels();
   } else {
     surface_.bindForReading();
   }

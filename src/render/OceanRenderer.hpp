@@ -380,9 +380,13 @@ class OceanRenderer {
                                      bool multisampled = false);
   /// Whether the frame's surface pass writes the sea's classes (a floor or a coast to route).
   [[nodiscard]] static bool surfaceClasses(const OceanLighting& lighting, unsigned features);
-  /// Whether a frame may be drawn deferred over a depth-stencil texture of `samples` a pixel
-  /// (its sea with `classes` or not; `computeFloors`: computeForFloors_'s frame).
-  [[nodiscard]] bool deferredServes(int samples, bool classes, bool computeFloors) const;
+  /// Whether a frame of `features` may be drawn deferred over a depth-stencil texture of
+  /// `samples` a pixel (its sea with `classes` or not; `computeFloors`: computeForFloors_'s frame).
+  [[nodiscard]] bool deferredServes(int samples, unsigned features, bool classes, bool computeFloors) const;
+  /// Whether a frame's deferred sea (`features`, with `classes` or not) goes through the
+  /// visibility buffer: visibility_, one class, no coast test, the grid's records within a
+  /// buffer texture.
+  [[nodiscard]] bool visibilityServes(unsigned features, bool classes) const;
   /// The texture of framebuffer `target`'s colour if compute shaders can write it (a
   /// single-sampled RGBA32F texture, no auxiliary channels), else 0.
   [[nodiscard]] static GLuint computeImageOf(GLuint target);
@@ -424,6 +428,9 @@ class OceanRenderer {
   /// (seaRadiance_, `width` x `height`, made on first use; a full-screen pass per pixel cost
   /// llvmpipe twice as much, every pixel shaded: docs/performance.md, "Thirty-fifth session").
   GLuint seaRadianceImage(int width, int height);
+  /// Binds gridVertices_ and indices_ as the buffer textures the visibility buffer's shading
+  /// reads (gl::kUnitSeaGridVertices, kUnitSeaGridIndices).
+  void bindGridTexels();
   /// Binds `target` and writes seaRadiance_ into its samples with sea (the stencil's class 1:
   /// ocean/sea_radiance_copy.frag).
   void copySeaRadiance(GLuint target);
@@ -454,16 +461,14 @@ class OceanRenderer {
   bool computeShading_;
   /// Where a deferred frame's sea has one class, the surface pass writes each pixel's grid
   /// triangle alone (a visibility buffer, ocean/sea_visibility.frag) and the shading
-  /// interpolates the triangle's vertices (OCEANGLOBE_SEA_SURFACE=visibility): with one sample
-  /// a pixel only when asked (on llvmpipe sea-4m's surface pass 37 -> 12 ms of one thread, its
-  /// shading 106 -> 139: docs/performance.md, "Thirty-fifth session"; the H200 not measured).
-  bool visibilityOneSample_;
-  /// The same in multisampled frames, which otherwise draw the sea forward: each pixel shaded
-  /// once, its radiance written to its samples with sea. By default as the driver profile says
-  /// (gl::DriverProfile::multisampledSeaByVisibility: llvmpipe), or asked.
-  bool visibilityMultisample_;
+  /// interpolates the triangle's vertices; multisampled frames' open sea, otherwise forward,
+  /// goes deferred so too, each pixel shaded once by compute shaders and its radiance written
+  /// to its samples with sea. As the driver profile says (gl::DriverProfile::seaByVisibility:
+  /// llvmpipe), or OCEANGLOBE_SEA_SURFACE.
+  bool visibility_;
   gl::Program visibilityProgram_;  ///< ocean/sea_visibility.vert/.frag; id() 0 until first used
   gl::Texture seaRadiance_;  ///< seaRadianceImage's
+  gl::Texture gridVertexTexels_, gridIndexTexels_;  ///< bindGridTexels's views of the buffers
   int seaRadianceWidth_ = 0, seaRadianceHeight_ = 0;
   gl::Program seaRadianceCopy_;    ///< ocean/sea_radiance_copy.frag; id() 0 until first used
   /// A forward frame with a floor or a coast to route draws the grid's triangles in three

@@ -21,7 +21,7 @@ TEST(DriverProfile, SoftwareRenderersGetTheCheapPaths) {
     EXPECT_EQ(p.maxAnisotropy, 1.0f) << name;
     EXPECT_FALSE(p.timestampsTimeWork) << name;
     EXPECT_TRUE(p.multisampleShadesEveryBlock) << name;
-    EXPECT_TRUE(p.multisampledSeaByVisibility) << name;
+    EXPECT_TRUE(p.seaByVisibility) << name;
   }
   const og::gl::DriverProfile gpu = makeDriverProfile("NVIDIA GeForce RTX 4090/PCIe/SSE2", 16.0f);
   EXPECT_FALSE(gpu.software);
@@ -29,7 +29,7 @@ TEST(DriverProfile, SoftwareRenderersGetTheCheapPaths) {
   EXPECT_EQ(gpu.maxAnisotropy, 16.0f);
   EXPECT_TRUE(gpu.timestampsTimeWork);
   EXPECT_FALSE(gpu.multisampleShadesEveryBlock);
-  EXPECT_FALSE(gpu.multisampledSeaByVisibility);  // (until measured on one)
+  EXPECT_FALSE(gpu.seaByVisibility);  // (until measured on one)
   EXPECT_EQ(makeDriverProfile("AMD Radeon", 0.0f).maxAnisotropy, 1.0f);  // no anisotropy offered
 }
 
