@@ -18,13 +18,25 @@ const int GRID_VERTEX_VEC4S = 10;  // render/OceanRenderer::kGridVertexVec4s
 #else
 #define GRID_BUFFER_ACCESS readonly
 #endif
-layout(std430, binding = 4) GRID_BUFFER_ACCESS buffer GridVertices { vec4 gridVertices[]; };  // kGridVerticesBinding
+// Written as storage buffers, read as buffer textures (OceanRenderer::computeGridVertices binds
+// them: gl::kUnitSeaGridVertices, kUnitSeaGridTerms): llvmpipe loads a storage buffer's values
+// lane by lane where the lanes' addresses differ, a texel fetch for all lanes at once
+// (docs/performance.md, "Thirty-fifth session").
+#ifdef GRID_VERTEX_STORE
+layout(std430, binding = 4) writeonly buffer GridVertices { vec4 gridVertices[]; };  // kGridVerticesBinding
+#else
+layout(binding = OG_UNIT_SEA_GRID_VERTICES) uniform samplerBuffer uGridVertexTexels;
+#endif
 #ifdef OCEAN_RADIANCE_TERMS
 // The vertices' radiance terms (vRadianceTerms, SEA_RADIANCE_VEC4S each), for the forward draw of
 // large cells (render/OceanRenderer::draw, computeGridVertices).
+#ifdef GRID_VERTEX_STORE
 // Binding 7 as grid_near_land.comp's NearLandIndices (GL 4.5 guarantees bindings 0-7; each pass
 // binds its own buffer there).
-layout(std430, binding = 7) GRID_BUFFER_ACCESS buffer GridRadianceTerms { vec4 gridRadianceTerms[]; };  // kGridRadianceTermsBinding
+layout(std430, binding = 7) writeonly buffer GridRadianceTerms { vec4 gridRadianceTerms[]; };  // kGridRadianceTermsBinding
+#else
+layout(binding = OG_UNIT_SEA_GRID_TERMS) uniform samplerBuffer uGridRadianceTermsTexels;
+#endif
 #endif
 #ifdef OCEAN_SEA_CLASSIFY
 // Each vertex's vNearLand > 0 (bit 0) and its floor within the water's reach (bit 1) again,
@@ -111,7 +123,7 @@ void unpackGridVertex(vec4 r[GRID_VERTEX_VEC4S]) {
 
 // Vertex i's record.
 void gridVertexRecord(int i, out vec4 r[GRID_VERTEX_VEC4S]) {
-  for (int k = 0; k < GRID_VERTEX_VEC4S; ++k) r[k] = gridVertices[i * GRID_VERTEX_VEC4S + k];
+  for (int k = 0; k < GRID_VERTEX_VEC4S; ++k) r[k] = texelFetch(uGridVertexTexels, i * GRID_VERTEX_VEC4S + k);
 }
 
 // Vertex i's outputs from the buffer; returns its clip-space position.
@@ -120,7 +132,7 @@ vec4 loadGridVertex(int i) {
   gridVertexRecord(i, r);
   unpackGridVertex(r);
 #ifdef OCEAN_RADIANCE_TERMS
-  for (int k = 0; k < SEA_RADIANCE_VEC4S; ++k) vRadianceTerms[k] = gridRadianceTerms[i * SEA_RADIANCE_VEC4S + k];
+  for (int k = 0; k < SEA_RADIANCE_VEC4S; ++k) vRadianceTerms[k] = texelFetch(uGridRadianceTermsTexels, i * SEA_RADIANCE_VEC4S + k);
 #endif
   return r[0];
 }

@@ -14,12 +14,11 @@
 // as a forward draw's fragment is written to the samples its triangle covers.
 // Needs (included first): ocean/sea_surface.glsl's deferred part (uSeaSurface, SEA_SURFACE_SIZE,
 // seaRayDirection, SEA_CLASS_BITS, floorDepthSlopeOf) and ocean/ocean.frag's globals.
-#include "ocean/grid_vertex_buffer.glsl"  // (unpackGridVertex; its storage buffer unread here)
-// The grid's vertex records (ocean/grid_vertex_buffer.glsl's layout) and index list, as buffer
-// textures: llvmpipe loads a storage buffer's values lane by lane where the pixels' addresses
-// differ, a texel fetch for all lanes at once (sea-4m's shading at 1280 x 720: 139 -> 106 ms of
-// one thread; docs/performance.md, "Thirty-fifth session").
-layout(binding = OG_UNIT_SEA_GRID_VERTICES) uniform samplerBuffer uGridVertexTexels;
+#include "ocean/grid_vertex_buffer.glsl"  // (uGridVertexTexels, unpackGridVertex)
+// The grid's index list as a buffer texture, as its vertex records (ocean/grid_vertex_buffer.glsl):
+// llvmpipe loads a storage buffer's values lane by lane where the pixels' addresses differ, a
+// texel fetch for all lanes at once (sea-4m's shading at 1280 x 720: 139 -> 106 ms of one
+// thread; docs/performance.md, "Thirty-fifth session").
 layout(binding = OG_UNIT_SEA_GRID_INDICES) uniform usamplerBuffer uGridIndexTexels;
 
 // Triangle `triangle`'s corner `k`'s record.

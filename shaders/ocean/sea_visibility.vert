@@ -6,4 +6,4 @@
 #include "ocean/grid_vertex.glsl"  // the buffer's layout needs its outputs' declarations
 #include "ocean/grid_vertex_buffer.glsl"
 
-void main() { gl_Position = gridVertices[gl_VertexID * GRID_VERTEX_VEC4S]; }
+void main() { gl_Position = texelFetch(uGridVertexTexels, gl_VertexID * GRID_VERTEX_VEC4S); }

@@ -61,6 +61,7 @@ std::vector<std::string> contractDefines() {
           define("OG_UNIT_SEA_STENCIL", kUnitSeaStencil),
           define("OG_UNIT_SEA_GRID_VERTICES", kUnitSeaGridVertices),
           define("OG_UNIT_SEA_GRID_INDICES", kUnitSeaGridIndices),
+          define("OG_UNIT_SEA_GRID_TERMS", kUnitSeaGridTerms),
           define("OG_UNIT_SKY_LOW", kUnitSkyLow),
           define("OG_UNIT_AERIAL_TABLE", kUnitAerialTable),
           define("OG_UNIT_TERRAIN_AERIAL_TABLE", kUnitTerrainAerialTable),

@@ -42,11 +42,12 @@ enum TextureUnit : unsigned {
   kUnitSeaLattice = 29,          ///< render/sea_lattice.frag uLattice (render/SeaLattice)
   kUnitSeaLatticeBlocks = 30,    ///< render/sea_lattice.frag uBlockInterpolated
   kUnitSeaStencil = 31,          ///< ocean/ocean.frag OCEAN_COMPUTE uSeaStencil: the classes (OceanRenderer::drawDeferred)
-  // The visibility buffer's shading (ocean/sea_visibility.glsl), whose passes read neither
-  // uSeaStencil nor the globe's lattice: the grid's vertex records and index list as buffer
-  // textures (OceanRenderer::drawDeferred).
+  // The projected grid's vertex records as buffer textures (ocean/grid_vertex_buffer.glsl,
+  // OceanRenderer::computeGridVertices), on units the sea's passes read nothing else from
+  // (uSeaStencil and the globe's lattice are other passes'):
   kUnitSeaGridVertices = 31,     ///< uGridVertexTexels
-  kUnitSeaGridIndices = 30,      ///< uGridIndexTexels
+  kUnitSeaGridTerms = 30,        ///< uGridRadianceTermsTexels (the forward draw of grown cells)
+  kUnitSeaGridIndices = 30,      ///< ocean/sea_visibility.glsl uGridIndexTexels (frames without the terms)
   // Passes of their own, which bind nothing else, reuse unit 0:
   kUnitToneRadiance = 0,         ///< render/tonemap.frag uRadiance (the HDR target)
   kUnitOverlayText = 0,          ///< viewer/text.frag uText (the viewer's text overlay)

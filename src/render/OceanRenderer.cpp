@@ -867,17 +867,22 @@ void OceanRenderer::classesIntoStencil() {
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
-void OceanRenderer::bindGridTexels() {
-  if (gridVertexTexels_.id() == 0) {
-    gridVertexTexels_ = gl::createTexture(GL_TEXTURE_BUFFER);
-    gridIndexTexels_ = gl::createTexture(GL_TEXTURE_BUFFER);
-  }
-  // (Re-pointed each frame: ensureBufferCapacity and ensureGrid may have made new buffers.)
-  glTextureBuffer(gridVertexTexels_.id(), GL_RGBA32F, gridVertices_.id());
-  glTextureBuffer(gridIndexTexels_.id(), GL_R32UI, indices_.id());
-  glBindTextureUnit(gl::kUnitSeaGridVertices, gridVertexTexels_.id());
-  glBindTextureUnit(gl::kUnitSeaGridIndices, gridIndexTexels_.id());
+namespace {
+// A buffer texture of `format` over `buffer` at `unit`, `view` made on first use. (Re-pointed
+// each frame: ensureBufferCapacity and ensureGrid may have made new buffers.)
+void bindTexels(gl::Texture& view, GLenum format, const gl::Buffer& buffer, GLuint unit) {
+  if (view.id() == 0) view = gl::createTexture(GL_TEXTURE_BUFFER);
+  glTextureBuffer(view.id(), format, buffer.id());
+  glBindTextureUnit(unit, view.id());
 }
+}  // namespace
+
+void OceanRenderer::bindGridTexels(bool radianceTerms) {
+  bindTexels(gridVertexTexels_, GL_RGBA32F, gridVertices_, gl::kUnitSeaGridVertices);
+  if (radianceTerms) bindTexels(gridTermsTexels_, GL_RGBA32F, gridRadianceTerms_, gl::kUnitSeaGridTerms);
+}
+
+void OceanRenderer::bindGridIndexTexels() { bindTexels(gridIndexTexels_, GL_R32UI, indices_, gl::kUnitSeaGridIndices); }
 
 GLuint OceanRenderer::seaRadianceImage(int width, int height) {
   if (seaRadiance_.id() == 0 || seaRadianceWidth_ != width || seaRadianceHeight_ != height) {
@@ -945,7 +950,9 @@ void OceanRenderer::computeGridVertices(const gl::Program& compute, bool radianc
   if (timer_ != nullptr) timer_->mark("ocean grid");
   compute.use();
   glDispatchCompute(static_cast<GLuint>((vertices + 63) / 64), 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  // (Read as buffer textures: ocean/grid_vertex_buffer.glsl.)
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  bindGridTexels(radianceTerms);
 }
 
 void OceanRenderer::splitNearLand(unsigned key) {
@@ -1087,7 +1094,7 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   glStencilMask(0);
   if (visibility) {  // (the triangles' vertices: ocean/sea_visibility.glsl)
     surface_.bindVisibilityForReading();
-    bindGridTexels();
+    bindGridIndexTexels();  // (the vertices' bound by computeGridVertices)
   } else {
     surface_.bindForReading();
   }

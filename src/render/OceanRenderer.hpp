@@ -428,9 +428,11 @@ class OceanRenderer {
   /// (seaRadiance_, `width` x `height`, made on first use; a full-screen pass per pixel cost
   /// llvmpipe twice as much, every pixel shaded: docs/performance.md, "Thirty-fifth session").
   GLuint seaRadianceImage(int width, int height);
-  /// Binds gridVertices_ and indices_ as the buffer textures the visibility buffer's shading
-  /// reads (gl::kUnitSeaGridVertices, kUnitSeaGridIndices).
-  void bindGridTexels();
+  /// Binds gridVertices_ (and with `radianceTerms` gridRadianceTerms_) as the buffer textures
+  /// the passes after computeGridVertices read (gl::kUnitSeaGridVertices, kUnitSeaGridTerms).
+  void bindGridTexels(bool radianceTerms);
+  /// Binds indices_ as the visibility buffer's shading reads it (gl::kUnitSeaGridIndices).
+  void bindGridIndexTexels();
   /// Binds `target` and writes seaRadiance_ into its samples with sea (the stencil's class 1:
   /// ocean/sea_radiance_copy.frag).
   void copySeaRadiance(GLuint target);
@@ -468,7 +470,7 @@ class OceanRenderer {
   bool visibility_;
   gl::Program visibilityProgram_;  ///< ocean/sea_visibility.vert/.frag; id() 0 until first used
   gl::Texture seaRadiance_;  ///< seaRadianceImage's
-  gl::Texture gridVertexTexels_, gridIndexTexels_;  ///< bindGridTexels's views of the buffers
+  gl::Texture gridVertexTexels_, gridTermsTexels_, gridIndexTexels_;  ///< bindGridTexels's views of the buffers
   int seaRadianceWidth_ = 0, seaRadianceHeight_ = 0;
   gl::Program seaRadianceCopy_;    ///< ocean/sea_radiance_copy.frag; id() 0 until first used
   /// A forward frame with a floor or a coast to route draws the grid's triangles in three
