@@ -603,15 +603,35 @@ bool OceanRenderer::deferredServes(int samples, unsigned features, bool classes,
 
 bool OceanRenderer::visibilityServes(unsigned features, bool classes) const {
   // (The coast test is the surface pass's, which the visibility buffer's has not.)
-  if (!visibility_ || classes || (features & kFeatureCoastTest) != 0) return false;
+  return visibility_ && !classes && (features & kFeatureCoastTest) == 0 && gridTexelsFit();
+}
+
+bool OceanRenderer::gridTexelsFit() const {
   static const GLint maxTexels = [] {
     GLint n = 0;
     glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &n);
     return n;
   }();
-  // The vertex records as one buffer texture (bindGridTexels; GL guarantees 65536 texels,
-  // drivers offer 2^27).
+  // (GL guarantees 65536 texels, drivers offer 2^27.)
   return static_cast<std::int64_t>(gridColumns_) * gridRows_ * kGridVertexVec4s <= maxTexels;
+}
+
+void OceanRenderer::shadeClass(const gl::Program& p, int stencilClass, std::size_t counted,
+                               const std::function<void(const gl::Program&)>& prepareProgram) {
+  if (timer_ != nullptr) timer_->mark(kClassPass.at(counted));
+  classesDrawn_ |= 1u << counted;
+  prepareProgram(p);
+  p.use();
+  shadeClassPixels(stencilClass, counted);
+}
+
+void OceanRenderer::shadeClassPixels(int stencilClass, std::size_t counted) {
+  glStencilFunc(GL_EQUAL, stencilClass, 0xff);
+  const auto draw = [] { glDrawArrays(GL_TRIANGLES, 0, 3); };
+  if (countClassSamples_ && counted < kSeaClasses)
+    classSamples_.at(counted) += gl::queryResult(GL_SAMPLES_PASSED, draw);
+  else
+    draw();
 }
 
 void OceanRenderer::prepare(const gl::Program& p, const geo::CameraView& view, int height,
@@ -748,9 +768,11 @@ std::array<GLint, 2 * OceanRenderer::kSeaClasses> OceanRenderer::noClassRows() {
 void OceanRenderer::resetClassRows() {
   if (classRows_.id() == 0) {
     classRows_ = gl::createBuffer();
-    glNamedBufferStorage(classRows_.id(), 2 * kSeaClasses * sizeof(GLint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferStorage(classRows_.id(), kClassRowsInts * sizeof(GLint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   }
-  const std::array<GLint, 2 * kSeaClasses> none = noClassRows();
+  std::array<GLint, kClassRowsInts> none{};  // (the visibility buffer's classes' flags 0)
+  const std::array<GLint, 2 * kSeaClasses> rows = noClassRows();
+  std::copy(rows.begin(), rows.end(), none.begin());
   glNamedBufferSubData(classRows_.id(), 0, sizeof none, none.data());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kClassRowsBinding, classRows_.id());
 }
@@ -904,12 +926,14 @@ void OceanRenderer::copySeaRadiance(GLuint target) {
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-const gl::Program& OceanRenderer::visibilityProgram() {
-  if (visibilityProgram_.id() == 0)
-    visibilityProgram_ = gl::Program(
-        {{GL_VERTEX_SHADER, "ocean/sea_visibility.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_visibility.frag"}},
-        featureDefines(0));  // (the vertex records' layout needs the patterns' count)
-  return visibilityProgram_;
+const gl::Program& OceanRenderer::visibilityProgram(bool classes) {
+  gl::Program& p = classes ? visibilityClassesProgram_ : visibilityProgram_;
+  if (p.id() != 0) return p;
+  std::vector<std::string> d = featureDefines(0);  // (the vertex records' layout needs the patterns' count)
+  if (classes) d.emplace_back("SEA_VISIBILITY_CLASSES");
+  p = gl::Program({{GL_VERTEX_SHADER, "ocean/sea_visibility.vert"}, {GL_FRAGMENT_SHADER, "ocean/sea_visibility.frag"}}, d);
+  if (classes) p.set("uVisibilityClass", kVisibilityClass);
+  return p;
 }
 
 const gl::Program& OceanRenderer::surfaceProgram(unsigned key) {
@@ -1029,7 +1053,11 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   // deferredServes).
   const bool multisampled = depthStencil.samples > 1;
   const bool visibility = visibilityServes(features, classes);
-  lastSurfaceByVisibility_ = visibility;
+  // In classes, the deep triangles (no floor within reach, no land near) through it too, as
+  // their own classes (kVisibilityClass: exported, shaded by full-screen passes).
+  const bool deepByVisibility = classes && visibility_ && gl::driverProfile().stencilExport &&
+                                frameComputeImage_ == 0 && !multisampled && gridTexelsFit();
+  lastSurfaceByVisibility_ = visibility || deepByVisibility;
   if (visibility) computeSurfaceVertices(surfaceKey, prepareSurface);
   const gl::Program& surface = visibility ? visibilityProgram() : prepareSurfacePass(surfaceKey, prepareSurface);
   // With classes the coast test runs only where land may be near, and the water's terms only
@@ -1071,6 +1099,11 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
                             if (open == nullptr) return drawGrid(surface);
                             if (fullLayout) drawGridIndices(*open, floorIndices_);  // (else empty)
                             drawGridIndices(surface, nearLandIndices_);
+                            if (deepByVisibility) {
+                              surface_.drawVisibility();
+                              drawGridIndices(visibilityProgram(true), deepIndices_);
+                              return surface_.drawLayers(compact);
+                            }
                             if (fullLayout) surface_.drawLayers(true);  // (deep: the compact layout)
                             drawGridIndices(*deep, deepIndices_);
                             if (fullLayout) surface_.drawLayers(false);
@@ -1114,14 +1147,21 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
       dispatches->dispatch(p, static_cast<int>(k + 1));
       continue;
     }
-    glStencilFunc(GL_EQUAL, static_cast<GLint>(k + 1), 0xff);
-    const auto draw = [] { glDrawArrays(GL_TRIANGLES, 0, 3); };
-    if (countClassSamples_ && classes)
-      classSamples_.at(k) = gl::queryResult(GL_SAMPLES_PASSED, draw);
-    else
-      draw();
+    shadeClassPixels(static_cast<int>(k + 1), classes ? k : kSeaClasses);
   }
   dispatches.reset();
+  if (deepByVisibility && seaVisible) {
+    surface_.bindVisibilityForReading();
+    bindGridIndexTexels();
+    std::array<GLint, 2> seen{};  // (ocean/sea_visibility.frag's flags, after the rows)
+    glGetNamedBufferSubData(classRows_.id(), 2 * kSeaClasses * sizeof(GLint), sizeof seen, seen.data());
+    for (std::size_t k = 0; k < 2; ++k)  // open sea, shadows
+      if (seen.at(k) != 0)
+        shadeClass(deferredProgram(perClass.at(k), false, true), kVisibilityClass + static_cast<int>(k), k,
+                 [&](const gl::Program& p) {
+                   prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, perClass.at(k), margin);
+                 });
+  }
   if (timer_ != nullptr) timer_->mark("ocean");
   if (multisampled && seaVisible) copySeaRadiance(static_cast<GLuint>(target));
   glEnable(GL_DEPTH_TEST);

@@ -261,8 +261,24 @@ class OceanRenderer {
   static bool surfaceCompact(unsigned surfaceKey);
   /// The surface pass's program for `key` (as prepareSurfacePass), compiled on first use.
   const gl::Program& surfaceProgram(unsigned key);
-  /// The visibility buffer's surface pass (ocean/sea_visibility.vert/.frag), compiled on first use.
-  const gl::Program& visibilityProgram();
+  /// The visibility buffer's surface pass (ocean/sea_visibility.vert/.frag), compiled on first
+  /// use; with `classes` the deep triangles' of a frame in classes (SEA_VISIBILITY_CLASSES).
+  const gl::Program& visibilityProgram(bool classes = false);
+  /// The stencil's class of the deep triangles' open-sea pixels drawn through the visibility
+  /// buffer in a frame in classes (drawDeferred), + 1 for their shadows' (after kSeaClasses').
+  static constexpr int kVisibilityClass = 6;
+  /// classRows_'s ints: each class's first and last row, then whether each of the visibility
+  /// buffer's two classes has a pixel (ocean/sea_visibility.frag).
+  static constexpr std::size_t kClassRowsInts = 2 * kSeaClasses + 2;
+  /// Whether the grid's vertex records fit one buffer texture (bindGridTexels).
+  [[nodiscard]] bool gridTexelsFit() const;
+  /// A deferred class's full-screen pass with `p` (`prepareProgram` sets its uniforms) over the
+  /// stencil's `stencilClass`, timed, drawn and counted as class `counted` (0-based).
+  void shadeClass(const gl::Program& p, int stencilClass, std::size_t counted,
+                  const std::function<void(const gl::Program&)>& prepareProgram);
+  /// Its draw alone, `p` in use (its samples added to classSamples_ where counted, `counted`
+  /// < kSeaClasses).
+  void shadeClassPixels(int stencilClass, std::size_t counted);
   /// The grid's index list split in three copies by ocean/grid_near_land.comp (after the surface
   /// pass's vertices): nearLandIndices_ with only the triangles where land may be near (the others
   /// degenerate), floorIndices_ with the others that have a floor within the water's reach, and
@@ -468,7 +484,7 @@ class OceanRenderer {
   /// to its samples with sea. As the driver profile says (gl::DriverProfile::seaByVisibility:
   /// llvmpipe), or OCEANGLOBE_SEA_SURFACE.
   bool visibility_;
-  gl::Program visibilityProgram_;  ///< ocean/sea_visibility.vert/.frag; id() 0 until first used
+  gl::Program visibilityProgram_, visibilityClassesProgram_;  ///< visibilityProgram's; id() 0 until first used
   gl::Texture seaRadiance_;  ///< seaRadianceImage's
   gl::Texture gridVertexTexels_, gridTermsTexels_, gridIndexTexels_;  ///< bindGridTexels's views of the buffers
   int seaRadianceWidth_ = 0, seaRadianceHeight_ = 0;
@@ -534,7 +550,7 @@ class OceanRenderer {
   unsigned classesDrawn_ = 0;  ///< classesDrawn()
   bool countClassSamples_ = false;
   std::array<std::uint64_t, kSeaClasses> classSamples_{};
-  gl::Buffer classRows_;  ///< per class, the first and last grid row of its fragments (10 ints)
+  gl::Buffer classRows_;  ///< per class, the first and last grid row of its fragments (kClassRowsInts)
   CausticCurvature caustics_;  ///< the water volume's caustics (render/WaterVolume)
   gl::Program classic_;      ///< id() 0 until first used, as the next two
   gl::Texture bumpMap_;      ///< classic: tileable ripple normals, mip-mapped

@@ -36,7 +36,7 @@ void SeaSurfaceBuffer::bindForWriting(int width, int height, GLuint depthStencil
     fbo_ = gl::createFramebuffer();
     for (int i = 0; i < layers; ++i)
       glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), layers_.id(), 0, i);
-    width_ = width, height_ = height, depthStencil_ = 0, drawBuffers_ = 0, allocated_ = layers;
+    width_ = width, height_ = height, depthStencil_ = 0, drawBuffers_ = 0, allocated_ = layers, visibilityInSurface_ = 0;
   }
   drawLayers(compact);
   attachDepthStencil(fbo_, depthStencil, &depthStencil_);
@@ -51,26 +51,40 @@ void SeaSurfaceBuffer::attachDepthStencil(const gl::Framebuffer& fbo, GLuint dep
     throw InternalError("SeaSurfaceBuffer: the surface buffer's framebuffer is incomplete");
 }
 
-void SeaSurfaceBuffer::bindVisibilityForWriting(int width, int height, GLuint depthStencil, int samples) {
-  if (width != visibilityWidth_ || height != visibilityHeight_ || samples != visibilitySamples_ ||
-      visibility_.id() == 0) {
-    if (samples > 1) {  // (fixed sample locations, as gl::createRenderTarget's depth)
-      visibility_ = gl::createTexture(GL_TEXTURE_2D_MULTISAMPLE);
-      glTextureStorage2DMultisample(visibility_.id(), samples, GL_R32UI, width, height, GL_TRUE);
-    } else {
-      visibility_ = gl::createTexture(GL_TEXTURE_2D);
-      glTextureStorage2D(visibility_.id(), 1, GL_R32UI, width, height);
-      glTextureParameteri(visibility_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      glTextureParameteri(visibility_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    }
-    visibilityFbo_ = gl::createFramebuffer();
-    glNamedFramebufferTexture(visibilityFbo_.id(), GL_COLOR_ATTACHMENT0, visibility_.id(), 0);
-    visibilityWidth_ = width, visibilityHeight_ = height, visibilitySamples_ = samples, visibilityDepthStencil_ = 0;
+void SeaSurfaceBuffer::ensureVisibility(int width, int height, int samples) {
+  if (width == visibilityWidth_ && height == visibilityHeight_ && samples == visibilitySamples_ && visibility_.id() != 0)
+    return;
+  if (samples > 1) {  // (fixed sample locations, as gl::createRenderTarget's depth)
+    visibility_ = gl::createTexture(GL_TEXTURE_2D_MULTISAMPLE);
+    glTextureStorage2DMultisample(visibility_.id(), samples, GL_R32UI, width, height, GL_TRUE);
+  } else {
+    visibility_ = gl::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(visibility_.id(), 1, GL_R32UI, width, height);
+    glTextureParameteri(visibility_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(visibility_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   }
+  visibilityFbo_ = gl::createFramebuffer();
+  glNamedFramebufferTexture(visibilityFbo_.id(), GL_COLOR_ATTACHMENT0, visibility_.id(), 0);
+  visibilityWidth_ = width, visibilityHeight_ = height, visibilitySamples_ = samples, visibilityDepthStencil_ = 0;
+}
+
+void SeaSurfaceBuffer::bindVisibilityForWriting(int width, int height, GLuint depthStencil, int samples) {
+  ensureVisibility(width, height, samples);
   attachDepthStencil(visibilityFbo_, depthStencil, &visibilityDepthStencil_);
   const std::array<GLuint, 4> none{};
   glClearNamedFramebufferuiv(visibilityFbo_.id(), GL_COLOR, 0, none.data());
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, visibilityFbo_.id());
+}
+
+void SeaSurfaceBuffer::drawVisibility() {
+  ensureVisibility(width_, height_, 1);
+  constexpr GLenum kAttachment = GL_COLOR_ATTACHMENT0 + kLayers;
+  if (visibilityInSurface_ != visibility_.id()) {
+    glNamedFramebufferTexture(fbo_.id(), kAttachment, visibility_.id(), 0);
+    visibilityInSurface_ = visibility_.id();
+  }
+  glNamedFramebufferDrawBuffers(fbo_.id(), 1, &kAttachment);
+  drawBuffers_ = 0;  // (drawLayers sets the layers' again)
 }
 
 void SeaSurfaceBuffer::bindVisibilityForReading() const { glBindTextureUnit(gl::kUnitSeaSurface, visibility_.id()); }

@@ -42,10 +42,17 @@ class SeaSurfaceBuffer {
   /// sample's grid triangle + 1, over `depthStencil` (of `samples` a pixel: a multisample
   /// texture beyond 1) as bindForWriting; cleared to 0 (no sea) and bound.
   void bindVisibilityForWriting(int width, int height, GLuint depthStencil, int samples = 1);
-  /// Binds the visibility texture to gl::kUnitSeaSurface for the shading's compute pass.
+  /// Binds the visibility texture to gl::kUnitSeaSurface for the shading passes.
   void bindVisibilityForReading() const;
+  /// Between draws of a pass bound by bindForWriting: the draws that follow write fragment
+  /// output 0 into a single-sampled visibility texture (attachment kLayers of the surface
+  /// buffer's framebuffer) and nothing else, until drawLayers. For a frame in classes whose
+  /// deep triangles go through the visibility buffer (render/OceanRenderer::drawDeferred).
+  void drawVisibility();
 
  private:
+  /// Makes visibility_ `width` x `height` with `samples` unless it is so already.
+  void ensureVisibility(int width, int height, int samples);
   /// Attaches `depthStencil` to `fbo` unless it is `*attached` already; checks completeness.
   static void attachDepthStencil(const gl::Framebuffer& fbo, GLuint depthStencil, GLuint* attached);
 
@@ -59,6 +66,7 @@ class SeaSurfaceBuffer {
   gl::Framebuffer visibilityFbo_;
   int visibilityWidth_ = 0, visibilityHeight_ = 0, visibilitySamples_ = 0;
   GLuint visibilityDepthStencil_ = 0;
+  GLuint visibilityInSurface_ = 0;  ///< visibility_ as attached to fbo_ (drawVisibility), 0: none
 };
 
 }  // namespace og::render

@@ -95,7 +95,7 @@ TEST(GlShader, StencilExportOnlyWhereTheDriverHasIt) {
       previous = line;
     }
   }
-  EXPECT_EQ(enabled, 3) << "globe.frag, sea_surface.frag, sea_classify.frag";
+  EXPECT_EQ(enabled, 4) << "globe.frag, sea_surface.frag, sea_classify.frag, sea_visibility.frag";
   // A shader that writes the stencil value: compiled where the driver exports it, refused
   // where it does not (NVIDIA's compiler: "undefined variable gl_FragStencilRefARB").
   const bool exports = gl::createHeadlessContext()->info().profile.stencilExport;
