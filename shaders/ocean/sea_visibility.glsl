@@ -1,13 +1,15 @@
-// The deferred sea's visibility buffer (OCEANGLOBE_SEA=visibility: render/OceanRenderer::
-// drawDeferred, frames whose sea has no classes): the surface pass writes only each pixel's
-// nearest grid triangle (ocean/sea_visibility.frag: gl_PrimitiveID + 1, 0 where no sea), and
-// the shading's compute pass interpolates that triangle's three vertex records (ocean/
-// grid_vertex_buffer.glsl) at the pixel's centre itself, perspective-correct as the rasteriser
-// does the surface pass's inputs: the surface pass's fragments interpolate nothing and write 4
-// bytes instead of 64, the shading reads 21-30 vec4s a pixel instead of 4-6 (on llvmpipe
-// sea-4m's surface pass 37 -> 12 ms of one thread, its shading unchanged; for GPUs whose pixel
-// shaders are few, the H200's run on 2 of its 66 TPCs: docs/performance.md, "Thirty-fifth
-// session"). Only where the frame has no coast test (the surface pass's).
+// The deferred sea's visibility buffer (OCEANGLOBE_SEA_SURFACE=visibility, the default on
+// software renderers: render/OceanRenderer::drawDeferred): the surface pass writes only each
+// pixel's nearest grid triangle (ocean/sea_visibility.frag: gl_PrimitiveID + 1, 0 where no
+// sea), and the shading (a full-screen pass per class, or compute shaders) interpolates that
+// triangle's three vertex records (ocean/grid_vertex_buffer.glsl) at the pixel's centre
+// itself, perspective-correct as the rasteriser does the surface pass's inputs: the surface
+// pass's fragments interpolate nothing and write 4 bytes instead of 64, the shading reads 21-30
+// vec4s a pixel instead of 4-6 (on llvmpipe sea-4m's surface pass 37 -> 12 ms of one thread,
+// its shading unchanged; for GPUs whose pixel shaders are few, the H200's run on 2 of its 66
+// TPCs: docs/performance.md, "Thirty-fifth session"). Where the frame has one class, or, in a
+// frame in classes, for its deep triangles (no land near, no floor in reach: their own
+// classes, OceanRenderer::kVisibilityClass); never with the coast test (the surface pass's).
 // SEA_VISIBILITY_MULTISAMPLE (compute shaders only): a triangle a sample (a multisampled
 // frame), each pixel shaded once from its first sample with sea into a single-sampled image,
 // then written to those samples (ocean/sea_radiance_copy.frag, the stencil's class per sample)

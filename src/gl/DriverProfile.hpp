@@ -37,7 +37,7 @@ struct DriverProfile {
   /// shading, and multisampled frames' open sea deferred through it too (shaded once a pixel by
   /// compute shaders) instead of forward (render/OceanRenderer, docs/ocean.md): on software
   /// renderers (llvmpipe at 1280x720, sea-4m's surface pass 37 -> 12 ms of one thread; with 4
-  /// samples the frame 280 -> 221 ms: docs/performance.md, "Thirty-fifth session"); on GPUs
+  /// samples the frame 235-243 -> 184 ms: docs/performance.md, "Thirty-fifth session"); on GPUs
   /// when measured. OCEANGLOBE_SEA_SURFACE=visibility or buffer overrides.
   bool seaByVisibility = false;
 };

@@ -6,6 +6,7 @@
 #include <optional>
 #include <cmath>
 #include <cstdlib>
+#include <cassert>
 #include <string>
 #include <vector>
 
@@ -196,6 +197,7 @@ std::vector<std::string> OceanRenderer::featureDefines(unsigned features) const 
 
 const gl::Program& OceanRenderer::deferredProgram(unsigned features, bool compute, bool visibility,
                                                   bool multisampled) {
+  assert(features < 16u);  // (the variants' index: the feature bits, then the paths')
   gl::Program& p = programs().deferredVariants.at(features + (compute ? 16u : 0u) + (visibility ? 32u : 0u) +
                                                   (multisampled ? 64u : 0u));
   if (p.id() != 0) return p;
@@ -597,7 +599,14 @@ bool OceanRenderer::surfaceClasses(const OceanLighting& lighting, unsigned featu
 bool OceanRenderer::deferredServes(int samples, unsigned features, bool classes, bool computeFloors) const {
   // Multisampled: only by the visibility buffer (one class: a sample's class is its triangle's),
   // without --aov's channels (copySeaRadiance writes the radiance alone).
-  if (samples > 1) return visibilityServes(features, classes) && !drawTargetHasAuxiliary();
+  if (samples > 1) {
+    static const GLint maxIntegerSamples = [] {  // (the visibility buffer's R32UI samples)
+      GLint n = 0;
+      glGetIntegerv(GL_MAX_INTEGER_SAMPLES, &n);
+      return n;
+    }();
+    return visibilityServes(features, classes) && samples <= maxIntegerSamples && !drawTargetHasAuxiliary();
+  }
   return gl::driverProfile().stencilExport || deferredWithoutExport_ || computeFloors || visibilityServes(features, classes);
 }
 
@@ -900,11 +909,20 @@ void bindTexels(gl::Texture& view, GLenum format, const gl::Buffer& buffer, GLui
 }  // namespace
 
 void OceanRenderer::bindGridTexels(bool radianceTerms) {
+  // Every reader of the vertices reads them so (ocean/grid_vertex_buffer.glsl): a grid beyond a
+  // buffer texture (2^27 texels on the drivers known, 65536 guaranteed) cannot be drawn.
+  if (!gridTexelsFit())
+    throw InternalError("OceanRenderer: the projected grid's " + std::to_string(gridColumns_) + " x " +
+                        std::to_string(gridRows_) + " vertices exceed this driver's buffer textures");
   bindTexels(gridVertexTexels_, GL_RGBA32F, gridVertices_, gl::kUnitSeaGridVertices);
   if (radianceTerms) bindTexels(gridTermsTexels_, GL_RGBA32F, gridRadianceTerms_, gl::kUnitSeaGridTerms);
 }
 
-void OceanRenderer::bindGridIndexTexels() { bindTexels(gridIndexTexels_, GL_R32UI, indices_, gl::kUnitSeaGridIndices); }
+void OceanRenderer::bindVisibilityForShading() {
+  surface_.bindVisibilityForReading();
+  // The triangles' corners (the vertices' texels bound by computeGridVertices).
+  bindTexels(gridIndexTexels_, GL_R32UI, indices_, gl::kUnitSeaGridIndices);
+}
 
 GLuint OceanRenderer::seaRadianceImage(int width, int height) {
   if (seaRadiance_.id() == 0 || seaRadianceWidth_ != width || seaRadianceHeight_ != height) {
@@ -1079,7 +1097,7 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   GLint target = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
   const bool compact = surfaceCompact(surfaceKey);
-  lastSurfaceCompact_ = compact;
+  lastSurfaceCompact_ = compact && !visibility;  // (no surface buffer written)
   const bool exportsStencil = gl::driverProfile().stencilExport;
   if (visibility) {
     surface_.bindVisibilityForWriting(width, height, depthStencil.texture, depthStencil.samples);
@@ -1125,9 +1143,8 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   if (!exportsStencil && !visibility && seaVisible && image == 0) classesIntoStencil();
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glStencilMask(0);
-  if (visibility) {  // (the triangles' vertices: ocean/sea_visibility.glsl)
-    surface_.bindVisibilityForReading();
-    bindGridIndexTexels();  // (the vertices' bound by computeGridVertices)
+  if (visibility) {
+    bindVisibilityForShading();
   } else {
     surface_.bindForReading();
   }
@@ -1151,8 +1168,7 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   }
   dispatches.reset();
   if (deepByVisibility && seaVisible) {
-    surface_.bindVisibilityForReading();
-    bindGridIndexTexels();
+    bindVisibilityForShading();
     std::array<GLint, 2> seen{};  // (ocean/sea_visibility.frag's flags, after the rows)
     glGetNamedBufferSubData(classRows_.id(), 2 * kSeaClasses * sizeof(GLint), sizeof seen, seen.data());
     for (std::size_t k = 0; k < 2; ++k)  // open sea, shadows

@@ -391,7 +391,7 @@ class OceanRenderer {
   /// (OCEAN_COMPUTE: ClassDispatches).
   /// With `visibility` (and `compute`), the pixels' values from the visibility buffer
   /// (SEA_VISIBILITY: ocean/sea_visibility.glsl).
-  /// (`multisampled`: SEA_VISIBILITY_MULTISAMPLE, a fragment pass).
+  /// (`multisampled`: SEA_VISIBILITY_MULTISAMPLE, with `compute` only).
   const gl::Program& deferredProgram(unsigned features, bool compute, bool visibility = false,
                                      bool multisampled = false);
   /// Whether the frame's surface pass writes the sea's classes (a floor or a coast to route).
@@ -447,8 +447,8 @@ class OceanRenderer {
   /// Binds gridVertices_ (and with `radianceTerms` gridRadianceTerms_) as the buffer textures
   /// the passes after computeGridVertices read (gl::kUnitSeaGridVertices, kUnitSeaGridTerms).
   void bindGridTexels(bool radianceTerms);
-  /// Binds indices_ as the visibility buffer's shading reads it (gl::kUnitSeaGridIndices).
-  void bindGridIndexTexels();
+  /// Binds the visibility buffer and indices_ (gl::kUnitSeaGridIndices) for the shading passes.
+  void bindVisibilityForShading();
   /// Binds `target` and writes seaRadiance_ into its samples with sea (the stencil's class 1:
   /// ocean/sea_radiance_copy.frag).
   void copySeaRadiance(GLuint target);

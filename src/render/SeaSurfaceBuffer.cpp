@@ -66,6 +66,7 @@ void SeaSurfaceBuffer::ensureVisibility(int width, int height, int samples) {
   visibilityFbo_ = gl::createFramebuffer();
   glNamedFramebufferTexture(visibilityFbo_.id(), GL_COLOR_ATTACHMENT0, visibility_.id(), 0);
   visibilityWidth_ = width, visibilityHeight_ = height, visibilitySamples_ = samples, visibilityDepthStencil_ = 0;
+  visibilityInSurface_ = 0;  // (a driver may give the new texture the old one's name)
 }
 
 void SeaSurfaceBuffer::bindVisibilityForWriting(int width, int height, GLuint depthStencil, int samples) {

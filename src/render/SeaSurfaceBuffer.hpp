@@ -23,7 +23,7 @@ class SeaSurfaceBuffer {
     int samples = 1;
   };
   [[nodiscard]] static DepthStencil boundDepthStencil();
-  /// Makes the buffer `width` x `height` over `depthStencil` (boundDepthStencilTexture) and binds
+  /// Makes the buffer `width` x `height` over `depthStencil` (boundDepthStencil) and binds
   /// its framebuffer with the kLayers draw buffers (kCompactLayers when `compact`); remade only
   /// when the size or the depth-stencil texture changes, or when the first frame without the
   /// compact layout comes (until then it holds only the compact layout's layers).

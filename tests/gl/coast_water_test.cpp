@@ -677,6 +677,7 @@ TEST(CoastWater, SeaClassesMatchTheSingleProgram) {
 // measured within 1 level. A pixel shaded with a wrong fragment's values, or of a wrong class,
 // differs by tens of levels.
 TEST(CoastWater, DeferredSeaMatchesTheGridsOwnFragments) {
+  const test::ScopedEnv surfaceBuffer("OCEANGLOBE_SEA_SURFACE", "buffer");  // (the visibility buffer: its own tests)
   const test::ScopedEnv deferred("OCEANGLOBE_SEA", "deferred");  // also without stencil export (NVIDIA)
   auto ctx = gl::createHeadlessContext();
   {
@@ -715,6 +716,7 @@ TEST(CoastWater, DeferredSeaMatchesTheGridsOwnFragments) {
 // shadows 4 = 100), so every bit is copied; and over the open Atlantic, in the surface buffer's
 // compact layout (the class in the low bits of layer 0's footprint, as in the full one).
 TEST(CoastWater, DeferredSeaWithoutStencilExportDrawsTheSameClasses) {
+  const test::ScopedEnv surfaceBuffer("OCEANGLOBE_SEA_SURFACE", "buffer");  // (the visibility buffer: its own tests)
   if (!gl::createHeadlessContext()->info().profile.stencilExport)
     GTEST_SKIP() << "this driver cannot export stencil values: no exported classes to compare with";
   const std::vector<std::tuple<std::string, data::LatLonGrid, render::FrameInput, unsigned>> views{
@@ -761,6 +763,7 @@ TEST(CoastWater, DeferredSeaWithoutStencilExportDrawsTheSameClasses) {
 // derivatives set to 0 change the shelf by up to 7 levels, taken from the next quad by 5; the
 // classes unread leave the sea black (255).
 TEST(CoastWater, DeferredSeaByComputeDrawsTheSamePicture) {
+  const test::ScopedEnv surfaceBuffer("OCEANGLOBE_SEA_SURFACE", "buffer");  // (the visibility buffer: its own tests)
   const bool exports = gl::createHeadlessContext()->info().profile.stencilExport;
   const std::vector<std::tuple<std::string, data::LatLonGrid, render::FrameInput, unsigned>> views{
       {"compute_shelf", shelf(), classView({kLat - 2.2 / 111.2, kLon, 20.0}, 10.0, -15.0, 40.0, 20.0),
