@@ -287,6 +287,46 @@ double OceanRenderer::farthestSeaAngleRad(const geo::CameraView& view) {
   return std::min(most, horizon);
 }
 
+double OceanRenderer::seaTopNdc(const geo::CameraView& view, double leftNdc, double rightNdc, double bottomNdc,
+                                double topNdc) {
+  // In the space scaled so that the ellipsoid is the unit sphere, the eye o (|o|² - 1 = c, in
+  // double: a metre above the sea) and a ray d = a + y b of one x: it meets the sphere ahead
+  // where (o.d)² >= c |d|² and o.d < 0. The first is a quadratic in y, the second linear: the
+  // hits of one x are intervals whose ends lie among the roots, -p/q and the range's ends.
+  const double ea = geo::kWgs84SemiMajorM, eb = geo::kWgs84SemiMinorM;
+  const auto scaled = [&](const glm::dvec3& v) { return glm::dvec3(v.x / ea, v.y / ea, v.z / eb); };
+  const glm::dvec3 o = scaled(view.positionEcef);
+  const double c = glm::dot(o, o) - 1.0;
+  if (c <= 0.0) return topNdc;
+  const double tanY = std::tan(0.5 * view.verticalFovRad), tanX = tanY * view.aspect;
+  const glm::dvec3 b = scaled(tanY * view.up);
+  double highest = bottomNdc - 1.0;
+  for (int k = 0; k <= kSeaTopColumns; ++k) {
+    const double x = leftNdc + (rightNdc - leftNdc) * k / kSeaTopColumns;
+    const glm::dvec3 a = scaled(view.forward + x * tanX * view.right);
+    const double p = glm::dot(o, a), q = glm::dot(o, b);
+    const auto hits = [&](double y) {
+      const double along = p + y * q;
+      const glm::dvec3 d = a + y * b;
+      return along < 0.0 && along * along >= c * glm::dot(d, d);
+    };
+    // (q² - c b.b) y² + 2 (p q - c a.b) y + (p² - c a.a) = 0
+    const double qa = q * q - c * glm::dot(b, b), qb = p * q - c * glm::dot(a, b), qc = p * p - c * glm::dot(a, a);
+    std::vector<double> ends{bottomNdc, topNdc};
+    if (q != 0.0) ends.push_back(-p / q);
+    const double disc = qb * qb - qa * qc;
+    if (qa != 0.0 && disc >= 0.0) {
+      ends.push_back((-qb - std::sqrt(disc)) / qa);
+      ends.push_back((-qb + std::sqrt(disc)) / qa);
+    }
+    std::erase_if(ends, [&](double y) { return !(y >= bottomNdc && y <= topNdc); });
+    std::sort(ends.begin(), ends.end());
+    for (std::size_t i = 0; i + 1 < ends.size(); ++i)
+      if (ends[i + 1] > highest && hits(0.5 * (ends[i] + ends[i + 1]))) highest = ends[i + 1];
+  }
+  return highest;
+}
+
 bool OceanRenderer::geometryIsSubPixel(const geo::CameraView& view, int height, double displacementBoundM) {
   const double tanY = std::tan(0.5 * view.verticalFovRad), tanX = tanY * view.aspect;
   // The sea in view, from the rays of the corners and the edges' middles (seen from the sphere
@@ -458,7 +498,8 @@ int OceanRenderer::grownCellPixels(const geo::CameraView& view, int height, doub
   return cellPixels_;
 }
 
-void OceanRenderer::layOutGrid(int width, int height, double side, double bottom, OceanModel model) {
+void OceanRenderer::layOutGrid(const geo::CameraView& view, int width, int height, double side, double bottom,
+                               OceanModel model) {
   // The rows (ocean/grid.vert's gridNdc): the uniform rows' layout from the grid's bottom to
   // its top, fine from kGridFineBottomNdc below the screen up (the same rows as all fine), the
   // filtered model's rows below that merged kGridCoarseFactor to one.
@@ -474,6 +515,19 @@ void OceanRenderer::layOutGrid(int width, int height, double side, double bottom
   gridCoarseRows_ = coarseRows;
   ensureGrid(std::max(2, static_cast<int>(std::ceil(width * (1 + side) / frameCellPixels_)) + 1),
              coarseRows + rows - below + 1);
+  // The rows above the sea's top all lie on the horizon (their rays lowered onto it): their
+  // vertices and triangles drew nothing (sea-2m-horizon: over half the fine rows). The filtered
+  // model's rows stop at the first fine row over the sea's top, kGridRowsOverSeaTop more, in
+  // whole bands; the rows kept lie where they lay. (The classic model spaces its rows by their
+  // count: all of them.)
+  gridRowsDrawn_ = gridRows_;
+  if (model != OceanModel::Bruneton || !gridToSeaTop_) return;
+  const double fineStart = -1.0 - bottom + below * step, gridTop = -1.0 - bottom + rows * step;
+  const double seaTop = seaTopNdc(view, -1.0 - side, 1.0 + side, -1.0 - bottom, gridTop);
+  const int overTop = coarseRows + std::max(static_cast<int>(std::ceil((seaTop - fineStart) / step)), 0) +
+                      kGridRowsOverSeaTop;  // the vertex row
+  const int bands = (overTop + kGridBlockRows - 1) / kGridBlockRows;
+  gridRowsDrawn_ = std::clamp(bands * kGridBlockRows + 1, 2, gridRows_);
 }
 
 glm::vec4 OceanRenderer::layOutGridOnBlocks(int width, int height) {
@@ -482,6 +536,7 @@ glm::vec4 OceanRenderer::layOutGridOnBlocks(int width, int height) {
   gridRowsNdc_ = glm::vec4(-1.0f, 0.0f, -1.0f, static_cast<float>(2.0 * cell / height));
   gridCoarseRows_ = 0;
   ensureGrid(columns + 1, rows + 1);
+  gridRowsDrawn_ = gridRows_;
   // Whole cells from the screen's bottom-left corner: past the right and top edges, not below.
   return {0.0f, static_cast<float>(2.0 * columns * cell / width - 2.0), 0.0f,
           static_cast<float>(2.0 * rows * cell / height - 2.0)};
@@ -516,7 +571,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
   if (termsCells)
     margin = layOutGridOnBlocks(width, height);
   else
-    layOutGrid(width, height, side, bottom, model);
+    layOutGrid(view, width, height, side, bottom, model);
 
   // A constant wind along one of the patterns' bins: the programs that read one bin.
   programSet_ = model == OceanModel::Bruneton && oneBinAllowed_ && !wind.hasLayers() &&
@@ -660,13 +715,13 @@ void OceanRenderer::prepare(const gl::Program& p, const geo::CameraView& view, i
   wind.bind(p);
 }
 
-void OceanRenderer::drawGrid(const gl::Program& p) const { drawGridRows(p, 0, gridRows_ - 2); }
+void OceanRenderer::drawGrid(const gl::Program& p) const { drawGridRows(p, 0, gridRowsDrawn_ - 2); }
 
 void OceanRenderer::drawGridRows(const gl::Program& p, int firstRow, int lastRow) const {
   if (lastRow < firstRow) return;
   // Whole bands of rows (ensureGrid's order): a band's cells are contiguous in the indices.
   const int first = firstRow - firstRow % kGridBlockRows;
-  const int last = std::min(lastRow - lastRow % kGridBlockRows + kGridBlockRows - 1, gridRows_ - 2);
+  const int last = std::min(lastRow - lastRow % kGridBlockRows + kGridBlockRows - 1, gridRowsDrawn_ - 2);
   const auto perRow = static_cast<std::size_t>(6 * (gridColumns_ - 1));
   p.use();
   glBindVertexArray(vao_.id());
@@ -856,7 +911,7 @@ void OceanRenderer::drawClassified(const geo::CameraView& view, int height, cons
     // Triangle rows r span vertex rows r and r + 1; kFoldRows more each side for the grid's
     // folds (a nearer fragment of another row in a pixel whose class a farther one set).
     const auto draw = [&] {
-      drawGridRows(p, std::max(first - 1 - kFoldRows, 0), std::min(last + kFoldRows, gridRows_ - 2));
+      drawGridRows(p, std::max(first - 1 - kFoldRows, 0), std::min(last + kFoldRows, gridRowsDrawn_ - 2));
     };
     if (countClassSamples_)
       classSamples_.at(k) = gl::queryResult(GL_SAMPLES_PASSED, draw);
@@ -978,6 +1033,7 @@ void OceanRenderer::computeSurfaceVertices(unsigned key, const std::function<voi
 }
 
 void OceanRenderer::computeGridVertices(const gl::Program& compute, bool radianceTerms) {
+  // (Sized for the whole grid, computed for the rows drawn.)
   const auto vertices = static_cast<std::size_t>(gridColumns_) * static_cast<std::size_t>(gridRows_);
   gl::ensureBufferCapacity(gridVertices_, gridVerticesBytes_, vertices * kGridVertexVec4s * 4 * sizeof(float));
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGridVerticesBinding, gridVertices_.id());
@@ -991,7 +1047,8 @@ void OceanRenderer::computeGridVertices(const gl::Program& compute, bool radianc
   }
   if (timer_ != nullptr) timer_->mark("ocean grid");
   compute.use();
-  glDispatchCompute(static_cast<GLuint>((vertices + 63) / 64), 1, 1);
+  const auto drawn = static_cast<std::size_t>(gridColumns_) * static_cast<std::size_t>(gridRowsDrawn_);
+  glDispatchCompute(static_cast<GLuint>((drawn + 63) / 64), 1, 1);
   // (Read as buffer textures: ocean/grid_vertex_buffer.glsl.)
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   bindGridTexels(radianceTerms);
@@ -1009,7 +1066,7 @@ void OceanRenderer::splitNearLand(unsigned key) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFloorIndicesBinding, floorIndices_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kNearLandIndicesBinding, nearLandIndices_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDeepIndicesBinding, deepIndices_.id());
-  const int triangles = indexCount_ / 3;
+  const int triangles = 2 * (gridColumns_ - 1) * (gridRowsDrawn_ - 1);  // (the rows drawn: whole bands)
   programs().nearLandSplit.set("uTriangleCount", triangles);
   programs().nearLandSplit.use();
   glDispatchCompute(static_cast<GLuint>((triangles + 63) / 64), 1, 1);

@@ -93,6 +93,24 @@ class OceanRenderer {
   /// where the screen's top corners' and top centre's rays meet the sphere of the semi-major
   /// axis, or the horizon where one misses it. Decides the sky maps' frame layer.
   [[nodiscard]] static double farthestSeaAngleRad(const geo::CameraView& view);
+  /// The highest NDC y in [bottomNdc, topNdc] at which a ray of `view` with its NDC x in
+  /// [leftNdc, rightNdc] (kSeaTopColumns + 1 of them, evenly) meets the WGS84 ellipsoid (the
+  /// projected grid's sea: its rays above that are lowered onto the horizon), exactly per x (a
+  /// quadratic in y: the rays of one x are linear in it); below bottomNdc when none does, topNdc
+  /// when the eye is not above the ellipsoid.
+  [[nodiscard]] static double seaTopNdc(const geo::CameraView& view, double leftNdc, double rightNdc, double bottomNdc,
+                                        double topNdc);
+  static constexpr int kSeaTopColumns = 64;
+  /// Fine rows the grid keeps above the sea's top (seaTopNdc): the shader's float rays, and the
+  /// horizon's curve between the columns seaTopNdc tries.
+  static constexpr int kGridRowsOverSeaTop = 2;
+  /// Vertex rows the last frame computed and drew (of the grid's: those up to the sea's top and
+  /// kGridRowsOverSeaTop more, in whole bands of kGridBlockRows).
+  [[nodiscard]] int lastGridRowsDrawn() const { return gridRowsDrawn_; }
+  /// Whether the filtered model's grid stops at the band holding the sea's top (the default)
+  /// or draws every row up to the screen's top: for tests that compare the two.
+  void setGridToSeaTop(bool on) { gridToSeaTop_ = on; }
+  [[nodiscard]] int lastGridRows() const { return gridRows_; }
   /// Up to this farthestSeaAngleRad the grid reads the sky maps' frame layer (1°, under a third
   /// of the Sun layers' spacing; sea-8km's 0.70° changes its image by at most 1 level).
   static constexpr double kFrameSkyMaxAngleRad = 0.0175;
@@ -376,7 +394,7 @@ class OceanRenderer {
   /// `maxCellRad` (rad), or cellPixels_ if none is.
   [[nodiscard]] int grownCellPixels(const geo::CameraView& view, int height, double maxCellRad) const;
   /// The grid's rows for frameCellPixels_ (gridRowsNdc_, gridCoarseRows_) and its buffers.
-  void layOutGrid(int width, int height, double side, double bottom, OceanModel model);
+  void layOutGrid(const geo::CameraView& view, int width, int height, double side, double bottom, OceanModel model);
   /// The grid of the radiance terms' cells (frameCellPixels_: 16 or 32 with the default 8-px
   /// cells; the blocks' edges are met when it is a multiple of 4): its vertices on
   /// whole pixels every frameCellPixels_ from the screen's corner, where ocean/grid_vertex.glsl
@@ -558,6 +576,10 @@ class OceanRenderer {
   gl::VertexArray vao_;
   gl::Buffer indices_;
   int gridColumns_ = 0, gridRows_ = 0;
+  /// Vertex rows this frame computes and draws: from the bottom up to the band of kGridBlockRows
+  /// that holds the sea's top (layOutGrid; all of them for the classic model).
+  int gridRowsDrawn_ = 0;
+  bool gridToSeaTop_ = true;  ///< setGridToSeaTop
   int indexCount_ = 0;
   int cellPixels_ = 8;
   /// Rows below the screen deeper than this (NDC) are coarse: only waves lifting a point by

@@ -115,3 +115,122 @@ TEST(OceanCell, RadianceFromTheVerticesDrawsTheSameSea) {
   EXPECT_FALSE(r.ocean().lastRadianceTerms());
   EXPECT_EQ(r.ocean().lastCellPixels(), 32);
 }
+
+namespace {
+geo::CameraView poseView(double heightM, double pitchDeg, double rollDeg, int width, int height, double fovDeg = 60.0) {
+  geo::CameraPose pose;
+  pose.position = {20.0, -40.0, heightM};
+  pose.headingDeg = 270.0;
+  pose.pitchDeg = pitchDeg;
+  pose.rollDeg = rollDeg;
+  pose.verticalFovDeg = fovDeg;
+  return geo::makeCameraView(pose, width, height);
+}
+// The highest of `ys` steps over [bottom, top] at which a ray with NDC x among `columns` + 1
+// even steps over [left, right] meets the ellipsoid (geo::intersectEllipsoid), or bottom - 1.
+double highestHitNdc(const geo::CameraView& view, double left, double right, int columns, double bottom, double top,
+                     int ys) {
+  double highest = bottom - 1.0;
+  for (int k = 0; k <= columns; ++k)
+    for (int j = ys; j >= 0; --j) {
+      const double x = left + (right - left) * k / columns, y = bottom + (top - bottom) * j / ys;
+      if (y <= highest) break;
+      if (geo::intersectEllipsoid(view.positionEcef, view.rayDirection(x, y))) {
+        highest = y;
+        break;
+      }
+    }
+  return highest;
+}
+}  // namespace
+
+// The projected grid's rows stop at the sea's top (render::OceanRenderer::seaTopNdc): the
+// highest NDC y at which a ray meets the ellipsoid, solved per column of rays. Against rays
+// stepped 1/4000 of the range apart at the same columns, and at four times as many columns
+// (between seaTopNdc's, the horizon's curve may rise above its columns' by no more than a
+// fraction of the kGridRowsOverSeaTop fine rows it keeps over it: 2 rows of 8 px at 180 px are
+// 0.18 NDC; measured under 1e-3). Views over x in [-2, 2] (the grid's side margins from 2 m):
+// 2 m looking level (the horizon near the middle), rolled 30° (the horizon tilted: highest at
+// a side), 4 m looking 10° down, 8 km looking 30° down (the horizon at the wide grid's
+// corners), 8 km looking 80° down (every ray meets the sea: the range's top) and 2 m looking
+// 80° up over y in [-1.5, 1.1] (none does).
+TEST(OceanGrid, SeaTopIsWhereTheRaysStopMeetingTheSea) {
+  struct Case {
+    const char* name;
+    geo::CameraView view;
+    double bottom;
+  };
+  const std::vector<Case> cases{{"level_2m", poseView(2.0, 2.0, 0.0, 320, 180), -4.0},
+                                {"rolled_2m", poseView(2.0, 2.0, 30.0, 320, 180), -4.0},
+                                {"down_4m", poseView(4.0, -10.0, 0.0, 320, 180), -4.0},
+                                {"down_8km", poseView(8000.0, -30.0, 0.0, 320, 180), -4.0},
+                                {"nadir_8km", poseView(8000.0, -80.0, 0.0, 320, 180), -4.0},
+                                {"up_2m", poseView(2.0, 80.0, 0.0, 320, 180), -1.5}};
+  const double left = -2.0, right = 2.0, top = 1.1;
+  for (const Case& c : cases) {
+    const double solved = render::OceanRenderer::seaTopNdc(c.view, left, right, c.bottom, top);
+    const int columns = render::OceanRenderer::kSeaTopColumns;
+    const double stepped = highestHitNdc(c.view, left, right, columns, c.bottom, top, 4000);
+    const double between = highestHitNdc(c.view, left, right, 4 * columns, c.bottom, top, 4000);
+    std::printf("%s: solved %.5f, stepped %.5f, at 4x the columns %.5f\n", c.name, solved, stepped, between);
+    if (stepped < c.bottom) {
+      EXPECT_LT(solved, c.bottom) << c.name;
+      continue;
+    }
+    EXPECT_GE(solved, stepped - 1e-9) << c.name;
+    EXPECT_LE(solved, stepped + (top - c.bottom) / 4000.0) << c.name;
+    EXPECT_LE(between, solved + 0.01) << c.name;
+  }
+  const auto solved = [&](std::size_t k) {
+    return render::OceanRenderer::seaTopNdc(cases[k].view, left, right, cases[k].bottom, top);
+  };
+  EXPECT_LT(solved(0), 0.0);  // below the middle: the axis 2° up
+  EXPECT_GT(solved(1), solved(0) + 0.5);  // tilted
+  EXPECT_LT(solved(3), top);
+  EXPECT_DOUBLE_EQ(solved(4), top);
+  EXPECT_LT(solved(5), cases[5].bottom);
+}
+
+// The rows over the sea's top all lay on the horizon: without them the picture is the same.
+// From 2 m looking level, rolled 10°, and 15° up (the horizon low on the screen), with the
+// deferred sea's visibility buffer, surface buffer and the forward draw; at 640 x 360 (fine
+// rows of 8 px in bands of 16: the horizon's band is the second of five over the screen at 15°
+// up). Measured: the same bytes. Mutated, the rows kept ending at the sea's top less 2 bands:
+// the sea's far part gone (sky over 22-28 % of the pixels, up to 220 levels).
+TEST(OceanGrid, RowsOverTheSeaTopLeftOutDrawTheSamePicture) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  struct Case {
+    const char* name;
+    double pitchDeg, rollDeg;
+    const char* surface;
+  };
+  for (const Case& c : {Case{"level", 2.0, 0.0, "visibility"}, Case{"rolled", 2.0, 10.0, "buffer"},
+                        Case{"up15", 15.0, 0.0, "visibility"}, Case{"up15_forward", 15.0, 0.0, nullptr}}) {
+    render::FrameInput f = test::frameOf({20.0, -40.0, 2.0, 270.0, c.pitchDeg, 60.0, 640, 360}, 20.0, 250.0);
+    f.camera.rollDeg = c.rollDeg;
+    f.simulationTimeS = 3.0;
+    if (c.surface != nullptr)
+      setenv("OCEANGLOBE_SEA_SURFACE", c.surface, 1);
+    r.ocean().setDeferred(c.surface != nullptr);
+    r.render(f);
+    const io::ImageRgba8 cut = r.display();
+    const int drawn = r.ocean().lastGridRowsDrawn(), rows = r.ocean().lastGridRows();
+    r.ocean().setGridToSeaTop(false);
+    r.render(f);
+    const io::ImageRgba8 whole = r.display();
+    EXPECT_EQ(r.ocean().lastGridRowsDrawn(), r.ocean().lastGridRows()) << c.name;
+    r.ocean().setGridToSeaTop(true);
+    r.ocean().setDeferred(true);
+    unsetenv("OCEANGLOBE_SEA_SURFACE");
+    std::printf("%s: %d of %d vertex rows\n", c.name, drawn, rows);
+    EXPECT_LT(drawn, rows) << c.name;
+    const test::Comparison cmp = test::compareRgb(cut, whole, 1);
+    if (!cmp.within({1, 0.001, 1, 0.0})) {
+      const std::filesystem::path out = std::filesystem::path(OG_TEST_OUT_DIR) / (std::string("ocean_grid_sea_top_") + c.name);
+      io::writePng(out.string() + ".png", cut);
+      io::writePng(out.string() + ".diff.png", cmp.diff);
+    }
+    EXPECT_TRUE(cmp.within({1, 0.001, 1, 0.0})) << c.name << ": " << cmp.describe();
+  }
+}
