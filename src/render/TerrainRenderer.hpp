@@ -70,6 +70,9 @@ struct TerrainStats {
   /// Drawn tiles shaded without the night lights' lookup in the last frame (the Sun up on all
   /// of each, or in all of the view: tileBits).
   int dayTiles = 0;
+  /// Drawn tiles the sea's horizon may hide, drawn in one pass without the coverage pass in the
+  /// last frame (drawCovered).
+  int onePassBeyondHorizon = 0;
   double maxHeightM = 0.0;      ///< highest point of the selected tiles, m (0 when none)
   /// Samples the last frame's tile draws passed (both draws of a tile drawn twice; above the
   /// grid's ceiling not those drawWaterTiles draws after the globe), with setCountSamples(true);
@@ -142,6 +145,9 @@ class TerrainRenderer {
   /// shows in its distances (shadowReceiverRect; the default) or all of it: for tests that
   /// compare the two.
   void setShadowCropped(bool on) { shadowCropped_ = on; }
+  /// Whether the tiles the sea's horizon may hide get the coverage pass too (drawCovered;
+  /// default off: the horizon's clip leaves them few fragments): for tests that compare.
+  void setCoverageBeyondHorizon(bool on) { coverageBeyondHorizon_ = on; }
   /// Whether the next frames draw with the programs that leave the land mask's fine level out
   /// (no pixel resolves it: render::LandMaskTexture::fineLevelUnresolved; the globe renderer
   /// sets it each frame).
@@ -251,6 +257,9 @@ class TerrainRenderer {
   /// bits on top: drawTiles).
   void drawCovered(const geo::CameraView& view, const std::vector<const terrain::Tile*>& tiles,
                    unsigned frameBits, const glm::dvec3& sunDirectionEcef, bool seaFromGlobe);
+  /// Whether the sea's horizon may hide part of tile `t` (this frame's cone: terrain::
+  /// seaHorizonMayHide): its draws then clip at the cone (GL_CLIP_DISTANCE1), in one pass.
+  [[nodiscard]] bool seaHorizonMayHide(const terrain::Tile& t, const geo::CameraView& view) const;
   /// What the vertices' aerial perspective reads (terrain/tile_vertex.glsl): the Sun, the eye's
   /// vertical and height, the atmosphere's tables.
   void setAerialUniforms(const gl::Program& p, const geo::CameraView& view, const glm::dvec3& sunDirectionEcef) const;
@@ -309,6 +318,7 @@ class TerrainRenderer {
   bool countSamples_ = false;  ///< setCountSamples
   bool shadowTexelsFitted_ = true;
   bool shadowCropped_ = true;
+  bool coverageBeyondHorizon_ = false;  ///< setCoverageBeyondHorizon
   double floorShadowReachM_ = 0.0;  ///< the crops' margin for the floor's shadows (constructor)
   /// terrain.vert/frag variants by bits, built on first use: llvmpipe runs every branch, so
   /// a frame draws with only the code it needs. kLandOnly: without the discards and the coast
