@@ -1185,9 +1185,13 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
                           }) != 0;
   std::array<GLint, 2 * kSeaClasses> rows = noClassRows();
   rows.at(0) = 0, rows.at(1) = 0;  // without classes, all is class 1
-  if (classes && seaVisible) {
+  std::array<GLint, 2> seen{};     // the visibility buffer's open sea and shadows (ocean/sea_visibility.frag)
+  if (classes && seaVisible) {     // (one read-back: the rows, then the flags)
+    std::array<GLint, kClassRowsInts> recorded{};
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glGetNamedBufferSubData(classRows_.id(), 0, sizeof rows, rows.data());
+    glGetNamedBufferSubData(classRows_.id(), 0, sizeof recorded, recorded.data());
+    std::copy_n(recorded.begin(), rows.size(), rows.begin());
+    std::copy_n(recorded.begin() + rows.size(), seen.size(), seen.begin());
   }
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
   glDisable(GL_DEPTH_TEST);
@@ -1226,8 +1230,6 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   dispatches.reset();
   if (deepByVisibility && seaVisible) {
     bindVisibilityForShading();
-    std::array<GLint, 2> seen{};  // (ocean/sea_visibility.frag's flags, after the rows)
-    glGetNamedBufferSubData(classRows_.id(), 2 * kSeaClasses * sizeof(GLint), sizeof seen, seen.data());
     for (std::size_t k = 0; k < 2; ++k)  // open sea, shadows
       if (seen.at(k) != 0)
         shadeClass(deferredProgram(perClass.at(k), false, true), kVisibilityClass + static_cast<int>(k), k,
