@@ -262,7 +262,9 @@ Run addBenchCommand(CLI::App& parent) {
   CLI::App* cmd = parent.add_subcommand("bench", "print frame times of fixed views and sizes");
   cmd->add_option("--gl", o->gl, "OpenGL backend: auto, egl or osmesa")
       ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
-  cmd->add_option("--frames", o->frames, "timed frames per case (after 2 warm-up frames)")
+  cmd->add_option("--frames", o->frames,
+                  "timed frames per case (after 2 warm-up frames; default 20); with --record, frames "
+                  "sampled evenly along the path (default: every frame, as `record` renders it)")
       ->check(CLI::Range(1, 10000));
   cmd->add_option("--size", o->sizes, "image sizes WIDTHxHEIGHT (repeatable)");
   cmd->add_option("--view", o->views, "only these views (repeatable; default: all)")
@@ -306,7 +308,7 @@ Run addBenchCommand(CLI::App& parent) {
       // `auto` times by glFinish and the clock here: the recording makes its context later, and
       // that is right on any driver.
       const gl::PassTimer::Mode mode = o->timer == "auto" ? gl::PassTimer::Mode::Finish : timerMode(o->timer);
-      return benchRecord(o->record, sizes, o->frames, o->gl, samples, o->json,
+      return benchRecord(o->record, sizes, cmd->count("--frames") > 0 ? o->frames : 0, o->gl, samples, o->json,
                          o->breakdown ? std::optional(mode) : std::nullopt);
     }
     if (o->startup) {

@@ -52,7 +52,10 @@ struct RecordResult {
 std::int64_t frameCount(double durationS, double fps);
 
 /// `oceanglobe bench --record PATH`: frames/s of the path at each size and sample count,
-/// rendering only and rendering + MP4 encoding, `frames` frames sampled evenly along the flight.
+/// rendering only and rendering + MP4 encoding: every frame of the flight where `frames` is 0
+/// (what `record` does), else `frames` frames sampled evenly along it (a quicker look, in which
+/// the one-time work, the first frame's tiles and programs and the first frame under the grid's
+/// ceiling, weighs the stride times its share of the whole recording).
 /// With `timerMode`, also the mean time of each pass per frame in bands of camera height (the
 /// render-only run's frames, then timed pass by pass).
 int benchRecord(const std::string& pathFile, const std::vector<std::pair<int, int>>& sizes,

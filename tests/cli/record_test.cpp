@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -279,4 +280,27 @@ TEST(Record, BenchBreakdownByHeight) {
   for (std::size_t i = 1; i < frames.size(); ++i)
     EXPECT_LT(frames[i].at("height_m").get<double>(), frames[i - 1].at("height_m").get<double>()) << i;
   EXPECT_TRUE(frames.back().at("passes_ms").contains("ocean")) << frames.back();
+}
+
+// `bench --record` times the recording `record` makes: every frame of the path unless --frames
+// asks for a sample (the short path at 40 frames/s: 41 frames, twice the sample it took before
+// by default; a sample of 3 takes every 13th).
+TEST(Record, BenchRecordsEveryFrameUnlessAskedForASample) {
+  const fs::path dir = scratch();
+  const fs::path path = writePath(dir);
+  std::string text;
+  {
+    std::ifstream in(path);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::size_t at = text.find("fps = 8");
+  ASSERT_NE(at, std::string::npos);
+  std::ofstream(path) << text.replace(at, 7, "fps = 40");
+  const RunResult all = run("bench --record " + path.string() + " --size 64x36 --samples 1 --json");
+  ASSERT_EQ(all.exitCode, 0) << all.err;
+  EXPECT_EQ(nlohmann::json::parse(all.out).at("record").at(0).at("frames").get<int>(), 41) << all.out;
+  const RunResult sample = run("bench --record " + path.string() + " --size 64x36 --samples 1 --frames 3");
+  ASSERT_EQ(sample.exitCode, 0) << sample.err;
+  EXPECT_NE(sample.out.find("every 13. of 41 frames"), std::string::npos) << sample.out;
+  EXPECT_NE(sample.out.find("      4 "), std::string::npos) << sample.out;  // frames 0, 13, 26, 39
 }
