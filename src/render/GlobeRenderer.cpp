@@ -282,6 +282,7 @@ void GlobeRenderer::render(const FrameInput& f) {
   if (timer_ != nullptr) timer_->beginFrame();
   ocean_->beginFrame();
   partsGated_.clear();
+  if (countPartSamples_) partSamples_.clear();  // (a frame that draws no globe part counts none)
   // The waves hold the strongest wind of the scene; every point scales and turns them to its
   // own wind (ocean/patterns.glsl).
   wind_->setConstantWind(f.wind);

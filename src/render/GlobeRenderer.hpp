@@ -236,7 +236,7 @@ class GlobeRenderer {
   /// back at once: for tests and `bench --breakdown`, not for frames that must not wait).
   void setCountPartSamples(bool on) { countPartSamples_ = on; }
   /// The globe parts of the last frame that counted them and the samples each shaded
-  /// (setCountPartSamples), in the order they were drawn: "sky", "edge", "surface", "land",
+  /// (setCountPartSamples; none where the frame drew no globe part), in the order they were drawn: "sky", "edge", "surface", "land",
   /// "sea lattice", "sea", "open sea lattice", "open sea" (the lattice's: render/SeaLattice's
   /// interpolated pixels of the part after it).
   [[nodiscard]] const std::vector<std::pair<std::string, std::uint64_t>>& partSamples() const { return partSamples_; }
