@@ -312,16 +312,21 @@ double OceanRenderer::seaTopNdc(const geo::CameraView& view, double leftNdc, dou
     };
     // (q² - c b.b) y² + 2 (p q - c a.b) y + (p² - c a.a) = 0
     const double qa = q * q - c * glm::dot(b, b), qb = p * q - c * glm::dot(a, b), qc = p * p - c * glm::dot(a, a);
-    std::vector<double> ends{bottomNdc, topNdc};
-    if (q != 0.0) ends.push_back(-p / q);
+    // The range's ends, -p/q and the two roots, in a fixed array (the unused ends last, +inf).
+    constexpr double kUnused = std::numeric_limits<double>::infinity();
+    std::array<double, 5> ends{bottomNdc, topNdc, kUnused, kUnused, kUnused};
+    std::size_t n = 2;
+    const auto add = [&](double y) {
+      if (y >= bottomNdc && y <= topNdc) ends.at(n++) = y;  // (NaN and outside the range left out)
+    };
+    if (q != 0.0) add(-p / q);
     const double disc = qb * qb - qa * qc;
     if (qa != 0.0 && disc >= 0.0) {
-      ends.push_back((-qb - std::sqrt(disc)) / qa);
-      ends.push_back((-qb + std::sqrt(disc)) / qa);
+      add((-qb - std::sqrt(disc)) / qa);
+      add((-qb + std::sqrt(disc)) / qa);
     }
-    std::erase_if(ends, [&](double y) { return !(y >= bottomNdc && y <= topNdc); });
     std::sort(ends.begin(), ends.end());
-    for (std::size_t i = 0; i + 1 < ends.size(); ++i)
+    for (std::size_t i = 0; i + 1 < n; ++i)
       if (ends[i + 1] > highest && hits(0.5 * (ends[i] + ends[i + 1]))) highest = ends[i + 1];
   }
   return highest;
@@ -680,13 +685,17 @@ bool OceanRenderer::gridTexelsFit() const {
   return static_cast<std::int64_t>(gridColumns_) * gridRows_ * kGridVertexVec4s <= maxTexels;
 }
 
-void OceanRenderer::shadeClass(const gl::Program& p, int stencilClass, std::size_t counted,
-                               const std::function<void(const gl::Program&)>& prepareProgram) {
-  if (timer_ != nullptr) timer_->mark(kClassPass.at(counted));
-  classesDrawn_ |= 1u << counted;
+void OceanRenderer::shadeClass(const gl::Program& p, int stencilClass, std::size_t pass, std::size_t counted,
+                               const std::function<void(const gl::Program&)>& prepareProgram,
+                               const ClassDispatches* dispatches) {
+  if (timer_ != nullptr) timer_->mark(kClassPass.at(pass));
+  if (counted < kSeaClasses) classesDrawn_ |= 1u << counted;
   prepareProgram(p);
   p.use();
-  shadeClassPixels(stencilClass, counted);
+  if (dispatches != nullptr)
+    dispatches->dispatch(p, stencilClass);
+  else
+    shadeClassPixels(stencilClass, counted);
 }
 
 void OceanRenderer::shadeClassPixels(int stencilClass, std::size_t counted) {
@@ -1116,31 +1125,48 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
     if (timer_ != nullptr) timer_->mark("ocean");
     if (!shows) return;
   }
-  // The surface pass: with classes where the frame has a floor or a coast to route.
-  const bool classes = surfaceClasses(lighting, features);
-  const unsigned surfaceKey = (features & (kFeatureWaterVolume | kFeatureCoastTest)) | (classes ? kSurfaceClasses : 0u);
-  unsigned routedShadows = kFeatureShadows;
+  const DeferredSea sea{view, width, height, patterns, frame, lighting, amplitudeScale, wind, features, margin, depthStencil};
+  const SeaSurfaceDrawn drawn = drawSeaSurface(sea);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(drawn.target));
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  shadeSeaClasses(sea, drawn);
+  if (timer_ != nullptr) timer_->mark("ocean");
+  if (depthStencil.samples > 1 && drawn.seaVisible) copySeaRadiance(static_cast<GLuint>(drawn.target));
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);
+  glStencilMask(0xff);
+  glClear(GL_STENCIL_BUFFER_BIT);  // as the caller had it (the globe's parts count from 0)
+  glDisable(GL_STENCIL_TEST);
+}
+
+OceanRenderer::SeaSurfaceDrawn OceanRenderer::drawSeaSurface(const DeferredSea& sea) {
+  SeaSurfaceDrawn d;
+  // With classes where the frame has a floor or a coast to route.
+  d.classes = surfaceClasses(sea.lighting, sea.features);
+  const unsigned surfaceKey = (sea.features & (kFeatureWaterVolume | kFeatureCoastTest)) | (d.classes ? kSurfaceClasses : 0u);
+  d.routedShadows = kFeatureShadows;
   const auto prepareSurface = [&](const gl::Program& p) {
-    prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
-    if (classes) routedShadows = setClassUniforms(p, view, patterns, lighting, amplitudeScale, features);
+    sea.prepare(*this, p, sea.features);
+    if (d.classes) d.routedShadows = setClassUniforms(p, sea.view, sea.patterns, sea.lighting, sea.amplitudeScale, sea.features);
   };
   // A visibility buffer where the sea has one class (multisampled frames come only so:
   // deferredServes).
-  const bool multisampled = depthStencil.samples > 1;
-  const bool visibility = visibilityServes(features, classes);
+  const bool multisampled = sea.depthStencil.samples > 1;
+  d.visibility = visibilityServes(sea.features, d.classes);
   // In classes, the deep triangles (no floor within reach, no land near) through it too, as
   // their own classes (kVisibilityClass: exported, shaded by full-screen passes).
-  const bool deepByVisibility = classes && visibility_ && gl::driverProfile().stencilExport &&
-                                frameComputeImage_ == 0 && !multisampled && gridTexelsFit();
-  lastSurfaceByVisibility_ = visibility || deepByVisibility;
-  if (visibility) computeSurfaceVertices(surfaceKey, prepareSurface);
-  const gl::Program& surface = visibility ? visibilityProgram() : prepareSurfacePass(surfaceKey, prepareSurface);
+  d.deepByVisibility = d.classes && visibility_ && gl::driverProfile().stencilExport && frameComputeImage_ == 0 &&
+                       !multisampled && gridTexelsFit();
+  lastSurfaceByVisibility_ = d.visibility || d.deepByVisibility;
+  if (d.visibility) computeSurfaceVertices(surfaceKey, prepareSurface);
+  const gl::Program& surface = d.visibility ? visibilityProgram() : prepareSurfacePass(surfaceKey, prepareSurface);
   // With classes the coast test runs only where land may be near, and the water's terms only
   // where a floor may be within reach: the grid in three draws (splitNearLand).
   const gl::Program* open = nullptr;
   const gl::Program* deep = nullptr;
   const bool fullLayout = (surfaceKey & kFeatureWaterVolume) != 0;
-  if (classes) {
+  if (d.classes) {
     splitNearLand(surfaceKey);
     open = &surfaceProgram(surfaceKey & ~kFeatureCoastTest);
     prepareSurface(*open);
@@ -1149,101 +1175,86 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
       deep = &surfaceProgram(surfaceKey & ~(kFeatureCoastTest | kFeatureWaterVolume));
       prepareSurface(*deep);
     }
+    resetClassRows();  // (binds the class rows at kClassRowsBinding, the split's deep list's)
   }
-  if (classes) resetClassRows();  // (binds the class rows at kClassRowsBinding, the split's deep list's)
-  GLint target = 0;
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &d.target);
   const bool compact = surfaceCompact(surfaceKey);
-  lastSurfaceCompact_ = compact && !visibility;  // (no surface buffer written)
-  const bool exportsStencil = gl::driverProfile().stencilExport;
-  if (visibility) {
-    surface_.bindVisibilityForWriting(width, height, depthStencil.texture, depthStencil.samples);
+  lastSurfaceCompact_ = compact && !d.visibility;  // (no surface buffer written)
+  if (d.visibility) {
+    surface_.bindVisibilityForWriting(sea.width, sea.height, sea.depthStencil.texture, sea.depthStencil.samples);
   } else {
-    surface_.bindForWriting(width, height, depthStencil.texture, compact);
-    if (!exportsStencil) surface_.clearClasses();
+    surface_.bindForWriting(sea.width, sea.height, sea.depthStencil.texture, compact);
+    if (!gl::driverProfile().stencilExport) surface_.clearClasses();
   }
   // Each pixel's class is its nearest fragment's (depth-tested, its values in the buffer).
   glEnable(GL_STENCIL_TEST);
   glStencilMask(0xff);
   glClear(GL_STENCIL_BUFFER_BIT);
   // The reference is the shader's (gl_FragStencilRefARB); the visibility buffer's one class's.
-  glStencilFunc(GL_ALWAYS, visibility ? 1 : 0, 0xff);
+  glStencilFunc(GL_ALWAYS, d.visibility ? 1 : 0, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   if (timer_ != nullptr) timer_->mark("ocean surface");
-  const bool seaVisible = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] {
-                            if (open == nullptr) return drawGrid(surface);
-                            if (fullLayout) drawGridIndices(*open, floorIndices_);  // (else empty)
-                            drawGridIndices(surface, nearLandIndices_);
-                            if (deepByVisibility) {
-                              surface_.drawVisibility();
-                              drawGridIndices(visibilityProgram(true), deepIndices_);
-                              return surface_.drawLayers(compact);
-                            }
-                            if (fullLayout) surface_.drawLayers(true);  // (deep: the compact layout)
-                            drawGridIndices(*deep, deepIndices_);
-                            if (fullLayout) surface_.drawLayers(false);
-                          }) != 0;
-  std::array<GLint, 2 * kSeaClasses> rows = noClassRows();
-  rows.at(0) = 0, rows.at(1) = 0;  // without classes, all is class 1
-  std::array<GLint, 2> seen{};     // the visibility buffer's open sea and shadows (ocean/sea_visibility.frag)
-  if (classes && seaVisible) {     // (one read-back: the rows, then the flags)
+  d.seaVisible = gl::queryResult(GL_ANY_SAMPLES_PASSED, [&] {
+                   if (open == nullptr) return drawGrid(surface);
+                   if (fullLayout) drawGridIndices(*open, floorIndices_);  // (else empty)
+                   drawGridIndices(surface, nearLandIndices_);
+                   if (d.deepByVisibility) {
+                     surface_.drawVisibility();
+                     drawGridIndices(visibilityProgram(true), deepIndices_);
+                     return surface_.drawLayers(compact);
+                   }
+                   if (fullLayout) surface_.drawLayers(true);  // (deep: the compact layout)
+                   drawGridIndices(*deep, deepIndices_);
+                   if (fullLayout) surface_.drawLayers(false);
+                 }) != 0;
+  d.rows = noClassRows();
+  d.rows.at(0) = 0, d.rows.at(1) = 0;  // without classes, all is class 1
+  if (d.classes && d.seaVisible) {     // (one read-back: the rows, then the flags)
     std::array<GLint, kClassRowsInts> recorded{};
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glGetNamedBufferSubData(classRows_.id(), 0, sizeof recorded, recorded.data());
-    std::copy_n(recorded.begin(), rows.size(), rows.begin());
-    std::copy_n(recorded.begin() + rows.size(), seen.size(), seen.begin());
+    std::copy_n(recorded.begin(), d.rows.size(), d.rows.begin());
+    std::copy_n(recorded.begin() + d.rows.size(), d.seen.size(), d.seen.begin());
   }
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
-  glDisable(GL_DEPTH_TEST);
-  glDepthMask(GL_FALSE);
-  // The shading: a full-screen pass per class present, only its pixels; or a compute dispatch
-  // into the target's image, which reads the classes where they are. Multisampled, per pixel
-  // into a single-sampled image first (copySeaRadiance).
-  const GLuint image = multisampled ? seaRadianceImage(width, height) : frameComputeImage_;
+  return d;
+}
+
+void OceanRenderer::shadeSeaClasses(const DeferredSea& sea, const SeaSurfaceDrawn& drawn) {
+  // A full-screen pass per class present, only its pixels; or a compute dispatch into the
+  // target's image, which reads the classes where they are. Multisampled, per pixel into a
+  // single-sampled image first (copySeaRadiance).
+  const bool multisampled = sea.depthStencil.samples > 1;
+  const GLuint image = multisampled ? seaRadianceImage(sea.width, sea.height) : frameComputeImage_;
   lastClassesByCompute_ = image != 0;
-  if (!exportsStencil && !visibility && seaVisible && image == 0) classesIntoStencil();
+  if (!drawn.seaVisible) return;
+  if (!gl::driverProfile().stencilExport && !drawn.visibility && image == 0) classesIntoStencil();
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glStencilMask(0);
-  if (visibility) {
+  if (drawn.visibility)
     bindVisibilityForShading();
-  } else {
+  else
     surface_.bindForReading();
-  }
   glBindVertexArray(vao_.id());
-  std::optional<ClassDispatches> dispatches;
-  if (image != 0 && seaVisible) dispatches.emplace(image, visibility ? 0 : depthStencil.texture);
-  std::array<unsigned, kSeaClasses> perClass = classFeatures(features, routedShadows);
-  if (!classes) perClass.at(0) = features & ~kFeatureCoastTest;  // one class: all but the coast test
-  for (std::size_t k = 0; k < kSeaClasses && seaVisible; ++k) {
-    if (rows.at(2 * k + 1) < rows.at(2 * k)) continue;  // no pixel of this class
-    if (timer_ != nullptr) timer_->mark(kClassPass.at(k));
-    if (classes) classesDrawn_ |= 1u << k;
-    const gl::Program& p = deferredProgram(perClass.at(k), image != 0, visibility, multisampled);
-    prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, perClass.at(k), margin);
-    p.use();
-    if (dispatches) {
-      dispatches->dispatch(p, static_cast<int>(k + 1));
-      continue;
+  std::array<unsigned, kSeaClasses> perClass = classFeatures(sea.features, drawn.routedShadows);
+  if (!drawn.classes) perClass.at(0) = sea.features & ~kFeatureCoastTest;  // one class: all but the coast test
+  {
+    std::optional<ClassDispatches> dispatches;
+    if (image != 0) dispatches.emplace(image, drawn.visibility ? 0 : sea.depthStencil.texture);
+    for (std::size_t k = 0; k < kSeaClasses; ++k) {
+      if (drawn.rows.at(2 * k + 1) < drawn.rows.at(2 * k)) continue;  // no pixel of this class
+      shadeClass(deferredProgram(perClass.at(k), image != 0, drawn.visibility, multisampled), static_cast<int>(k + 1),
+                 k, drawn.classes ? k : kSeaClasses,
+                 [&](const gl::Program& p) { sea.prepare(*this, p, perClass.at(k)); },
+                 dispatches ? &*dispatches : nullptr);
     }
-    shadeClassPixels(static_cast<int>(k + 1), classes ? k : kSeaClasses);
   }
-  dispatches.reset();
-  if (deepByVisibility && seaVisible) {
+  if (drawn.deepByVisibility) {
     bindVisibilityForShading();
     for (std::size_t k = 0; k < 2; ++k)  // open sea, shadows
-      if (seen.at(k) != 0)
-        shadeClass(deferredProgram(perClass.at(k), false, true), kVisibilityClass + static_cast<int>(k), k,
-                 [&](const gl::Program& p) {
-                   prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, perClass.at(k), margin);
-                 });
+      if (drawn.seen.at(k) != 0)
+        shadeClass(deferredProgram(perClass.at(k), false, true), kVisibilityClass + static_cast<int>(k), k, k,
+                   [&](const gl::Program& p) { sea.prepare(*this, p, perClass.at(k)); });
   }
-  if (timer_ != nullptr) timer_->mark("ocean");
-  if (multisampled && seaVisible) copySeaRadiance(static_cast<GLuint>(target));
-  glEnable(GL_DEPTH_TEST);
-  glDepthMask(GL_TRUE);
-  glStencilMask(0xff);
-  glClear(GL_STENCIL_BUFFER_BIT);  // as the caller had it (the globe's parts count from 0)
-  glDisable(GL_STENCIL_TEST);
 }
 
 }  // namespace og::render

@@ -290,10 +290,14 @@ class OceanRenderer {
   static constexpr std::size_t kClassRowsInts = 2 * kSeaClasses + 2;
   /// Whether the grid's vertex records fit one buffer texture (bindGridTexels).
   [[nodiscard]] bool gridTexelsFit() const;
-  /// A deferred class's full-screen pass with `p` (`prepareProgram` sets its uniforms) over the
-  /// stencil's `stencilClass`, timed, drawn and counted as class `counted` (0-based).
-  void shadeClass(const gl::Program& p, int stencilClass, std::size_t counted,
-                  const std::function<void(const gl::Program&)>& prepareProgram);
+  class ClassDispatches;
+  /// A deferred class's pass with `p` (`prepareProgram` sets its uniforms) over the stencil's
+  /// `stencilClass`, timed as class `pass` (0-based), drawn and counted as class `counted`
+  /// (kSeaClasses: not counted, as a frame without classes); by `dispatches` where given, else
+  /// by a full-screen draw.
+  void shadeClass(const gl::Program& p, int stencilClass, std::size_t pass, std::size_t counted,
+                  const std::function<void(const gl::Program&)>& prepareProgram,
+                  const ClassDispatches* dispatches = nullptr);
   /// Its draw alone, `p` in use (its samples added to classSamples_ where counted, `counted`
   /// < kSeaClasses).
   void shadeClassPixels(int stencilClass, std::size_t counted);
@@ -346,6 +350,41 @@ class OceanRenderer {
                     const ocean::OceanFrame& frame, const OceanLighting& lighting, double amplitudeScale,
                     const WindTextures& wind, unsigned features, const glm::vec4& margin,
                     SeaSurfaceBuffer::DepthStencil depthStencil);
+  /// drawDeferred's arguments, for its two steps.
+  struct DeferredSea {
+    const geo::CameraView& view;
+    int width, height;
+    const OceanPatterns& patterns;
+    const ocean::OceanFrame& frame;
+    const OceanLighting& lighting;
+    double amplitudeScale;
+    const WindTextures& wind;
+    unsigned features;
+    glm::vec4 margin;
+    SeaSurfaceBuffer::DepthStencil depthStencil;
+    /// prepare() for `p` with `programFeatures`.
+    void prepare(const OceanRenderer& r, const gl::Program& p, unsigned programFeatures) const {
+      r.prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, programFeatures, margin);
+    }
+  };
+  /// What drawDeferred's surface pass left for its shading.
+  struct SeaSurfaceDrawn {
+    bool classes = false;           ///< the surface pass wrote classes (surfaceClasses)
+    bool visibility = false;        ///< the visibility buffer holds the whole sea (visibilityServes)
+    bool deepByVisibility = false;  ///< in classes, the deep triangles' in the visibility buffer
+    bool seaVisible = false;        ///< any sample of sea was drawn
+    unsigned routedShadows = 0;     ///< setClassUniforms'
+    std::array<GLint, 2 * kSeaClasses> rows{};  ///< each class's first and last row (noClassRows)
+    std::array<GLint, 2> seen{};    ///< the visibility buffer's open sea and shadows have a pixel
+    GLint target = 0;               ///< the draw framebuffer the shading writes to
+  };
+  /// drawDeferred's step 1: the surface pass into the surface or visibility buffer, the classes
+  /// into the stencil; the draw framebuffer is left the surface buffer's.
+  SeaSurfaceDrawn drawSeaSurface(const DeferredSea& sea);
+  /// drawDeferred's step 2: each class present shaded into `drawn.target` by full-screen
+  /// passes or compute dispatches (multisampled: into the single-sampled image that
+  /// copySeaRadiance copies to the samples after).
+  void shadeSeaClasses(const DeferredSea& sea, const SeaSurfaceDrawn& drawn);
   /// Sets the classifying uniforms of sea_class.glsl on `p`; returns the shadows routed to
   /// classes (kFeatureShadows or 0).
   unsigned setClassUniforms(const gl::Program& p, const geo::CameraView& view, const OceanPatterns& patterns,
