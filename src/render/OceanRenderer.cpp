@@ -298,9 +298,10 @@ double OceanRenderer::seaTopNdc(const geo::CameraView& view, double leftNdc, dou
   const glm::dvec3 o = scaled(view.positionEcef);
   const double c = glm::dot(o, o) - 1.0;
   if (c <= 0.0) return topNdc;
+  double highest = bottomNdc - 1.0;
+  if (!(bottomNdc <= topNdc)) return highest;  // an empty range (or NaN): no ray in it meets the sea
   const double tanY = std::tan(0.5 * view.verticalFovRad), tanX = tanY * view.aspect;
   const glm::dvec3 b = scaled(tanY * view.up);
-  double highest = bottomNdc - 1.0;
   for (int k = 0; k <= kSeaTopColumns; ++k) {
     const double x = leftNdc + (rightNdc - leftNdc) * k / kSeaTopColumns;
     const glm::dvec3 a = scaled(view.forward + x * tanX * view.right);
@@ -685,11 +686,12 @@ bool OceanRenderer::gridTexelsFit() const {
   return static_cast<std::int64_t>(gridColumns_) * gridRows_ * kGridVertexVec4s <= maxTexels;
 }
 
-void OceanRenderer::shadeClass(const gl::Program& p, int stencilClass, std::size_t pass, std::size_t counted,
-                               const std::function<void(const gl::Program&)>& prepareProgram,
+void OceanRenderer::shadeClass(const std::function<const gl::Program&()>& program, int stencilClass, std::size_t pass,
+                               std::size_t counted, const std::function<void(const gl::Program&)>& prepareProgram,
                                const ClassDispatches* dispatches) {
   if (timer_ != nullptr) timer_->mark(kClassPass.at(pass));
   if (counted < kSeaClasses) classesDrawn_ |= 1u << counted;
+  const gl::Program& p = program();  // (after the mark: a variant compiled on first use is its pass's time)
   prepareProgram(p);
   p.use();
   if (dispatches != nullptr)
@@ -1226,8 +1228,7 @@ void OceanRenderer::shadeSeaClasses(const DeferredSea& sea, const SeaSurfaceDraw
   const bool multisampled = sea.depthStencil.samples > 1;
   const GLuint image = multisampled ? seaRadianceImage(sea.width, sea.height) : frameComputeImage_;
   lastClassesByCompute_ = image != 0;
-  if (!drawn.seaVisible) return;
-  if (!gl::driverProfile().stencilExport && !drawn.visibility && image == 0) classesIntoStencil();
+  if (!gl::driverProfile().stencilExport && !drawn.visibility && drawn.seaVisible && image == 0) classesIntoStencil();
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glStencilMask(0);
   if (drawn.visibility)
@@ -1235,6 +1236,7 @@ void OceanRenderer::shadeSeaClasses(const DeferredSea& sea, const SeaSurfaceDraw
   else
     surface_.bindForReading();
   glBindVertexArray(vao_.id());
+  if (!drawn.seaVisible) return;
   std::array<unsigned, kSeaClasses> perClass = classFeatures(sea.features, drawn.routedShadows);
   if (!drawn.classes) perClass.at(0) = sea.features & ~kFeatureCoastTest;  // one class: all but the coast test
   {
@@ -1242,8 +1244,8 @@ void OceanRenderer::shadeSeaClasses(const DeferredSea& sea, const SeaSurfaceDraw
     if (image != 0) dispatches.emplace(image, drawn.visibility ? 0 : sea.depthStencil.texture);
     for (std::size_t k = 0; k < kSeaClasses; ++k) {
       if (drawn.rows.at(2 * k + 1) < drawn.rows.at(2 * k)) continue;  // no pixel of this class
-      shadeClass(deferredProgram(perClass.at(k), image != 0, drawn.visibility, multisampled), static_cast<int>(k + 1),
-                 k, drawn.classes ? k : kSeaClasses,
+      shadeClass([&]() -> const gl::Program& { return deferredProgram(perClass.at(k), image != 0, drawn.visibility, multisampled); },
+                 static_cast<int>(k + 1), k, drawn.classes ? k : kSeaClasses,
                  [&](const gl::Program& p) { sea.prepare(*this, p, perClass.at(k)); },
                  dispatches ? &*dispatches : nullptr);
     }
@@ -1252,7 +1254,8 @@ void OceanRenderer::shadeSeaClasses(const DeferredSea& sea, const SeaSurfaceDraw
     bindVisibilityForShading();
     for (std::size_t k = 0; k < 2; ++k)  // open sea, shadows
       if (drawn.seen.at(k) != 0)
-        shadeClass(deferredProgram(perClass.at(k), false, true), kVisibilityClass + static_cast<int>(k), k, k,
+        shadeClass([&]() -> const gl::Program& { return deferredProgram(perClass.at(k), false, true); },
+                   kVisibilityClass + static_cast<int>(k), k, k,
                    [&](const gl::Program& p) { sea.prepare(*this, p, perClass.at(k)); });
   }
 }

@@ -291,12 +291,12 @@ class OceanRenderer {
   /// Whether the grid's vertex records fit one buffer texture (bindGridTexels).
   [[nodiscard]] bool gridTexelsFit() const;
   class ClassDispatches;
-  /// A deferred class's pass with `p` (`prepareProgram` sets its uniforms) over the stencil's
-  /// `stencilClass`, timed as class `pass` (0-based), drawn and counted as class `counted`
-  /// (kSeaClasses: not counted, as a frame without classes); by `dispatches` where given, else
-  /// by a full-screen draw.
-  void shadeClass(const gl::Program& p, int stencilClass, std::size_t pass, std::size_t counted,
-                  const std::function<void(const gl::Program&)>& prepareProgram,
+  /// A deferred class's pass with `program()` (taken after the pass's timer mark;
+  /// `prepareProgram` sets its uniforms) over the stencil's `stencilClass`, timed as class
+  /// `pass` (0-based), drawn and counted as class `counted` (kSeaClasses: not counted, as a
+  /// frame without classes); by `dispatches` where given, else by a full-screen draw.
+  void shadeClass(const std::function<const gl::Program&()>& program, int stencilClass, std::size_t pass,
+                  std::size_t counted, const std::function<void(const gl::Program&)>& prepareProgram,
                   const ClassDispatches* dispatches = nullptr);
   /// Its draw alone, `p` in use (its samples added to classSamples_ where counted, `counted`
   /// < kSeaClasses).
