@@ -12,6 +12,8 @@ packages=(
   # FFTW: the wave patterns' FFTs where GL renders on the CPU (llvmpipe), and the tests'
   # reference of the GPU's
   libfftw3-dev
+  # jemalloc: the process's allocator, its large blocks on 2 MiB pages (src/core/MallocConf.cpp)
+  libjemalloc-dev
   # Google Earth KML tours (record/view/path convert)
   libpugixml-dev
   # video output for `record`; ffmpeg/ffprobe for the tests and the Slurm encode step

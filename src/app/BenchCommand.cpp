@@ -21,6 +21,7 @@
 #include "app/Recording.hpp"
 #include "app/SceneOptions.hpp"
 #include "app/Startup.hpp"
+#include "core/Allocator.hpp"
 #include "core/Error.hpp"
 #include "core/ScratchDirectory.hpp"
 #include "data/Elevation.hpp"
@@ -355,17 +356,19 @@ Run addBenchCommand(CLI::App& parent) {
     report["gl"] = {{"backend", context->info().backend},
                     {"renderer", context->info().renderer},
                     {"version", context->info().version}};
+    report["allocator"] = core::allocatorSummary();
     report["startup_ms"] = startupMs;
     report["atmosphere"] = {{"cold_ms", atmoColdMs},
                             {"cached_ms", atmoCachedMs},
                             {"cached_hit", cached->timing().fromCache},
                             {"sky_maps_ms", cached->timing().skyMapsMs}};
     if (!o->json)
-      std::printf("oceanglobe bench: %s, %s\nstartup (context + shaders + data): %.1f ms\n"
+      std::printf("oceanglobe bench: %s, %s, %s\nstartup (context + shaders + data): %.1f ms\n"
                   "atmosphere precompute: cold %.1f ms, cached second run %.1f ms%s "
                   "(sky maps %.1f ms of it)\n"
                   "%-16s %10s %7s %9s %9s %9s\n",
-                  context->info().renderer.c_str(), context->info().backend.c_str(), startupMs,
+                  context->info().renderer.c_str(), context->info().backend.c_str(),
+                  core::allocatorSummary().c_str(), startupMs,
                   atmoColdMs, atmoCachedMs, cached->timing().fromCache ? "" : " (cache MISSED)",
                   cached->timing().skyMapsMs, "view", "size", "samples", "median", "min", "max");
     for (auto& r : renderers) setImageryLayers(r->imagery(), o->imagery, imagery);
