@@ -8,7 +8,7 @@ namespace og::core {
 
 struct AllocatorInfo {
   std::string name;        ///< "jemalloc 5.3.0-…" or "glibc malloc"
-  std::string hugePages;   ///< jemalloc's "opt.thp" ("always", "default", "never"), else ""
+  std::string hugePages;   ///< jemalloc's "opt.thp" ("always", "default", "never", "not supported"), else ""
 };
 
 /// The running process's allocator and its huge-page option (MALLOC_CONF may have changed it).

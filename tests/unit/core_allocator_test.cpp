@@ -4,13 +4,16 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 
 #include "core/Allocator.hpp"
 
+#ifdef OG_JEMALLOC
 namespace {
 
 /// The kernel's transparent huge page mode ("always", "madvise", "never"), "" if unknown.
@@ -21,8 +24,9 @@ std::string thpMode() {
   return open == std::string::npos || close == std::string::npos ? "" : all.substr(open + 1, close - open - 1);
 }
 
-/// AnonHugePages (KiB) of the mapping of this process that holds `address` (/proc/self/smaps).
-long anonHugePagesKib(const void* address) {
+/// Field `name` ("VmFlags:", "AnonHugePages:") of the mapping of this process that holds
+/// `address` (/proc/self/smaps): the rest of its line, or nullopt where there is none.
+std::optional<std::string> smapsField(const void* address, const std::string& name) {
   const auto a = reinterpret_cast<std::uintptr_t>(address);
   std::ifstream smaps("/proc/self/smaps");
   bool inside = false;
@@ -34,24 +38,26 @@ long anonHugePagesKib(const void* address) {
       if (head >> std::hex >> from >> dash >> to && dash == '-') inside = a >= from && a < to;
       continue;
     }
-    if (inside && line.rfind("AnonHugePages:", 0) == 0) return std::strtol(line.c_str() + 14, nullptr, 10);
+    if (inside && line.rfind(name, 0) == 0) return line.substr(name.size());
   }
-  return -1;
+  return std::nullopt;
 }
 
 }  // namespace
 
-#ifdef OG_JEMALLOC
 TEST(Allocator, ExecutablesRunOnJemallocAskingForHugePages) {
   const og::core::AllocatorInfo info = og::core::allocatorInfo();
-  EXPECT_EQ(info.name.rfind("jemalloc 5", 0), 0u) << info.name;
+  EXPECT_EQ(info.name.rfind("jemalloc ", 0), 0u) << info.name;
   if (std::getenv("MALLOC_CONF") != nullptr) GTEST_SKIP() << "MALLOC_CONF is set: it overrides the built-in options";
+  const std::string mode = thpMode();
+  if (mode.empty()) GTEST_SKIP() << "no transparent huge pages here (jemalloc says 'not supported')";
   // The executable's malloc_conf was read: without it jemalloc's default is "default".
   EXPECT_EQ(info.hugePages, "always");
-  EXPECT_EQ(og::core::allocatorSummary(), "jemalloc 5.3.0 (thp:always)");
+  const std::string summary = og::core::allocatorSummary();
+  EXPECT_TRUE(summary.ends_with(" (thp:always)") && summary.find('-') == std::string::npos) << summary;
 }
 
-TEST(Allocator, LargeBlocksAreFaultedInOnHugePages) {
+TEST(Allocator, LargeBlocksAreMarkedForHugePages) {
   const std::string mode = thpMode();
   if (mode != "always" && mode != "madvise") GTEST_SKIP() << "transparent huge pages are '" << mode << "' here";
   if (std::getenv("MALLOC_CONF") != nullptr) GTEST_SKIP() << "MALLOC_CONF is set";
@@ -59,10 +65,16 @@ TEST(Allocator, LargeBlocksAreFaultedInOnHugePages) {
   void* block = std::malloc(kBytes);
   ASSERT_NE(block, nullptr);
   std::memset(block, 1, kBytes);
-  const long huge = anonHugePagesKib(static_cast<char*>(block) + kBytes / 2);
+  const void* middle = static_cast<char*>(block) + kBytes / 2;
+  const std::optional<std::string> flags = smapsField(middle, "VmFlags:");
+  const std::optional<std::string> huge = smapsField(middle, "AnonHugePages:");
   std::free(block);
-  // 4 KiB pages only (0) where the allocator did not ask for them ("madvise" mode).
-  EXPECT_GT(huge, 0) << "no huge pages in a 64 MiB block";
+  ASSERT_TRUE(flags.has_value()) << "the block's mapping is not in /proc/self/smaps";
+  // "hg": the mapping was marked MADV_HUGEPAGE (in "madvise" mode nothing else asks for huge
+  // pages). Whether the kernel found free 2 MiB pages at the fault depends on its memory's
+  // fragmentation: printed, not asserted.
+  EXPECT_NE((*flags + " ").find(" hg "), std::string::npos) << "VmFlags:" << *flags;
+  std::printf("64 MiB block: AnonHugePages:%s\n", huge.value_or(" (none)").c_str());
 }
 #else
 TEST(Allocator, TheCLibrarysWithoutJemalloc) {
