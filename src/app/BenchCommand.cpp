@@ -356,7 +356,8 @@ Run addBenchCommand(CLI::App& parent) {
     report["gl"] = {{"backend", context->info().backend},
                     {"renderer", context->info().renderer},
                     {"version", context->info().version}};
-    report["allocator"] = core::allocatorSummary();
+    const std::string allocator = core::allocatorSummary();
+    report["allocator"] = allocator;
     report["startup_ms"] = startupMs;
     report["atmosphere"] = {{"cold_ms", atmoColdMs},
                             {"cached_ms", atmoCachedMs},
@@ -368,7 +369,7 @@ Run addBenchCommand(CLI::App& parent) {
                   "(sky maps %.1f ms of it)\n"
                   "%-16s %10s %7s %9s %9s %9s\n",
                   context->info().renderer.c_str(), context->info().backend.c_str(),
-                  core::allocatorSummary().c_str(), startupMs,
+                  allocator.c_str(), startupMs,
                   atmoColdMs, atmoCachedMs, cached->timing().fromCache ? "" : " (cache MISSED)",
                   cached->timing().skyMapsMs, "view", "size", "samples", "median", "min", "max");
     for (auto& r : renderers) setImageryLayers(r->imagery(), o->imagery, imagery);
