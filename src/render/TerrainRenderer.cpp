@@ -290,6 +290,7 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
                                       const glm::dvec3& sunDirectionEcef) {
   shadows_.on = false;
   shadows_.casterMaxHeightM = -1e30;
+  stats_.shadowTileDraws = stats_.shadowCoarseTileDraws = 0;
   const glm::dvec3 s = glm::normalize(sunDirectionEcef);
   const double h = view.position.heightM;
   // Shadows of relief matter within a few hundred km; from farther out they are sub-pixel.
@@ -370,7 +371,7 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
     shadows_.cropUv[k] = casting.empty() ? glm::vec4(1.0f, 1.0f, 0.0f, 0.0f)
                                          : glm::vec4(glm::vec4(crop) + glm::vec4(1.0f, 1.0f, -1.0f, -1.0f)) /
                                                static_cast<float>(kShadowMapSize);
-    drawShadowCascade(view, cascade, glm::mat4(m), casting, texels, crop);
+    drawShadowCascade(view, cascade, glm::mat4(m), casting, texels, crop, metresPerTexel);
   }
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_CLIP_DISTANCE0);
@@ -406,7 +407,7 @@ std::vector<const terrain::Tile*> TerrainRenderer::tilesOver(const std::vector<c
 
 void TerrainRenderer::drawShadowCascade(const geo::CameraView& view, int cascade, const glm::mat4& lightClip,
                                         const std::vector<const terrain::Tile*>& casting, int texels,
-                                        const glm::ivec4& crop) {
+                                        const glm::ivec4& crop, double texelM) {
   // A cascade with nothing in it is neither cleared nor drawn: its lookups find every point lit
   // (its crop is empty).
   if (casting.empty()) return;
@@ -419,7 +420,16 @@ void TerrainRenderer::drawShadowCascade(const geo::CameraView& view, int cascade
   for (const terrain::Tile* t : casting) {
     setTileUniforms(shadowProgram_, *t, view);
     bindTile(*t);
-    glDrawElements(GL_TRIANGLES, strideIndices_[0].grid + strideIndices_[0].skirts, GL_UNSIGNED_INT, nullptr);
+    // Every 2nd vertex where that mesh's casters lie within kShadowStrideTexels of the full
+    // grid's, across the Sun's rays and along them (setShadowStrides).
+    const terrain::Tile::StrideDeviation& d = t->strideDeviation[0];
+    const std::size_t k =
+        shadowStridesOn_ && d.aboveSeaVerticalM + d.aboveSeaHorizontalM <= kShadowStrideTexels * texelM ? 1 : 0;
+    const StrideIndices& mesh = strideIndices_[k];
+    glDrawElements(GL_TRIANGLES, mesh.grid + mesh.skirts, GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(static_cast<std::uintptr_t>(mesh.first) * sizeof(std::uint32_t)));
+    ++stats_.shadowTileDraws;
+    stats_.shadowCoarseTileDraws += static_cast<int>(k);
   }
 }
 

@@ -85,6 +85,10 @@ struct TerrainStats {
   /// maxHeightM with setSeaSightTest(false): whether the sea's floor may show through it
   /// (render/GlobeRenderer's floorInReach).
   double seaSeenMaxHeightM = -1e30;
+  /// Tile draws into the shadow maps' cascades in the last frame, and those of them from the
+  /// coarser mesh (every 2nd vertex: TerrainRenderer::setShadowStrides).
+  int shadowTileDraws = 0;
+  int shadowCoarseTileDraws = 0;
 };
 
 class TerrainRenderer {
@@ -145,6 +149,14 @@ class TerrainRenderer {
   /// shows in its distances (shadowReceiverRect; the default) or all of it: for tests that
   /// compare the two.
   void setShadowCropped(bool on) { shadowCropped_ = on; }
+  /// Whether a tile is drawn into a shadow cascade from every 2nd vertex where that mesh's part
+  /// above the sea lies within kShadowStrideTexels of a texel of the full grid's
+  /// (terrain::Tile::StrideDeviation; the default) or always from the full grid: for tests that
+  /// compare the two. Why: the maps' cost on llvmpipe is their triangles' set-up (sea-2m-
+  /// horizon, the strait's coasts into a 2048² cascade: 29 ms of one thread, 13 from every 2nd
+  /// vertex), and a caster's outline moving by under half a texel moves the shadows' edges
+  /// within the lookups' own 2 x 2 filter.
+  void setShadowStrides(bool on) { shadowStridesOn_ = on; }
   /// Whether the tiles the sea's horizon may hide get the coverage pass too (drawCovered;
   /// default off: the horizon's clip leaves them few fragments): for tests that compare.
   void setCoverageBeyondHorizon(bool on) { coverageBeyondHorizon_ = on; }
@@ -227,6 +239,9 @@ class TerrainRenderer {
   /// Texels drawn around a cascade's receivers: the lookups' offset along the normal (1.5
   /// texels), their filter's texel beyond it and the rounding.
   static constexpr int kShadowCropMarginTexels = 4;
+  /// The most a caster's coarser mesh may lie off the full grid's, above the sea, in texels of
+  /// the cascade it is drawn into (setShadowStrides).
+  static constexpr double kShadowStrideTexels = 0.5;
   /// Metres added below and above the tiles' heights for the receivers' slab: the sea's waves
   /// and the raised ellipsoids' departure from constant heights.
   static constexpr double kShadowSlabMarginM = 100.0;
@@ -274,7 +289,8 @@ class TerrainRenderer {
   /// draws `casting` into it, the cascade's first `texels` texels on the viewport (lightClip:
   /// camera-relative ECEF to its clip space); nothing when `casting` is empty.
   void drawShadowCascade(const geo::CameraView& view, int cascade, const glm::mat4& lightClip,
-                         const std::vector<const terrain::Tile*>& casting, int texels, const glm::ivec4& crop);
+                         const std::vector<const terrain::Tile*>& casting, int texels, const glm::ivec4& crop,
+                         double texelM);
   /// The texels (x0, y0, x1, y1) of a cascade of `texels` over the box mid +- half (m, across
   /// the Sun's rays) that hold `receivers` and kShadowCropMarginTexels around them, clamped to
   /// the cascade; all 0 when none.
@@ -320,6 +336,7 @@ class TerrainRenderer {
   bool shadowCropped_ = true;
   bool coverageBeyondHorizon_ = false;  ///< setCoverageBeyondHorizon
   double floorShadowReachM_ = 0.0;  ///< the crops' margin for the floor's shadows (constructor)
+  bool shadowStridesOn_ = true;     ///< setShadowStrides
   /// terrain.vert/frag variants by bits, built on first use: llvmpipe runs every branch, so
   /// a frame draws with only the code it needs. kLandOnly: without the discards and the coast
   /// test, for tiles all above the sea and away from the poles; kNoNight: no city lights (the

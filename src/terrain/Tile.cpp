@@ -25,11 +25,13 @@ constexpr std::uint32_t edgeVertex(std::uint32_t e, std::uint32_t s) {
 }
 
 // How far the mesh of every `stride`-th vertex lies from the (kTileQuads + 1)² grid `ecef`
-// (row-major, m; verticals `up`), its quads split as tileIndices(stride) splits them.
+// (row-major, m; verticals `up`, heights above the ellipsoid `heightM`), its quads split as
+// tileIndices(stride) splits them.
 Tile::StrideDeviation strideDeviation(const std::vector<glm::dvec3>& ecef, const std::vector<glm::dvec3>& up,
-                                      int stride) {
+                                      const std::vector<double>& heightM, int stride) {
   constexpr int n = kTileQuads + 1;
   auto at = [&](int i, int j) { return ecef[static_cast<std::size_t>(j * n + i)]; };
+  auto heightAt = [&](int i, int j) { return heightM[static_cast<std::size_t>(j * n + i)]; };
   Tile::StrideDeviation worst;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
@@ -42,8 +44,20 @@ Tile::StrideDeviation strideDeviation(const std::vector<glm::dvec3>& ecef, const
                                     : a + fy * (at(i0, j0 + stride) - a) + fx * (d - at(i0, j0 + stride));
       const glm::dvec3 off = at(i, j) - p;
       const glm::dvec3& u = up[static_cast<std::size_t>(j * n + i)];
-      worst.verticalM = std::max(worst.verticalM, std::abs(glm::dot(off, u)));
-      worst.horizontalM = std::max(worst.horizontalM, glm::length(off - glm::dot(off, u) * u));
+      const double along = glm::dot(off, u), vertical = std::abs(along), across = glm::length(off - along * u);
+      worst.verticalM = std::max(worst.verticalM, vertical);
+      worst.horizontalM = std::max(worst.horizontalM, across);
+      // Above sea level: the coarse mesh's height there, interpolated as p is.
+      const double ha = heightAt(i0, j0), hd = heightAt(i0 + stride, j0 + stride);
+      const double coarse = fx >= fy ? ha + fx * (heightAt(i0 + stride, j0) - ha) + fy * (hd - heightAt(i0 + stride, j0))
+                                     : ha + fy * (heightAt(i0, j0 + stride) - ha) + fx * (hd - heightAt(i0, j0 + stride));
+      const double fine = heightAt(i, j);
+      if (fine > 0.0 || coarse > 0.0) {
+        const double curvature = std::max(vertical - std::abs(fine - coarse), 0.0);
+        const double aboveSea = fine > 0.0 && coarse > 0.0 ? vertical : std::max(fine, coarse) + curvature;
+        worst.aboveSeaVerticalM = std::max(worst.aboveSeaVerticalM, aboveSea);
+        worst.aboveSeaHorizontalM = std::max(worst.aboveSeaHorizontalM, across);
+      }
     }
   return worst;
 }
@@ -120,8 +134,10 @@ Tile buildTile(const Heightfield& heights, const TileKey& key) {
   // height differences across a cell of this tile.
   const double skirt = std::clamp(0.5 * (t.maxHeightM - t.minHeightM) + 0.1 * t.spacingM, 20.0, 20000.0);
   t.skirtDepthM = skirt;
+  std::vector<double> heightsM(samples.size());
+  for (std::size_t k = 0; k < samples.size(); ++k) heightsM[k] = samples[k].heightM;
   for (std::size_t k = 1; k < std::size(kTileStrides); ++k)
-    t.strideDeviation[k - 1] = strideDeviation(ecef, ups, kTileStrides[k]);
+    t.strideDeviation[k - 1] = strideDeviation(ecef, ups, heightsM, kTileStrides[k]);
   t.middleUp = ups[static_cast<std::size_t>((n / 2) * n + n / 2)];
   double leastCos = 1.0;
   for (const glm::dvec3& u : ups) leastCos = std::min(leastCos, glm::dot(t.middleUp, u));

@@ -164,6 +164,21 @@ TEST(TerrainTile, CoarserMeshesJoinEveryStrideVertexAndKnowTheirDeviation) {
   EXPECT_GT(longestMorph, 100.0);
   EXPECT_GE(std::hypot(two.verticalM, two.horizontalM), longestMorph - 0.01);
   EXPECT_LE(std::max(two.verticalM, two.horizontalM), longestMorph + 0.01);
+  // Above the sea (the shadow maps' casters, TerrainRenderer::setShadowStrides): on land all of
+  // it; under the open sea none; at a coast some, at most the whole tile's.
+  EXPECT_DOUBLE_EQ(two.aboveSeaVerticalM, two.verticalM);
+  EXPECT_DOUBLE_EQ(two.aboveSeaHorizontalM, two.horizontalM);
+  const Tile open = buildTile(*heights(), TileKey{9, 398, 312});  // 20°N 40°W, the mid-Atlantic
+  EXPECT_LT(open.maxHeightM, 0.0);
+  EXPECT_GT(open.strideDeviation[0].verticalM, 0.0);
+  EXPECT_EQ(open.strideDeviation[0].aboveSeaVerticalM, 0.0);
+  EXPECT_EQ(open.strideDeviation[0].aboveSeaHorizontalM, 0.0);
+  const Tile coast = buildTile(*heights(), TileKey{9, 496, 358});  // Tarifa and the strait
+  ASSERT_TRUE(coast.minHeightM < 0.0 && coast.maxHeightM > 0.0);
+  EXPECT_GT(coast.strideDeviation[0].aboveSeaVerticalM, 0.0);
+  EXPECT_LE(coast.strideDeviation[0].aboveSeaVerticalM, coast.strideDeviation[0].verticalM);
+  std::printf("coast tile's every 2nd vertex: %.1f m off vertically, %.1f m above the sea\n",
+              coast.strideDeviation[0].verticalM, coast.strideDeviation[0].aboveSeaVerticalM);
 }
 
 TEST(TerrainTile, MorphTargetsLieOnTheParentsMesh) {
