@@ -79,6 +79,15 @@ const gl::Program& TerrainRenderer::variant(unsigned bits) {
   return p;
 }
 
+std::vector<float> TerrainRenderer::shadowMapDepths(int cascade) const {
+  std::vector<float> depths(static_cast<std::size_t>(kShadowMapSize) * kShadowMapSize, 1.0f);
+  if (shadowMap_.id() == 0) return depths;
+  glGetTextureSubImage(shadowMap_.id(), 0, 0, 0, cascade, kShadowMapSize, kShadowMapSize, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                       static_cast<GLsizei>(depths.size() * sizeof(float)), depths.data());
+  gl::checkErrors("TerrainRenderer::shadowMapDepths");
+  return depths;
+}
+
 void TerrainRenderer::ensureShadowMap() {
   // Made on the first frame that casts shadows: 32 MiB that llvmpipe zeroes, which a view of
   // the open ocean never needs (start-up, docs/performance.md).
@@ -215,6 +224,11 @@ void TerrainRenderer::listTileAerialVertices(const geo::CameraView& view, const 
 }
 
 namespace {
+// The index buffer's offset of its `first` index, as glDrawElements takes it.
+const void* indexOffset(int first) {
+  return reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * sizeof(std::uint32_t));
+}
+
 // The highest vertex of `t` (m above sea level) over `rect` of a shadow map (xy
 // camera-relative along lx, ly), widened by two of its cells so that the triangles reaching in
 // count: what the tile casts into that map (the sea's classes bound its shadows' reach by it,
@@ -371,7 +385,7 @@ void TerrainRenderer::renderShadowMap(const geo::CameraView& view,
     shadows_.cropUv[k] = casting.empty() ? glm::vec4(1.0f, 1.0f, 0.0f, 0.0f)
                                          : glm::vec4(glm::vec4(crop) + glm::vec4(1.0f, 1.0f, -1.0f, -1.0f)) /
                                                static_cast<float>(kShadowMapSize);
-    drawShadowCascade(view, cascade, glm::mat4(m), casting, texels, crop, metresPerTexel);
+    drawShadowCascade(view, cascade, glm::mat4(m), casting, texels, crop, metresPerTexel, s);
   }
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_CLIP_DISTANCE0);
@@ -407,7 +421,7 @@ std::vector<const terrain::Tile*> TerrainRenderer::tilesOver(const std::vector<c
 
 void TerrainRenderer::drawShadowCascade(const geo::CameraView& view, int cascade, const glm::mat4& lightClip,
                                         const std::vector<const terrain::Tile*>& casting, int texels,
-                                        const glm::ivec4& crop, double texelM) {
+                                        const glm::ivec4& crop, double texelM, const glm::dvec3& sunDirectionEcef) {
   // A cascade with nothing in it is neither cleared nor drawn: its lookups find every point lit
   // (its crop is empty).
   if (casting.empty()) return;
@@ -420,17 +434,25 @@ void TerrainRenderer::drawShadowCascade(const geo::CameraView& view, int cascade
   for (const terrain::Tile* t : casting) {
     setTileUniforms(shadowProgram_, *t, view);
     bindTile(*t);
-    // Every 2nd vertex where that mesh's casters lie within kShadowStrideTexels of the full
-    // grid's, across the Sun's rays and along them (setShadowStrides).
-    const terrain::Tile::StrideDeviation& d = t->strideDeviation[0];
-    const std::size_t k =
-        shadowStridesOn_ && d.aboveSeaVerticalM + d.aboveSeaHorizontalM <= kShadowStrideTexels * texelM ? 1 : 0;
+    const std::size_t k = shadowStride(*t, sunDirectionEcef, texelM);
     const StrideIndices& mesh = strideIndices_[k];
-    glDrawElements(GL_TRIANGLES, mesh.grid + mesh.skirts, GL_UNSIGNED_INT,
-                   reinterpret_cast<const void*>(static_cast<std::uintptr_t>(mesh.first) * sizeof(std::uint32_t)));
+    glDrawElements(GL_TRIANGLES, mesh.grid + mesh.skirts, GL_UNSIGNED_INT, indexOffset(mesh.first));
     ++stats_.shadowTileDraws;
     stats_.shadowCoarseTileDraws += static_cast<int>(k);
   }
+}
+
+std::size_t TerrainRenderer::shadowStride(const terrain::Tile& t, const glm::dvec3& sunDirectionEcef, double texelM) const {
+  if (!shadowStridesOn_) return 0;
+  // The lookups (terrain/shadow.glsl) stand 1.5 texels off the surface along its normal and
+  // reach a texel and a half across the rays: over level ground under a Sun e up, a caster
+  // may rise by (1.5 - cos e) texels before the surface shades itself. The coarser mesh may
+  // take half of that (at the Sun's lowest over the tile), and kShadowStrideTexels at most.
+  const double sinSun = glm::dot(t.middleUp, glm::normalize(sunDirectionEcef));
+  const double lowestSunRad = std::max(std::asin(std::clamp(sinSun, -1.0, 1.0)) - t.upConeRad, 0.0);
+  const double allowedTexels = std::min(kShadowStrideTexels, 0.5 * (1.5 - std::cos(lowestSunRad)));
+  const terrain::Tile::StrideDeviation& d = t.strideDeviation[0];
+  return d.aboveSeaVerticalM + d.aboveSeaHorizontalM <= allowedTexels * texelM ? 1 : 0;
 }
 
 void TerrainRenderer::drawWaterTiles(int landClassStencil) {
@@ -535,7 +557,6 @@ void TerrainRenderer::drawTileGroup(const geo::CameraView& view, const std::vect
   // when hidden: llvmpipe shades them before the depth test when multisampling.
   glFrontFace(GL_CCW);
   glCullFace(GL_BACK);
-  auto offset = [](int first) { return reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * sizeof(std::uint32_t)); };
   for (const terrain::Tile* t : tiles) {
     // The horizon's clip only for a tile it may cut: an enabled clip distance costs llvmpipe's
     // clipper every triangle (mountain-15km's terrain pass +4 % where it cut none).
@@ -562,9 +583,9 @@ void TerrainRenderer::drawTileGroup(const geo::CameraView& view, const std::vect
     }
     const StrideIndices& mesh = strideIndices_[stride];
     glEnable(GL_CULL_FACE);
-    glDrawElements(GL_TRIANGLES, mesh.grid, GL_UNSIGNED_INT, offset(mesh.first));
+    glDrawElements(GL_TRIANGLES, mesh.grid, GL_UNSIGNED_INT, indexOffset(mesh.first));
     glDisable(GL_CULL_FACE);
-    glDrawElements(GL_TRIANGLES, mesh.skirts, GL_UNSIGNED_INT, offset(mesh.first + mesh.grid));
+    glDrawElements(GL_TRIANGLES, mesh.skirts, GL_UNSIGNED_INT, indexOffset(mesh.first + mesh.grid));
   }
   if (clipFloor) glDisable(GL_CLIP_DISTANCE0);
   glDisable(GL_CLIP_DISTANCE1);

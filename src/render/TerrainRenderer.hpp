@@ -150,13 +150,17 @@ class TerrainRenderer {
   /// compare the two.
   void setShadowCropped(bool on) { shadowCropped_ = on; }
   /// Whether a tile is drawn into a shadow cascade from every 2nd vertex where that mesh's part
-  /// above the sea lies within kShadowStrideTexels of a texel of the full grid's
-  /// (terrain::Tile::StrideDeviation; the default) or always from the full grid: for tests that
-  /// compare the two. Why: the maps' cost on llvmpipe is their triangles' set-up (sea-2m-
-  /// horizon, the strait's coasts into a 2048² cascade: 29 ms of one thread, 13 from every 2nd
-  /// vertex), and a caster's outline moving by under half a texel moves the shadows' edges
-  /// within the lookups' own 2 x 2 filter.
+  /// above the sea lies within half a texel of the full grid's, less at a low Sun (shadowStride;
+  /// the default), or always from the full grid: for tests that compare the two. Why: the
+  /// maps' cost on llvmpipe is their triangles' set-up (sea-2m-horizon, the strait's coasts into
+  /// a 2048² cascade: 29 ms of one thread, 13 with every caster from every 2nd vertex), and a
+  /// caster's outline moving by under half a texel moves the shadows' edges within the lookups'
+  /// own 2 x 2 filter.
   void setShadowStrides(bool on) { shadowStridesOn_ = on; }
+  /// Cascade `cascade`'s shadow map as drawn in the last frame: kShadowMapSize² depths in
+  /// [0, 1], row-major from its first texel (1 where nothing was drawn; only the frame's crop,
+  /// SunShadows::cropUv, was cleared). For tests; waits for the GPU.
+  [[nodiscard]] std::vector<float> shadowMapDepths(int cascade) const;
   /// Whether the tiles the sea's horizon may hide get the coverage pass too (drawCovered;
   /// default off: the horizon's clip leaves them few fragments): for tests that compare.
   void setCoverageBeyondHorizon(bool on) { coverageBeyondHorizon_ = on; }
@@ -231,16 +235,17 @@ class TerrainRenderer {
   void setDayTiles(bool on) { dayTilesOn_ = on; }
   /// The farthest on screen a coarser mesh may lie from the full grid, pixels.
   static constexpr double kStrideDeviationPx = 0.5;
+  /// Texels per side of each shadow cascade's map (shadowMapDepths).
+  static constexpr int kShadowMapSize = 2048;
 
  private:
   static constexpr int kMaxDetailOctaves = 24;  // MAX_DETAIL_OCTAVES in terrain.frag
-  static constexpr int kShadowMapSize = 2048;   // texels per side
   static constexpr int kShadowMinTexels = 256;  // the least a cascade draws (shadowCascadeTexels)
   /// Texels drawn around a cascade's receivers: the lookups' offset along the normal (1.5
   /// texels), their filter's texel beyond it and the rounding.
   static constexpr int kShadowCropMarginTexels = 4;
   /// The most a caster's coarser mesh may lie off the full grid's, above the sea, in texels of
-  /// the cascade it is drawn into (setShadowStrides).
+  /// the cascade it is drawn into (shadowStride: less at a low Sun).
   static constexpr double kShadowStrideTexels = 0.5;
   /// Metres added below and above the tiles' heights for the receivers' slab: the sea's waves
   /// and the raised ellipsoids' departure from constant heights.
@@ -287,10 +292,17 @@ class TerrainRenderer {
                        const glm::dvec3& sunDirectionEcef);
   /// Clears the part `crop` (texels x0, y0, x1, y1) of cascade `cascade` of the shadow map and
   /// draws `casting` into it, the cascade's first `texels` texels on the viewport (lightClip:
-  /// camera-relative ECEF to its clip space); nothing when `casting` is empty.
+  /// camera-relative ECEF to its clip space), each from the mesh shadowStride chooses for the
+  /// cascade's texels of `texelM` (m) and the Sun; nothing when `casting` is empty.
   void drawShadowCascade(const geo::CameraView& view, int cascade, const glm::mat4& lightClip,
                          const std::vector<const terrain::Tile*>& casting, int texels, const glm::ivec4& crop,
-                         double texelM);
+                         double texelM, const glm::dvec3& sunDirectionEcef);
+  /// The index into kTileStrides of the mesh tile `t` is drawn from into a cascade of texels
+  /// `texelM` (m) wide: 1 (every 2nd vertex) where that mesh's part above the sea lies off the
+  /// full grid's (terrain::Tile::StrideDeviation's aboveSea*, along the verticals plus across)
+  /// by at most half the room the lookups leave a surface before it shades itself at the Sun's
+  /// lowest over the tile, and by kShadowStrideTexels of a texel at most; else 0.
+  [[nodiscard]] std::size_t shadowStride(const terrain::Tile& t, const glm::dvec3& sunDirectionEcef, double texelM) const;
   /// The texels (x0, y0, x1, y1) of a cascade of `texels` over the box mid +- half (m, across
   /// the Sun's rays) that hold `receivers` and kShadowCropMarginTexels around them, clamped to
   /// the cascade; all 0 when none.

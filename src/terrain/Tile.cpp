@@ -1,6 +1,7 @@
 #include "terrain/Tile.hpp"
 
 #include <algorithm>
+#include <initializer_list>
 #include <cmath>
 #include <iterator>
 #include <numbers>
@@ -32,32 +33,56 @@ Tile::StrideDeviation strideDeviation(const std::vector<glm::dvec3>& ecef, const
   constexpr int n = kTileQuads + 1;
   auto at = [&](int i, int j) { return ecef[static_cast<std::size_t>(j * n + i)]; };
   auto heightAt = [&](int i, int j) { return heightM[static_cast<std::size_t>(j * n + i)]; };
+  // Per grid vertex: its offset from the coarser mesh along its vertical and across it, and
+  // the coarser mesh's height there (interpolated as its point is).
+  struct Off {
+    double vertical, across, fine, coarse;
+  };
+  std::vector<Off> offs(static_cast<std::size_t>(n * n));
   Tile::StrideDeviation worst;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const int i0 = std::min(i / stride * stride, kTileQuads - stride);
       const int j0 = std::min(j / stride * stride, kTileQuads - stride);
       const double fx = static_cast<double>(i - i0) / stride, fy = static_cast<double>(j - j0) / stride;
-      const glm::dvec3 a = at(i0, j0), d = at(i0 + stride, j0 + stride);
-      // Triangle a, b, d below the diagonal, a, d, c above it.
-      const glm::dvec3 p = fx >= fy ? a + fx * (at(i0 + stride, j0) - a) + fy * (d - at(i0 + stride, j0))
-                                    : a + fy * (at(i0, j0 + stride) - a) + fx * (d - at(i0, j0 + stride));
-      const glm::dvec3 off = at(i, j) - p;
+      // Triangle a, b, d below the diagonal, a, d, c above it (of a quantity q at the corners).
+      auto interpolate = [&](auto q) {
+        const auto a = q(i0, j0), b = q(i0 + stride, j0), c = q(i0, j0 + stride), d = q(i0 + stride, j0 + stride);
+        return fx >= fy ? a + fx * (b - a) + fy * (d - b) : a + fy * (c - a) + fx * (d - c);
+      };
+      const glm::dvec3 off = at(i, j) - interpolate(at);
       const glm::dvec3& u = up[static_cast<std::size_t>(j * n + i)];
-      const double along = glm::dot(off, u), vertical = std::abs(along), across = glm::length(off - along * u);
-      worst.verticalM = std::max(worst.verticalM, vertical);
-      worst.horizontalM = std::max(worst.horizontalM, across);
-      // Above sea level: the coarse mesh's height there, interpolated as p is.
-      const double ha = heightAt(i0, j0), hd = heightAt(i0 + stride, j0 + stride);
-      const double coarse = fx >= fy ? ha + fx * (heightAt(i0 + stride, j0) - ha) + fy * (hd - heightAt(i0 + stride, j0))
-                                     : ha + fy * (heightAt(i0, j0 + stride) - ha) + fx * (hd - heightAt(i0, j0 + stride));
-      const double fine = heightAt(i, j);
-      if (fine > 0.0 || coarse > 0.0) {
-        const double curvature = std::max(vertical - std::abs(fine - coarse), 0.0);
-        const double aboveSea = fine > 0.0 && coarse > 0.0 ? vertical : std::max(fine, coarse) + curvature;
-        worst.aboveSeaVerticalM = std::max(worst.aboveSeaVerticalM, aboveSea);
-        worst.aboveSeaHorizontalM = std::max(worst.aboveSeaHorizontalM, across);
-      }
+      const double along = glm::dot(off, u);
+      Off& o = offs[static_cast<std::size_t>(j * n + i)];
+      o = {std::abs(along), glm::length(off - along * u), heightAt(i, j), interpolate(heightAt)};
+      worst.verticalM = std::max(worst.verticalM, o.vertical);
+      worst.horizontalM = std::max(worst.horizontalM, o.across);
+    }
+  // Above the sea, per triangle of the grid (on which both meshes are linear, the coarser one's
+  // triangles being unions of the grid's): where any corner lies above the sea in either mesh,
+  // the two clipped surfaces lie apart by at most the corners' largest offset, and by at most
+  // the highest either reaches there (where one is under the sea, the other's height), plus the
+  // chords' curvature. Corners under the sea count: the part above it between them and a
+  // corner above depends on them.
+  auto aboveSea = [&](std::initializer_list<const Off*> corners) {
+    double vertical = 0.0, across = 0.0, highest = 0.0, curvature = 0.0;
+    bool above = false;
+    for (const Off* o : corners) {
+      above = above || o->fine > 0.0 || o->coarse > 0.0;
+      vertical = std::max(vertical, o->vertical);
+      across = std::max(across, o->across);
+      highest = std::max({highest, o->fine, o->coarse});
+      curvature = std::max(curvature, o->vertical - std::abs(o->fine - o->coarse));
+    }
+    if (!above) return;
+    worst.aboveSeaVerticalM = std::max(worst.aboveSeaVerticalM, std::min(vertical, highest + std::max(curvature, 0.0)));
+    worst.aboveSeaHorizontalM = std::max(worst.aboveSeaHorizontalM, across);
+  };
+  auto o = [&](int i, int j) { return &offs[static_cast<std::size_t>(j * n + i)]; };
+  for (int j = 0; j < kTileQuads; ++j)
+    for (int i = 0; i < kTileQuads; ++i) {  // a, b, d and a, d, c (terrain::tileIndices)
+      aboveSea({o(i, j), o(i + 1, j), o(i + 1, j + 1)});
+      aboveSea({o(i, j), o(i + 1, j + 1), o(i, j + 1)});
     }
   return worst;
 }
