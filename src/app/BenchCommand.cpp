@@ -418,16 +418,22 @@ Run addBenchCommand(CLI::App& parent) {
                                      {"min_ms", t.front()}, {"max_ms", t.back()},
                                      {"frames", t.size()}, {"terrain_tiles", ts.tiles},
                                      {"terrain_coarse_tiles", ts.coarseTiles},
+                                     {"shadow_tile_draws", ts.shadowTileDraws},
+                                     {"shadow_coarse_tile_draws", ts.shadowCoarseTileDraws},
                                      {"terrain_cpu_bytes", ts.cpuBytes},
                                      {"terrain_gpu_bytes", ts.gpuBytes},
                                      {"imagery_gpu_bytes", renderers[k]->imagery().gpuBytes() +
                                                                renderers[k]->landMask().gpuBytes()},
                                      {"imagery_tiles", imageryTilesJson(renderers[k]->imagery().tileStats())}});
+          // The shadow maps' tile draws, and those from the coarser mesh (TerrainRenderer::shadowStride).
+          const std::string shadows = ts.shadowTileDraws == 0 ? std::string()
+                                                              : ", shadows " + std::to_string(ts.shadowTileDraws) + " casters (" +
+                                                                    std::to_string(ts.shadowCoarseTileDraws) + " coarse)";
           if (!o->json)
-            std::printf("%-16s %10s %7d %7.2fms %7.2fms %7.2fms  terrain %d tiles (%d coarse), %.1f MiB CPU + %.1f MiB GPU%s\n",
+            std::printf("%-16s %10s %7d %7.2fms %7.2fms %7.2fms  terrain %d tiles (%d coarse), %.1f MiB CPU + %.1f MiB GPU%s%s\n",
                         view.name, size.c_str(), renderers[k]->samples(), median, t.front(),
                         t.back(), ts.tiles, ts.coarseTiles, static_cast<double>(ts.cpuBytes) / 1048576.0,
-                        static_cast<double>(ts.gpuBytes) / 1048576.0,
+                        static_cast<double>(ts.gpuBytes) / 1048576.0, shadows.c_str(),
                         imageryTilesLine(renderers[k]->imagery().tileStats()).c_str());
           if (!o->breakdown) continue;
           nlohmann::json breakdown = nlohmann::json::object();
