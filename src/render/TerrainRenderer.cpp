@@ -448,7 +448,7 @@ std::size_t TerrainRenderer::shadowStride(const terrain::Tile& t, const glm::dve
   // reach a texel and a half across the rays: over level ground under a Sun e up, a caster
   // may rise by (1.5 - cos e) texels before the surface shades itself. The coarser mesh may
   // take half of that (at the Sun's lowest over the tile), and kShadowStrideTexels at most.
-  const double sinSun = glm::dot(t.middleUp, glm::normalize(sunDirectionEcef));
+  const double sinSun = glm::dot(t.middleUp, sunDirectionEcef);
   const double lowestSunRad = std::max(std::asin(std::clamp(sinSun, -1.0, 1.0)) - t.upConeRad, 0.0);
   const double allowedTexels = std::min(kShadowStrideTexels, 0.5 * (1.5 - std::cos(lowestSunRad)));
   const terrain::Tile::StrideDeviation& d = t.strideDeviation[0];

@@ -293,12 +293,13 @@ class TerrainRenderer {
   /// Clears the part `crop` (texels x0, y0, x1, y1) of cascade `cascade` of the shadow map and
   /// draws `casting` into it, the cascade's first `texels` texels on the viewport (lightClip:
   /// camera-relative ECEF to its clip space), each from the mesh shadowStride chooses for the
-  /// cascade's texels of `texelM` (m) and the Sun; nothing when `casting` is empty.
+  /// cascade's texels of `texelM` (m) and the Sun (`sunDirectionEcef`, unit); nothing when
+  /// `casting` is empty.
   void drawShadowCascade(const geo::CameraView& view, int cascade, const glm::mat4& lightClip,
                          const std::vector<const terrain::Tile*>& casting, int texels, const glm::ivec4& crop,
                          double texelM, const glm::dvec3& sunDirectionEcef);
   /// The index into kTileStrides of the mesh tile `t` is drawn from into a cascade of texels
-  /// `texelM` (m) wide: 1 (every 2nd vertex) where that mesh's part above the sea lies off the
+  /// `texelM` (m) wide under the Sun `sunDirectionEcef` (unit): 1 (every 2nd vertex) where that mesh's part above the sea lies off the
   /// full grid's (terrain::Tile::StrideDeviation's aboveSea*, along the verticals plus across)
   /// by at most half the room the lookups leave a surface before it shades itself at the Sun's
   /// lowest over the tile, and by kShadowStrideTexels of a texel at most; else 0.

@@ -1,8 +1,8 @@
 #include "terrain/Tile.hpp"
 
 #include <algorithm>
-#include <initializer_list>
 #include <cmath>
+#include <initializer_list>
 #include <iterator>
 #include <numbers>
 #include <stdexcept>

@@ -76,10 +76,10 @@ struct Tile {
   /// parallels and meridians), m.
   struct StrideDeviation {
     double verticalM = 0.0, horizontalM = 0.0;
-    /// The same where either mesh lies above sea level: the parts the shadow maps draw
-    /// (terrain.vert's TERRAIN_SHADOW_CASTER clips the rest). Where only one does, its height
-    /// above the sea (the other's caster is missing there) plus the curvature's part. 0 for a
-    /// tile all under the sea.
+    /// The same for the parts above sea level, which the shadow maps draw (terrain.vert's
+    /// TERRAIN_SHADOW_CASTER clips the rest): over the grid's triangles with a corner above the
+    /// sea in either mesh, their corners' largest offset, vertically no more than the highest
+    /// either mesh reaches there plus the chords' curvature. 0 for a tile all under the sea.
     double aboveSeaVerticalM = 0.0, aboveSeaHorizontalM = 0.0;
   };
   std::array<StrideDeviation, std::size(kTileStrides) - 1> strideDeviation{};
