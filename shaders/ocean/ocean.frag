@@ -223,6 +223,15 @@ void main() {
   shadeSeaPixel();
   if (gSeaOfClass) imageStore(uRadianceImage, gSeaPixel, fragRadiance);
 }
+#elif defined(OUTPUT_DISPLAY)
+// The sea covering the screen writes the display itself (render/OceanRenderer::setDisplayTarget):
+// render/tonemap.frag's curve, the sRGB store encoding it. (Outputs are readable.)
+#include "common/color.glsl"
+uniform float uExposure;
+void main() {
+  shadeSeaPixel();
+  fragRadiance = vec4(toneMap(fragRadiance.rgb, uExposure), 1.0);
+}
 #else
 void main() { shadeSeaPixel(); }
 #endif

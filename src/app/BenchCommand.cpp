@@ -384,6 +384,7 @@ Run addBenchCommand(CLI::App& parent) {
         f.width = w;
         f.height = h;
         f.sunDirectionEcef = geo::sunDirectionFromHorizontal(view.pose.position, 20.0, 250.0);
+        f.displayOnly = true;  // (as `record` to MP4 or PNG renders)
         std::vector<std::vector<double>> ms(renderers.size());
         std::vector<std::vector<std::vector<std::pair<std::string, double>>>> passes(renderers.size());
         for (int i = 0; i < o->frames + 2; ++i)

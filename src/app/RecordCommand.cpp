@@ -255,6 +255,7 @@ class FrameRenderer {
     frame.sunDirectionEcef = frame.utcTime ? geo::sunEphemeris(*frame.utcTime).directionEcef : fixedSun_;
     frame.simulationTimeS = scene.simulationTimeS + t;
     frame.auxiliaryOutputs = needsAuxiliaryOutputs(job_.aovs);
+    frame.displayOnly = lowerExtension(job_.output) != ".exr";  // (EXR frames read the radiance)
     renderer_.render(frame);
     // The next frame's imagery tiles, read in the background while this one is written.
     renderer_.imagery().prefetchTiles(geo::makeCameraView(poseAt(i + job_.stride), frame.width, frame.height),

@@ -79,6 +79,7 @@ Run addRenderCommand(CLI::App& parent) {
     setup.reset();
     render::FrameInput frame = frameInputOf(scene);
     frame.auxiliaryOutputs = needsAuxiliaryOutputs(opts->aovs);
+    frame.displayOnly = format == Format::Png;
     {
       const core::startup::Scope timed("first frame (render + glFinish)");
       renderer.render(frame);

@@ -382,6 +382,7 @@ class Viewer {
     frame.wind = windHere();
     frame.wind.speedMs = std::min(frame.wind.speedMs, 50.0);
     frame.oceanFrame = &oceanFrame_;
+    frame.displayOnly = !screenshotRequested_;  // (a screenshot also writes the radiance's EXR)
     renderer_->render(frame);
     prefetchAhead(width, height);
     glBlitNamedFramebuffer(renderer_->displayFramebuffer(), 0, 0, 0, width, height, 0, 0, width,

@@ -98,6 +98,16 @@ RenderTarget createViewTarget(const RenderTarget& of, GLenum viewFormat) {
   return t;
 }
 
+Framebuffer createFramebufferOver(const RenderTarget& colour, const RenderTarget& depth) {
+  if (colour.samples != 1 || depth.samples != 1 || colour.width != depth.width || colour.height != depth.height)
+    throw InternalError("gl::createFramebufferOver needs single-sampled targets of one size");
+  Framebuffer fbo = createFramebuffer();
+  glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, colour.color.id(), 0);
+  glNamedFramebufferTexture(fbo.id(), GL_DEPTH_STENCIL_ATTACHMENT, depth.depth.id(), 0);
+  requireComplete(fbo, "framebuffer over two targets");
+  return fbo;
+}
+
 RenderTarget createRenderTarget(int width, int height, GLenum colorFormat, bool withDepth,
                                 int samples, GLenum auxiliaryFormat) {
   RenderTarget t;

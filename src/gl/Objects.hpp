@@ -105,6 +105,12 @@ struct RenderTarget {
 /// decodes when read back or blitted from). Throws og::InternalError if incomplete.
 RenderTarget createViewTarget(const RenderTarget& of, GLenum viewFormat);
 
+/// A framebuffer over `colour`'s texture (COLOR_ATTACHMENT0) and `depth`'s depth-stencil
+/// texture, both single-sampled and of one size: e.g. the display target's colour over the HDR
+/// target's depth, for a pass that writes the display itself. Throws og::InternalError if
+/// incomplete.
+Framebuffer createFramebufferOver(const RenderTarget& colour, const RenderTarget& depth);
+
 /// colorFormat e.g. GL_RGBA32F (HDR radiance) or GL_RGBA8 (display). samples must not exceed
 /// maxSamples(colorFormat). Throws og::InternalError if the framebuffer is incomplete.
 /// auxiliaryFormat != 0 adds a second colour attachment of that format (same samples), and

@@ -230,6 +230,7 @@ void GlobeRenderer::ensureTargets(int width, int height, int requested, bool aux
   // through a GL_RGBA8 view of them, which no driver decodes.
   ldr_ = gl::createRenderTarget(width, height, GL_SRGB8_ALPHA8, false);
   ldrBytes_ = gl::createViewTarget(ldr_, GL_RGBA8);
+  displayOverDepth_ = hdr_.samples == 1 ? gl::createFramebufferOver(ldr_, hdr_) : gl::Framebuffer{};
   resolved_ = {};
   requestedSamples_ = requested;
   if (hdr_.samples != samples)
@@ -277,6 +278,8 @@ const OceanPatterns& GlobeRenderer::patternsFor(double referenceWindMs, std::uin
 void GlobeRenderer::render(const FrameInput& f) {
   ensureTargets(f.width, f.height, f.samples, f.auxiliaryOutputs);
   resolvedCurrent_ = false;
+  lastDisplayOnly_ = f.displayOnly;
+  lastSeaWroteDisplay_ = false;
   const geo::CameraView view = geo::makeCameraView(f.camera, f.width, f.height);
   lastView_ = view;
   if (timer_ != nullptr) timer_->beginFrame();
@@ -349,6 +352,12 @@ void GlobeRenderer::render(const FrameInput& f) {
 
   if (timer_ != nullptr) timer_->mark("tone mapping");
   glDisable(GL_DEPTH_TEST);
+  if (lastSeaWroteDisplay_) {  // (no pixel but the sea's: lastDrawCoversScreen)
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (timer_ != nullptr) timer_->endFrame();
+    gl::checkErrors("GlobeRenderer::render");
+    return;
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, ldr_.fbo.id());
   // Above the ceiling nothing was drawn outside the globe's box (scissorToGlobe): the radiance
   // there is the clear's 0, black once tone mapped. Only the box is tone mapped (orbit: 40 % of
@@ -1025,11 +1034,17 @@ void GlobeRenderer::drawOcean(const geo::CameraView& view, const FrameInput& f) 
   glDepthFunc(GL_GREATER);
   if (landMask_->active()) bindOpenSeaMap();  // its land clearance: the sea's classes
   ocean_->setCellPixels(f.oceanCellPixels);
+  // A display-only frame: where the sea covers the screen, nothing else draws (the terrain drew
+  // no tile: no land in view) and its pass writes the display itself.
+  if (f.displayOnly && seaWritesDisplay_ && !auxiliary_ && displayOverDepth_.id() != 0 && ts.drawnTiles == 0)
+    ocean_->setDisplayTarget(displayOverDepth_.id(), static_cast<float>(f.exposure));
   ocean_->draw(view, f.width, f.height, *patterns_, frame, f.simulationTimeS, lighting, amplitude,
                f.oceanModel, *wind_);
+  lastSeaWroteDisplay_ = ocean_->lastDrawWroteDisplay();
 }
 
 io::ImageRgbaF GlobeRenderer::radiance() const {
+  if (lastDisplayOnly_) throw InternalError("GlobeRenderer::radiance after a FrameInput::displayOnly frame");
   const gl::RenderTarget& t = singleSampleHdr();
   return {t.width, t.height, gl::readRgbaF(t.fbo.id(), t.width, t.height)};
 }

@@ -78,6 +78,11 @@ struct FrameInput {
   /// Also render the auxiliary outputs (whitecap coverage) for GlobeRenderer::whitecap():
   /// an extra float target, for EXR outputs that ask for them (--aov).
   bool auxiliaryOutputs = false;
+  /// The caller reads only the display of this frame (display(), depth(), viewDistance(); not
+  /// radiance(), which then throws): where the sea covers the screen, single-sampled and with
+  /// no auxiliary outputs, its pass may write the display itself (OceanRenderer::
+  /// setDisplayTarget) and the tone map's pass is left out. False for EXR outputs.
+  bool displayOnly = false;
 };
 
 /// The sample counts FrameInput::samples accepts (the scene schema's list).
@@ -141,8 +146,15 @@ class GlobeRenderer {
   /// Draws a frame into the internal targets (resized as needed).
   void render(const FrameInput& frame);
 
+  /// Whether the sea's pass may write the display itself in FrameInput::displayOnly frames
+  /// (default on; off: the tone map's pass always, to compare in tests).
+  void setSeaWritesDisplay(bool on) { seaWritesDisplay_ = on; }
+  /// Whether the last render()'s sea wrote the display (no tone map pass read the radiance).
+  [[nodiscard]] bool lastSeaWroteDisplay() const { return lastSeaWroteDisplay_; }
+
   /// Results of the last render(). With multisampling, radiance is the mean of each pixel's
-  /// samples and depth one sample's value (the driver's resolve).
+  /// samples and depth one sample's value (the driver's resolve). radiance() throws
+  /// og::InternalError after a FrameInput::displayOnly frame.
   [[nodiscard]] io::ImageRgbaF radiance() const;
   [[nodiscard]] io::ImageRgba8 display() const;
   [[nodiscard]] std::vector<float> depth() const;
@@ -559,6 +571,12 @@ class GlobeRenderer {
   gl::RenderTarget hdr_;
   gl::RenderTarget ldr_;       ///< the display target, GL_SRGB8_ALPHA8 (the tone map writes it)
   gl::RenderTarget ldrBytes_;  ///< a GL_RGBA8 view of its bytes (read-back, the viewer's blit)
+  /// ldr_'s colour over hdr_'s depth-stencil (single-sampled hdr_ only): where the sea's pass
+  /// writes the display itself (FrameInput::displayOnly, OceanRenderer::setDisplayTarget).
+  gl::Framebuffer displayOverDepth_;
+  bool lastDisplayOnly_ = false;     ///< the last render()'s FrameInput::displayOnly
+  bool lastSeaWroteDisplay_ = false;  ///< its sea's pass wrote the display (no tone map pass)
+  bool seaWritesDisplay_ = true;      ///< setSeaWritesDisplay
   int maxSamples_ = 1;        ///< what the device offers for the HDR target
   int requestedSamples_ = 0;  ///< FrameInput::samples that hdr_ was made for
   bool auxiliary_ = false;    ///< hdr_ has the auxiliary attachment

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cassert>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/Error.hpp"
@@ -192,6 +193,7 @@ std::vector<std::string> OceanRenderer::featureDefines(unsigned features) const 
   if ((features & kFeatureRadianceTerms) != 0) d.insert(d.end(), {"OCEAN_RADIANCE_TERMS", "PATTERN_BANDS_PER_PIXEL"});
   else if ((features & kFeatureCachedVertices) != 0) d.emplace_back("PATTERN_BANDS_PER_PIXEL");
   if (atmosphere_ != nullptr && atmosphere_->skyFilter().radialSums) d.emplace_back("SKY_RADIAL_SUMS");
+  if ((features & kFeatureDisplay) != 0) d.emplace_back("OUTPUT_DISPLAY");
   return d;
 }
 
@@ -603,6 +605,8 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
   lastSurfaceByVisibility_ = false;
   lastRadianceTerms_ = false;
   lastCoversScreen_ = false;
+  lastWroteDisplay_ = false;
+  const GLuint displayFbo = std::exchange(displayFbo_, 0);  // (for this draw only)
   if (model == OceanModel::Classic) {
     if (classic_.id() == 0) {  // made on first use (start-up: bench --startup)
       classic_ = gl::Program({{GL_VERTEX_SHADER, "ocean/classic.vert"}, {GL_FRAGMENT_SHADER, "ocean/classic.frag"}},
@@ -639,7 +643,6 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
       return;
     }
     if (termsCells) features |= kFeatureRadianceTerms;
-    const gl::Program& p = program(features);
     if (termsCells) {  // the vertices first, on every core
       gl::Program& compute = programs().termsComputeVariants.at(features & ~kFeatureRadianceTerms);
       if (compute.id() == 0) compute = gl::Program({{GL_COMPUTE_SHADER, "ocean/grid_vertices.comp"}}, featureDefines(features));
@@ -647,10 +650,27 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
       computeGridVertices(compute, true);
       if (timer_ != nullptr) timer_->mark("ocean");
     }
+    lastWroteDisplay_ = lastCoversScreen_ && displayFbo != 0;
+    if (lastWroteDisplay_) features |= kFeatureDisplay;
+    const gl::Program& p = program(features);
     prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
-    drawGrid(p);
+    if (lastWroteDisplay_)
+      drawDisplay(p, displayFbo);
+    else
+      drawGrid(p);
   }
   gl::checkErrors("OceanRenderer::draw");
+}
+
+void OceanRenderer::drawDisplay(const gl::Program& p, GLuint displayFbo) {
+  GLint bound = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+  glBindFramebuffer(GL_FRAMEBUFFER, displayFbo);
+  p.set("uExposure", displayExposure_);
+  glEnable(GL_FRAMEBUFFER_SRGB);  // the store encodes sRGB, as for render/tonemap.frag
+  drawGrid(p);
+  glDisable(GL_FRAMEBUFFER_SRGB);
+  glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(bound));
 }
 
 bool OceanRenderer::surfaceClasses(const OceanLighting& lighting, unsigned features) {

@@ -199,6 +199,18 @@ class OceanRenderer {
   /// whole (layOutGridOnBlocks: the radiance terms' cells, no horizon in view) and no coast
   /// test to discard samples. Then nothing is left for the globe to draw.
   [[nodiscard]] bool lastDrawCoversScreen() const { return lastCoversScreen_; }
+  /// For the next draw only: where its sea covers the screen (lastDrawCoversScreen), the sea's
+  /// pass writes the display itself into `displayFbo` (the display target's sRGB colour over
+  /// the bound target's depth-stencil: gl::createFramebufferOver), tone mapped with `exposure`
+  /// as render/tonemap.frag does (OUTPUT_DISPLAY), so no separate pass reads the radiance back
+  /// (llvmpipe: 5-6 ms of sea-8km's wall at 1280x720). The bound target's colour is then left
+  /// as it was. 0 (after every draw): the radiance, as always.
+  void setDisplayTarget(GLuint displayFbo, float exposure) {
+    displayFbo_ = displayFbo;
+    displayExposure_ = exposure;
+  }
+  /// Whether the last draw wrote the display (setDisplayTarget) rather than the radiance.
+  [[nodiscard]] bool lastDrawWroteDisplay() const { return lastWroteDisplay_; }
   /// Whether a grid of larger cells draws the same sea: the waves displace no point by more
   /// than kSubPixelDisplacementPx on the screen (displacementBoundM at the nearest sea point in
   /// view, where the screen magnifies most), and the corners and edges of the view meet the
@@ -506,6 +518,9 @@ class OceanRenderer {
   void bindGridTexels(bool radianceTerms);
   /// Binds the visibility buffer and indices_ (gl::kUnitSeaGridIndices) for the shading passes.
   void bindVisibilityForShading();
+  /// drawGrid(p) into `displayFbo` with the sRGB store on (setDisplayTarget), `p` an
+  /// OUTPUT_DISPLAY variant; the bound framebuffer is bound again after.
+  void drawDisplay(const gl::Program& p, GLuint displayFbo);
   /// Binds `target` and writes seaRadiance_ into its samples with sea (the stencil's class 1:
   /// ocean/sea_radiance_copy.frag).
   void copySeaRadiance(GLuint target);
@@ -522,6 +537,8 @@ class OceanRenderer {
   /// The vertices from the compute pass (ocean/grid_cached.vert), the bands per pixel
   /// (drawForwardSplit).
   static constexpr unsigned kFeatureCachedVertices = 32;
+  /// The display's tone-mapped colour instead of the radiance (OUTPUT_DISPLAY, setDisplayTarget).
+  static constexpr unsigned kFeatureDisplay = 64;
   const Atmosphere* atmosphere_;
   ValidationMode mode_;
   std::vector<std::string> defines_;        ///< the filtered model's, whatever the features
@@ -572,7 +589,7 @@ class OceanRenderer {
   /// windAlongOneBin), set 0
   /// without.
   struct PatternPrograms {
-    std::array<gl::Program, 64> variants;    ///< by feature bits
+    std::array<gl::Program, 128> variants;   ///< by feature bits
     gl::Program classify;                    ///< ocean/sea_classify.frag
     /// ocean.frag OCEAN_DEFERRED, by feature bits, + 16 with OCEAN_COMPUTE, + 32 with
     /// SEA_VISIBILITY, + 64 with SEA_VISIBILITY_MULTISAMPLE
@@ -632,6 +649,9 @@ class OceanRenderer {
   bool radianceTerms_ = true;
   bool lastRadianceTerms_ = false;
   bool lastCoversScreen_ = false;
+  GLuint displayFbo_ = 0;  ///< setDisplayTarget's, for the next draw
+  float displayExposure_ = 1.0f;
+  bool lastWroteDisplay_ = false;
   glm::vec4 lightingTerms_{1.0f};
   glm::vec4 elevationMap_{0.0f};
   glm::vec2 elevationSize_{0.0f};

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 
+#include "core/Error.hpp"
 #include "data/Elevation.hpp"
 #include "geo/Camera.hpp"
 #include "gl/Context.hpp"
@@ -114,6 +115,51 @@ TEST(OceanCell, RadianceFromTheVerticesDrawsTheSameSea) {
   r.render(lookingDown(-12.0, 10.0, 5.0, 270.0));
   EXPECT_FALSE(r.ocean().lastRadianceTerms());
   EXPECT_EQ(r.ocean().lastCellPixels(), 32);
+}
+
+// A display-only frame (FrameInput::displayOnly, as `record` to MP4 renders) whose sea covers
+// the screen: the sea's pass writes the display itself, tone mapped, and no tone map pass runs
+// (render/OceanRenderer::setDisplayTarget). Its picture and depth are the two-pass frame's; the
+// radiance it never wrote cannot be read. Frames with land in view, multisampled ones and those
+// with the switch off keep the tone map's pass. Measured: the same bytes in every pixel.
+TEST(OceanCell, DisplayOnlyFramesTakeTheDisplayFromTheSeaPass) {
+  auto ctx = gl::createHeadlessContext();
+  render::GlobeRenderer r(data::defaultElevation());
+  const auto sameFrame = [&](render::FrameInput f, bool folds, bool covers, const char* name) {
+    f.displayOnly = false;
+    r.render(f);
+    EXPECT_FALSE(r.lastSeaWroteDisplay()) << name;
+    const io::ImageRgba8 twoPasses = r.display();
+    const std::vector<float> twoPassDepth = r.depth();
+    f.displayOnly = true;
+    r.render(f);
+    EXPECT_EQ(r.lastSeaWroteDisplay(), folds) << name;
+    EXPECT_EQ(r.ocean().lastDrawCoversScreen(), covers) << name;
+    EXPECT_THROW((void)r.radiance(), InternalError) << name;
+    const io::ImageRgba8 shown = r.display();
+    const test::Comparison c = test::compareRgb(shown, twoPasses, 0);
+    if (!c.within({1, 0.01, 0, 0.001})) {
+      const std::filesystem::path out = std::filesystem::path(OG_TEST_OUT_DIR) / (std::string("display_only_") + name);
+      io::writePng(out.string() + ".png", shown);
+      io::writePng(out.string() + ".expected.png", twoPasses);
+      io::writePng(out.string() + ".diff.png", c.diff);
+    }
+    EXPECT_TRUE(c.within({1, 0.01, 0, 0.001})) << name << ": " << c.describe();
+    EXPECT_TRUE(r.depth() == twoPassDepth) << name;
+  };
+  sameFrame(lookingDown(-50.0, 10.0, 50.0, 250.0), true, true, "glint");
+  sameFrame(lookingDown(-50.0, 10.0, 70.0, 250.0), true, true, "high_sun");
+  sameFrame(lookingDown(-30.0, 45.0, 20.0, 250.0), false, false, "smaller_cells");  // (16 px: not on blocks)
+  render::FrameInput coast =
+      test::frameOf({36.0, -5.6, 8000.0, 270.0, -50.0, 45.0, 320, 180}, 50.0, 250.0);  // the Strait of Gibraltar
+  sameFrame(coast, false, false, "coast");
+  render::FrameInput multisampled = lookingDown(-50.0, 10.0, 50.0, 250.0);
+  multisampled.samples = 2;
+  multisampled.displayOnly = true;
+  r.render(multisampled);
+  EXPECT_FALSE(r.lastSeaWroteDisplay());
+  r.setSeaWritesDisplay(false);
+  sameFrame(lookingDown(-50.0, 10.0, 50.0, 250.0), false, true, "switched_off");
 }
 
 namespace {
