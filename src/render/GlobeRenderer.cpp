@@ -352,13 +352,25 @@ void GlobeRenderer::render(const FrameInput& f) {
 
   if (timer_ != nullptr) timer_->mark("tone mapping");
   glDisable(GL_DEPTH_TEST);
-  if (lastSeaWroteDisplay_) {  // (no pixel but the sea's: lastDrawCoversScreen)
+  if (lastSeaWroteDisplay_ && ocean_->lastDrawCoversScreen()) {  // (no pixel but the sea's)
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (timer_ != nullptr) timer_->endFrame();
     gl::checkErrors("GlobeRenderer::render");
     return;
   }
-  glBindFramebuffer(GL_FRAMEBUFFER, ldr_.fbo.id());
+  // Where the sea wrote the display, only the pixels it left without a depth remain, the
+  // globe's (below the ceiling it shades only those and writes none): the depth test, equal
+  // to the clear's 0 before the shader, leaves the sea's alone.
+  GLint depthFunc = GL_GREATER;
+  glGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
+  if (lastSeaWroteDisplay_) {
+    glBindFramebuffer(GL_FRAMEBUFFER, displayOverDepth_.id());
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_EQUAL);
+    glDepthMask(GL_FALSE);
+  } else {
+    glBindFramebuffer(GL_FRAMEBUFFER, ldr_.fbo.id());
+  }
   // Above the ceiling nothing was drawn outside the globe's box (scissorToGlobe): the radiance
   // there is the clear's 0, black once tone mapped. Only the box is tone mapped (orbit: 40 % of
   // the screen), the rest cleared to black.
@@ -382,6 +394,9 @@ void GlobeRenderer::render(const FrameInput& f) {
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDisable(GL_FRAMEBUFFER_SRGB);
   glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_DEPTH_TEST);
+  glDepthFunc(static_cast<GLenum>(depthFunc));
+  glDepthMask(GL_TRUE);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (timer_ != nullptr) timer_->endFrame();
   gl::checkErrors("GlobeRenderer::render");
@@ -1034,8 +1049,9 @@ void GlobeRenderer::drawOcean(const geo::CameraView& view, const FrameInput& f) 
   glDepthFunc(GL_GREATER);
   if (landMask_->active()) bindOpenSeaMap();  // its land clearance: the sea's classes
   ocean_->setCellPixels(f.oceanCellPixels);
-  // A display-only frame: where the sea covers the screen, nothing else draws (the terrain drew
-  // no tile: no land in view) and its pass writes the display itself.
+  // A display-only frame with no tile drawn (no land in view): where one pass shades the whole
+  // sea, it writes the display itself; the tone map then reads only the globe's pixels, or
+  // none where the sea covers the screen.
   if (f.displayOnly && seaWritesDisplay_ && !auxiliary_ && displayOverDepth_.id() != 0 && ts.drawnTiles == 0)
     ocean_->setDisplayTarget(displayOverDepth_.id(), static_cast<float>(f.exposure));
   ocean_->draw(view, f.width, f.height, *patterns_, frame, f.simulationTimeS, lighting, amplitude,

@@ -79,9 +79,10 @@ struct FrameInput {
   /// an extra float target, for EXR outputs that ask for them (--aov).
   bool auxiliaryOutputs = false;
   /// The caller reads only the display of this frame (display(), depth(), viewDistance(); not
-  /// radiance(), which then throws): where the sea covers the screen, single-sampled and with
-  /// no auxiliary outputs, its pass may write the display itself (OceanRenderer::
-  /// setDisplayTarget) and the tone map's pass is left out. False for EXR outputs.
+  /// radiance(), which then throws): below the grid's ceiling with no land in view,
+  /// single-sampled and with no auxiliary outputs, the sea's pass may write the display itself
+  /// (OceanRenderer::setDisplayTarget) and the tone map's pass then reads only the rest (the
+  /// globe's pixels), or is left out where the sea covers the screen. False for EXR outputs.
   bool displayOnly = false;
 };
 

@@ -199,9 +199,9 @@ std::vector<std::string> OceanRenderer::featureDefines(unsigned features) const 
 
 const gl::Program& OceanRenderer::deferredProgram(unsigned features, bool compute, bool visibility,
                                                   bool multisampled) {
-  assert(features < 16u);  // (the variants' index: the feature bits, then the paths')
-  gl::Program& p = programs().deferredVariants.at(features + (compute ? 16u : 0u) + (visibility ? 32u : 0u) +
-                                                  (multisampled ? 64u : 0u));
+  assert((features & ~kFeatureDisplay) < 16u);  // (the variants' index: the feature bits, then the paths')
+  gl::Program& p = programs().deferredVariants.at((features & 15u) + (compute ? 16u : 0u) + (visibility ? 32u : 0u) +
+                                                  (multisampled ? 64u : 0u) + ((features & kFeatureDisplay) != 0 ? 128u : 0u));
   if (p.id() != 0) return p;
   // The coast test is the surface pass's. The surface buffer's layers the shading reads are the
   // same in its compact layout and its full one (ocean/sea_surface.glsl): one program for both.
@@ -606,7 +606,7 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
   lastRadianceTerms_ = false;
   lastCoversScreen_ = false;
   lastWroteDisplay_ = false;
-  const GLuint displayFbo = std::exchange(displayFbo_, 0);  // (for this draw only)
+  frameDisplayFbo_ = std::exchange(displayFbo_, 0);  // (for this draw only)
   if (model == OceanModel::Classic) {
     if (classic_.id() == 0) {  // made on first use (start-up: bench --startup)
       classic_ = gl::Program({{GL_VERTEX_SHADER, "ocean/classic.vert"}, {GL_FRAGMENT_SHADER, "ocean/classic.frag"}},
@@ -650,27 +650,31 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
       computeGridVertices(compute, true);
       if (timer_ != nullptr) timer_->mark("ocean");
     }
-    lastWroteDisplay_ = lastCoversScreen_ && displayFbo != 0;
+    // (The forward grid writes its colour and depth in one fragment: the display wherever
+    // the depth shows sea.)
+    lastWroteDisplay_ = frameDisplayFbo_ != 0;
     if (lastWroteDisplay_) features |= kFeatureDisplay;
     const gl::Program& p = program(features);
     prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
-    if (lastWroteDisplay_)
-      drawDisplay(p, displayFbo);
-    else
+    if (lastWroteDisplay_) {
+      const ScopedDisplayTarget display(frameDisplayFbo_);
       drawGrid(p);
+    } else {
+      drawGrid(p);
+    }
   }
   gl::checkErrors("OceanRenderer::draw");
 }
 
-void OceanRenderer::drawDisplay(const gl::Program& p, GLuint displayFbo) {
-  GLint bound = 0;
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
-  glBindFramebuffer(GL_FRAMEBUFFER, displayFbo);
-  p.set("uExposure", displayExposure_);
+OceanRenderer::ScopedDisplayTarget::ScopedDisplayTarget(GLuint displayFbo) {
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, displayFbo);
   glEnable(GL_FRAMEBUFFER_SRGB);  // the store encodes sRGB, as for render/tonemap.frag
-  drawGrid(p);
+}
+
+OceanRenderer::ScopedDisplayTarget::~ScopedDisplayTarget() {
   glDisable(GL_FRAMEBUFFER_SRGB);
-  glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(bound));
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(bound_));
 }
 
 bool OceanRenderer::surfaceClasses(const OceanLighting& lighting, unsigned features) {
@@ -734,6 +738,7 @@ void OceanRenderer::prepare(const gl::Program& p, const geo::CameraView& view, i
                             const OceanLighting& lighting, double amplitudeScale,
                             const WindTextures& wind, unsigned features, const glm::vec4& margin) const {
   setCommon(p, view, height, frame, lighting, features);
+  if ((features & kFeatureDisplay) != 0) p.set("uExposure", displayExposure_);
   p.set("uGridMarginNdc", margin);
   p.set("uGridRowsNdc", gridRowsNdc_);
   p.set("uGridCoarseRows", gridCoarseRows_);
@@ -1152,7 +1157,16 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(drawn.target));
   glDisable(GL_DEPTH_TEST);
   glDepthMask(GL_FALSE);
-  shadeSeaClasses(sea, drawn);
+  // The display (setDisplayTarget) where one pass by fragments shades the whole sea: over the
+  // visibility buffer's pixels, exactly those whose depth the surface pass wrote.
+  lastWroteDisplay_ = frameDisplayFbo_ != 0 && drawn.visibility && !drawn.classes && !drawn.deepByVisibility &&
+                      depthStencil.samples == 1 && frameComputeImage_ == 0;
+  if (lastWroteDisplay_) {
+    const ScopedDisplayTarget display(frameDisplayFbo_);
+    shadeSeaClasses(sea, drawn, kFeatureDisplay);
+  } else {
+    shadeSeaClasses(sea, drawn, 0);
+  }
   if (timer_ != nullptr) timer_->mark("ocean");
   if (depthStencil.samples > 1 && drawn.seaVisible) copySeaRadiance(static_cast<GLuint>(drawn.target));
   glEnable(GL_DEPTH_TEST);
@@ -1241,7 +1255,7 @@ OceanRenderer::SeaSurfaceDrawn OceanRenderer::drawSeaSurface(const DeferredSea& 
   return d;
 }
 
-void OceanRenderer::shadeSeaClasses(const DeferredSea& sea, const SeaSurfaceDrawn& drawn) {
+void OceanRenderer::shadeSeaClasses(const DeferredSea& sea, const SeaSurfaceDrawn& drawn, unsigned display) {
   // A full-screen pass per class present, only its pixels; or a compute dispatch into the
   // target's image, which reads the classes where they are. Multisampled, per pixel into a
   // single-sampled image first (copySeaRadiance).
@@ -1258,7 +1272,7 @@ void OceanRenderer::shadeSeaClasses(const DeferredSea& sea, const SeaSurfaceDraw
   glBindVertexArray(vao_.id());
   if (!drawn.seaVisible) return;
   std::array<unsigned, kSeaClasses> perClass = classFeatures(sea.features, drawn.routedShadows);
-  if (!drawn.classes) perClass.at(0) = sea.features & ~kFeatureCoastTest;  // one class: all but the coast test
+  if (!drawn.classes) perClass.at(0) = (sea.features & ~kFeatureCoastTest) | display;  // one class: all but the coast test
   {
     std::optional<ClassDispatches> dispatches;
     if (image != 0) dispatches.emplace(image, drawn.visibility ? 0 : sea.depthStencil.texture);

@@ -199,17 +199,20 @@ class OceanRenderer {
   /// whole (layOutGridOnBlocks: the radiance terms' cells, no horizon in view) and no coast
   /// test to discard samples. Then nothing is left for the globe to draw.
   [[nodiscard]] bool lastDrawCoversScreen() const { return lastCoversScreen_; }
-  /// For the next draw only: where its sea covers the screen (lastDrawCoversScreen), the sea's
+  /// For the next draw only: where one pass shades the whole sea by fragments (the forward
+  /// grid; the deferred sea of one class through the visibility buffer, single-sampled), that
   /// pass writes the display itself into `displayFbo` (the display target's sRGB colour over
   /// the bound target's depth-stencil: gl::createFramebufferOver), tone mapped with `exposure`
-  /// as render/tonemap.frag does (OUTPUT_DISPLAY), so no separate pass reads the radiance back
-  /// (llvmpipe: 5-6 ms of sea-8km's wall at 1280x720). The bound target's colour is then left
-  /// as it was. 0 (after every draw): the radiance, as always.
+  /// as render/tonemap.frag does (OUTPUT_DISPLAY), in every pixel where it leaves a depth, so
+  /// no tone map pass need read those pixels' radiance (llvmpipe: sea-8km's whole pass, 5-6 ms
+  /// of its wall at 1280x720). The bound target's colour is left as it was there. 0 (after
+  /// every draw): the radiance, as always.
   void setDisplayTarget(GLuint displayFbo, float exposure) {
     displayFbo_ = displayFbo;
     displayExposure_ = exposure;
   }
-  /// Whether the last draw wrote the display (setDisplayTarget) rather than the radiance.
+  /// Whether the last draw wrote the display (setDisplayTarget) rather than the radiance, in
+  /// every pixel where it left a depth.
   [[nodiscard]] bool lastDrawWroteDisplay() const { return lastWroteDisplay_; }
   /// Whether a grid of larger cells draws the same sea: the waves displace no point by more
   /// than kSubPixelDisplacementPx on the screen (displacementBoundM at the nearest sea point in
@@ -395,8 +398,9 @@ class OceanRenderer {
   SeaSurfaceDrawn drawSeaSurface(const DeferredSea& sea);
   /// drawDeferred's step 2: each class present shaded into `drawn.target` by full-screen
   /// passes or compute dispatches (multisampled: into the single-sampled image that
-  /// copySeaRadiance copies to the samples after).
-  void shadeSeaClasses(const DeferredSea& sea, const SeaSurfaceDrawn& drawn);
+  /// copySeaRadiance copies to the samples after). `display`: kFeatureDisplay where the one
+  /// class's pass writes the display (the bound framebuffer then its: ScopedDisplayTarget), else 0.
+  void shadeSeaClasses(const DeferredSea& sea, const SeaSurfaceDrawn& drawn, unsigned display);
   /// Sets the classifying uniforms of sea_class.glsl on `p`; returns the shadows routed to
   /// classes (kFeatureShadows or 0).
   unsigned setClassUniforms(const gl::Program& p, const geo::CameraView& view, const OceanPatterns& patterns,
@@ -518,9 +522,18 @@ class OceanRenderer {
   void bindGridTexels(bool radianceTerms);
   /// Binds the visibility buffer and indices_ (gl::kUnitSeaGridIndices) for the shading passes.
   void bindVisibilityForShading();
-  /// drawGrid(p) into `displayFbo` with the sRGB store on (setDisplayTarget), `p` an
-  /// OUTPUT_DISPLAY variant; the bound framebuffer is bound again after.
-  void drawDisplay(const gl::Program& p, GLuint displayFbo);
+  /// While alive, draws go to the display (setDisplayTarget's framebuffer) with the sRGB store
+  /// on, for OUTPUT_DISPLAY variants; then the draw framebuffer bound before is bound again.
+  class ScopedDisplayTarget {
+   public:
+    explicit ScopedDisplayTarget(GLuint displayFbo);
+    ~ScopedDisplayTarget();
+    ScopedDisplayTarget(const ScopedDisplayTarget&) = delete;
+    ScopedDisplayTarget& operator=(const ScopedDisplayTarget&) = delete;
+
+   private:
+    GLint bound_ = 0;
+  };
   /// Binds `target` and writes seaRadiance_ into its samples with sea (the stencil's class 1:
   /// ocean/sea_radiance_copy.frag).
   void copySeaRadiance(GLuint target);
@@ -592,8 +605,8 @@ class OceanRenderer {
     std::array<gl::Program, 128> variants;   ///< by feature bits
     gl::Program classify;                    ///< ocean/sea_classify.frag
     /// ocean.frag OCEAN_DEFERRED, by feature bits, + 16 with OCEAN_COMPUTE, + 32 with
-    /// SEA_VISIBILITY, + 64 with SEA_VISIBILITY_MULTISAMPLE
-    std::array<gl::Program, 128> deferredVariants;
+    /// SEA_VISIBILITY, + 64 with SEA_VISIBILITY_MULTISAMPLE, + 128 with OUTPUT_DISPLAY
+    std::array<gl::Program, 256> deferredVariants;
     std::array<gl::Program, 8> surfaceVariants;    ///< sea_surface.frag: volume, coast, classes bits
     std::array<gl::Program, 8> gridComputeVariants;  ///< grid_vertices.comp, as surfaceVariants
     /// grid_vertices.comp with the radiance terms, by feature bits (kFeatureRadianceTerms's aside)
@@ -650,6 +663,7 @@ class OceanRenderer {
   bool lastRadianceTerms_ = false;
   bool lastCoversScreen_ = false;
   GLuint displayFbo_ = 0;  ///< setDisplayTarget's, for the next draw
+  GLuint frameDisplayFbo_ = 0;  ///< this draw's
   float displayExposure_ = 1.0f;
   bool lastWroteDisplay_ = false;
   glm::vec4 lightingTerms_{1.0f};

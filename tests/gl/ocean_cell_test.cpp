@@ -117,15 +117,18 @@ TEST(OceanCell, RadianceFromTheVerticesDrawsTheSameSea) {
   EXPECT_EQ(r.ocean().lastCellPixels(), 32);
 }
 
-// A display-only frame (FrameInput::displayOnly, as `record` to MP4 renders) whose sea covers
-// the screen: the sea's pass writes the display itself, tone mapped, and no tone map pass runs
-// (render/OceanRenderer::setDisplayTarget). Its picture and depth are the two-pass frame's; the
-// radiance it never wrote cannot be read. Frames with land in view, multisampled ones and those
-// with the switch off keep the tone map's pass. Measured: the same bytes in every pixel.
+// A display-only frame (FrameInput::displayOnly, as `record` to MP4 renders) with no land in
+// view: the sea's one pass writes the display itself, tone mapped, and the tone map's pass
+// reads only the sky's pixels, or none where the sea covers the screen (render/OceanRenderer::
+// setDisplayTarget): the radiance terms' grown cells, the forward grid's, the deferred sea
+// through the visibility buffer under the sky (the bench's sea-4m). Its picture and depth are
+// the two-pass frame's; the radiance it never wrote cannot be read. Frames with land in view,
+// multisampled ones and those with the switch off keep the tone map's pass. Measured: the
+// same bytes in every pixel.
 TEST(OceanCell, DisplayOnlyFramesTakeTheDisplayFromTheSeaPass) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(data::defaultElevation());
-  const auto sameFrame = [&](render::FrameInput f, bool folds, bool covers, const char* name) {
+  const auto sameFrame = [&](render::FrameInput f, bool folds, bool covers, const char* name, bool deferred = false) {
     f.displayOnly = false;
     r.render(f);
     EXPECT_FALSE(r.lastSeaWroteDisplay()) << name;
@@ -135,6 +138,7 @@ TEST(OceanCell, DisplayOnlyFramesTakeTheDisplayFromTheSeaPass) {
     r.render(f);
     EXPECT_EQ(r.lastSeaWroteDisplay(), folds) << name;
     EXPECT_EQ(r.ocean().lastDrawCoversScreen(), covers) << name;
+    EXPECT_EQ(r.ocean().lastDrawDeferred(), deferred) << name;
     EXPECT_THROW((void)r.radiance(), InternalError) << name;
     const io::ImageRgba8 shown = r.display();
     const test::Comparison c = test::compareRgb(shown, twoPasses, 0);
@@ -149,10 +153,15 @@ TEST(OceanCell, DisplayOnlyFramesTakeTheDisplayFromTheSeaPass) {
   };
   sameFrame(lookingDown(-50.0, 10.0, 50.0, 250.0), true, true, "glint");
   sameFrame(lookingDown(-50.0, 10.0, 70.0, 250.0), true, true, "high_sun");
-  sameFrame(lookingDown(-30.0, 45.0, 20.0, 250.0), false, false, "smaller_cells");  // (16 px: not on blocks)
+  r.ocean().setRadianceTerms(false);  // (the same cells forward, each pixel shading itself)
+  sameFrame(lookingDown(-50.0, 10.0, 50.0, 250.0), true, false, "forward");
+  r.ocean().setRadianceTerms(true);
+  render::FrameInput horizon = test::frameOf({20.0, -40.0, 4.0, 270.0, -10.0, 45.0, 320, 180}, 20.0, 250.0);
+  horizon.simulationTimeS = 3.0;
+  sameFrame(horizon, true, false, "deferred_under_the_sky", true);
   render::FrameInput coast =
       test::frameOf({36.0, -5.6, 8000.0, 270.0, -50.0, 45.0, 320, 180}, 50.0, 250.0);  // the Strait of Gibraltar
-  sameFrame(coast, false, false, "coast");
+  sameFrame(coast, false, false, "coast");  // (the classes: drawn forward)
   render::FrameInput multisampled = lookingDown(-50.0, 10.0, 50.0, 250.0);
   multisampled.samples = 2;
   multisampled.displayOnly = true;
