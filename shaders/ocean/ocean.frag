@@ -224,8 +224,9 @@ void main() {
   if (gSeaOfClass) imageStore(uRadianceImage, gSeaPixel, fragRadiance);
 }
 #elif defined(OUTPUT_DISPLAY)
-// The sea covering the screen writes the display itself (render/OceanRenderer::setDisplayTarget):
-// render/tonemap.frag's curve, the sRGB store encoding it. (Outputs are readable.)
+// The sea's one pass writes the display itself wherever it draws (render/OceanRenderer::
+// setDisplayTarget): render/tonemap.frag's curve, the sRGB store encoding it. (Outputs are
+// readable.)
 #include "common/color.glsl"
 uniform float uExposure;
 void main() {

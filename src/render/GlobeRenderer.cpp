@@ -1052,8 +1052,10 @@ void GlobeRenderer::drawOcean(const geo::CameraView& view, const FrameInput& f) 
   // A display-only frame with no tile drawn (no land in view): where one pass shades the whole
   // sea, it writes the display itself; the tone map then reads only the globe's pixels, or
   // none where the sea covers the screen.
-  if (f.displayOnly && seaWritesDisplay_ && !auxiliary_ && displayOverDepth_.id() != 0 && ts.drawnTiles == 0)
-    ocean_->setDisplayTarget(displayOverDepth_.id(), static_cast<float>(f.exposure));
+  // (Set in every frame, so that no earlier frame's request outlives it.)
+  const bool seaDisplay = f.displayOnly && seaWritesDisplay_ && !auxiliary_ && displayOverDepth_.id() != 0 &&
+                          ts.drawnTiles == 0;
+  ocean_->setDisplayTarget(seaDisplay ? displayOverDepth_.id() : 0, static_cast<float>(f.exposure));
   ocean_->draw(view, f.width, f.height, *patterns_, frame, f.simulationTimeS, lighting, amplitude,
                f.oceanModel, *wind_);
   lastSeaWroteDisplay_ = ocean_->lastDrawWroteDisplay();

@@ -150,7 +150,8 @@ class GlobeRenderer {
   /// Whether the sea's pass may write the display itself in FrameInput::displayOnly frames
   /// (default on; off: the tone map's pass always, to compare in tests).
   void setSeaWritesDisplay(bool on) { seaWritesDisplay_ = on; }
-  /// Whether the last render()'s sea wrote the display (no tone map pass read the radiance).
+  /// Whether the last render()'s sea wrote the display where it drew (the tone map's pass then
+  /// read only the rest, the globe's pixels, or ran not at all where the sea covered the screen).
   [[nodiscard]] bool lastSeaWroteDisplay() const { return lastSeaWroteDisplay_; }
 
   /// Results of the last render(). With multisampling, radiance is the mean of each pixel's
@@ -576,7 +577,7 @@ class GlobeRenderer {
   /// writes the display itself (FrameInput::displayOnly, OceanRenderer::setDisplayTarget).
   gl::Framebuffer displayOverDepth_;
   bool lastDisplayOnly_ = false;     ///< the last render()'s FrameInput::displayOnly
-  bool lastSeaWroteDisplay_ = false;  ///< its sea's pass wrote the display (no tone map pass)
+  bool lastSeaWroteDisplay_ = false;  ///< its sea's pass wrote the display where it drew
   bool seaWritesDisplay_ = true;      ///< setSeaWritesDisplay
   int maxSamples_ = 1;        ///< what the device offers for the HDR target
   int requestedSamples_ = 0;  ///< FrameInput::samples that hdr_ was made for

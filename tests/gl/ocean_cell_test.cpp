@@ -9,6 +9,8 @@
 #include "data/Elevation.hpp"
 #include "geo/Camera.hpp"
 #include "gl/Context.hpp"
+#include "gl/DriverProfile.hpp"
+#include "gl/Objects.hpp"
 #include "io/Image.hpp"
 #include "render/GlobeRenderer.hpp"
 #include "support/GlFixtures.hpp"
@@ -128,17 +130,27 @@ TEST(OceanCell, RadianceFromTheVerticesDrawsTheSameSea) {
 TEST(OceanCell, DisplayOnlyFramesTakeTheDisplayFromTheSeaPass) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(data::defaultElevation());
+  // (One sample a pixel: GPUs' auto is 4. The deferred sea has one pass through the visibility
+  // buffer where the driver profile asks for it: llvmpipe's.)
+  const bool visibility = gl::driverProfile().seaByVisibility;
   const auto sameFrame = [&](render::FrameInput f, bool folds, bool covers, const char* name, bool deferred = false) {
+    f.samples = 1;
+    folds = folds && (!deferred || visibility);
     f.displayOnly = false;
     r.render(f);
     EXPECT_FALSE(r.lastSeaWroteDisplay()) << name;
     const io::ImageRgba8 twoPasses = r.display();
     const std::vector<float> twoPassDepth = r.depth();
+    // A pixel left unwritten would keep this colour (it would keep the frame's own otherwise).
+    const float magenta[] = {1.0f, 0.0f, 1.0f, 1.0f};
+    glClearNamedFramebufferfv(r.displayFramebuffer(), GL_COLOR, 0, magenta);
     f.displayOnly = true;
     r.render(f);
     EXPECT_EQ(r.lastSeaWroteDisplay(), folds) << name;
     EXPECT_EQ(r.ocean().lastDrawCoversScreen(), covers) << name;
-    EXPECT_EQ(r.ocean().lastDrawDeferred(), deferred) << name;
+    if (visibility) {
+      EXPECT_EQ(r.ocean().lastDrawDeferred(), deferred) << name;
+    }
     EXPECT_THROW((void)r.radiance(), InternalError) << name;
     const io::ImageRgba8 shown = r.display();
     const test::Comparison c = test::compareRgb(shown, twoPasses, 0);
