@@ -110,6 +110,14 @@ std::array<int, 4> globeScissor(const geo::CameraView& view, int width, int heig
 /// pixels over the screen against the ellipsoid, widened by that step and two
 /// pixels; empty (width 0) when none meets it.
 std::array<int, 4> ellipsoidScissor(const geo::CameraView& view, int width, int height);
+/// ellipsoidScissor's box (`hits`) and the same for every pixel a ray of which can miss the
+/// ellipsoid (`sky`: below the grid's ceiling the sky part's, stencil count 0, which also takes
+/// any pixel that hits outside `hits`), from the same rays, widened alike; each empty (width
+/// 0) when none of its rays is found. Every pixel lies in one or both.
+struct RayScissors {
+  std::array<int, 4> hits, sky;
+};
+RayScissors rayScissors(const geo::CameraView& view, int width, int height);
 /// The box (x, y, width, height, pixels, lower-left origin) holding every pixel whose centre ray
 /// lies within the Sun's disc (angular radius `sunRadiusRad`) plus a pixel's largest angle:
 /// where render/globe.frag's sky part below the grid's ceiling adds the disc. Empty (width 0)
@@ -258,7 +266,8 @@ class GlobeRenderer {
   /// and the Sun (globeScissor); false draws it over the whole screen (the tests' reference).
   void setGlobeScissor(bool on) { scissorGlobe_ = on; }
   /// Below 20 km the classifying draws are scissored to the pixels whose rays can meet the
-  /// ellipsoid (ellipsoidScissor); false: the whole screen (the tests' reference).
+  /// ellipsoid, the sky's part to those whose rays can miss it (rayScissors); false: the whole
+  /// screen for both (the tests' reference).
   void setEllipsoidScissor(bool on) { ellipsoidScissorOn_ = on; }
   /// Below the ceiling, the classifying draw that writes the stencil from its shader covers only
   /// the blocks of pixels the terrain and the grid left (render/UncoveredPixels); false: every
@@ -459,6 +468,11 @@ class GlobeRenderer {
   std::future<std::unique_ptr<data::LandFractionMips>> fractionMipsFuture_;
   std::unique_ptr<data::LandFractionMips> fractionMips_;
   /// Waits for the pyramid and uploads it where `view` may weigh it; sets filteredMaskFrame_.
+  /// The tone map's pass from hdr_ into the display: over the globe's box above the ceiling,
+  /// over the globe's pixels alone where the sea wrote the display (toneMapGlobePixels).
+  void toneMap(const FrameInput& f, bool grid);
+  /// `tonemap` (in use, its exposure set) over the pixels at the clear's depth alone.
+  void toneMapGlobePixels(const FrameInput& f, const gl::Program& tonemap);
   void prepareFractionMips(const geo::CameraView& view, int heightPx);
   const gl::Program& globeProgram(bool behind, int variant);
   /// The set of globePrograms_ `variant` draws from this frame (kGlobeProgramSets of them).
@@ -543,6 +557,7 @@ class GlobeRenderer {
   bool uncoveredBlocksOn_ = true;  ///< setUncoveredBlocks
   gl::Program tonemap_;
   gl::Program tonemapMs_;  ///< per-sample tone mapping of a multisampled target; id() 0 until first used
+  gl::Program tonemapBlocks_;  ///< the tone map over the uncovered blocks (blocks.vert); id() 0 until first used
   gl::VertexArray emptyVao_;
   gl::Texture elevation_;
   glm::vec4 elevationMap_{};
@@ -577,6 +592,9 @@ class GlobeRenderer {
   /// writes the display itself (FrameInput::displayOnly, OceanRenderer::setDisplayTarget).
   gl::Framebuffer displayOverDepth_;
   bool lastDisplayOnly_ = false;     ///< the last render()'s FrameInput::displayOnly
+  /// Below the ceiling: this frame's box of the rays that miss the ellipsoid (rayScissors), the
+  /// sky part's and, where the sea wrote the display, the tone map's (classifyGlobe's).
+  std::array<int, 4> frameSkyBox_{};
   bool lastSeaWroteDisplay_ = false;  ///< its sea's pass wrote the display where it drew
   bool seaWritesDisplay_ = true;      ///< setSeaWritesDisplay
   int maxSamples_ = 1;        ///< what the device offers for the HDR target

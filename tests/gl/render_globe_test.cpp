@@ -203,8 +203,9 @@ void expectBelowTheCeilingAlike(render::GlobeRenderer& r, const std::function<vo
 }  // namespace
 
 // Below the grid's ceiling the classifying draws are scissored to the pixels whose rays can
-// meet the ellipsoid (render::ellipsoidScissor): the sky above the horizon has nothing to class.
-// The same picture as over the whole screen; the rectangle is the horizon's.
+// meet the ellipsoid (render::ellipsoidScissor): the sky above the horizon has nothing to class;
+// and the sky's part to those whose rays can miss it (render::rayScissors' sky). The same
+// picture as over the whole screen; the rectangles are the horizon's, one each side.
 TEST(GlobeRender, ClassifyingBelowTheCeilingOnlyWhereRaysMeetTheEllipsoid) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(halfLand());
@@ -216,8 +217,18 @@ TEST(GlobeRender, ClassifyingBelowTheCeilingOnlyWhereRaysMeetTheEllipsoid) {
   EXPECT_EQ(box[1], 0);
   EXPECT_GT(box[3], 45);
   EXPECT_LT(box[3], 45 + 2 * render::kHitScanPx + 4);
+  const render::RayScissors both = render::rayScissors(geo::makeCameraView(f.camera, f.width, f.height), f.width, f.height);
+  EXPECT_EQ(both.hits, box);
+  EXPECT_EQ(both.sky[1] + both.sky[3], 90);  // the upper half and a margin
+  EXPECT_LT(both.sky[1], 45);
+  EXPECT_GT(both.sky[1], 45 - 2 * render::kHitScanPx - 4);
+  EXPECT_EQ(both.sky[2], 160);
   f.camera.pitchDeg = 60.0;
   EXPECT_EQ(render::ellipsoidScissor(geo::makeCameraView(f.camera, f.width, f.height), f.width, f.height)[2], 0);
+  EXPECT_EQ(render::rayScissors(geo::makeCameraView(f.camera, f.width, f.height), f.width, f.height).sky,
+            (std::array<int, 4>{0, 0, 160, 90}));
+  f.camera.pitchDeg = -60.0;  // (no sky)
+  EXPECT_EQ(render::rayScissors(geo::makeCameraView(f.camera, f.width, f.height), f.width, f.height).sky[2], 0);
 }
 
 // Below the ceiling the classifying draw that writes the stencil from its shader (which llvmpipe
