@@ -973,8 +973,8 @@ void GlobeRenderer::shadeScatteredParts(const geo::CameraView& view, const Frame
 bool GlobeRenderer::drawSkyLow(const geo::CameraView& view, const FrameInput& f) {
   const double pixelRad = 2.0 * std::tan(0.5 * view.verticalFovRad) / f.height;
   const int factor = skyLowOn_ ? std::min(static_cast<int>(kSkyLowTexelRad / pixelRad), kSkyLowMaxFactor) : 1;
-  // The pass covers the whole frame, the sky a part of it (29 % of sea-4m): below 3 x 3 pixels a
-  // texel it saves too little (640 x 360, 2 x 2: no gain measured).
+  // The pass covers the sky's box, the sky a part of the frame (29 % of sea-4m): below 3 x 3
+  // pixels a texel it saves too little (640 x 360, 2 x 2: no gain measured).
   if (factor < kSkyLowMinFactor) return false;
   lastSkyLowFactor_ = factor;
   const int width = (f.width + factor - 1) / factor, height = (f.height + factor - 1) / factor;
@@ -989,7 +989,16 @@ bool GlobeRenderer::drawSkyLow(const geo::CameraView& view, const FrameInput& f)
   sky.set("uSkyLowFactor", static_cast<float>(factor));
   sky.set("uFrameSize", glm::vec2(static_cast<float>(f.width), static_cast<float>(f.height)));
   sky.use();
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  // Only the texels the sky's pixels read (frameSkyBox_, classifyGlobe's), two more each side
+  // for their bilinear lookups; the others keep what they held.
+  const std::array<int, 4>& box = frameSkyBox_;
+  const int x0 = std::max(box[0] / factor - 2, 0), y0 = std::max(box[1] / factor - 2, 0);
+  const int x1 = std::min((box[0] + box[2] + factor - 1) / factor + 2, width);
+  const int y1 = std::min((box[1] + box[3] + factor - 1) / factor + 2, height);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(x0, y0, x1 - x0, y1 - y0);
+  if (box[2] > 0 && box[3] > 0) glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_SCISSOR_TEST);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
   glViewport(0, 0, f.width, f.height);
   skyLowScale_ = 1.0f / (glm::vec2(static_cast<float>(width), static_cast<float>(height)) * static_cast<float>(factor));

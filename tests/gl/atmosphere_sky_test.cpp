@@ -116,6 +116,33 @@ TEST_F(AtmosphereSky, SkyAtLowResolutionBelowTheCeilingMatchesThePerPixelSky) {
   renderer_->setSkyLow(true);
 }
 
+TEST_F(AtmosphereSky, LowResolutionSkyOnlyOverTheSkysBoxKeepsThePicture) {
+  // Below 20 km the low-resolution sky is drawn only over the texels the sky's pixels read: the
+  // box of the rays that miss the ellipsoid (render::rayScissors), two texels more each side
+  // for the bilinear lookups; the sky's part draws over that box too. Against both over the
+  // whole frame (setEllipsoidScissor(false)), with the horizon low, in the middle and high in
+  // narrow views (the texels 3 pixels or more a side), after a frame of another sky left its
+  // texels; bit-identical. Mutated, the texels' box starting 5 texels higher fails it.
+  for (const double pitch : {3.0, 1.0, -2.0}) {
+    renderer_->setEllipsoidScissor(false);
+    const Shot reference = shoot(20, -40, 2.0, 270, pitch, 8, 10.0, 250, 160, 90);
+    renderer_->setEllipsoidScissor(true);
+    (void)shoot(20, -40, 2.0, 90, 8.0, 8, 60.0, 250, 160, 90);  // other texels left in the texture
+    const Shot boxed = shoot(20, -40, 2.0, 270, pitch, 8, 10.0, 250, 160, 90);
+    EXPECT_GE(renderer_->lastSkyLowFactor(), 3) << "the low-resolution sky is in use";
+    double differs = 0.0;
+    int sky = 0;
+    for (int y = 0; y < 90; ++y)
+      for (int x = 0; x < 160; ++x) {
+        differs = std::max(differs, double(glm::length(glm::vec4(reference.at(x, y)) - glm::vec4(boxed.at(x, y)))));
+        sky += reference.at(x, y).a == 0.0f ? 1 : 0;
+      }
+    EXPECT_EQ(differs, 0.0) << "pitch " << pitch;
+    EXPECT_GT(sky, 160 * 10) << "pitch " << pitch;
+    EXPECT_LT(sky, 160 * 85) << "pitch " << pitch;  // (the horizon in view)
+  }
+}
+
 TEST_F(AtmosphereSky, SunDiscDrawnOverItsBoxKeepsThePicture) {
   // Below 20 km the low-resolution sky's part leaves the Sun's disc out and draws it again only
   // over the box around it (GlobeRenderer::drawSunDisc, render::sunDiscScissor): llvmpipe ran
