@@ -384,14 +384,14 @@ void GlobeRenderer::toneMap(const FrameInput& f, bool grid) {
   // 1280 x 720, one thread). Off again after: read-backs and blits take the bytes as stored.
   glEnable(GL_FRAMEBUFFER_SRGB);
   if (lastSeaWroteDisplay_)
-    toneMapGlobePixels(f, tonemap);
+    toneMapGlobePixels(f);
   else
     glDrawArrays(GL_TRIANGLES, 0, 3);
   glDisable(GL_FRAMEBUFFER_SRGB);
   glDisable(GL_SCISSOR_TEST);
 }
 
-void GlobeRenderer::toneMapGlobePixels(const FrameInput& f, const gl::Program& tonemap) {
+void GlobeRenderer::toneMapGlobePixels(const FrameInput& f) {
   // Where the sea wrote the display, only the pixels it left without a depth remain, the
   // globe's (below the ceiling it shades only those and writes none): the depth test, equal
   // to the clear's 0 before the shader, leaves the sea's alone. They lie in the sky's box and,
@@ -417,7 +417,6 @@ void GlobeRenderer::toneMapGlobePixels(const FrameInput& f, const gl::Program& t
     uncovered_.drawBlocks();
     glEndConditionalRender();
     glBindVertexArray(emptyVao_.id());
-    tonemap.use();
   }
   glDisable(GL_DEPTH_TEST);
   glDepthFunc(static_cast<GLenum>(depthFunc));

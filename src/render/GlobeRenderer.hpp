@@ -467,12 +467,13 @@ class GlobeRenderer {
   /// the first frame whose footprints may weigh it (prepareFractionMips).
   std::future<std::unique_ptr<data::LandFractionMips>> fractionMipsFuture_;
   std::unique_ptr<data::LandFractionMips> fractionMips_;
-  /// Waits for the pyramid and uploads it where `view` may weigh it; sets filteredMaskFrame_.
   /// The tone map's pass from hdr_ into the display: over the globe's box above the ceiling,
   /// over the globe's pixels alone where the sea wrote the display (toneMapGlobePixels).
   void toneMap(const FrameInput& f, bool grid);
-  /// `tonemap` (in use, its exposure set) over the pixels at the clear's depth alone.
-  void toneMapGlobePixels(const FrameInput& f, const gl::Program& tonemap);
+  /// The tone map (the program in use, its exposure set) over the pixels at the clear's depth
+  /// alone; leaves another program in use.
+  void toneMapGlobePixels(const FrameInput& f);
+  /// Waits for the pyramid and uploads it where `view` may weigh it; sets filteredMaskFrame_.
   void prepareFractionMips(const geo::CameraView& view, int heightPx);
   const gl::Program& globeProgram(bool behind, int variant);
   /// The set of globePrograms_ `variant` draws from this frame (kGlobeProgramSets of them).

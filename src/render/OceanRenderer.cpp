@@ -656,12 +656,9 @@ void OceanRenderer::draw(const geo::CameraView& view, int width, int height,
     if (lastWroteDisplay_) features |= kFeatureDisplay;
     const gl::Program& p = program(features);
     prepare(p, view, height, patterns, frame, lighting, amplitudeScale, wind, features, margin);
-    if (lastWroteDisplay_) {
-      const ScopedDisplayTarget display(frameDisplayFbo_);
-      drawGrid(p);
-    } else {
-      drawGrid(p);
-    }
+    std::optional<ScopedDisplayTarget> display;
+    if (lastWroteDisplay_) display.emplace(frameDisplayFbo_);
+    drawGrid(p);
   }
   gl::checkErrors("OceanRenderer::draw");
 }
@@ -1158,14 +1155,13 @@ void OceanRenderer::drawDeferred(const geo::CameraView& view, int width, int hei
   glDisable(GL_DEPTH_TEST);
   glDepthMask(GL_FALSE);
   // The display (setDisplayTarget) where one pass by fragments shades the whole sea: over the
-  // visibility buffer's pixels, exactly those whose depth the surface pass wrote.
-  lastWroteDisplay_ = frameDisplayFbo_ != 0 && drawn.visibility && !drawn.classes && !drawn.deepByVisibility &&
-                      depthStencil.samples == 1 && frameComputeImage_ == 0;
-  if (lastWroteDisplay_) {
-    const ScopedDisplayTarget display(frameDisplayFbo_);
-    shadeSeaClasses(sea, drawn, kFeatureDisplay);
-  } else {
-    shadeSeaClasses(sea, drawn, 0);
+  // visibility buffer's pixels, exactly those whose depth the surface pass wrote. (The
+  // visibility buffer holds the whole sea only without classes: visibilityServes.)
+  lastWroteDisplay_ = frameDisplayFbo_ != 0 && drawn.visibility && depthStencil.samples == 1 && frameComputeImage_ == 0;
+  {
+    std::optional<ScopedDisplayTarget> display;
+    if (lastWroteDisplay_) display.emplace(frameDisplayFbo_);
+    shadeSeaClasses(sea, drawn, lastWroteDisplay_ ? kFeatureDisplay : 0u);
   }
   if (timer_ != nullptr) timer_->mark("ocean");
   if (depthStencil.samples > 1 && drawn.seaVisible) copySeaRadiance(static_cast<GLuint>(drawn.target));
