@@ -519,7 +519,7 @@ class GlobeRenderer {
   void shadeScatteredParts(const geo::CameraView& view, const FrameInput& f, bool grid, const std::vector<int>& counts);
   gl::Buffer scatteredPixels_;  ///< render/globe_pixels.glsl's block: count, groups, pixels
   std::size_t scatteredPixelsBytes_ = 0;
-  gl::Program scatteredList_, scatteredArgs_;
+  gl::Program scatteredList_, scatteredListBlocks_, scatteredArgs_;
   bool scatteredListed_ = false;  ///< set from gl::driverProfile().software by the constructor
   /// Below 20 km with several samples a pixel: `draw` (a part's full-screen draw, its tests
   /// set) conditional on a lean draw's occlusion query under the same tests. llvmpipe's early
