@@ -13,3 +13,19 @@ function(oceanglobe_library name)
   target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR}/src)
   target_link_libraries(${name} PUBLIC ${ARG_PUBLIC} PRIVATE oceanglobe_warnings ${ARG_PRIVATE})
 endfunction()
+
+# Declares a module loaded when first needed (core/Plugin.hpp): NAME.so beside the executable,
+# from the folder's sources (with core/PluginLog.cpp for og::log), linked to what it wraps but
+# to no oceanglobe library. `OWNER`, the folder's library, builds it first: whatever links the
+# library can load it.
+function(oceanglobe_module name)
+  cmake_parse_arguments(ARG "" "OWNER" "SOURCES;PRIVATE" ${ARGN})
+  add_library(${name} MODULE ${ARG_SOURCES} ${PROJECT_SOURCE_DIR}/src/core/PluginLog.cpp)
+  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/src)
+  target_link_libraries(${name} PRIVATE oceanglobe_warnings ${ARG_PRIVATE})
+  set_target_properties(${name} PROPERTIES PREFIX "" LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR})
+  if(NOT OCEANGLOBE_SANITIZE AND NOT OCEANGLOBE_FUZZ)  # (their runtimes resolve at load)
+    target_link_options(${name} PRIVATE -Wl,--no-undefined)  # a missing symbol fails the build, not a run
+  endif()
+  add_dependencies(${ARG_OWNER} ${name})
+endfunction()

@@ -3,6 +3,7 @@
 // anything else GDAL reads) reprojected with GDAL/PROJ to geographic latitude/longitude
 // (EPSG:4326), and single-band rasters (GeoTIFF DEMs) as LatLonGrids. GDAL's own messages are
 // captured by a scoped error handler; every failure is an og::InputError "FILE: problem".
+// GDAL itself is loaded with the first read (data/GeoRasterBackend.hpp, core/Plugin.hpp).
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -65,6 +66,8 @@ struct GeoFootprint {
   }
 };
 
+class GeoImageSource;  // data/GeoRasterBackend.hpp
+
 /// An open georeferenced colour raster from which windows are read again and again (imagery
 /// tiles), each resampled with GDAL's warper (which uses the file's overviews when reading
 /// coarser than the source). One thread at a time per reader: open one per thread.
@@ -88,8 +91,7 @@ class GeoImageReader {
   [[nodiscard]] GeoImage readWhole(const GeoImageRequest& request) const;
 
  private:
-  struct State;
-  std::unique_ptr<State> state_;
+  std::unique_ptr<GeoImageSource> source_;
 };
 
 /// Same for an image in memory (e.g. embedded in the binary) with its world file's text

@@ -1,5 +1,6 @@
 #pragma once
-// H.264 video in MP4 through FFmpeg (libavcodec, libavformat, libswscale).
+// H.264 video in MP4 through FFmpeg (libavcodec, libavformat, libswscale), loaded with the first
+// video (io/VideoEncoder.hpp, core/Plugin.hpp).
 //
 // The MP4 is fragmented (movflags frag_keyframe+empty_moov, one key frame per second), so a
 // file cut short by a crash or kill still plays up to its last complete fragment. Encoding runs
@@ -21,6 +22,8 @@
 #include "io/Image.hpp"
 
 namespace og::io {
+
+class VideoEncoder;  // io/VideoEncoder.hpp
 
 struct VideoOptions {
   int width = 1280;                 ///< pixels, even (yuv420p halves chroma), [2, 16384]
@@ -54,11 +57,11 @@ class VideoWriter {
   [[nodiscard]] std::int64_t framesQueued() const { return queued_; }
 
  private:
-  struct Impl;
   void encodeLoop();
 
-  std::unique_ptr<Impl> impl_;
   std::filesystem::path file_;
+  int width_ = 0, height_ = 0;
+  std::unique_ptr<VideoEncoder> encoder_;  ///< FFmpeg's side (io/VideoEncoder.hpp), the thread's after construction
   std::size_t capacity_ = 3;
   std::int64_t queued_ = 0;
   std::mutex mutex_;

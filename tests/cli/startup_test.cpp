@@ -106,3 +106,48 @@ TEST(Startup, CorruptOrTruncatedDataCacheIsRebuiltAndRendersTheSame) {
   for (const char* name : {"cached.png", "rebuilt.png", "uncached.png"})
     EXPECT_EQ(og::test::slurp(dir / name), filled) << name << " differs from the first render";
 }
+
+namespace {
+
+/// The files the dynamic loader opened for `command` (LD_DEBUG=files, written beside `dir`'s
+/// other files, one log a process), all logs joined.
+std::string loadedFiles(const fs::path& dir, const std::string& tag, const std::string& command) {
+  const fs::path logs = dir / ("ld-" + tag);
+  fs::create_directories(logs);
+  const RunResult r = og::test::runCommand(
+      "LD_DEBUG=files LD_DEBUG_OUTPUT=" + (logs / "ld").string() + " " + command, "startup", "-" + tag);
+  EXPECT_EQ(r.exitCode, 0) << tag << ": " << r.err;
+  std::string all;
+  for (const auto& e : fs::directory_iterator(logs)) all += og::test::slurp(e.path());
+  EXPECT_NE(all.find("file=libc.so.6"), std::string::npos) << tag << ": the loader's log is empty";
+  return all;
+}
+
+}  // namespace
+
+// GDAL's and FFmpeg's ~120 shared libraries cost every start ~130 ms of relocations before main
+// when linked into the executable (docs/performance.md, "Start-up"): they are modules
+// (core/Plugin.hpp), loaded only by what reads a GDAL raster or writes an MP4. A cached render
+// loads neither; the same render without the data cache decodes the embedded imagery through
+// GDAL's module, a recording to MP4 loads FFmpeg's.
+TEST(Startup, GdalAndFfmpegLoadOnlyWhenARunNeedsThem) {
+  const fs::path dir = og::test::scratchDir("startup");
+  const std::string render = std::string(OG_BINARY) + " render --lat 24.2 --lon -78.2 --alt 3000 --pitch -30 --width 32 --height 18 --output ";
+  const std::string uncached = loadedFiles(dir, "uncached", "OCEANGLOBE_NO_DATA_CACHE=1 " + render + (dir / "a.png").string());
+  EXPECT_NE(uncached.find("oceanglobe-gdal.so"), std::string::npos);
+  EXPECT_NE(uncached.find("libgdal.so"), std::string::npos);
+  EXPECT_EQ(uncached.find("libavcodec.so"), std::string::npos);
+  // (The tests' cache folder: the atmosphere's tables, and the data's once this has filled it.)
+  ASSERT_EQ(og::test::runCommand(render + (dir / "b.png").string(), "startup", "-filling").exitCode, 0);
+  const std::string cached = loadedFiles(dir, "cached", render + (dir / "c.png").string());
+  for (const char* library : {"oceanglobe-gdal.so", "libgdal.so", "oceanglobe-ffmpeg.so", "libavcodec.so", "libavformat.so"})
+    EXPECT_EQ(cached.find(library), std::string::npos) << library << " loaded by a cached render";
+  const fs::path path = dir / "short.toml";
+  std::ofstream(path) << "[scene]\nwidth = 32\nheight = 18\n[video]\nfps = 2\n"
+                         "[[keyframe]]\nlatitude_deg = 38\nlongitude_deg = -15\nheight_m = 4e5\npitch_deg = -60\n"
+                         "[[keyframe]]\nlatitude_deg = 38.1\nlongitude_deg = -14\nheight_m = 3e5\npitch_deg = -60\ntime_s = 1\n";
+  const std::string record = loadedFiles(dir, "record", std::string(OG_BINARY) + " record " + path.string() + " -o " + (dir / "v.mp4").string());
+  EXPECT_NE(record.find("oceanglobe-ffmpeg.so"), std::string::npos);
+  EXPECT_NE(record.find("libavcodec.so"), std::string::npos);
+  EXPECT_GT(fs::file_size(dir / "v.mp4"), 0u);
+}

@@ -1,0 +1,26 @@
+// og::log inside a module (core/Plugin.hpp): its messages go to the program's log, at the
+// program's level, through the host the entry point was handed. Linked into modules in place of
+// core/Log.cpp.
+#include "core/Log.hpp"
+#include "core/Plugin.hpp"
+
+#include <atomic>
+
+namespace og {
+namespace {
+std::atomic<const plugin::Host*> gHost{nullptr};
+}  // namespace
+
+void plugin::setHost(const Host* host) { gHost = host; }
+
+void log::setLevel(Level) {}  // (the program's to set)
+log::Level log::level() {
+  const plugin::Host* host = gHost.load();
+  return host != nullptr ? host->level() : Level::Warn;
+}
+
+void log::write(Level level, std::string_view message) {
+  if (const plugin::Host* host = gHost.load(); host != nullptr) host->write(level, message);
+}
+
+}  // namespace og
