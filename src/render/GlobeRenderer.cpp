@@ -935,10 +935,11 @@ void GlobeRenderer::shadeScatteredParts(const geo::CameraView& view, const Frame
   // The block: count, the dispatch's three group counts, then a pixel each (globe_pixels.glsl).
   const std::size_t bytes = (4 + static_cast<std::size_t>(f.width) * static_cast<std::size_t>(f.height)) * sizeof(GLuint);
   gl::ensureBufferCapacity(scatteredPixels_, scatteredPixelsBytes_, bytes, GL_DYNAMIC_STORAGE_BIT);
-  // Below the ceiling the parts' counts lie only in the blocks the classifying draw covered
-  // (listsUncoveredBlocks): over those, not the frame, whose rejected pixels cost llvmpipe
-  // ~6 ns each (sea-4m: 7 ms of process CPU for two counts).
-  const bool overBlocks = listsUncoveredBlocks(grid);
+  // The parts' counts lie only in some blocks: below the ceiling those the classifying draw
+  // covered (listsUncoveredBlocks), above it the per-pixel blocks and the fills of the count
+  // (drawPartOverBlocks). Over those, not the frame, whose rejected pixels cost llvmpipe ~6 ns
+  // each (two counts: sea-4m 7 ms of process CPU, orbit 4).
+  const bool overBlocks = (!grid || listsUncoveredBlocks(grid));
   gl::Program& list = overBlocks ? scatteredListBlocks_ : scatteredList_;
   if (list.id() == 0)
     list = gl::Program({{GL_VERTEX_SHADER, overBlocks ? "render/blocks.vert" : "render/fullscreen.vert"},
@@ -952,12 +953,14 @@ void GlobeRenderer::shadeScatteredParts(const geo::CameraView& view, const Frame
   list.use();
   for (const int count : counts) {
     glStencilFunc(GL_EQUAL, count, 0xff);
-    if (overBlocks)
+    if (!grid)
+      drawPartOverBlocks(0, count);
+    else if (overBlocks)
       uncovered_.drawBlocks();
     else
       glDrawArrays(GL_TRIANGLES, 0, 3);
   }
-  if (overBlocks) glBindVertexArray(emptyVao_.id());
+  glBindVertexArray(emptyVao_.id());
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   // (Below the ceiling the draws above are conditional on the uncovered query; the dispatch is
   // not, and finds the count they left: 0 when they were skipped.)

@@ -533,6 +533,7 @@ class GlobeRenderer {
   /// blocks, the sky's, the fills of that count) instead of the whole frame, with its
   /// blocks.vert variant bound: llvmpipe shaded every block of the frame for the limb's edge
   /// (limb-400km at 1280x720, 4 samples: the edge's and the surface's parts 250 and 230 ms).
+  /// With one sample, the listing of the scattered parts (shadeScatteredParts; `part` 0).
   void drawPartOverBlocks(int part, int count) const;
   /// The stencil count drawBlockFill gives fill k (0 land, 1 sea, 2 open sea) this frame.
   [[nodiscard]] int fillStencilCount(std::size_t k) const;
