@@ -532,6 +532,7 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
   const bool oneDraw = gl::driverProfile().stencilExport;
   // Below the ceiling the one draw covers only the blocks of pixels the terrain and the grid left.
   const bool listedBlocks = listsUncoveredBlocks(grid);
+  frameHasSky_ = false;
   if (grid) {  // the classifying draws run on every pixel: skip them when nothing is left
     // The sky (every ray misses the ellipsoid) has count 0 below the ceiling: the draws skip it
     // (after the query, which must see the sky the parts then shade).
@@ -539,7 +540,12 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
     const RayScissors boxes = ellipsoidScissorOn_ ? rayScissors(view, f.width, f.height) : RayScissors{whole, whole};
     const std::array<int, 4>& hits = boxes.hits;
     frameSkyBox_ = boxes.sky;
-    uncovered_.find(f.width, f.height, hits, listedBlocks, !uncoveredBlocksOn_);
+    // A ray that misses the ellipsoid is the sky's pixel, which the globe shades unless the
+    // terrain or a wave covers it: with one, the globe's parts are drawn without the query's
+    // condition, and the query answers for the hits' box alone (the classifying draws), its
+    // draw cut to it (the sky's pixels cost it ~1-3 ms of process CPU at 1280 x 720).
+    frameHasSky_ = ellipsoidScissorOn_ && boxes.sky[2] > 0 && boxes.sky[3] > 0;
+    uncovered_.find(f.width, f.height, hits, listedBlocks, !uncoveredBlocksOn_, frameHasSky_);
     glBindVertexArray(emptyVao_.id());
     glBeginConditionalRender(uncovered_.query(), GL_QUERY_WAIT);
     glEnable(GL_SCISSOR_TEST);
@@ -736,7 +742,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   // The land after the tiles: where none drew, its class's depth is still the far plane (0),
   // the full-screen triangle's own depth; a tile's fragment fails it before the shader.
   glDepthFunc(grid ? GL_GEQUAL : landOnly ? GL_EQUAL : GL_ALWAYS);
-  if (grid) glBeginConditionalRender(uncovered_.query(), GL_QUERY_WAIT);
+  if (partsOnUncovered(grid)) glBeginConditionalRender(uncovered_.query(), GL_QUERY_WAIT);
   glEnable(GL_STENCIL_TEST);
   glDepthMask(GL_FALSE);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
@@ -819,7 +825,7 @@ void GlobeRenderer::shadeGlobe(const geo::CameraView& view, const FrameInput& f,
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_SCISSOR_TEST);
   glDepthMask(grid ? GL_FALSE : GL_TRUE);  // as the caller had it
-  if (grid) glEndConditionalRender();
+  if (partsOnUncovered(grid)) glEndConditionalRender();
 }
 
 void GlobeRenderer::drawPartGated(const gl::Program& part, const std::function<void()>& draw) {
@@ -841,11 +847,11 @@ void GlobeRenderer::drawPartGated(const gl::Program& part, const std::function<v
   }
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);  // (shadeGlobe's)
   part.use();
-  glEndConditionalRender();
+  if (partsOnUncovered(true)) glEndConditionalRender();
   glBeginConditionalRender(partGateQuery_.id(), GL_QUERY_WAIT);
   draw();
   glEndConditionalRender();
-  glBeginConditionalRender(uncovered_.query(), GL_QUERY_WAIT);
+  if (partsOnUncovered(true)) glBeginConditionalRender(uncovered_.query(), GL_QUERY_WAIT);
 }
 
 void GlobeRenderer::drawPartOverBlocks(int part, int count) const {
@@ -923,6 +929,8 @@ std::uint32_t GlobeRenderer::listedPixelCount() const {
   if (scatteredPixels_.id() != 0) glGetNamedBufferSubData(scatteredPixels_.id(), 0, sizeof count, &count);
   return count;
 }
+
+bool GlobeRenderer::partsOnUncovered(bool grid) const { return grid && !frameHasSky_; }
 
 bool GlobeRenderer::listsUncoveredBlocks(bool grid) { return grid && gl::driverProfile().stencilExport; }
 

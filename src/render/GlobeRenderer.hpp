@@ -597,6 +597,12 @@ class GlobeRenderer {
   /// Below the ceiling: this frame's box of the rays that miss the ellipsoid (rayScissors), the
   /// sky part's and, where the sea wrote the display, the tone map's (classifyGlobe's).
   std::array<int, 4> frameSkyBox_{};
+  /// Below the ceiling: a ray of the scan missed the ellipsoid (classifyGlobe), so the query
+  /// covered only the hits' box (UncoveredPixels::find's `onlyInBox`).
+  bool frameHasSky_ = false;
+  /// Whether the globe's parts are drawn conditional on uncovered_'s query: below the ceiling,
+  /// unless the frame has sky (frameHasSky_), which the query did not look at.
+  [[nodiscard]] bool partsOnUncovered(bool grid) const;
   bool lastSeaWroteDisplay_ = false;  ///< its sea's pass wrote the display where it drew
   bool seaWritesDisplay_ = true;      ///< setSeaWritesDisplay
   int maxSamples_ = 1;        ///< what the device offers for the HDR target

@@ -9,7 +9,8 @@
 
 namespace og::render {
 
-void UncoveredPixels::find(int width, int height, const std::array<int, 4>& box, bool listBlocks, bool everyBlock) {
+void UncoveredPixels::find(int width, int height, const std::array<int, 4>& box, bool listBlocks, bool everyBlock,
+                           bool onlyInBox) {
   static const std::vector<std::pair<GLenum, std::string>> stages{{GL_VERTEX_SHADER, "render/fullscreen.vert"},
                                                                   {GL_FRAGMENT_SHADER, "render/uncovered.frag"}};
   if (find_.id() == 0) {
@@ -41,9 +42,14 @@ void UncoveredPixels::find(int width, int height, const std::array<int, 4>& box,
     program.set("uBlocksPerRow", blocksPerRow_);
   }
   program.use();
+  if (onlyInBox) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(box[0], box[1], box[2], box[3]);
+  }
   glBeginQuery(GL_ANY_SAMPLES_PASSED, query_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glEndQuery(GL_ANY_SAMPLES_PASSED);
+  if (onlyInBox) glDisable(GL_SCISSOR_TEST);
   if (listBlocks) listFlagged(width, height, box, everyBlock);
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 // Below the grid's ceiling, what the terrain and the grid leave for the globe
 // (render/GlobeRenderer::classifyGlobe): whether any pixel at all (an occlusion query of
-// shaders/render/uncovered.frag, on which the globe's draws are conditional) and which blocks of
+// shaders/render/uncovered.frag, on which the globe's draws are conditional; in frames with
+// sky, any within the box of rays that meet the ellipsoid, and only its classifying draws are)
+// and which blocks of
 // 8 x 8 pixels hold one, as triangles for the classifying draw that writes the stencil from its
 // shader (GLOBE_CLASSIFY_EXPORT). llvmpipe tests the depth after a shader that writes the
 // stencil, so drawn over its whole box that draw ran in full for every pixel the grid covers
@@ -22,9 +24,11 @@ class UncoveredPixels {
   /// Draws uncovered.frag over a `width` x `height` frame in the query (the caller's depth test
   /// passes what is left; the caller turns the colour writes off); with `listBlocks`, flags the
   /// blocks holding such a pixel within `box` (x, y, width, height, pixels) and lists them for
-  /// drawBlocks (`everyBlock`: every block within it, the tests' reference). Leaves the program
-  /// and the storage bindings changed.
-  void find(int width, int height, const std::array<int, 4>& box, bool listBlocks, bool everyBlock = false);
+  /// drawBlocks (`everyBlock`: every block within it, the tests' reference); with `onlyInBox`,
+  /// draws over `box` alone, so that the query answers for it alone. Leaves the program, the
+  /// storage bindings and the scissor test changed.
+  void find(int width, int height, const std::array<int, 4>& box, bool listBlocks, bool everyBlock = false,
+            bool onlyInBox = false);
   /// The query find drew in (GL_ANY_SAMPLES_PASSED).
   [[nodiscard]] GLuint query() const { return query_.id(); }
   /// The blocks find listed, two triangles each (shaders/render/blocks.vert's input), with the

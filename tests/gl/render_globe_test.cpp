@@ -204,8 +204,11 @@ void expectBelowTheCeilingAlike(render::GlobeRenderer& r, const std::function<vo
 
 // Below the grid's ceiling the classifying draws are scissored to the pixels whose rays can
 // meet the ellipsoid (render::ellipsoidScissor): the sky above the horizon has nothing to class;
-// and the sky's part to those whose rays can miss it (render::rayScissors' sky). The same
-// picture as over the whole screen; the rectangles are the horizon's, one each side.
+// and the sky's part to those whose rays can miss it (render::rayScissors' sky). With sky in
+// view the query of uncovered pixels looks only within the first box and the globe's parts are
+// drawn without its condition (looking up from 4 m it finds nothing: drawn on it, the sky went
+// black). The same picture as over the whole screen; the rectangles are the horizon's, one
+// each side.
 TEST(GlobeRender, ClassifyingBelowTheCeilingOnlyWhereRaysMeetTheEllipsoid) {
   auto ctx = gl::createHeadlessContext();
   render::GlobeRenderer r(halfLand());
