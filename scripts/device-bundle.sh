@@ -25,7 +25,10 @@ done
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$work/lib" "$work/stubs" "$work/bin" .devbundle
-cp build/oceanglobe "$work/bin/"
+# The modules beside the executable, where core/Plugin.hpp looks (GDAL's: the embedded imagery's
+# first decode; FFmpeg's only for recording).
+cp build/oceanglobe build/oceanglobe-gdal.so "$work/bin/"
+if [[ $record == 1 ]]; then cp build/oceanglobe-ffmpeg.so "$work/bin/"; fi
 if [[ $tests == 1 ]]; then
   cp build/tests/og_gl_tests "$work/bin/"
   # PROJ's database for the GeoTIFF imagery tests' warps (~1 MB compressed): device-check.sh

@@ -454,13 +454,15 @@ LatLonGrid readGrid(const fs::path& file, int maxSizePx) {
 class MemoryImage {
  public:
   MemoryImage(std::string_view bytes, std::string_view worldFile, const std::string& extension)
-      : dir_("/vsimem/oceanglobe_" + std::to_string(gMemoryCounter++)), image_(dir_ + "/image." + extension, bytes) {
+      : dir_("/vsimem/oceanglobe_" + std::to_string(gMemoryCounter++)), path_(dir_ + "/image." + extension),
+        image_(path_, bytes) {
     if (!worldFile.empty()) world_ = std::make_unique<MemoryFile>(dir_ + "/image.wld", worldFile);
   }
-  [[nodiscard]] std::string path(const std::string& extension) const { return dir_ + "/image." + extension; }
+  /// The image's path in GDAL's in-memory file system.
+  [[nodiscard]] const std::string& path() const { return path_; }
 
  private:
-  std::string dir_;
+  std::string dir_, path_;
   MemoryFile image_;
   std::unique_ptr<MemoryFile> world_;
 };
@@ -475,7 +477,7 @@ class GdalRasters final : public GeoRasterBackend {
                                          const GeoImageRequest& request) const override {
     registerGdal();
     const MemoryImage memory(bytes, worldFile, extension);
-    return GdalImageSource(memory.path(extension), label).readWhole(request);
+    return GdalImageSource(memory.path(), label).readWhole(request);
   }
   [[nodiscard]] LatLonGrid readGrid(const fs::path& file, int maxSizePx) const override {
     return data::readGrid(file, maxSizePx);
@@ -487,7 +489,7 @@ class GdalRasters final : public GeoRasterBackend {
                                            const std::string& extension, const std::string& label) const override {
     registerGdal();
     const MemoryImage memory(bytes, worldFile, extension);
-    return data::readBytes(memory.path(extension), label);
+    return data::readBytes(memory.path(), label);
   }
 };
 

@@ -108,10 +108,6 @@ RayScissors rayScissors(const geo::CameraView& view, int width, int height) {
   return {widened(box[0]), widened(box[1])};
 }
 
-std::array<int, 4> ellipsoidScissor(const geo::CameraView& view, int width, int height) {
-  return rayScissors(view, width, height).hits;
-}
-
 namespace {
 /// The layer as an RG16F texture: height (m) and keepDepth (the land mask leaves corrected
 /// banks' depth alone: data/ShallowBanks) per texel; missing values (NaN) read as sea (-1 m).

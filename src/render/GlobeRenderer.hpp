@@ -104,16 +104,13 @@ std::array<int, 4> globeScissor(const geo::CameraView& view, int width, int heig
                                 const atmosphere::Parameters& atmosphere,
                                 const glm::dvec3& sunDirectionEcef);
 
-/// The screen rectangle (x, y, width, height in pixels, lower-left origin) holding every pixel
-/// a ray of which can meet the ellipsoid: below the grid's ceiling the globe's classifying
-/// draw finds nothing to class elsewhere (its sky has count 0). From rays every kHitScanPx
-/// pixels over the screen against the ellipsoid, widened by that step and two
-/// pixels; empty (width 0) when none meets it.
-std::array<int, 4> ellipsoidScissor(const geo::CameraView& view, int width, int height);
-/// ellipsoidScissor's box (`hits`) and the same for every pixel a ray of which can miss the
-/// ellipsoid (`sky`: below the grid's ceiling the sky part's, stencil count 0, which also takes
-/// any pixel that hits outside `hits`), from the same rays, widened alike; each empty (width
-/// 0) when none of its rays is found. Every pixel lies in one or both.
+/// Two screen rectangles (x, y, width, height in pixels, lower-left origin). `hits` holds every
+/// pixel a ray of which can meet the ellipsoid: below the grid's ceiling the globe's
+/// classifying draw finds nothing to class elsewhere (its sky has count 0). `sky` holds every
+/// pixel a ray of which can miss it (below the grid's ceiling the sky part's, stencil count 0,
+/// which also takes any pixel that hits outside `hits`). From rays every kHitScanPx pixels
+/// over the screen against the ellipsoid, each box widened by that step and two pixels; each
+/// empty (width 0) when none of its rays is found. Every pixel lies in one or both.
 struct RayScissors {
   std::array<int, 4> hits, sky;
 };
