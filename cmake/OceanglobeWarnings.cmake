@@ -18,9 +18,17 @@ endfunction()
 # from the folder's sources (with core/PluginLog.cpp for og::log), linked to what it wraps but
 # to no oceanglobe library. `OWNER`, the folder's library, builds it first: whatever links the
 # library can load it.
+# The token a module and the program loading it must share (core/Plugin.hpp's Host::abi): the
+# version and a random part drawn once per build tree, so that a module of another build (whose
+# classes may differ behind the same names) is refused, not called.
+if(NOT OCEANGLOBE_PLUGIN_ABI)
+  string(RANDOM LENGTH 12 token)
+  set(OCEANGLOBE_PLUGIN_ABI "${PROJECT_VERSION}-${token}" CACHE INTERNAL "modules' build token")
+endif()
 function(oceanglobe_module name)
   cmake_parse_arguments(ARG "" "OWNER" "SOURCES;PRIVATE" ${ARGN})
   add_library(${name} MODULE ${ARG_SOURCES} ${PROJECT_SOURCE_DIR}/src/core/PluginLog.cpp)
+  target_compile_definitions(${name} PRIVATE OG_PLUGIN_ABI="${OCEANGLOBE_PLUGIN_ABI}")
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/src)
   target_link_libraries(${name} PRIVATE oceanglobe_warnings ${ARG_PRIVATE})
   set_target_properties(${name} PROPERTIES PREFIX "" LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR})

@@ -3,12 +3,14 @@
 # `record`) with the shared libraries it loads into .devbundle/og-bundle.tar.xz, for a machine
 # without the Debian packages: the GPU machine some sessions are lent (Ubuntu with NVIDIA's
 # driver, no network; docs/performance.md, "Tenth session"). scripts/device-check.sh unpacks and
-# runs it there. The bundle is ~39 MB (~41.6 with --tests, PROJ's database included), ~46 MB with both options: with the working tree (~21 MB)
-# that is about the 64 MiB the lent machine takes, so bundle the tests or the recorder, not both.
+# runs it there. The bundle is ~30 MB (more with --tests, PROJ's database included, and with
+# --record): with the working tree (~21 MB) about the 64 MiB the lent machine takes, so bundle
+# the tests or the recorder, not both.
 #
-# To stay small, the libraries of what a GPU check does not use are replaced by stubs of the
-# same name: OSMesa, FFmpeg (unless --record), GLFW, ecCodes, ICU, and GDAL's drivers for formats
-# the embedded data does not use. Debian links its libraries with BIND_NOW, so a stub defines every symbol the
+# FFmpeg comes only with --record (its module, oceanglobe-ffmpeg.so, is what loads it:
+# core/Plugin.hpp). To stay small, the libraries of what a GPU check does not use are replaced
+# by stubs of the same name: OSMesa, GLFW, ecCodes, ICU, and GDAL's drivers for formats the
+# embedded data does not use. Debian links its libraries with BIND_NOW, so a stub defines every symbol the
 # bundle imports from it: functions that return 0 (and say so once on stderr), data as zeros.
 # glibc and libstdc++ are the machine's own (newer than Debian 12's).
 set -euo pipefail
@@ -38,18 +40,15 @@ if [[ $tests == 1 ]]; then
 fi
 strip -s "$work"/bin/*
 
-stubbed=(libOSMesa.so.8 libavcodec.so.59 libavformat.so.59 libavutil.so.57 libswscale.so.6 libglfw.so.3
+stubbed=(libOSMesa.so.8 libglfw.so.3
   libeccodes.so.0 libicuuc.so.72 libcurl-gnutls.so.4 libodbc.so.2 libodbcinst.so.2 libblosc.so.1
   libarmadillo.so.11 libqhull_r.so.8.0 libheif.so.1 libgif.so.7 libcfitsio.so.10 libwebp.so.7 libpq.so.5
   libopenjp2.so.7 libkmlbase.so.1 libkmldom.so.1 libkmlengine.so.1 libfyba.so.0 libspatialite.so.7
   libmariadb.so.3 libfreexl.so.1 libogdi.so.4.1 libgeos_c.so.1 libdfalt.so.0 libmfhdfalt.so.0)
 if [[ $record == 1 ]]; then
-  # FFmpeg itself stays, with x264; its other codecs, formats and hardware back-ends go (not
-  # libdrm and libX11, which the drivers' EGL may load).
-  keep=" libavcodec.so.59 libavformat.so.59 libavutil.so.57 libswscale.so.6 "
-  kept=()
-  for s in "${stubbed[@]}"; do [[ $keep == *" $s "* ]] || kept+=("$s"); done
-  stubbed=("${kept[@]}" libvpx.so.7 libwebpmux.so.3 librsvg-2.so.2 libcairo.so.2 libzvbi.so.0 libsnappy.so.1
+  # FFmpeg itself, with x264; its other codecs, formats and hardware back-ends go (not libdrm
+  # and libX11, which the drivers' EGL may load).
+  stubbed+=(libvpx.so.7 libwebpmux.so.3 librsvg-2.so.2 libcairo.so.2 libzvbi.so.0 libsnappy.so.1
     libaom.so.3 libcodec2.so.1.0 libgsm.so.1 libjxl.so.0.7 libjxl_threads.so.0.7 libmp3lame.so.0 libopus.so.0
     librav1e.so.0 libshine.so.3 libspeex.so.1 libSvtAv1Enc.so.1 libtheoraenc.so.1 libtheoradec.so.1
     libtwolame.so.0 libvorbis.so.0 libvorbisenc.so.2 libx265.so.199 libxvidcore.so.4 libva.so.2 libmfx.so.1

@@ -1,7 +1,8 @@
 #version 450 core
 // Finds whether any pixel is left for the globe below 20 km (GlobeRenderer::classifyGlobe): drawn
-// over the whole screen behind the terrain and the grid inside an occlusion query, it passes
-// only where they left the far depth. Depth-tested before the shader, which does nothing but,
+// over the whole screen (with sky in view, over the box of rays that meet the ellipsoid) behind
+// the terrain and the grid inside an occlusion query, it passes only where they left the far
+// depth. Depth-tested before the shader, which does nothing but,
 // with UNCOVERED_BLOCKS, flag the 8 x 8 block of pixels that holds the fragment where it lies
 // within the classifying draw's box (render/UncoveredPixels: render/uncovered_blocks.comp
 // lists the flagged blocks for that draw).

@@ -14,24 +14,24 @@
 namespace og::plugin {
 namespace {
 
-const Host kHost{&log::write, &log::level};
+const Host kHost{OG_PLUGIN_ABI, &log::write, &log::level};
 
 std::vector<std::filesystem::path> searchDirs() {
   std::vector<std::filesystem::path> dirs;
   std::error_code ec;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (!ec) dirs.push_back(self.parent_path());
-#ifdef OG_PLUGIN_DIR
-  dirs.emplace_back(OG_PLUGIN_DIR);
-#endif
+  const std::filesystem::path built(OG_PLUGIN_DIR);
+  if (dirs.empty() || !std::filesystem::equivalent(dirs.front(), built, ec)) dirs.push_back(built);
   return dirs;
 }
 
 }  // namespace
 
 void* load(std::string_view name, std::string_view purpose) {
-  static std::mutex mutex;
-  static std::map<std::string, void*, std::less<>> loaded;  // name -> interface object
+  // Never destroyed: a helper thread may still ask while the process exits.
+  static auto& mutex = *new std::mutex;
+  static auto& loaded = *new std::map<std::string, void*, std::less<>>;  // name -> interface object
   std::lock_guard lock(mutex);
   if (const auto it = loaded.find(name); it != loaded.end()) return it->second;
   const std::string file = std::string(name) + ".so";
@@ -53,6 +53,10 @@ void* load(std::string_view name, std::string_view purpose) {
       continue;  // (left loaded: unloading modules is never worth the risk)
     }
     void* object = entry(&kHost);
+    if (object == nullptr) {
+      problems += "; " + path.string() + ": built by another build of oceanglobe (this one is " OG_PLUGIN_ABI ")";
+      continue;
+    }
     loaded.emplace(std::string(name), object);
     return object;
   }

@@ -5,13 +5,18 @@
 #include "core/Plugin.hpp"
 
 #include <atomic>
+#include <cstring>
 
 namespace og {
 namespace {
 std::atomic<const plugin::Host*> gHost{nullptr};
 }  // namespace
 
-void plugin::setHost(const Host* host) { gHost = host; }
+bool plugin::acceptHost(const Host* host) {
+  if (host == nullptr || host->abi == nullptr || std::strcmp(host->abi, OG_PLUGIN_ABI) != 0) return false;
+  gHost = host;
+  return true;
+}
 
 void log::setLevel(Level) {}  // (the program's to set)
 log::Level log::level() {

@@ -3,7 +3,8 @@
 // anything else GDAL reads) reprojected with GDAL/PROJ to geographic latitude/longitude
 // (EPSG:4326), and single-band rasters (GeoTIFF DEMs) as LatLonGrids. GDAL's own messages are
 // captured by a scoped error handler; every failure is an og::InputError "FILE: problem".
-// GDAL itself is loaded with the first read (data/GeoRasterBackend.hpp, core/Plugin.hpp).
+// GDAL itself is loaded with the first read (data/GeoRasterBackend.hpp, core/Plugin.hpp): every
+// reader here throws og::InternalError when its module cannot be loaded.
 #include <cstdint>
 #include <filesystem>
 #include <memory>

@@ -433,8 +433,8 @@ LatLonGrid readGrid(const fs::path& file, int maxSizePx) {
   std::size_t valid = 0;
   for (int r = 0; r < height; ++r)
     for (int c = 0; c < width; ++c) {
-      double v = rows[static_cast<std::size_t>(height - 1 - r) * static_cast<std::size_t>(width) +
-                      static_cast<std::size_t>(c)];
+      double v = static_cast<double>(
+          rows[static_cast<std::size_t>(height - 1 - r) * static_cast<std::size_t>(width) + static_cast<std::size_t>(c)]);
       if (hasNoData && v == noData) v = std::nan("");
       if (std::isnan(v)) {
         grid.values[static_cast<std::size_t>(r) * static_cast<std::size_t>(width) + static_cast<std::size_t>(c)] = NAN;
@@ -497,7 +497,7 @@ class GdalRasters final : public GeoRasterBackend {
 }  // namespace og::data
 
 extern "C" __attribute__((visibility("default"))) void* oceanglobe_plugin_entry(const og::plugin::Host* host) {
-  og::plugin::setHost(host);
+  if (!og::plugin::acceptHost(host)) return nullptr;
   static og::data::GdalRasters rasters;
   return static_cast<og::data::GeoRasterBackend*>(&rasters);
 }

@@ -41,7 +41,8 @@ void validateVideoOptions(const VideoOptions& options);
 class VideoWriter {
  public:
   /// Opens `file` for writing and starts the encoder thread. Throws og::InputError for bad
-  /// options or an unwritable file, og::InternalError when no H.264 encoder is available.
+  /// options or an unwritable file, og::InternalError when no H.264 encoder is available or
+  /// FFmpeg's module cannot be loaded (io/VideoEncoder.hpp).
   VideoWriter(const std::filesystem::path& file, const VideoOptions& options);
   /// Without finish(): stops the encoder and closes the file as it stands.
   ~VideoWriter();

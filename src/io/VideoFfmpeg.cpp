@@ -166,7 +166,7 @@ class FfmpegVideo final : public VideoBackend {
 }  // namespace og::io
 
 extern "C" __attribute__((visibility("default"))) void* oceanglobe_plugin_entry(const og::plugin::Host* host) {
-  og::plugin::setHost(host);
+  if (!og::plugin::acceptHost(host)) return nullptr;
   static og::io::FfmpegVideo video;
   return static_cast<og::io::VideoBackend*>(&video);
 }

@@ -531,7 +531,7 @@ void GlobeRenderer::classifyGlobe(const geo::CameraView& view, const FrameInput&
   frameHasSky_ = false;
   if (grid) {  // the classifying draws run on every pixel: skip them when nothing is left
     // The sky (every ray misses the ellipsoid) has count 0 below the ceiling: the draws skip it
-    // (after the query, which must see the sky the parts then shade).
+    // (the query must see it where the parts' draws are conditional on it: frameHasSky_).
     const std::array<int, 4> whole{0, 0, f.width, f.height};
     const RayScissors boxes = ellipsoidScissorOn_ ? rayScissors(view, f.width, f.height) : RayScissors{whole, whole};
     const std::array<int, 4>& hits = boxes.hits;
@@ -943,7 +943,7 @@ void GlobeRenderer::shadeScatteredParts(const geo::CameraView& view, const Frame
   // covered (listsUncoveredBlocks), above it the per-pixel blocks and the fills of the count
   // (drawPartOverBlocks). Over those, not the frame, whose rejected pixels cost llvmpipe ~6 ns
   // each (two counts: sea-4m 7 ms of process CPU, orbit 4).
-  const bool overBlocks = (!grid || listsUncoveredBlocks(grid));
+  const bool overBlocks = !grid || listsUncoveredBlocks(grid);
   gl::Program& list = overBlocks ? scatteredListBlocks_ : scatteredList_;
   if (list.id() == 0)
     list = gl::Program({{GL_VERTEX_SHADER, overBlocks ? "render/blocks.vert" : "render/fullscreen.vert"},
@@ -966,8 +966,9 @@ void GlobeRenderer::shadeScatteredParts(const geo::CameraView& view, const Frame
   }
   glBindVertexArray(emptyVao_.id());
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  // (Below the ceiling the draws above are conditional on the uncovered query; the dispatch is
-  // not, and finds the count they left: 0 when they were skipped.)
+  // (Below the ceiling, unless the frame has sky, the draws above are conditional on the
+  // uncovered query; the dispatch is not, and finds the count they left: 0 when they were
+  // skipped.)
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   scatteredArgs_.use();
   glDispatchCompute(1, 1, 1);

@@ -522,8 +522,8 @@ class GlobeRenderer {
   /// set) conditional on a lean draw's occlusion query under the same tests. llvmpipe's early
   /// tests skip no block of a multisampled draw, so a part without samples (the edge's and the
   /// surface's, where the grid covers the globe) cost the whole screen's shading. Within the
-  /// frame's conditional render on uncovered_, which this suspends around the part's; binds the
-  /// part's program `part` again after the lean one.
+  /// frame's conditional render on uncovered_ where there is one (partsOnUncovered), which this
+  /// suspends around the part's; binds the part's program `part` again after the lean one.
   void drawPartGated(const gl::Program& part, const std::function<void()>& draw);
   /// Above 20 km with several samples a pixel: the part of stencil count `count` (variant
   /// `part`) over the triangles of the blocks that may hold it (blockRanges_: the per-pixel
@@ -550,8 +550,9 @@ class GlobeRenderer {
   /// (PATTERN_CONSTANT_WIND).
   static constexpr int kGlobeProgramSets = 9;
   std::array<gl::Program, 2 * kGlobeProgramSets * kGlobeVariants> globePrograms_;
-  /// Below 20 km: whether the terrain and the grid left any pixel for the globe (the globe's
-  /// draws are conditional on it), and which blocks of pixels hold one.
+  /// Below 20 km: whether the terrain and the grid left any pixel for the globe (the
+  /// classifying draws are conditional on it, the parts' too unless the frame has sky:
+  /// partsOnUncovered), and which blocks of pixels hold one.
   UncoveredPixels uncovered_;
   bool uncoveredBlocksOn_ = true;  ///< setUncoveredBlocks
   gl::Program tonemap_;

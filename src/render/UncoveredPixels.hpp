@@ -3,9 +3,8 @@
 // (render/GlobeRenderer::classifyGlobe): whether any pixel at all (an occlusion query of
 // shaders/render/uncovered.frag, on which the globe's draws are conditional; in frames with
 // sky, any within the box of rays that meet the ellipsoid, and only its classifying draws are)
-// and which blocks of
-// 8 x 8 pixels hold one, as triangles for the classifying draw that writes the stencil from its
-// shader (GLOBE_CLASSIFY_EXPORT). llvmpipe tests the depth after a shader that writes the
+// and which blocks of 8 x 8 pixels hold one, as triangles for the classifying draw that writes
+// the stencil from its shader (GLOBE_CLASSIFY_EXPORT). llvmpipe tests the depth after a shader that writes the
 // stencil, so drawn over its whole box that draw ran in full for every pixel the grid covers
 // (7 of sea-4m's 185 ms of one thread at 1280 x 720); over the listed blocks it runs for the
 // horizon's gaps and the sky near them.

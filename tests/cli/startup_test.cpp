@@ -125,8 +125,8 @@ std::string loadedFiles(const fs::path& dir, const std::string& tag, const std::
 
 }  // namespace
 
-// GDAL's and FFmpeg's ~120 shared libraries cost every start ~130 ms of relocations before main
-// when linked into the executable (docs/performance.md, "Start-up"): they are modules
+// GDAL's and FFmpeg's ~150 shared libraries cost every start ~100-200 ms of relocations before
+// main when linked into the executable (docs/performance.md, "Forty-first session"): they are modules
 // (core/Plugin.hpp), loaded only by what reads a GDAL raster or writes an MP4. A cached render
 // loads neither; the same render without the data cache decodes the embedded imagery through
 // GDAL's module, a recording to MP4 loads FFmpeg's.
