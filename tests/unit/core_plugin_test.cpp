@@ -1,6 +1,7 @@
-// Modules loaded when first needed (core/Plugin.hpp): a module that is not there is an
-// InternalError naming its file and where it was looked for (a broken installation, never a
-// crash); a module that is there is loaded once and answers with the same object.
+// Modules loaded when first needed (core/Plugin.hpp): a module that is not there, or is another
+// build's, is an InternalError naming its file and where it was looked for (a broken
+// installation, never a crash); a module that is there is loaded once and answers with the
+// same object.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -19,6 +20,19 @@ TEST(Plugin, AMissingModuleIsAnInternalErrorNamingIt) {
     EXPECT_NE(what.find("oceanglobe-nonexistent.so"), std::string::npos) << what;
     EXPECT_NE(what.find("for testing"), std::string::npos) << what;
     EXPECT_NE(what.find("looked in "), std::string::npos) << what;
+  }
+}
+
+// A module whose build token is not the program's (another build's classes may differ behind
+// the same names) is refused, not called: an InternalError saying so, with both tokens.
+TEST(Plugin, AModuleOfAnotherBuildIsRefused) {
+  try {
+    (void)og::plugin::load("oceanglobe-test-otherbuild", "testing");
+    FAIL() << "no error";
+  } catch (const og::InternalError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("oceanglobe-test-otherbuild.so: built by another build of oceanglobe"), std::string::npos)
+        << what;
   }
 }
 
